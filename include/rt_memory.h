@@ -1,0 +1,49 @@
+/* rt_memory.h - data memory requirement of a cell-to-processor mapping.
+ *
+ * Usage:
+ *   rt_memory_use *use = calloc(owners, sizeof *use);
+ *   rt_memory_per_owner(scene, grid, owner, owners, use);
+ *
+ * An owner stores every object listed in any of its cells (once), the
+ * materials those objects use (once each) and the cell lists of its cells
+ * (a 4-byte header per cell plus 4 bytes per entry). Object sizes come from
+ * rt_scene_object_bytes. Returns RT_ERR_NOMEM or RT_ERR_INVALID.
+ */
+#ifndef RT_MEMORY_H
+#define RT_MEMORY_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "rt_grid.h"
+#include "rt_scene.h"
+#include "rt_status.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct rt_memory_use {
+    uint64_t objects;        /* distinct objects stored */
+    uint64_t object_bytes;   /* their data */
+    uint64_t material_bytes; /* materials they use */
+    uint64_t list_bytes;     /* cell lists of the owned cells */
+} rt_memory_use;
+
+static inline uint64_t rt_memory_total(const rt_memory_use *u)
+{
+    return u->object_bytes + u->material_bytes + u->list_bytes;
+}
+
+/* Per-owner use; owner[cell] in 0..owners-1 (cells with other values are skipped). */
+rt_status rt_memory_per_owner(const rt_scene *scene, const rt_grid *grid, const int32_t *owner,
+                              int owners, rt_memory_use *use);
+
+/* The whole scene with all cell lists: what each processor of a
+ * pixel-partitioned system holds. */
+rt_memory_use rt_memory_whole_scene(const rt_scene *scene, const rt_grid *grid);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,33 @@
+/* rt_png.h - writing and reading 8-bit RGB PNG files (libpng).
+ *
+ * Usage:
+ *   if (rt_png_write("out.png", w, h, rgb8, msg, sizeof msg) != RT_OK) ...
+ *
+ * Writing goes to "PATH.tmp.PID" and is renamed to PATH only when complete,
+ * so a failed write never leaves a partial PATH. Returns RT_ERR_IO with a
+ * message on failure.
+ */
+#ifndef RT_PNG_H
+#define RT_PNG_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "rt_status.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+rt_status rt_png_write(const char *path, uint32_t width, uint32_t height, const uint8_t *rgb8,
+                       char *msg, size_t msg_len);
+
+/* Reads an 8-bit RGB PNG; *rgb8 is malloc'ed (caller frees). RT_ERR_IO or
+ * RT_ERR_INVALID (not 8-bit RGB) on failure. */
+rt_status rt_png_read(const char *path, uint32_t *width, uint32_t *height, uint8_t **rgb8,
+                      char *msg, size_t msg_len);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

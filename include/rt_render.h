@@ -1,0 +1,59 @@
+/* rt_render.h - the sequential reference renderer: one work queue, one owner for every cell.
+ *
+ * Usage:
+ *   rt_render_options o = rt_render_options_default();
+ *   rt_render_stats st;
+ *   rt_framebuffer *fb = rt_framebuffer_new(w, h);
+ *   if (rt_render(scene, grid, &o, fb, &st, msg, sizeof msg) != RT_OK) ...
+ *
+ * Pixels are processed in order; each pixel's primary packet and every
+ * packet it spawns go through one FIFO queue of packet steps. The image it
+ * makes is the golden image for every model run. Returns RT_ERR_NOMEM, or
+ * RT_ERR_INVALID if packets were not conserved (a bug, reported loudly).
+ */
+#ifndef RT_RENDER_H
+#define RT_RENDER_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "rt_framebuffer.h"
+#include "rt_grid.h"
+#include "rt_ops.h"
+#include "rt_packet.h"
+#include "rt_scene.h"
+#include "rt_step.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct rt_packet_totals {
+    uint64_t created[RT_PACKET_KINDS];  /* packets made, by kind (primaries included) */
+    uint64_t consumed[RT_PACKET_KINDS]; /* packets that were absorbed or left, by kind */
+    uint64_t forwarded;                 /* hand-overs between owners (0 in the renderer) */
+    uint64_t primary_missed;            /* primary rays that never met the object space */
+} rt_packet_totals;
+
+typedef struct rt_render_options {
+    rt_step_params step; /* depth/weight limits, brute force */
+    /* Called now and then with pixels done out of total (NULL: not called). */
+    void (*progress)(void *ctx, uint64_t done, uint64_t total);
+    void *progress_ctx;
+} rt_render_options;
+
+typedef struct rt_render_stats {
+    rt_op_counts ops;         /* all operations */
+    rt_packet_totals packets; /* packet bookkeeping */
+    uint64_t queue_high_water; /* longest the work queue got */
+} rt_render_stats;
+
+rt_render_options rt_render_options_default(void);
+
+rt_status rt_render(const rt_scene *scene, const rt_grid *grid, const rt_render_options *options,
+                    rt_framebuffer *fb, rt_render_stats *stats, char *msg, size_t msg_len);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,73 @@
+/* rt_timing.h - the timing table: what each operation costs (paper's V30/8087 figures).
+ *
+ * Usage:
+ *   rt_timing t;
+ *   rt_timing_defaults(&t);
+ *   if (rt_timing_load("fast.timing", &t, msg, sizeof msg) != RT_OK) ...
+ *   double us = rt_timing_step_us(&t, &result.ops);
+ *
+ * Timing file format: one `key value` pair per line (also `key = value`),
+ * `#` starts a comment, keys as the field names below without the unit
+ * suffix (e.g. `test_miss 1300`). Loading overrides only the keys given.
+ * Failures return RT_ERR_IO or RT_ERR_PARSE with "FILE:LINE: message".
+ */
+#ifndef RT_TIMING_H
+#define RT_TIMING_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "rt_ops.h"
+#include "rt_status.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct rt_timing {
+    double test_miss_us;       /* intersection test, miss (1300) */
+    double test_hit_us;        /* intersection test, hit (1750) */
+    double dda_step_us;        /* next-cell determination (340) */
+    double shading_us;         /* luminance computation at a hit (4600) */
+    double reflection_us;      /* reflection vector (680) */
+    double refraction_us;      /* transmission vector (1100) */
+    double packet_analysis_us; /* taking up a packet (580) */
+    double packet_creation_us; /* making a packet, forwarded ones included (1600) */
+    double fb_write_us;        /* one frame-buffer contribution (0) */
+    double link_us;            /* one packet over a link (50); see link_bytes_per_us */
+    double link_bytes_per_us;  /* > 0: link time = packet_bytes / this, overriding link_us (0) */
+    double packet_bytes;       /* packet size on the wire, bytes (28) */
+    double host_inject_us;     /* host time to inject one primary packet (0) */
+    double bus_width_bytes;    /* cluster bus data width, bytes per cycle (2) */
+    double bus_cycle_us;       /* cluster bus cycle (0.5) */
+    double bus_arbitration_us; /* arbitration before each bus transfer (0.25) */
+    double memory_access_us;   /* 2-port memory access latency from the bus side (0.5) */
+} rt_timing;
+
+void rt_timing_defaults(rt_timing *timing);
+
+/* Sets one key (name as in the file). RT_ERR_INVALID for an unknown key or a
+ * negative / non-finite value (widths and packet size must be > 0). */
+rt_status rt_timing_set(rt_timing *timing, const char *key, double value, char *msg,
+                        size_t msg_len);
+
+rt_status rt_timing_load(const char *path, rt_timing *timing, char *msg, size_t msg_len);
+
+/* Number of keys and the i-th key's name (for help text and echoing). */
+size_t rt_timing_key_count(void);
+const char *rt_timing_key_name(size_t index);
+double rt_timing_get(const rt_timing *timing, size_t index);
+
+/* Microseconds an IP spends on the operations in `ops` (frame-buffer writes included). */
+double rt_timing_step_us(const rt_timing *timing, const rt_op_counts *ops);
+
+/* Microseconds a link is busy with one packet. */
+double rt_timing_link_packet_us(const rt_timing *timing);
+
+/* Microseconds one bus transfer of `bytes` occupies the bus (arbitration excluded). */
+double rt_timing_bus_transfer_us(const rt_timing *timing, double bytes);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,71 @@
+// intersection_processor.h - an intersection processor (IP): takes packets from its input queue,
+// runs the kernel's packet step over the cells its node owns, spends the time the step's
+// operation counts cost, writes contributions to the frame buffer and hands new and forwarded
+// packets to its communication unit.
+#pragma once
+
+#include <string>
+#include <systemc>
+#include <tlm>
+#include <tlm_utils/simple_initiator_socket.h>
+#include <vector>
+
+#include "object_fetch_if.h"
+#include "packet_ledger.h"
+#include "packet_queue.h"
+#include "packet_sink_if.h"
+#include "rt_grid.h"
+#include "rt_ops.h"
+#include "rt_scene.h"
+#include "rt_step.h"
+#include "sim_config.h"
+#include "time_keeper.h"
+
+namespace torusrt {
+
+class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf {
+  public:
+    sc_core::sc_export<PacketSinkIf> in;                                      // packets to process
+    sc_core::sc_port<PacketSinkIf> out;                                       // new and forwarded packets
+    sc_core::sc_port<ObjectFetchIf, 1, sc_core::SC_ZERO_OR_MORE_BOUND> fetch; // shared-data reads
+    tlm_utils::simple_initiator_socket<IntersectionProcessor> fb_socket;      // frame-buffer writes
+
+    // `owner_id` is the id the cell-owner table uses for this IP's node.
+    IntersectionProcessor(sc_core::sc_module_name name, const SimConfig &config, const rt_scene *scene,
+                          const rt_grid *grid, const int32_t *cell_owner, int owner_id, int index,
+                          PacketLedger &ledger);
+    ~IntersectionProcessor() override;
+
+    void accept(const TimedPacket &p) override { m_queue.push_blocking(p); }
+
+    // Statistics, read after the run.
+    const rt_op_counts &ops() const { return m_ops; }
+    const sc_core::sc_time &busy_time() const { return m_busy; }
+    uint64_t packets_in() const { return m_packets_in; }
+    uint64_t packets_out() const { return m_packets_out; }
+    PacketQueue &queue() { return m_queue; }
+    int index() const { return m_index; }
+    bool &busy_trace() { return m_busy_flag; }
+
+  private:
+    void run();
+    static void on_test(void *ctx, uint32_t object);
+
+    const SimConfig &m_config;
+    const rt_scene *m_scene;
+    const rt_grid *m_grid;
+    const int32_t *m_owner;
+    int m_owner_id, m_index;
+    PacketLedger &m_ledger;
+    PacketQueue m_queue;
+    TimeKeeper m_time;
+    rt_step_params m_params;
+    rt_step_result m_result;
+    std::vector<uint32_t> m_tested; // objects tested in the current step (shared data only)
+    rt_op_counts m_ops{};
+    sc_core::sc_time m_busy = sc_core::SC_ZERO_TIME;
+    uint64_t m_packets_in = 0, m_packets_out = 0;
+    bool m_busy_flag = false;
+};
+
+}  // namespace torusrt

@@ -1,0 +1,133 @@
+// model_run.cpp - elaboration, sc_start, stall detection and result collection.
+#include "model_run.h"
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "packet_ledger.h"
+#include "progress.h"
+#include "rt_mapping.h"
+#include "sim_report.h"
+#include "torus_system.h"
+#include "tracing.h"
+#include "user_error.h"
+
+namespace torusrt {
+
+namespace {
+
+double now_s()
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+void show_progress(void *ctx, uint64_t consumed, int64_t outstanding)
+{
+    auto *p = static_cast<Progress *>(ctx);
+    // The total is not known in advance: show consumed against consumed + outstanding.
+    p->update(consumed, consumed + static_cast<uint64_t>(outstanding > 0 ? outstanding : 0));
+}
+
+}  // namespace
+
+ModelOutcome run_model(const SimConfig &config, const rt_scene *scene, const rt_grid *grid, double t1_s,
+                       const std::string &t1_source, double wall_start_s)
+{
+    int dims[3];
+    rt_grid_dims(grid, dims);
+    std::vector<int32_t> owner(rt_grid_cell_count(grid));
+    char msg[RT_MSG_LEN] = "";
+    if (rt_mapping_fill(dims, config.ips.data(), config.mapping, config.block, owner.data(), msg, sizeof msg) != RT_OK)
+        throw UserError(std::string("--map: ") + msg, 2);
+    const rt_camera *cam = rt_scene_camera(scene);
+    FramebufferPtr fb(rt_framebuffer_new(cam->width, cam->height));
+    if (!fb) throw UserError("out of memory for the frame buffer");
+
+    PacketLedger ledger;
+    Progress progress("torusrt-sim", config.quiet);
+    ledger.set_progress(show_progress, &progress);
+    if (config.style == TimingStyle::lt)
+        tlm::tlm_global_quantum::instance().set(sc_core::sc_time(config.quantum_us, sc_core::SC_US));
+    TorusSystem top("top", config, scene, grid, owner.data(), ledger, fb.get());
+    std::unique_ptr<Tracer> tracer;
+    if (!config.vcd_path.empty()) tracer = std::make_unique<Tracer>(config.vcd_path, config, top);
+
+    double sim_start = now_s();
+    sc_core::sc_start();
+    double sim_wall = now_s() - sim_start;
+    progress.finish();
+
+    ModelOutcome out;
+    if (ledger.outstanding() != 0 || !top.host().done_injecting()) {
+        out.deadlock = true;
+        out.deadlock_details = deadlock_report(top);
+        out.sim_time_s = sc_core::sc_time_stamp().to_seconds();
+        return out; // the tracer's destructor removes the partial trace
+    }
+    if (!ledger.conserved())
+        throw UserError("packet conservation violated: created " +
+                        std::to_string(ledger.totals().created[0] + ledger.totals().created[1]) + ", consumed " +
+                        std::to_string(ledger.totals().consumed[0] + ledger.totals().consumed[1]));
+    out.sim_time_s = ledger.image_time().to_seconds();
+    RunFacts facts;
+    facts.t1_s = t1_s < 0 ? out.sim_time_s : t1_s;
+    facts.t1_source = t1_s < 0 ? "this run" : t1_source;
+    facts.sim_wall_s = sim_wall;
+    facts.delta_cycles = sc_core::sc_delta_count();
+    facts.wall_s = now_s() - wall_start_s;
+    out.report = build_report(config, top, ledger, scene, grid, owner.data(), facts);
+    out.rgb8.resize(static_cast<size_t>(cam->width) * cam->height * 3);
+    rt_framebuffer_to_rgb8(fb.get(), out.rgb8.data());
+    if (tracer) tracer->commit();
+    return out;
+}
+
+void print_summary_stdout(const nlohmann::json &report) { print_summary(report, stdout); }
+
+double one_processor_time(const SimConfig &config, const rt_scene *scene, const rt_grid *grid)
+{
+    SimConfig one = config;
+    one.ips = {1, 1, 1};
+    one.cluster = 1;
+    one.vcd_path.clear();
+    one.trace_ips.clear();
+    one.quiet = true;
+    one.style = TimingStyle::at;
+    one.quantum_us = 0;
+    one.queue_capacity = 0; // T(1) is the unconstrained sequential time
+    int fds[2];
+    if (pipe(fds) != 0) throw UserError("cannot create a pipe for the T(1) run");
+    std::fflush(nullptr);
+    pid_t pid = fork();
+    if (pid < 0) throw UserError("cannot fork the T(1) run");
+    if (pid == 0) {
+        close(fds[0]);
+        int code = 0;
+        try {
+            ModelOutcome o = run_model(one, scene, grid, -1, "", now_s());
+            if (o.deadlock) code = 3;
+            else dprintf(fds[1], "%.17g\n", o.sim_time_s);
+        } catch (const std::exception &e) {
+            std::fprintf(stderr, "torusrt-sim: T(1) run: %s\n", e.what());
+            code = 1;
+        }
+        close(fds[1]);
+        std::fflush(nullptr);
+        _exit(code);
+    }
+    close(fds[1]);
+    char buf[64] = "";
+    ssize_t n = read(fds[0], buf, sizeof buf - 1);
+    close(fds[0]);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    if (n <= 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+        throw UserError("the one-processor run for T(1) failed");
+    return std::strtod(buf, nullptr);
+}
+
+}  // namespace torusrt

@@ -1,0 +1,34 @@
+// model_run.h - elaborates and runs one model configuration and collects its results.
+// SystemC elaborates once per process, so a second configuration (T(1)) runs in a child process.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "kernel_handles.h"
+#include "sim_config.h"
+
+namespace torusrt {
+
+struct ModelOutcome {
+    bool deadlock = false;            // the network stalled with packets outstanding
+    std::string deadlock_details;     // which queues were full
+    double sim_time_s = 0;            // simulated image time
+    std::vector<uint8_t> rgb8;        // final image
+    nlohmann::json report;            // the full statistics
+};
+
+// Runs `config` on a loaded scene. `t1_s` < 0 means "this run is T(1)" (one processor).
+// `vcd_commit` is called with the tracer work done only if the run succeeds.
+ModelOutcome run_model(const SimConfig &config, const rt_scene *scene, const rt_grid *grid, double t1_s,
+                       const std::string &t1_source, double wall_start_s);
+
+// Prints the human summary of a report on stdout.
+void print_summary_stdout(const nlohmann::json &report);
+
+// T(1) of `config`'s scene: the same model with one processor (and no cluster), run in a child
+// process. Throws UserError if that run fails.
+double one_processor_time(const SimConfig &config, const rt_scene *scene, const rt_grid *grid);
+
+}  // namespace torusrt

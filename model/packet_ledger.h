@@ -1,0 +1,53 @@
+// packet_ledger.h - packets created and consumed by kind, and the moment the last one went:
+// completion detection for the host and the conservation check of every run.
+#pragma once
+
+#include <cstdint>
+#include <systemc>
+
+#include "rt_render.h"
+
+namespace torusrt {
+
+class PacketLedger {
+  public:
+    void created(int kind) { m_totals.created[kind]++; m_outstanding++; }
+    // `when` is the consumer's local time (its simulated completion).
+    void consumed(int kind, const sc_core::sc_time &when)
+    {
+        m_totals.consumed[kind]++;
+        m_outstanding--;
+        if (when > m_last) m_last = when;
+        if (m_progress && (++m_consumed_count & 4095) == 0) m_progress(m_progress_ctx, m_consumed_count, m_outstanding);
+    }
+    // Called every 4096 consumed packets (for a progress display).
+    void set_progress(void (*fn)(void *, uint64_t consumed, int64_t outstanding), void *ctx)
+    {
+        m_progress = fn;
+        m_progress_ctx = ctx;
+    }
+    void forwarded() { m_totals.forwarded++; }
+    void primary_missed(const sc_core::sc_time &when)
+    {
+        m_totals.primary_missed++;
+        if (when > m_last) m_last = when;
+    }
+    int64_t outstanding() const { return m_outstanding; }
+    bool conserved() const
+    {
+        return m_totals.created[0] == m_totals.consumed[0] && m_totals.created[1] == m_totals.consumed[1];
+    }
+    const rt_packet_totals &totals() const { return m_totals; }
+    // Simulated image time: when the last packet was consumed.
+    sc_core::sc_time image_time() const { return m_last; }
+
+  private:
+    rt_packet_totals m_totals{};
+    int64_t m_outstanding = 0;
+    sc_core::sc_time m_last = sc_core::SC_ZERO_TIME;
+    void (*m_progress)(void *, uint64_t, int64_t) = nullptr;
+    void *m_progress_ctx = nullptr;
+    uint64_t m_consumed_count = 0;
+};
+
+}  // namespace torusrt

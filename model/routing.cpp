@@ -1,0 +1,60 @@
+// routing.cpp - dimension-order routing on rings (torus) or lines (mesh).
+#include "routing.h"
+
+#include <cstdlib>
+
+namespace torusrt {
+
+const char *direction_name(int dir)
+{
+    static const char *names[kDirections] = {"xp", "xm", "yp", "ym", "zp", "zm"};
+    return dir >= 0 && dir < kDirections ? names[dir] : "none";
+}
+
+Routing::Routing(const std::array<int, 3> &dims, bool torus) : m_dims(dims), m_torus(torus) {}
+
+std::array<int, 3> Routing::coords(int node) const
+{
+    return {node % m_dims[0], (node / m_dims[0]) % m_dims[1], node / (m_dims[0] * m_dims[1])};
+}
+
+int Routing::node(const std::array<int, 3> &c) const { return c[0] + m_dims[0] * (c[1] + m_dims[1] * c[2]); }
+
+int Routing::neighbour(int n, int dir) const
+{
+    int axis = dir / 2, step = dir % 2 == 0 ? 1 : -1;
+    if (m_dims[axis] < 2) return -1;
+    auto c = coords(n);
+    int v = c[axis] + step;
+    if (v < 0 || v >= m_dims[axis]) {
+        if (!m_torus) return -1;
+        v = (v + m_dims[axis]) % m_dims[axis];
+    }
+    c[axis] = v;
+    return node(c);
+}
+
+int Routing::next_direction(int from, int to) const
+{
+    auto a = coords(from), b = coords(to);
+    for (int axis = 0; axis < 3; axis++) {
+        if (a[axis] == b[axis]) continue;
+        if (!m_torus) return direction(axis, b[axis] > a[axis]);
+        int p = m_dims[axis];
+        int forward = ((b[axis] - a[axis]) % p + p) % p;
+        return direction(axis, forward <= p - forward);
+    }
+    return -1;
+}
+
+int Routing::hops(int from, int to) const
+{
+    int h = 0;
+    while (from != to) {
+        from = neighbour(from, next_direction(from, to));
+        h++;
+    }
+    return h;
+}
+
+}  // namespace torusrt

@@ -1,0 +1,40 @@
+// sim_config.cpp - validation and names of the run settings.
+#include "sim_config.h"
+
+#include <cmath>
+
+#include "user_error.h"
+
+namespace torusrt {
+
+void validate(const SimConfig &c)
+{
+    for (int a = 0; a < 3; a++)
+        if (c.ips[a] < 1) throw UserError("--ips: every dimension needs at least 1 node", 2);
+    if (c.node_count() > 4096) throw UserError("--ips: at most 4096 nodes", 2);
+    if (c.block < 1) throw UserError("--map block-cyclic:B: B must be at least 1", 2);
+    if (c.cluster < 1 || c.cluster > 256) throw UserError("--cluster: must be 1 to 256", 2);
+    if (c.processor_count() > 65536) throw UserError("--ips x --cluster: at most 65536 processors", 2);
+    if (c.step.max_depth < 0 || c.step.max_depth > 1000) throw UserError("--max-depth: must be 0 to 1000", 2);
+    if (!(c.step.min_weight >= 0) || !std::isfinite(c.step.min_weight))
+        throw UserError("--min-weight: must be a non-negative number", 2);
+    if (!(c.quantum_us >= 0) || !std::isfinite(c.quantum_us)) throw UserError("--quantum: must not be negative", 2);
+    if (c.style == TimingStyle::at && c.quantum_us > 0)
+        throw UserError("--quantum: only meaningful with --style lt", 2);
+    for (int id : c.trace_ips)
+        if (id < 0 || id >= c.node_count())
+            throw UserError("--trace-ips: node " + std::to_string(id) + " does not exist (0.." +
+                                std::to_string(c.node_count() - 1) + ")", 2);
+}
+
+const char *mapping_name(rt_map_kind k)
+{
+    return k == RT_MAP_BLOCK ? "block" : k == RT_MAP_CYCLIC ? "cyclic" : "block-cyclic";
+}
+const char *topology_name(Topology t) { return t == Topology::torus ? "torus" : "mesh"; }
+const char *style_name(TimingStyle s) { return s == TimingStyle::at ? "at" : "lt"; }
+const char *data_mode_name(DataMode d) { return d == DataMode::replicated ? "replicated" : "shared"; }
+const char *arbiter_name(ArbiterPolicy a) { return a == ArbiterPolicy::round_robin ? "round-robin" : "fixed-priority"; }
+const char *dispatch_name(DispatchPolicy d) { return d == DispatchPolicy::round_robin ? "round-robin" : "shortest-queue"; }
+
+}  // namespace torusrt

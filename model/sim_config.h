@@ -1,0 +1,57 @@
+// sim_config.h - every setting of a model run in one struct: defaults, then the timing
+// file, then command-line overrides, checked by one validator.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "rt_mapping.h"
+#include "rt_step.h"
+#include "rt_timing.h"
+
+namespace torusrt {
+
+enum class Topology { torus, mesh };
+enum class TimingStyle { at, lt };
+enum class DataMode { replicated, shared };
+enum class ArbiterPolicy { round_robin, fixed_priority };
+enum class DispatchPolicy { round_robin, shortest_queue };
+
+struct SimConfig {
+    std::string scene_path;                 // NFF scene
+    std::array<int, 3> cells{24, 24, 24};   // grid cells per axis
+    unsigned width = 0, height = 0;         // image size override (0 = the scene's)
+    std::array<int, 3> ips{1, 1, 1};        // torus nodes per axis
+    rt_map_kind mapping = RT_MAP_CYCLIC;    // cell-to-node mapping
+    int block = 1;                          // block size for block-cyclic
+    Topology topology = Topology::torus;    // rings in every dimension, or a mesh
+    unsigned queue_capacity = 0;            // packets per queue, 0 = unbounded
+    rt_timing timing{};                     // operation and transfer times
+    rt_step_params step{};                  // shade-tree limits
+    TimingStyle style = TimingStyle::at;    // approximately- or loosely-timed
+    double quantum_us = 0;                  // loosely-timed global quantum
+    int cluster = 1;                        // processors per node (1 = flat torus)
+    DataMode data = DataMode::replicated;   // object data in a cluster
+    ArbiterPolicy arbiter = ArbiterPolicy::round_robin;
+    DispatchPolicy dispatch = DispatchPolicy::round_robin;
+    std::string vcd_path;                   // VCD trace file ("" = no tracing)
+    std::vector<int> trace_ips;             // nodes to trace (empty = all)
+    double t1_s = -1;                       // T(1) passed in (< 0: compute)
+    bool quiet = false;
+
+    int node_count() const { return ips[0] * ips[1] * ips[2]; }
+    int processor_count() const { return node_count() * cluster; }
+};
+
+// Throws UserError (exit 2) naming the first bad setting.
+void validate(const SimConfig &config);
+
+const char *mapping_name(rt_map_kind kind);
+const char *topology_name(Topology t);
+const char *style_name(TimingStyle s);
+const char *data_mode_name(DataMode d);
+const char *arbiter_name(ArbiterPolicy a);
+const char *dispatch_name(DispatchPolicy d);
+
+}  // namespace torusrt

@@ -1,0 +1,29 @@
+// timed_packet.h - a packet with the simulated time it was sent (its arrival time once delivered),
+// and the TLM-2.0 extension that carries it in a generic payload.
+#pragma once
+
+#include <systemc>
+#include <tlm>
+
+#include "rt_packet.h"
+
+namespace torusrt {
+
+struct TimedPacket {
+    rt_packet packet;      // the kernel's packet
+    sc_core::sc_time stamp; // send time; after a link, arrival time (loosely-timed runs use it)
+};
+
+// Packets cross links and the cluster bus as a generic payload (command WRITE, data = the packet's
+// bytes on the wire) with this extension holding the packet itself.
+class PacketExtension : public tlm::tlm_extension<PacketExtension> {
+  public:
+    TimedPacket item;
+    tlm::tlm_extension_base *clone() const override { return new PacketExtension(*this); }
+    void copy_from(const tlm::tlm_extension_base &other) override
+    {
+        item = static_cast<const PacketExtension &>(other).item;
+    }
+};
+
+}  // namespace torusrt

@@ -1,0 +1,64 @@
+// torus_system.cpp - elaboration of the whole machine.
+#include "torus_system.h"
+
+#include <string>
+
+#include "cluster_node.h"
+
+namespace torusrt {
+
+TorusSystem::TorusSystem(sc_core::sc_module_name name, const SimConfig &config, const rt_scene *scene,
+                         const rt_grid *grid, const int32_t *cell_owner, PacketLedger &ledger,
+                         rt_framebuffer *fb)
+    : sc_module(name), m_routing(config.ips, config.topology == Topology::torus)
+{
+    int nodes = config.node_count();
+    m_fb = std::make_unique<FrameBuffer>("fb", fb);
+    m_host = std::make_unique<Host>("host", config, scene, grid, cell_owner, ledger);
+    m_host->fb_socket.bind(m_fb->socket);
+    for (int n = 0; n < nodes; n++) {
+        m_comm.push_back(std::make_unique<CommUnit>(("cu_" + std::to_string(n)).c_str(), n, m_routing, grid, cell_owner));
+        m_host->inject.bind(m_comm[n]->in);
+        if (config.cluster == 1) {
+            auto ip = std::make_unique<IntersectionProcessor>(("ip_" + std::to_string(n)).c_str(), config, scene,
+                                                              grid, cell_owner, n, n, ledger);
+            ip->out.bind(m_comm[n]->in);
+            ip->fb_socket.bind(m_fb->socket);
+            m_comm[n]->local.bind(ip->in);
+            m_ips.push_back(std::move(ip));
+        } else {
+            auto cl = std::make_unique<ClusterNode>(("cluster_" + std::to_string(n)).c_str(), config, scene, grid,
+                                                    cell_owner, n, ledger);
+            cl->to_comm_unit.bind(m_comm[n]->in);
+            for (auto *p : cl->processors()) p->fb_socket.bind(m_fb->socket);
+            m_comm[n]->local.bind(cl->from_comm_unit);
+            m_clusters.push_back(std::move(cl));
+        }
+    }
+    for (int n = 0; n < nodes; n++) {
+        int port = 0;
+        for (int dir = 0; dir < kDirections; dir++) {
+            int to = m_routing.neighbour(n, dir);
+            if (to < 0) continue;
+            std::string lname = "link_" + std::to_string(n) + "_" + direction_name(dir);
+            auto link = std::make_unique<ToroidalLink>(lname.c_str(), config, n, to, dir);
+            m_comm[n]->link_out.bind(link->in);
+            m_comm[n]->set_link_port(dir, port++);
+            link->socket.bind(m_comm[to]->link_in);
+            m_links.push_back(std::move(link));
+        }
+    }
+}
+
+TorusSystem::~TorusSystem() = default;
+
+std::vector<IntersectionProcessor *> TorusSystem::processors() const
+{
+    std::vector<IntersectionProcessor *> out;
+    for (const auto &ip : m_ips) out.push_back(ip.get());
+    for (const auto &cl : m_clusters)
+        for (auto *p : cl->processors()) out.push_back(p);
+    return out;
+}
+
+}  // namespace torusrt

@@ -1,0 +1,48 @@
+// torus_system.h - the top module: instantiates the host, the frame buffer, and per torus node a
+// communication unit, its processor side and its outgoing links, and binds them. Only what the
+// configuration needs is built: no links along an axis with one node, no wrap-around links in a
+// mesh, no cluster bus for one processor per node.
+#pragma once
+
+#include <memory>
+#include <systemc>
+#include <vector>
+
+#include "comm_unit.h"
+#include "frame_buffer.h"
+#include "host.h"
+#include "intersection_processor.h"
+#include "packet_ledger.h"
+#include "routing.h"
+#include "sim_config.h"
+#include "toroidal_link.h"
+
+namespace torusrt {
+
+class ClusterNode;
+
+class TorusSystem : public sc_core::sc_module {
+  public:
+    TorusSystem(sc_core::sc_module_name name, const SimConfig &config, const rt_scene *scene,
+                const rt_grid *grid, const int32_t *cell_owner, PacketLedger &ledger, rt_framebuffer *fb);
+    ~TorusSystem() override;
+
+    const Routing &routing() const { return m_routing; }
+    std::vector<IntersectionProcessor *> processors() const; // every processor, node-major
+    const std::vector<std::unique_ptr<ToroidalLink>> &links() const { return m_links; }
+    const std::vector<std::unique_ptr<CommUnit>> &comm_units() const { return m_comm; }
+    const std::vector<std::unique_ptr<ClusterNode>> &clusters() const { return m_clusters; }
+    Host &host() { return *m_host; }
+    FrameBuffer &frame_buffer() { return *m_fb; }
+
+  private:
+    Routing m_routing;
+    std::unique_ptr<FrameBuffer> m_fb;
+    std::unique_ptr<Host> m_host;
+    std::vector<std::unique_ptr<CommUnit>> m_comm;
+    std::vector<std::unique_ptr<IntersectionProcessor>> m_ips;   // flat torus: one per node
+    std::vector<std::unique_ptr<ClusterNode>> m_clusters;        // clusters: one per node
+    std::vector<std::unique_ptr<ToroidalLink>> m_links;
+};
+
+}  // namespace torusrt

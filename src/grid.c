@@ -1,0 +1,540 @@
+/* grid.c - the uniform grid over the object space and its cell lists.
+ *
+ * Object space: the bounding box of every object with non-empty bounds
+ * (zero-area polygons have none), padded on every side by 1e-6 x its
+ * diagonal (1e-6 x max(1, largest |coordinate|) when all objects sit in one
+ * point), and by at least one ulp, so that no axis has zero thickness.
+ *
+ * Cell lists follow the paper's recursive factor subdivision (DESIGN 4):
+ * each axis' cell count is factorised into primes in ascending order, the
+ * shorter factor lists padded with 1s, so level l splits a sub-space by
+ * factor[l] along x, y and z at once. Per axis the object's extent is
+ * located among the f slabs by sequential half-space tests, one UNIT each:
+ *   (a) k = 1..f-1: "lo <= plane_k + tol?"; the first yes gives first = k-1,
+ *       none gives first = f-1;
+ *   (b) k = first+1..f-1: "hi >= plane_k - tol?"; the first no gives
+ *       last = k-1, all yes give last = f-1.
+ * A factor of 1 costs nothing. Each sub-space in the product of the three
+ * ranges is then kept only if an exact overlap test (not counted in units)
+ * says the object meets it, and kept ones are split again down to single
+ * cells. Objects with empty bounds cost nothing and are listed nowhere.
+ *
+ * Overlap tolerance: tol = 1e-9 x the object-space diagonal. Every test
+ * (half-space and exact) uses the cell or sub-space box grown by tol on
+ * every side, so an object touching a face, within rounding, is listed in
+ * both neighbours. An extra listing costs one intersection test; a missing
+ * one would lose a hit, because a hit is accepted only inside its cell.
+ *
+ * Exact tests on the grown box:
+ *   sphere   - squared distance from the centre to the box <= r^2 (Arvo);
+ *   polygon  - the plane meets the box and the even-odd region meets it: an
+ *              edge of the loop meets the box, or else (the boundary misses
+ *              the box, so plane-and-box lies wholly in or out) one point of
+ *              plane-and-box is inside. The loop is first moved onto the
+ *              stored plane along the dropped axis, which is exactly the
+ *              region intersect.c hits (plane + 2D even-odd test), so a
+ *              slightly non-planar file polygon is still listed correctly;
+ *   triangle - the same test on the `pp` triangle;
+ *   cone     - its bounds box overlaps the box: conservative (a cell may
+ *              list a cone that misses it), never drops a hit.
+ * Sutherland-Hodgman non-emptiness is not used: for concave polygons its
+ * zero-width bridge edges along a clip plane keep cells lying in a notch.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "grid_internal.h"
+#include "scene_internal.h"
+
+/* 1024 = 2^10: no axis has more prime factors. */
+#define MAX_LEVELS 10
+
+typedef struct build {
+    const rt_scene *scene;
+    rt_grid *g;
+    int levels;
+    int factor[3][MAX_LEVELS];    /* split factor per axis and level (1 = no split) */
+    int span[3][MAX_LEVELS + 1];  /* cells per sub-space along an axis at each level */
+
+    /* The object being listed. */
+    const rt_object *obj;
+    rt_box extent;                /* what the half-space tests see */
+    rt_vec3 *loop;                /* polygon or triangle vertices on the plane */
+    size_t loop_n, loop_cap;
+    rt_vec3 normal;               /* plane: dot(normal, p) == offset */
+    double offset;
+    int drop;                     /* axis dropped for the 2D inside test */
+    uint64_t units;
+
+    /* Cells met, in object order; pair_start[o] is object o's first. */
+    uint32_t *cells;
+    size_t cell_n, cell_cap;
+    size_t *pair_start;
+    int nomem;
+} build;
+
+static int box_is_empty(const rt_box *b)
+{
+    return !(b->lo.x <= b->hi.x && b->lo.y <= b->hi.y && b->lo.z <= b->hi.z);
+}
+
+static double axis_of(rt_vec3 v, int a) { return rt_vec_axis(v, a); }
+
+static void set_axis(rt_vec3 *v, int a, double x)
+{
+    if (a == 0) v->x = x;
+    else if (a == 1) v->y = x;
+    else v->z = x;
+}
+
+static int dominant_axis(rt_vec3 n)
+{
+    double ax = fabs(n.x), ay = fabs(n.y), az = fabs(n.z);
+    if (ax >= ay && ax >= az) return 0;
+    return ay >= az ? 1 : 2;
+}
+
+/* Prime factors of n in ascending order; returns how many. */
+static int factorise(int n, int out[MAX_LEVELS])
+{
+    int count = 0;
+    for (int p = 2; n > 1 && count < MAX_LEVELS; p++) {
+        while (n % p == 0 && count < MAX_LEVELS) {
+            out[count++] = p;
+            n /= p;
+        }
+    }
+    return count;
+}
+
+/* Arvo: squared distance from the centre to the box against r^2. */
+static int sphere_meets(const rt_sphere_data *s, const rt_box *b)
+{
+    double d2 = 0.0;
+    for (int a = 0; a < 3; a++) {
+        double c = axis_of(s->center, a), lo = axis_of(b->lo, a), hi = axis_of(b->hi, a);
+        if (c < lo) d2 += (lo - c) * (lo - c);
+        else if (c > hi) d2 += (c - hi) * (c - hi);
+    }
+    return d2 <= s->radius * s->radius;
+}
+
+/* Liang-Barsky clip of segment p-q against the closed box. */
+static int segment_meets(rt_vec3 p, rt_vec3 q, const rt_box *b)
+{
+    double t0 = 0.0, t1 = 1.0;
+    for (int a = 0; a < 3; a++) {
+        double o = axis_of(p, a), d = axis_of(q, a) - o;
+        double lo = axis_of(b->lo, a), hi = axis_of(b->hi, a);
+        if (d == 0.0) {
+            if (o < lo || o > hi) return 0;
+            continue;
+        }
+        double ta = (lo - o) / d, tb = (hi - o) / d;
+        if (ta > tb) { double s = ta; ta = tb; tb = s; }
+        if (ta > t0) t0 = ta;
+        if (tb < t1) t1 = tb;
+        if (t0 > t1) return 0;
+    }
+    return 1;
+}
+
+/* Even-odd test of p against the loop in the plane with axis `drop`
+ * removed: the same rule as intersect.c's polygon hit. */
+static int inside_loop(const rt_vec3 *v, size_t n, int drop, rt_vec3 p)
+{
+    int ia = drop == 0 ? 1 : 0, ib = drop == 2 ? 1 : 2;
+    double px = axis_of(p, ia), py = axis_of(p, ib);
+    int inside = 0;
+    for (size_t i = 0, j = n - 1; i < n; j = i++) {
+        double xi = axis_of(v[i], ia), yi = axis_of(v[i], ib);
+        double xj = axis_of(v[j], ia), yj = axis_of(v[j], ib);
+        if ((yi > py) != (yj > py)) {
+            double x = xi + (py - yi) / (yj - yi) * (xj - xi);
+            if (px < x) inside = !inside;
+        }
+    }
+    return inside;
+}
+
+/* Planar even-odd region (b->loop on b's plane) against the box. */
+static int flat_meets(const build *bd, const rt_box *b)
+{
+    /* Box corners nearest and farthest along the normal: the plane meets
+     * the box iff their signed distances bracket 0. */
+    rt_vec3 cmin = bd->normal, cmax = bd->normal;
+    for (int a = 0; a < 3; a++) {
+        int pos = axis_of(bd->normal, a) >= 0.0;
+        set_axis(&cmin, a, pos ? axis_of(b->lo, a) : axis_of(b->hi, a));
+        set_axis(&cmax, a, pos ? axis_of(b->hi, a) : axis_of(b->lo, a));
+    }
+    double dmin = rt_vec_dot(bd->normal, cmin) - bd->offset;
+    double dmax = rt_vec_dot(bd->normal, cmax) - bd->offset;
+    if (dmin > 0.0 || dmax < 0.0) return 0;
+
+    for (size_t i = 0, j = bd->loop_n - 1; i < bd->loop_n; j = i++)
+        if (segment_meets(bd->loop[j], bd->loop[i], b)) return 1;
+
+    /* The boundary misses the box, so one point of plane-and-box decides:
+     * take it on the diagonal cmin-cmax, which crosses the plane. */
+    double span = dmax - dmin;
+    double t = span > 0.0 ? -dmin / span : 0.0;
+    rt_vec3 p = rt_vec_add(cmin, rt_vec_scale(rt_vec_sub(cmax, cmin), t));
+    return inside_loop(bd->loop, bd->loop_n, bd->drop, p);
+}
+
+static int object_meets(const build *bd, const rt_box *b)
+{
+    switch (bd->obj->kind) {
+    case RT_OBJ_SPHERE: return sphere_meets(&bd->obj->u.sphere, b);
+    case RT_OBJ_POLYGON:
+    case RT_OBJ_TRIANGLE: return flat_meets(bd, b);
+    case RT_OBJ_CONE: break;
+    }
+    /* Cone (conservative): the bounds overlap the box. */
+    const rt_box *o = &bd->obj->bounds;
+    return o->lo.x <= b->hi.x && o->hi.x >= b->lo.x && o->lo.y <= b->hi.y && o->hi.y >= b->lo.y &&
+           o->lo.z <= b->hi.z && o->hi.z >= b->lo.z;
+}
+
+/* Slabs [first, last] of f (each m cells from cell c0) that the extent
+ * reaches on one axis, one unit per half-space test. */
+static void slab_range(build *bd, int axis, int c0, int f, int m, int *first, int *last)
+{
+    const rt_grid *g = bd->g;
+    double lo = axis_of(bd->extent.lo, axis), hi = axis_of(bd->extent.hi, axis);
+    double tol = g->tolerance;
+    *first = f - 1;
+    for (int k = 1; k < f; k++) {
+        bd->units++;
+        if (lo <= rt_grid_plane(g, axis, c0 + k * m) + tol) {
+            *first = k - 1;
+            break;
+        }
+    }
+    *last = f - 1;
+    for (int k = *first + 1; k < f; k++) {
+        bd->units++;
+        if (!(hi >= rt_grid_plane(g, axis, c0 + k * m) - tol)) {
+            *last = k - 1;
+            break;
+        }
+    }
+}
+
+static void add_cell(build *bd, const int c[3])
+{
+    if (bd->cell_n == bd->cell_cap) {
+        size_t cap = bd->cell_cap ? 2 * bd->cell_cap : 1024;
+        uint32_t *p = realloc(bd->cells, cap * sizeof *p);
+        if (!p) {
+            bd->nomem = 1;
+            return;
+        }
+        bd->cells = p;
+        bd->cell_cap = cap;
+    }
+    const int32_t cell[3] = {c[0], c[1], c[2]};
+    bd->cells[bd->cell_n++] = rt_grid_index(bd->g->dims, cell);
+}
+
+/* Splits the sub-space starting at cell c0 (span[.][level] cells per axis). */
+static void subdivide(build *bd, int level, const int c0[3])
+{
+    if (level == bd->levels) {
+        add_cell(bd, c0);
+        return;
+    }
+    int first[3], last[3], m[3];
+    for (int a = 0; a < 3; a++) {
+        m[a] = bd->span[a][level + 1];
+        slab_range(bd, a, c0[a], bd->factor[a][level], m[a], &first[a], &last[a]);
+    }
+    const rt_grid *g = bd->g;
+    double tol = g->tolerance;
+    for (int iz = first[2]; iz <= last[2]; iz++)
+        for (int iy = first[1]; iy <= last[1]; iy++)
+            for (int ix = first[0]; ix <= last[0]; ix++) {
+                if (bd->nomem) return;
+                int c[3] = {c0[0] + ix * m[0], c0[1] + iy * m[1], c0[2] + iz * m[2]};
+                rt_box b;
+                b.lo = rt_vec(rt_grid_plane(g, 0, c[0]) - tol, rt_grid_plane(g, 1, c[1]) - tol,
+                              rt_grid_plane(g, 2, c[2]) - tol);
+                b.hi = rt_vec(rt_grid_plane(g, 0, c[0] + m[0]) + tol,
+                              rt_grid_plane(g, 1, c[1] + m[1]) + tol,
+                              rt_grid_plane(g, 2, c[2] + m[2]) + tol);
+                if (object_meets(bd, &b)) subdivide(bd, level + 1, c);
+            }
+}
+
+static int reserve_loop(build *bd, size_t n)
+{
+    if (n <= bd->loop_cap) return 1;
+    rt_vec3 *p = realloc(bd->loop, n * sizeof *p);
+    if (!p) return 0;
+    bd->loop = p;
+    bd->loop_cap = n;
+    return 1;
+}
+
+/* Sets up the plane, loop and extent of object o; 0 if memory runs out. */
+static int prepare_object(build *bd, size_t o)
+{
+    const rt_scene *s = bd->scene;
+    const rt_object *ob = &s->objects[o];
+    bd->obj = ob;
+    bd->extent = ob->bounds;
+    if (ob->kind == RT_OBJ_POLYGON) {
+        const rt_polygon_data *p = &ob->u.polygon;
+        if (!reserve_loop(bd, p->count)) return 0;
+        bd->normal = p->normal;
+        bd->offset = p->offset;
+        bd->drop = p->drop_axis;
+        bd->loop_n = p->count;
+        double nd = axis_of(p->normal, p->drop_axis);
+        for (uint32_t i = 0; i < p->count; i++) {
+            /* Onto the plane along the dropped axis: the 2D shape is kept. */
+            rt_vec3 v = s->vertices[p->first_vertex + i];
+            set_axis(&v, p->drop_axis, axis_of(v, p->drop_axis) + (p->offset - rt_vec_dot(p->normal, v)) / nd);
+            bd->loop[i] = v;
+            bd->extent.lo = rt_vec(fmin(bd->extent.lo.x, v.x), fmin(bd->extent.lo.y, v.y),
+                                   fmin(bd->extent.lo.z, v.z));
+            bd->extent.hi = rt_vec(fmax(bd->extent.hi.x, v.x), fmax(bd->extent.hi.y, v.y),
+                                   fmax(bd->extent.hi.z, v.z));
+        }
+    } else if (ob->kind == RT_OBJ_TRIANGLE) {
+        const rt_triangle_data *t = &ob->u.triangle;
+        if (!reserve_loop(bd, 3)) return 0;
+        bd->normal = t->normal;
+        bd->offset = rt_vec_dot(t->normal, t->v[0]);
+        bd->drop = dominant_axis(t->normal);
+        bd->loop_n = 3;
+        memcpy(bd->loop, t->v, 3 * sizeof *bd->loop);
+    }
+    return 1;
+}
+
+static void set_msg(char *msg, size_t len, const char *text)
+{
+    if (msg && len) snprintf(msg, len, "%s", text);
+}
+
+/* Padded object space; 0 when no object has bounds. */
+static int object_space(const rt_scene *s, rt_box *out)
+{
+    rt_box b = {rt_vec(INFINITY, INFINITY, INFINITY), rt_vec(-INFINITY, -INFINITY, -INFINITY)};
+    int any = 0;
+    for (size_t o = 0; o < s->object_count; o++) {
+        const rt_box *ob = &s->objects[o].bounds;
+        if (box_is_empty(ob)) continue;
+        any = 1;
+        b.lo = rt_vec(fmin(b.lo.x, ob->lo.x), fmin(b.lo.y, ob->lo.y), fmin(b.lo.z, ob->lo.z));
+        b.hi = rt_vec(fmax(b.hi.x, ob->hi.x), fmax(b.hi.y, ob->hi.y), fmax(b.hi.z, ob->hi.z));
+    }
+    if (!any) return 0;
+    rt_vec3 e = rt_vec_sub(b.hi, b.lo);
+    double pad = 1e-6 * hypot(hypot(e.x, e.y), e.z);
+    if (!(pad > 0.0)) pad = 1e-6 * fmax(1.0, fmax(rt_vec_max_abs(b.lo), rt_vec_max_abs(b.hi)));
+    for (int a = 0; a < 3; a++) {
+        double lo = axis_of(b.lo, a), hi = axis_of(b.hi, a);
+        double plo = lo - pad, phi = hi + pad;
+        /* Far from the origin the pad can vanish in rounding: one ulp at least. */
+        if (!(plo < lo)) plo = nextafter(lo, -INFINITY);
+        if (!(phi > hi)) phi = nextafter(hi, INFINITY);
+        set_axis(&out->lo, a, plo);
+        set_axis(&out->hi, a, phi);
+    }
+    return 1;
+}
+
+/* Runs the subdivision for every object and fills the grid's lists. */
+static int build_lists(build *bd, char *msg, size_t msg_len)
+{
+    rt_grid *g = bd->g;
+    const rt_scene *s = bd->scene;
+    size_t n = s->object_count, cells = rt_grid_cell_count(g);
+
+    bd->pair_start = malloc((n + 1) * sizeof *bd->pair_start);
+    g->list_start = calloc(cells + 1, sizeof *g->list_start);
+    if (!bd->pair_start || !g->list_start) goto nomem;
+
+    int root[3] = {0, 0, 0};
+    for (size_t o = 0; o < n; o++) {
+        bd->pair_start[o] = bd->cell_n;
+        if (g->empty || box_is_empty(&s->objects[o].bounds)) continue;
+        if (!prepare_object(bd, o)) goto nomem;
+        bd->units = 0;
+        subdivide(bd, 0, root);
+        if (bd->nomem) goto nomem;
+        g->units[o] = bd->units;
+        g->units_serial += bd->units;
+    }
+    bd->pair_start[n] = bd->cell_n;
+    if (bd->cell_n > UINT32_MAX) {
+        if (msg && msg_len)
+            snprintf(msg, msg_len, "%zu cell-list entries: at most %u are supported", bd->cell_n,
+                     (unsigned)UINT32_MAX);
+        return 0;
+    }
+
+    /* Counting sort by cell; objects arrive in order, so lists ascend. */
+    for (size_t i = 0; i < bd->cell_n; i++) g->list_start[bd->cells[i] + 1]++;
+    for (size_t c = 0; c < cells; c++) g->list_start[c + 1] += g->list_start[c];
+    g->list_objects = malloc((bd->cell_n ? bd->cell_n : 1) * sizeof *g->list_objects);
+    uint32_t *fill = malloc((cells ? cells : 1) * sizeof *fill);
+    if (!g->list_objects || !fill) {
+        free(fill);
+        goto nomem;
+    }
+    memcpy(fill, g->list_start, cells * sizeof *fill);
+    for (size_t o = 0; o < n; o++)
+        for (size_t i = bd->pair_start[o]; i < bd->pair_start[o + 1]; i++)
+            g->list_objects[fill[bd->cells[i]]++] = (uint32_t)o;
+    free(fill);
+    return 1;
+
+nomem:
+    set_msg(msg, msg_len, "out of memory building the cell lists");
+    return 0;
+}
+
+rt_grid *rt_grid_new(const rt_scene *scene, int nx, int ny, int nz, char *msg, size_t msg_len)
+{
+    if (!scene) {
+        set_msg(msg, msg_len, "no scene given for the grid");
+        return NULL;
+    }
+    int dims[3] = {nx, ny, nz};
+    for (int a = 0; a < 3; a++)
+        if (dims[a] < 1 || dims[a] > RT_GRID_MAX_CELLS_PER_AXIS) {
+            if (msg && msg_len)
+                snprintf(msg, msg_len, "cells %dx%dx%d: each axis needs 1 to %d cells", nx, ny, nz,
+                         RT_GRID_MAX_CELLS_PER_AXIS);
+            return NULL;
+        }
+    uint64_t total = (uint64_t)nx * (uint64_t)ny * (uint64_t)nz;
+    if (total > RT_GRID_MAX_CELLS) {
+        if (msg && msg_len)
+            snprintf(msg, msg_len, "cells %dx%dx%d: at most %u cells in all", nx, ny, nz,
+                     (unsigned)RT_GRID_MAX_CELLS);
+        return NULL;
+    }
+
+    rt_grid *g = calloc(1, sizeof *g);
+    if (!g) {
+        set_msg(msg, msg_len, "out of memory creating the grid");
+        return NULL;
+    }
+    memcpy(g->dims, dims, sizeof dims);
+    g->object_count = scene->object_count;
+    g->units = calloc(g->object_count ? g->object_count : 1, sizeof *g->units);
+    if (!g->units) {
+        set_msg(msg, msg_len, "out of memory creating the grid");
+        rt_grid_free(g);
+        return NULL;
+    }
+
+    if (!object_space(scene, &g->bounds)) {
+        /* Nothing to list: a unit box that no ray is ever sent into. */
+        g->empty = 1;
+        g->bounds.lo = rt_vec(-0.5, -0.5, -0.5);
+        g->bounds.hi = rt_vec(0.5, 0.5, 0.5);
+    }
+    rt_vec3 e = rt_vec_sub(g->bounds.hi, g->bounds.lo);
+    double diag = hypot(hypot(e.x, e.y), e.z);
+    if (!rt_vec_is_finite(e) || !isfinite(diag)) {
+        set_msg(msg, msg_len, "object space too large: its extent overflows a double");
+        rt_grid_free(g);
+        return NULL;
+    }
+    g->tolerance = 1e-9 * diag;
+    g->cell_size = rt_vec(e.x / nx, e.y / ny, e.z / nz);
+
+    build bd;
+    memset(&bd, 0, sizeof bd);
+    bd.scene = scene;
+    bd.g = g;
+    int count[3];
+    for (int a = 0; a < 3; a++) {
+        count[a] = factorise(dims[a], bd.factor[a]);
+        if (count[a] > bd.levels) bd.levels = count[a];
+    }
+    for (int a = 0; a < 3; a++) {
+        for (int l = count[a]; l < bd.levels; l++) bd.factor[a][l] = 1;
+        bd.span[a][0] = dims[a];
+        for (int l = 0; l < bd.levels; l++) bd.span[a][l + 1] = bd.span[a][l] / bd.factor[a][l];
+    }
+
+    int ok = build_lists(&bd, msg, msg_len);
+    free(bd.loop);
+    free(bd.cells);
+    free(bd.pair_start);
+    if (!ok) {
+        rt_grid_free(g);
+        return NULL;
+    }
+    return g;
+}
+
+void rt_grid_free(rt_grid *g)
+{
+    if (!g) return;
+    free(g->list_start);
+    free(g->list_objects);
+    free(g->units);
+    free(g);
+}
+
+void rt_grid_dims(const rt_grid *g, int dims[3]) { memcpy(dims, g->dims, sizeof g->dims); }
+
+size_t rt_grid_cell_count(const rt_grid *g)
+{
+    return (size_t)g->dims[0] * (size_t)g->dims[1] * (size_t)g->dims[2];
+}
+
+int rt_grid_is_empty(const rt_grid *g) { return g->empty; }
+rt_box rt_grid_bounds(const rt_grid *g) { return g->bounds; }
+rt_vec3 rt_grid_cell_size(const rt_grid *g) { return g->cell_size; }
+
+rt_box rt_grid_cell_box(const rt_grid *g, int ix, int iy, int iz)
+{
+    rt_box b;
+    b.lo = rt_vec(rt_grid_plane(g, 0, ix), rt_grid_plane(g, 1, iy), rt_grid_plane(g, 2, iz));
+    b.hi = rt_vec(rt_grid_plane(g, 0, ix + 1), rt_grid_plane(g, 1, iy + 1), rt_grid_plane(g, 2, iz + 1));
+    return b;
+}
+
+const uint32_t *rt_grid_cell_objects(const rt_grid *g, size_t cell, size_t *count)
+{
+    if (cell >= rt_grid_cell_count(g)) {
+        *count = 0;
+        return NULL;
+    }
+    *count = g->list_start[cell + 1] - g->list_start[cell];
+    return g->list_objects + g->list_start[cell];
+}
+
+uint64_t rt_grid_list_entries(const rt_grid *g) { return g->list_start[rt_grid_cell_count(g)]; }
+double rt_grid_overlap_tolerance(const rt_grid *g) { return g->tolerance; }
+uint64_t rt_grid_units_serial(const rt_grid *g) { return g->units_serial; }
+
+uint64_t rt_grid_units_of_object(const rt_grid *g, size_t object)
+{
+    return object < g->object_count ? g->units[object] : 0;
+}
+
+uint64_t rt_grid_units_parallel(const rt_grid *g, int processors)
+{
+    size_t p = processors < 1 ? 1 : (size_t)processors;
+    size_t busy = p < g->object_count ? p : g->object_count;
+    uint64_t worst = 0;
+    /* Processor q handles objects q, q + P, q + 2P, ...: no buffer needed. */
+    for (size_t q = 0; q < busy; q++) {
+        uint64_t sum = 0;
+        for (size_t o = q; o < g->object_count; o += p) sum += g->units[o];
+        if (sum > worst) worst = sum;
+    }
+    return worst;
+}

@@ -1,0 +1,33 @@
+/* grid_internal.h - the grid's storage, shared by the kernel's own files only. */
+#ifndef RT_GRID_INTERNAL_H
+#define RT_GRID_INTERNAL_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "rt_grid.h"
+
+struct rt_grid {
+    int dims[3];            /* cells per axis */
+    int empty;              /* no objects: no ray enters */
+    rt_box bounds;          /* padded object space */
+    rt_vec3 cell_size;      /* edge lengths of a cell */
+    double tolerance;       /* overlap tests grow cells by this much (scene units) */
+    uint32_t *list_start;   /* cells + 1 offsets into list_objects (compressed rows) */
+    uint32_t *list_objects; /* object indices, ascending within a cell */
+    uint64_t *units;        /* preprocessing units per object */
+    uint64_t units_serial;  /* sum of units */
+    size_t object_count;
+};
+
+/* Coordinate of boundary plane k (0..dims[axis]) on an axis: every part of
+ * the kernel uses this one formula, so cell faces agree bit for bit. */
+static inline double rt_grid_plane(const struct rt_grid *g, int axis, int k)
+{
+    double lo = rt_vec_axis(g->bounds.lo, axis), hi = rt_vec_axis(g->bounds.hi, axis);
+    if (k <= 0) return lo;
+    if (k >= g->dims[axis]) return hi;
+    return lo + (hi - lo) * ((double)k / (double)g->dims[axis]);
+}
+
+#endif

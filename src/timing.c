@@ -1,0 +1,192 @@
+/* timing.c - the timing table: defaults, `key value` files, and costs. */
+#include <ctype.h>
+#include <errno.h>
+#include <math.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "rt_timing.h"
+
+typedef struct timing_key {
+    const char *name;     /* as written in files */
+    size_t offset;        /* into rt_timing */
+    int positive;         /* must be > 0 (a divisor), else >= 0 */
+    double default_value;
+} timing_key;
+
+/* One row per field: names, defaults and checks live in one place. */
+static const timing_key keys[] = {
+    {"test_miss", offsetof(rt_timing, test_miss_us), 0, 1300.0},
+    {"test_hit", offsetof(rt_timing, test_hit_us), 0, 1750.0},
+    {"dda_step", offsetof(rt_timing, dda_step_us), 0, 340.0},
+    {"shading", offsetof(rt_timing, shading_us), 0, 4600.0},
+    {"reflection", offsetof(rt_timing, reflection_us), 0, 680.0},
+    {"refraction", offsetof(rt_timing, refraction_us), 0, 1100.0},
+    {"packet_analysis", offsetof(rt_timing, packet_analysis_us), 0, 580.0},
+    {"packet_creation", offsetof(rt_timing, packet_creation_us), 0, 1600.0},
+    {"fb_write", offsetof(rt_timing, fb_write_us), 0, 0.0},
+    {"link", offsetof(rt_timing, link_us), 0, 50.0},
+    {"link_bytes_per_us", offsetof(rt_timing, link_bytes_per_us), 0, 0.0},
+    {"packet_bytes", offsetof(rt_timing, packet_bytes), 1, 28.0},
+    {"host_inject", offsetof(rt_timing, host_inject_us), 0, 0.0},
+    {"bus_width_bytes", offsetof(rt_timing, bus_width_bytes), 1, 2.0},
+    {"bus_cycle", offsetof(rt_timing, bus_cycle_us), 0, 0.5},
+    {"bus_arbitration", offsetof(rt_timing, bus_arbitration_us), 0, 0.25},
+    {"memory_access", offsetof(rt_timing, memory_access_us), 0, 0.5},
+};
+#define KEY_COUNT (sizeof keys / sizeof keys[0])
+
+static double *field(rt_timing *t, size_t i) { return (double *)((char *)t + keys[i].offset); }
+
+static const double *cfield(const rt_timing *t, size_t i)
+{
+    return (const double *)((const char *)t + keys[i].offset);
+}
+
+void rt_timing_defaults(rt_timing *t)
+{
+    for (size_t i = 0; i < KEY_COUNT; i++) *field(t, i) = keys[i].default_value;
+}
+
+static int find_key(const char *name)
+{
+    for (size_t i = 0; i < KEY_COUNT; i++)
+        if (strcmp(keys[i].name, name) == 0) return (int)i;
+    return -1;
+}
+
+/* Message for a value outside a key's range (no prefix). */
+static void range_msg(size_t i, char *msg, size_t msg_len)
+{
+    if (msg && msg_len)
+        snprintf(msg, msg_len, "'%s' needs a %s number", keys[i].name,
+                 keys[i].positive ? "positive" : "non-negative");
+}
+
+rt_status rt_timing_set(rt_timing *t, const char *key, double value, char *msg, size_t msg_len)
+{
+    int i = key ? find_key(key) : -1;
+    if (i < 0) {
+        if (msg && msg_len) snprintf(msg, msg_len, "unknown key '%s'", key ? key : "");
+        return RT_ERR_INVALID;
+    }
+    if (!isfinite(value) || value < 0.0 || (keys[i].positive && !(value > 0.0))) {
+        range_msg((size_t)i, msg, msg_len);
+        return RT_ERR_INVALID;
+    }
+    *field(t, (size_t)i) = value;
+    return RT_OK;
+}
+
+static const char *skip_space(const char *p)
+{
+    while (*p && isspace((unsigned char)*p)) p++;
+    return p;
+}
+
+/* Applies one line to *t; 0 with a message (no prefix) if malformed. */
+static int parse_line(char *line, rt_timing *t, char *msg, size_t msg_len)
+{
+    char *hash = strchr(line, '#');
+    if (hash) *hash = '\0';
+    const char *p = skip_space(line);
+    if (!*p) return 1;
+
+    const char *key = p;
+    while (*p && !isspace((unsigned char)*p) && *p != '=') p++;
+    size_t key_len = (size_t)(p - key);
+    p = skip_space(p);
+    if (*p == '=') p = skip_space(p + 1);
+    const char *value = p;
+    while (*p && !isspace((unsigned char)*p)) p++;
+    size_t value_len = (size_t)(p - value);
+    p = skip_space(p);
+    if (key_len == 0 || value_len == 0 || *p) {
+        if (msg && msg_len) snprintf(msg, msg_len, "expected 'key value'");
+        return 0;
+    }
+
+    char name[64];
+    if (key_len >= sizeof name) key_len = sizeof name - 1; /* too long to be a key anyway */
+    memcpy(name, key, key_len);
+    name[key_len] = '\0';
+    int i = find_key(name);
+    if (i < 0) {
+        if (msg && msg_len) snprintf(msg, msg_len, "unknown key '%s'", name);
+        return 0;
+    }
+    char *end;
+    errno = 0;
+    double v = strtod(value, &end);
+    if (end != value + value_len || errno == ERANGE) {
+        range_msg((size_t)i, msg, msg_len);
+        return 0;
+    }
+    return rt_timing_set(t, name, v, msg, msg_len) == RT_OK;
+}
+
+rt_status rt_timing_load(const char *path, rt_timing *timing, char *msg, size_t msg_len)
+{
+    FILE *f = fopen(path, "r");
+    if (!f) {
+        if (msg && msg_len) snprintf(msg, msg_len, "%s: cannot open: %s", path, strerror(errno));
+        return RT_ERR_IO;
+    }
+    /* Work on a copy: a bad file leaves the caller's table untouched. */
+    rt_timing t = *timing;
+    char *line = NULL;
+    size_t cap = 0;
+    long number = 0;
+    rt_status st = RT_OK;
+    char why[256];
+    while (getline(&line, &cap, f) != -1) {
+        number++;
+        if (!parse_line(line, &t, why, sizeof why)) {
+            if (msg && msg_len) snprintf(msg, msg_len, "%s:%ld: %s", path, number, why);
+            st = RT_ERR_PARSE;
+            break;
+        }
+    }
+    if (st == RT_OK && ferror(f)) {
+        if (msg && msg_len) snprintf(msg, msg_len, "%s: read error", path);
+        st = RT_ERR_IO;
+    }
+    free(line);
+    fclose(f);
+    if (st == RT_OK) *timing = t;
+    return st;
+}
+
+size_t rt_timing_key_count(void) { return KEY_COUNT; }
+
+const char *rt_timing_key_name(size_t index) { return index < KEY_COUNT ? keys[index].name : NULL; }
+
+/* NAN for an index past the table. */
+double rt_timing_get(const rt_timing *timing, size_t index)
+{
+    return index < KEY_COUNT ? *cfield(timing, index) : NAN;
+}
+
+double rt_timing_step_us(const rt_timing *t, const rt_op_counts *ops)
+{
+    return (double)ops->tests_missed * t->test_miss_us + (double)ops->tests_hit * t->test_hit_us +
+           (double)ops->dda_steps * t->dda_step_us + (double)ops->shadings * t->shading_us +
+           (double)ops->reflection_vectors * t->reflection_us +
+           (double)ops->refraction_vectors * t->refraction_us +
+           (double)ops->packets_analysed * t->packet_analysis_us +
+           (double)ops->packets_created * t->packet_creation_us +
+           (double)ops->fb_writes * t->fb_write_us;
+}
+
+double rt_timing_link_packet_us(const rt_timing *t)
+{
+    return t->link_bytes_per_us > 0.0 ? t->packet_bytes / t->link_bytes_per_us : t->link_us;
+}
+
+double rt_timing_bus_transfer_us(const rt_timing *t, double bytes)
+{
+    if (!(bytes > 0.0)) return 0.0;
+    return ceil(bytes / t->bus_width_bytes) * t->bus_cycle_us;
+}

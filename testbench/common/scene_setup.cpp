@@ -1,0 +1,41 @@
+// scene_setup.cpp - loading a scene file and building its grid.
+#include "scene_setup.h"
+
+#include <cstdio>
+
+#include "rt_nff.h"
+#include "user_error.h"
+
+namespace torusrt {
+
+namespace {
+void print_warning(void *ctx, const char *message)
+{
+    if (!*static_cast<bool *>(ctx)) std::fprintf(stderr, "%s\n", message);
+}
+}  // namespace
+
+LoadedScene load_scene(const std::string &path, unsigned width, unsigned height,
+                       const std::array<int, 3> &cells, bool quiet)
+{
+    char msg[RT_MSG_LEN] = "";
+    rt_scene *raw = nullptr;
+    bool q = quiet;
+    if (rt_nff_load(path.c_str(), &raw, msg, sizeof msg, print_warning, &q) != RT_OK)
+        throw UserError(msg);
+    LoadedScene out;
+    out.scene.reset(raw);
+    if (width || height) {
+        const rt_camera *cam = rt_scene_camera(raw);
+        unsigned w = width ? width : cam->width, h = height ? height : cam->height;
+        if (rt_scene_set_resolution(raw, w, h) != RT_OK)
+            throw UserError("--size " + std::to_string(w) + "x" + std::to_string(h) +
+                                ": each side must be 1 to " + std::to_string(RT_SCENE_MAX_RESOLUTION),
+                            2);
+    }
+    out.grid.reset(rt_grid_new(raw, cells[0], cells[1], cells[2], msg, sizeof msg));
+    if (!out.grid) throw UserError(std::string("--cells: ") + msg, 2);
+    return out;
+}
+
+}  // namespace torusrt

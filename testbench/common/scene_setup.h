@@ -1,0 +1,22 @@
+// scene_setup.h - loading a scene file and building its grid, with user-facing messages.
+#pragma once
+
+#include <array>
+#include <string>
+
+#include "kernel_handles.h"
+
+namespace torusrt {
+
+struct LoadedScene {
+    ScenePtr scene;
+    GridPtr grid;
+};
+
+// Loads an NFF file (warnings go to stderr), applies an optional resolution
+// override (width/height 0 = keep the file's) and builds a grid with `cells`.
+// Throws UserError with "FILE:LINE: message" style text on failure.
+LoadedScene load_scene(const std::string &path, unsigned width, unsigned height,
+                       const std::array<int, 3> &cells, bool quiet);
+
+}  // namespace torusrt

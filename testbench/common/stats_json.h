@@ -1,0 +1,18 @@
+// stats_json.h - JSON forms of the kernel's counters, shared by every report.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "rt_grid.h"
+#include "rt_ops.h"
+#include "rt_render.h"
+
+namespace torusrt {
+
+nlohmann::json ops_json(const rt_op_counts &ops);
+// {"created": {"ray", "shadow", "total"}, "consumed": {...}, ...}
+nlohmann::json packets_json(const rt_packet_totals &totals);
+// Preprocessing: serial units and the parallel figure for P = 1, 2, 4, ... 64 and `extra`.
+nlohmann::json preprocess_json(const rt_grid *grid, int extra_processors);
+
+}  // namespace torusrt

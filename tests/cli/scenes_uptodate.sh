@@ -1,0 +1,161 @@
+#!/usr/bin/env bash
+# scenes_uptodate.sh - the checked-in scenes/*.nff are exactly what torusrt-genscenes writes.
+#
+# Usage: bash tests/cli/scenes_uptodate.sh BUILD_DIR SOURCE_DIR
+# Runs BUILD_DIR/torusrt-genscenes into a temporary folder, compares every file byte for byte
+# with SOURCE_DIR/scenes/NAME.nff, checks that the two sets of names (and --list) agree, that
+# the paper's scenes hold 369 and 123 objects, and that the generator is deterministic.
+# Prints "N passed, M failed"; exits 1 on any failure.
+set -u
+
+if [ $# -ne 2 ]; then
+    echo "usage: bash $0 BUILD_DIR SOURCE_DIR" >&2
+    exit 2
+fi
+build=$1
+src=$2
+gen="$build/torusrt-genscenes"
+scenes="$src/scenes"
+
+passed=0
+failed=0
+pass() { passed=$((passed + 1)); }
+fail() {
+    echo "FAIL: $*"
+    failed=$((failed + 1))
+}
+finish() {
+    echo "$passed passed, $failed failed"
+    [ "$failed" -eq 0 ]
+    exit $?
+}
+
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/scenes_uptodate.XXXXXX") || exit 1
+trap 'rm -rf "$tmp"' EXIT
+
+if [ ! -x "$gen" ]; then
+    fail "$gen does not exist or is not executable"
+    finish
+fi
+
+# 1. Generate everything.
+mkdir -p "$tmp/a" "$tmp/b"
+if "$gen" "$tmp/a" >"$tmp/log" 2>&1; then
+    pass
+else
+    fail "torusrt-genscenes $tmp/a exited non-zero:"
+    sed 's/^/    /' "$tmp/log"
+    finish
+fi
+
+# 2. Every generated file is checked in, byte for byte.
+for f in "$tmp"/a/*.nff; do
+    [ -e "$f" ] || { fail "the generator wrote no .nff files"; break; }
+    name=$(basename "$f")
+    if [ ! -f "$scenes/$name" ]; then
+        fail "$name is generated but scenes/$name is not checked in"
+    elif cmp -s "$f" "$scenes/$name"; then
+        pass
+    else
+        fail "scenes/$name differs from the generator's output" \
+             "(regenerate: build/torusrt-genscenes scenes)"
+        diff "$scenes/$name" "$f" | head -n 10 | sed 's/^/    /'
+    fi
+done
+
+# 3. Every checked-in scene is generated.
+for f in "$scenes"/*.nff; do
+    [ -e "$f" ] || continue
+    name=$(basename "$f")
+    if [ -f "$tmp/a/$name" ]; then
+        pass
+    else
+        fail "scenes/$name is checked in but torusrt-genscenes does not write it"
+    fi
+done
+
+# 4. --list names the same set.
+if "$gen" --list >"$tmp/list" 2>&1; then
+    listed=$(awk '{print $1 ".nff"}' "$tmp/list" | sort)
+    written=$(cd "$tmp/a" && ls -1 -- *.nff | sort)
+    if [ "$listed" = "$written" ]; then
+        pass
+    else
+        fail "--list and the written files disagree"
+        diff <(echo "$listed") <(echo "$written") | sed 's/^/    /'
+    fi
+else
+    fail "torusrt-genscenes --list exited non-zero"
+fi
+
+# 5. The paper's object counts.
+count_objects() { awk '$1 == "s" || $1 == "p" || $1 == "pp" || $1 == "c" {n++} END {print n + 0}' "$1"; }
+f1="$scenes/paper-image1.nff"
+if [ -f "$f1" ]; then
+    spheres=$(grep -c '^s ' "$f1")
+    objects=$(count_objects "$f1")
+    if [ "$spheres" -eq 369 ] && [ "$objects" -eq 369 ]; then
+        pass
+    else
+        fail "paper-image1.nff: $spheres 's ' lines and $objects objects, want 369 spheres only"
+    fi
+    if awk '$1 == "f" && ($6 != 0 || $8 != 0) {bad = 1} END {exit bad}' "$f1"; then
+        pass
+    else
+        fail "paper-image1.nff has a material with Ks or T not 0 (must be diffuse only)"
+    fi
+else
+    fail "scenes/paper-image1.nff is missing"
+fi
+f2="$scenes/paper-image2.nff"
+if [ -f "$f2" ]; then
+    objects=$(count_objects "$f2")
+    if [ "$objects" -eq 123 ]; then
+        pass
+    else
+        fail "paper-image2.nff has $objects objects, want 123 (2 large + 121 small spheres)"
+    fi
+else
+    fail "scenes/paper-image2.nff is missing"
+fi
+for f in "$f1" "$f2"; do
+    [ -f "$f" ] || continue
+    if grep -q '^resolution 144 144$' "$f"; then
+        pass
+    else
+        fail "$(basename "$f") is not 144 x 144"
+    fi
+done
+
+# 6. Deterministic: a second run, and a run naming two scenes, write the same bytes;
+#    no temporary files are left behind.
+if "$gen" "$tmp/b" paper-image1 one-cell >/dev/null 2>&1 &&
+    cmp -s "$tmp/a/paper-image1.nff" "$tmp/b/paper-image1.nff" &&
+    cmp -s "$tmp/a/one-cell.nff" "$tmp/b/one-cell.nff" &&
+    [ "$(ls -1 "$tmp/b" | wc -l)" -eq 2 ]; then
+    pass
+else
+    fail "writing only paper-image1 and one-cell did not reproduce the same two files"
+fi
+if ls "$tmp"/a/*.tmp >/dev/null 2>&1; then
+    fail "temporary .tmp files left behind"
+else
+    pass
+fi
+
+# 7. Errors: unknown name and unwritable folder exit non-zero and write nothing.
+mkdir -p "$tmp/c"
+if "$gen" "$tmp/c" no-such-scene >/dev/null 2>&1; then
+    fail "an unknown scene name did not make torusrt-genscenes fail"
+elif [ -n "$(ls -A "$tmp/c")" ]; then
+    fail "an unknown scene name still wrote files"
+else
+    pass
+fi
+if "$gen" "$tmp/missing/folder" empty >/dev/null 2>&1; then
+    fail "writing into a missing folder did not make torusrt-genscenes fail"
+else
+    pass
+fi
+
+finish

@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Nonsense options give a clear message naming the option, a non-zero exit, and no output files.
+source "$(dirname "$0")/common.bash" "$@"
+f="$SRC/scenes/paper-image2.nff"
+bad() {
+  local expect=$1; shift
+  rm -rf "$TMP/out"; mkdir -p "$TMP/out"
+  "$BUILD/torusrt-sim" "$f" -o "$TMP/out/x.png" --stats "$TMP/out/x.json" --vcd "$TMP/out/x.vcd" "$@" \
+    > "$TMP/stdout" 2> "$TMP/stderr"
+  local rc=$?
+  if [ $rc -eq 0 ] || [ $rc -ge 128 ]; then fail "$* exited $rc"; return; fi
+  if ! grep -q -- "$expect" "$TMP/stderr"; then fail "$*: message lacks '$expect': $(cat "$TMP/stderr")"; return; fi
+  if [ -n "$(ls -A "$TMP/out")" ]; then fail "$*: left files $(ls "$TMP/out")"; return; fi
+  pass
+}
+bad "--ips" --ips 0
+bad "--ips" --ips 0x2
+bad "--ips" --ips 2x2x2x2
+bad "--ips" --ips -4
+bad "--ips" --ips abc
+bad "--map" --map spiral
+bad "--map" --map block-cyclic:0
+bad "--topology" --topology ring
+bad "--link-us" --link-us -5
+bad "--link-us" --link-us nan
+bad "--packet-bytes" --packet-bytes -1
+bad "--cells" --cells 0
+bad "--cells" --cells 2x2
+bad "--size" --size 0x10
+bad "--quantum" --style lt --quantum 5
+bad "--quantum" --quantum 5ms
+bad "--style" --style fast
+bad "--cluster" --cluster 0
+bad "--queue" --queue -1
+bad "--min-weight" --min-weight -1
+bad "--trace-ips" --ips 2 --trace-ips 7
+bad "--data" --data everywhere
+bad "--t1" --t1 0
+bad "frobnicate" --frobnicate
+bad "cannot open" --timing "$TMP/missing.timing"
+printf 'test_miss -3\n' > "$TMP/neg.timing"
+bad "neg.timing:1:" --timing "$TMP/neg.timing"
+finish

@@ -1,0 +1,248 @@
+// mapping_test.cpp - cell-to-processor mappings and the memory they need.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "rt_grid.h"
+#include "rt_mapping.h"
+#include "rt_memory.h"
+#include "rt_scene.h"
+
+namespace {
+
+struct SceneDeleter {
+    void operator()(rt_scene *s) const { rt_scene_free(s); }
+};
+struct GridDeleter {
+    void operator()(rt_grid *g) const { rt_grid_free(g); }
+};
+using ScenePtr = std::unique_ptr<rt_scene, SceneDeleter>;
+using GridPtr = std::unique_ptr<rt_grid, GridDeleter>;
+
+std::vector<int> owners_1d(rt_map_kind kind, int block, int cells, int procs)
+{
+    std::vector<int> v;
+    for (int c = 0; c < cells; c++) v.push_back(rt_mapping_axis_owner(kind, block, c, cells, procs));
+    return v;
+}
+
+} // namespace
+
+TEST(MappingAxis, TwentyFourCellsOverFour)
+{
+    EXPECT_EQ(owners_1d(RT_MAP_BLOCK, 0, 24, 4),
+              (std::vector<int>{0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 1, 1, 2, 2, 2, 2, 2, 2, 3, 3, 3, 3, 3, 3}));
+    EXPECT_EQ(owners_1d(RT_MAP_CYCLIC, 0, 24, 4),
+              (std::vector<int>{0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3}));
+    EXPECT_EQ(owners_1d(RT_MAP_BLOCK_CYCLIC, 2, 24, 4),
+              (std::vector<int>{0, 0, 1, 1, 2, 2, 3, 3, 0, 0, 1, 1, 2, 2, 3, 3, 0, 0, 1, 1, 2, 2, 3, 3}));
+    EXPECT_EQ(owners_1d(RT_MAP_BLOCK_CYCLIC, 3, 24, 4),
+              (std::vector<int>{0, 0, 0, 1, 1, 1, 2, 2, 2, 3, 3, 3, 0, 0, 0, 1, 1, 1, 2, 2, 2, 3, 3, 3}));
+}
+
+TEST(MappingAxis, TenCellsOverThree)
+{
+    // floor(c * 3 / 10): blocks of 4, 3, 3.
+    EXPECT_EQ(owners_1d(RT_MAP_BLOCK, 0, 10, 3), (std::vector<int>{0, 0, 0, 0, 1, 1, 1, 2, 2, 2}));
+    EXPECT_EQ(owners_1d(RT_MAP_CYCLIC, 0, 10, 3), (std::vector<int>{0, 1, 2, 0, 1, 2, 0, 1, 2, 0}));
+    EXPECT_EQ(owners_1d(RT_MAP_BLOCK_CYCLIC, 2, 10, 3), (std::vector<int>{0, 0, 1, 1, 2, 2, 0, 0, 1, 1}));
+}
+
+TEST(MappingAxis, BlockCyclicSpecialCases)
+{
+    for (int n = 1; n <= 48; n++)
+        for (int p = 1; p <= n; p++) {
+            EXPECT_EQ(owners_1d(RT_MAP_BLOCK_CYCLIC, 1, n, p), owners_1d(RT_MAP_CYCLIC, 0, n, p)) << n << "/" << p;
+            if (n % p == 0) {
+                EXPECT_EQ(owners_1d(RT_MAP_BLOCK_CYCLIC, n / p, n, p), owners_1d(RT_MAP_BLOCK, 0, n, p))
+                    << n << "/" << p;
+            }
+        }
+}
+
+TEST(MappingAxis, EveryProcessorOwnsCellsWhenNotMoreThanCells)
+{
+    for (rt_map_kind kind : {RT_MAP_BLOCK, RT_MAP_CYCLIC, RT_MAP_BLOCK_CYCLIC})
+        for (int n = 1; n <= 40; n++)
+            for (int p = 1; p <= n; p++) {
+                // Block-cyclic with the largest block that still reaches every processor.
+                int block = kind == RT_MAP_BLOCK_CYCLIC ? std::max(1, n / p) : 0;
+                std::vector<int> o = owners_1d(kind, block, n, p);
+                std::set<int> used(o.begin(), o.end());
+                EXPECT_EQ(int(used.size()), p) << "kind " << kind << " " << n << "/" << p;
+                EXPECT_GE(*used.begin(), 0);
+                EXPECT_LT(*used.rbegin(), p);
+                if (kind == RT_MAP_BLOCK) {
+                    EXPECT_TRUE(std::is_sorted(o.begin(), o.end()));
+                }
+            }
+}
+
+TEST(MappingAxis, MoreProcessorsThanCells)
+{
+    EXPECT_EQ(owners_1d(RT_MAP_BLOCK, 0, 3, 8), (std::vector<int>{0, 2, 5}));
+    EXPECT_EQ(owners_1d(RT_MAP_CYCLIC, 0, 3, 8), (std::vector<int>{0, 1, 2}));
+    EXPECT_EQ(owners_1d(RT_MAP_BLOCK_CYCLIC, 2, 3, 8), (std::vector<int>{0, 0, 1}));
+}
+
+TEST(MappingAxis, InvalidArgumentsGiveMinusOne)
+{
+    EXPECT_EQ(rt_mapping_axis_owner(RT_MAP_CYCLIC, 0, 0, 10, 0), -1);
+    EXPECT_EQ(rt_mapping_axis_owner(RT_MAP_BLOCK_CYCLIC, 0, 0, 10, 2), -1);
+    EXPECT_EQ(rt_mapping_axis_owner(RT_MAP_BLOCK, 0, 10, 10, 2), -1);
+}
+
+TEST(MappingFill, ThreeDimensionalIds)
+{
+    const int cells[3] = {4, 3, 2}, procs[3] = {2, 3, 2};
+    std::vector<int32_t> owner(24, -7);
+    char msg[RT_MSG_LEN] = "";
+    ASSERT_EQ(rt_mapping_fill(cells, procs, RT_MAP_CYCLIC, 0, owner.data(), msg, sizeof msg), RT_OK) << msg;
+    for (int z = 0; z < 2; z++)
+        for (int y = 0; y < 3; y++)
+            for (int x = 0; x < 4; x++) {
+                const int32_t c[3] = {x, y, z};
+                EXPECT_EQ(owner[rt_grid_index(cells, c)], (x % 2) + 2 * (y % 3 + 3 * (z % 2)));
+            }
+    ASSERT_EQ(rt_mapping_fill(cells, procs, RT_MAP_BLOCK, 0, owner.data(), msg, sizeof msg), RT_OK) << msg;
+    const int32_t last[3] = {3, 2, 1};
+    EXPECT_EQ(owner[rt_grid_index(cells, last)], 1 + 2 * (2 + 3 * 1));
+    const int32_t first[3] = {1, 0, 0};
+    EXPECT_EQ(owner[rt_grid_index(cells, first)], 0);
+}
+
+TEST(MappingFill, MoreProcessorsThanCellsWorks)
+{
+    const int cells[3] = {2, 2, 2}, procs[3] = {4, 4, 4};
+    std::vector<int32_t> owner(8, -1);
+    char msg[RT_MSG_LEN] = "";
+    for (rt_map_kind kind : {RT_MAP_BLOCK, RT_MAP_CYCLIC, RT_MAP_BLOCK_CYCLIC}) {
+        ASSERT_EQ(rt_mapping_fill(cells, procs, kind, 1, owner.data(), msg, sizeof msg), RT_OK) << msg;
+        std::set<int32_t> used(owner.begin(), owner.end());
+        EXPECT_EQ(used.size(), 8u); // each cell its own processor
+        for (int32_t o : owner) EXPECT_TRUE(o >= 0 && o < 64);
+    }
+}
+
+TEST(MappingFill, RejectsBadArguments)
+{
+    const int cells[3] = {4, 4, 4};
+    std::vector<int32_t> owner(64);
+    char msg[RT_MSG_LEN] = "";
+    const int zero[3] = {2, 0, 2};
+    EXPECT_EQ(rt_mapping_fill(cells, zero, RT_MAP_BLOCK, 0, owner.data(), msg, sizeof msg), RT_ERR_INVALID);
+    EXPECT_NE(std::string(msg).find("2x0x2"), std::string::npos) << msg;
+    const int procs[3] = {2, 2, 2};
+    EXPECT_EQ(rt_mapping_fill(cells, procs, RT_MAP_BLOCK_CYCLIC, 0, owner.data(), msg, sizeof msg), RT_ERR_INVALID);
+    EXPECT_NE(std::string(msg).find("block"), std::string::npos) << msg;
+    // The block size matters only for block-cyclic.
+    EXPECT_EQ(rt_mapping_fill(cells, procs, RT_MAP_CYCLIC, 0, owner.data(), msg, sizeof msg), RT_OK);
+}
+
+// Hand count: s0 (0,0,0) r 1 with material 0; s1 (4,0,0) r 1 and the
+// triangle (6,-1,0) (8,-1,0) (7,1,.5) with material 1. Object space x in
+// [-1, 8] (+pad), split at x = 3.5: cell 0 lists {s0, s1}, cell 1 {s1, t2}.
+// Sizes: sphere 20 bytes, triangle 88, material 36.
+//   owner 0: objects s0 s1 = 40, materials 0 and 1 = 72, lists 4 + 2*4 = 12
+//   owner 1: objects s1 t2 = 108, material 1 = 36, lists 4 + 2*4 = 12
+//   whole:   objects 128, materials 72, lists 2*4 + 4*4 = 24
+TEST(Memory, HandCountTinyScene)
+{
+    ScenePtr s(rt_scene_new());
+    rt_material m0 = rt_material_default(), m1 = rt_material_default();
+    m1.ks = 0.5;
+    ASSERT_EQ(rt_scene_set_material(s.get(), &m0), RT_OK);
+    ASSERT_EQ(rt_scene_add_sphere(s.get(), rt_vec(0, 0, 0), 1.0), RT_OK);
+    ASSERT_EQ(rt_scene_set_material(s.get(), &m1), RT_OK);
+    ASSERT_EQ(rt_scene_add_sphere(s.get(), rt_vec(4, 0, 0), 1.0), RT_OK);
+    rt_vec3 v[3] = {rt_vec(6, -1, 0), rt_vec(8, -1, 0), rt_vec(7, 1, 0.5)};
+    rt_vec3 n[3] = {rt_vec(0, 0, 1), rt_vec(0, 0, 1), rt_vec(0, 0, 1)};
+    ASSERT_EQ(rt_scene_add_patch(s.get(), v, n, 3), RT_OK);
+    ASSERT_EQ(rt_scene_object_bytes(s.get(), 0), 20u);
+    ASSERT_EQ(rt_scene_object_bytes(s.get(), 2), 88u);
+    ASSERT_EQ(rt_scene_material_bytes(), 36u);
+
+    char msg[RT_MSG_LEN] = "";
+    GridPtr g(rt_grid_new(s.get(), 2, 1, 1, msg, sizeof msg));
+    ASSERT_TRUE(g) << msg;
+    size_t count;
+    const uint32_t *l0 = rt_grid_cell_objects(g.get(), 0, &count);
+    ASSERT_EQ(std::vector<uint32_t>(l0, l0 + count), (std::vector<uint32_t>{0, 1}));
+    const uint32_t *l1 = rt_grid_cell_objects(g.get(), 1, &count);
+    ASSERT_EQ(std::vector<uint32_t>(l1, l1 + count), (std::vector<uint32_t>{1, 2}));
+
+    const int32_t owner[2] = {0, 1};
+    rt_memory_use use[2];
+    ASSERT_EQ(rt_memory_per_owner(s.get(), g.get(), owner, 2, use), RT_OK);
+    EXPECT_EQ(use[0].objects, 2u);
+    EXPECT_EQ(use[0].object_bytes, 40u);
+    EXPECT_EQ(use[0].material_bytes, 72u);
+    EXPECT_EQ(use[0].list_bytes, 12u);
+    EXPECT_EQ(rt_memory_total(&use[0]), 124u);
+    EXPECT_EQ(use[1].objects, 2u);
+    EXPECT_EQ(use[1].object_bytes, 108u);
+    EXPECT_EQ(use[1].material_bytes, 36u);
+    EXPECT_EQ(use[1].list_bytes, 12u);
+    EXPECT_EQ(rt_memory_total(&use[1]), 156u);
+
+    rt_memory_use whole = rt_memory_whole_scene(s.get(), g.get());
+    EXPECT_EQ(whole.objects, 3u);
+    EXPECT_EQ(whole.object_bytes, 128u);
+    EXPECT_EQ(whole.material_bytes, 72u);
+    EXPECT_EQ(whole.list_bytes, 24u);
+    EXPECT_EQ(rt_memory_total(&whole), 224u);
+
+    // One owner of both cells stores s1 and material 1 once.
+    const int32_t single[2] = {0, 0};
+    ASSERT_EQ(rt_memory_per_owner(s.get(), g.get(), single, 1, use), RT_OK);
+    EXPECT_EQ(use[0].objects, 3u);
+    EXPECT_EQ(rt_memory_total(&use[0]), 224u);
+
+    // Cells with an owner outside 0..owners-1 are skipped.
+    const int32_t partial[2] = {-1, 0};
+    ASSERT_EQ(rt_memory_per_owner(s.get(), g.get(), partial, 1, use), RT_OK);
+    EXPECT_EQ(rt_memory_total(&use[0]), 156u);
+    EXPECT_EQ(rt_memory_per_owner(s.get(), g.get(), owner, 0, use), RT_ERR_INVALID);
+}
+
+TEST(Memory, WholeSceneBoundsEveryOwner)
+{
+    ScenePtr s(rt_scene_new());
+    uint64_t state = 12345;
+    auto rnd = [&]() {
+        state = state * 6364136223846793005ull + 1442695040888963407ull;
+        return double(state >> 11) * 0x1.0p-53;
+    };
+    for (int i = 0; i < 200; i++) {
+        if (i % 40 == 0) {
+            rt_material m = rt_material_default();
+            m.kd = rnd();
+            ASSERT_EQ(rt_scene_set_material(s.get(), &m), RT_OK);
+        }
+        ASSERT_EQ(rt_scene_add_sphere(s.get(), rt_vec(rnd() * 50, rnd() * 50, rnd() * 50), 0.5 + 3 * rnd()), RT_OK);
+    }
+    char msg[RT_MSG_LEN] = "";
+    GridPtr g(rt_grid_new(s.get(), 12, 12, 12, msg, sizeof msg));
+    ASSERT_TRUE(g) << msg;
+    const int cells[3] = {12, 12, 12}, procs[3] = {2, 2, 2};
+    std::vector<int32_t> owner(12 * 12 * 12);
+    for (rt_map_kind kind : {RT_MAP_BLOCK, RT_MAP_CYCLIC}) {
+        ASSERT_EQ(rt_mapping_fill(cells, procs, kind, 0, owner.data(), msg, sizeof msg), RT_OK);
+        std::vector<rt_memory_use> use(8);
+        ASSERT_EQ(rt_memory_per_owner(s.get(), g.get(), owner.data(), 8, use.data()), RT_OK);
+        rt_memory_use whole = rt_memory_whole_scene(s.get(), g.get());
+        uint64_t lists = 0;
+        for (const rt_memory_use &u : use) {
+            EXPECT_LE(rt_memory_total(&u), rt_memory_total(&whole));
+            EXPECT_LE(u.objects, whole.objects);
+            EXPECT_LE(u.material_bytes, whole.material_bytes);
+            lists += u.list_bytes;
+        }
+        EXPECT_EQ(lists, whole.list_bytes); // every cell owned exactly once
+    }
+}

@@ -1,0 +1,207 @@
+// timing_test.cpp - the timing table: defaults, files, costs.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "rt_timing.h"
+
+namespace {
+
+// Writes `text` to a fresh file under the test temp directory.
+std::string write_file(const std::string &name, const std::string &text)
+{
+    std::string path = testing::TempDir() + "torusrt_timing_" + name;
+    FILE *f = std::fopen(path.c_str(), "w");
+    EXPECT_NE(f, nullptr) << path;
+    if (f) {
+        std::fputs(text.c_str(), f);
+        std::fclose(f);
+    }
+    return path;
+}
+
+struct LoadResult {
+    rt_status status;
+    std::string msg;
+    rt_timing timing;
+};
+
+LoadResult load(const std::string &name, const std::string &text)
+{
+    LoadResult r;
+    rt_timing_defaults(&r.timing);
+    char msg[RT_MSG_LEN] = "";
+    std::string path = write_file(name, text);
+    r.status = rt_timing_load(path.c_str(), &r.timing, msg, sizeof msg);
+    r.msg = msg;
+    std::remove(path.c_str());
+    return r;
+}
+
+} // namespace
+
+TEST(Timing, Defaults)
+{
+    rt_timing t;
+    rt_timing_defaults(&t);
+    EXPECT_EQ(t.test_miss_us, 1300);
+    EXPECT_EQ(t.test_hit_us, 1750);
+    EXPECT_EQ(t.dda_step_us, 340);
+    EXPECT_EQ(t.shading_us, 4600);
+    EXPECT_EQ(t.reflection_us, 680);
+    EXPECT_EQ(t.refraction_us, 1100);
+    EXPECT_EQ(t.packet_analysis_us, 580);
+    EXPECT_EQ(t.packet_creation_us, 1600);
+    EXPECT_EQ(t.fb_write_us, 0);
+    EXPECT_EQ(t.link_us, 50);
+    EXPECT_EQ(t.link_bytes_per_us, 0);
+    EXPECT_EQ(t.packet_bytes, 28);
+    EXPECT_EQ(t.host_inject_us, 0);
+    EXPECT_EQ(t.bus_width_bytes, 2);
+    EXPECT_EQ(t.bus_cycle_us, 0.5);
+    EXPECT_EQ(t.bus_arbitration_us, 0.25);
+    EXPECT_EQ(t.memory_access_us, 0.5);
+}
+
+TEST(Timing, KeysNameEveryField)
+{
+    rt_timing t;
+    rt_timing_defaults(&t);
+    ASSERT_EQ(rt_timing_key_count(), 17u);
+    EXPECT_STREQ(rt_timing_key_name(0), "test_miss");
+    EXPECT_EQ(rt_timing_get(&t, 0), 1300);
+    bool seen_link = false, seen_width = false;
+    for (size_t i = 0; i < rt_timing_key_count(); i++) {
+        std::string k = rt_timing_key_name(i);
+        bool ends_us = k.size() > 3 && k.compare(k.size() - 3, 3, "_us") == 0;
+        EXPECT_EQ(ends_us, k == "link_bytes_per_us") << k; // the unit suffix is dropped
+        seen_link |= k == "link";
+        seen_width |= k == "bus_width_bytes";
+        // Setting through the key changes what get reports.
+        char msg[RT_MSG_LEN] = "";
+        ASSERT_EQ(rt_timing_set(&t, k.c_str(), 7.0 + double(i), msg, sizeof msg), RT_OK) << msg;
+        EXPECT_EQ(rt_timing_get(&t, i), 7.0 + double(i));
+    }
+    EXPECT_TRUE(seen_link);
+    EXPECT_TRUE(seen_width);
+    EXPECT_EQ(rt_timing_key_name(17), nullptr);
+    EXPECT_TRUE(std::isnan(rt_timing_get(&t, 17)));
+}
+
+TEST(Timing, SetRejectsBadValues)
+{
+    rt_timing t;
+    rt_timing_defaults(&t);
+    char msg[RT_MSG_LEN] = "";
+    EXPECT_EQ(rt_timing_set(&t, "test_misses", 1, msg, sizeof msg), RT_ERR_INVALID);
+    EXPECT_NE(std::string(msg).find("unknown key 'test_misses'"), std::string::npos) << msg;
+    EXPECT_EQ(rt_timing_set(&t, "test_miss", -1, msg, sizeof msg), RT_ERR_INVALID);
+    EXPECT_NE(std::string(msg).find("'test_miss' needs a non-negative number"), std::string::npos) << msg;
+    EXPECT_EQ(rt_timing_set(&t, "link", NAN, msg, sizeof msg), RT_ERR_INVALID);
+    EXPECT_EQ(rt_timing_set(&t, "link", INFINITY, msg, sizeof msg), RT_ERR_INVALID);
+    EXPECT_EQ(rt_timing_set(&t, "packet_bytes", 0, msg, sizeof msg), RT_ERR_INVALID);
+    EXPECT_EQ(rt_timing_set(&t, "bus_width_bytes", 0, msg, sizeof msg), RT_ERR_INVALID);
+    EXPECT_EQ(rt_timing_set(&t, "test_miss", 0, msg, sizeof msg), RT_OK);
+    EXPECT_EQ(t.test_miss_us, 0);
+    EXPECT_EQ(t.packet_bytes, 28); // failed sets change nothing
+}
+
+TEST(Timing, LoadParsesCommentsAndBothForms)
+{
+    LoadResult r = load("good.timing",
+                        "# a faster IP\n"
+                        "\n"
+                        "test_miss 650   # half\n"
+                        "test_hit = 875\n"
+                        "   dda_step=170\n"
+                        "link_bytes_per_us 14\n"
+                        "bus_cycle 0.125\n"
+                        "shading 1e3\n"
+                        "test_miss 600\n"  // a repeated key: the last one wins
+                        "\t# indented comment\n");
+    ASSERT_EQ(r.status, RT_OK) << r.msg;
+    EXPECT_EQ(r.timing.test_miss_us, 600);
+    EXPECT_EQ(r.timing.test_hit_us, 875);
+    EXPECT_EQ(r.timing.dda_step_us, 170);
+    EXPECT_EQ(r.timing.link_bytes_per_us, 14);
+    EXPECT_EQ(r.timing.bus_cycle_us, 0.125);
+    EXPECT_EQ(r.timing.shading_us, 1000);
+    EXPECT_EQ(r.timing.refraction_us, 1100); // untouched keys keep their values
+}
+
+TEST(Timing, LoadWithoutFinalNewline)
+{
+    LoadResult r = load("nonl.timing", "link 75");
+    ASSERT_EQ(r.status, RT_OK) << r.msg;
+    EXPECT_EQ(r.timing.link_us, 75);
+}
+
+TEST(Timing, LoadErrorsCarryFileAndLine)
+{
+    struct Case {
+        const char *text, *expect;
+    } cases[] = {
+        {"test_miss 1\nbogus 3\n", ":2: unknown key 'bogus'"},
+        {"# c\n\ntest_miss -5\n", ":3: 'test_miss' needs a non-negative number"},
+        {"test_hit\n", ":1: expected 'key value'"},
+        {"test_hit =\n", ":1: expected 'key value'"},
+        {"link 1\nlink fast\n", ":2: 'link' needs a non-negative number"},
+        {"link 12us\n", ":1: 'link' needs a non-negative number"},
+        {"link 1 2\n", ":1: expected 'key value'"},
+        {"packet_bytes 0\n", ":1: 'packet_bytes' needs a positive number"},
+    };
+    int i = 0;
+    for (const Case &c : cases) {
+        std::string name = "bad" + std::to_string(i++) + ".timing";
+        LoadResult r = load(name, c.text);
+        EXPECT_EQ(r.status, RT_ERR_PARSE) << c.text;
+        EXPECT_NE(r.msg.find(name + c.expect), std::string::npos) << "message: " << r.msg;
+        // A failed load leaves the table as it was.
+        EXPECT_EQ(r.timing.test_miss_us, 1300);
+        EXPECT_EQ(r.timing.link_us, 50);
+    }
+}
+
+TEST(Timing, LoadMissingFileIsIoError)
+{
+    rt_timing t;
+    rt_timing_defaults(&t);
+    char msg[RT_MSG_LEN] = "";
+    std::string path = testing::TempDir() + "torusrt_no_such_dir/x.timing";
+    EXPECT_EQ(rt_timing_load(path.c_str(), &t, msg, sizeof msg), RT_ERR_IO);
+    EXPECT_NE(std::string(msg).find(path), std::string::npos) << msg;
+}
+
+TEST(Timing, StepCostIsTheHandSum)
+{
+    rt_timing t;
+    rt_timing_defaults(&t);
+    rt_op_counts ops = {1, 2, 3, 4, 5, 6, 7, 8, 9};
+    // 1*1300 + 2*1750 + 3*340 + 4*4600 + 5*680 + 6*1100 + 7*580 + 8*1600 + 9*0
+    // = 1300 + 3500 + 1020 + 18400 + 3400 + 6600 + 4060 + 12800 = 51080
+    EXPECT_EQ(rt_timing_step_us(&t, &ops), 51080.0);
+    t.fb_write_us = 10;
+    EXPECT_EQ(rt_timing_step_us(&t, &ops), 51170.0);
+    rt_op_counts none = {0, 0, 0, 0, 0, 0, 0, 0, 0};
+    EXPECT_EQ(rt_timing_step_us(&t, &none), 0.0);
+}
+
+TEST(Timing, LinkAndBusTimes)
+{
+    rt_timing t;
+    rt_timing_defaults(&t);
+    EXPECT_EQ(rt_timing_link_packet_us(&t), 50.0);
+    t.link_bytes_per_us = 14; // 28 bytes over 14 bytes/us
+    EXPECT_EQ(rt_timing_link_packet_us(&t), 2.0);
+    t.packet_bytes = 35;
+    EXPECT_EQ(rt_timing_link_packet_us(&t), 2.5);
+    // ceil(bytes / 2) cycles of 0.5 us.
+    EXPECT_EQ(rt_timing_bus_transfer_us(&t, 28), 7.0);
+    EXPECT_EQ(rt_timing_bus_transfer_us(&t, 5), 1.5);
+    EXPECT_EQ(rt_timing_bus_transfer_us(&t, 1), 0.5);
+    EXPECT_EQ(rt_timing_bus_transfer_us(&t, 0), 0.0);
+    t.bus_width_bytes = 4;
+    EXPECT_EQ(rt_timing_bus_transfer_us(&t, 28), 3.5);
+}
