@@ -46,6 +46,7 @@
 #include <string.h>
 
 #include "grid_internal.h"
+#include "polygon_inside.h"
 #include "scene_internal.h"
 
 /* 1024 = 2^10: no axis has more prime factors. */
@@ -141,24 +142,6 @@ static int segment_meets(rt_vec3 p, rt_vec3 q, const rt_box *b)
     return 1;
 }
 
-/* Even-odd test of p against the loop in the plane with axis `drop`
- * removed: the same rule as intersect.c's polygon hit. */
-static int inside_loop(const rt_vec3 *v, size_t n, int drop, rt_vec3 p)
-{
-    int ia = drop == 0 ? 1 : 0, ib = drop == 2 ? 1 : 2;
-    double px = axis_of(p, ia), py = axis_of(p, ib);
-    int inside = 0;
-    for (size_t i = 0, j = n - 1; i < n; j = i++) {
-        double xi = axis_of(v[i], ia), yi = axis_of(v[i], ib);
-        double xj = axis_of(v[j], ia), yj = axis_of(v[j], ib);
-        if ((yi > py) != (yj > py)) {
-            double x = xi + (py - yi) / (yj - yi) * (xj - xi);
-            if (px < x) inside = !inside;
-        }
-    }
-    return inside;
-}
-
 /* Planar even-odd region (b->loop on b's plane) against the box. */
 static int flat_meets(const build *bd, const rt_box *b)
 {
@@ -182,7 +165,7 @@ static int flat_meets(const build *bd, const rt_box *b)
     double span = dmax - dmin;
     double t = span > 0.0 ? -dmin / span : 0.0;
     rt_vec3 p = rt_vec_add(cmin, rt_vec_scale(rt_vec_sub(cmax, cmin), t));
-    return inside_loop(bd->loop, bd->loop_n, bd->drop, p);
+    return rt_polygon_inside(bd->loop, bd->loop_n, bd->drop, p);
 }
 
 static int object_meets(const build *bd, const rt_box *b)

@@ -4,6 +4,7 @@
 #include <math.h>
 
 #include "intersect.h"
+#include "polygon_inside.h"
 
 /* Picks the nearest of two roots inside (t_min, t_max). */
 static int pick_root(double t0, double t1, double t_min, double t_max, double *t)
@@ -31,23 +32,6 @@ static int hit_sphere(const rt_sphere_data *s, rt_vec3 o, rt_vec3 d, double t_mi
     return pick_root(c / q, q, t_min, t_max, t);
 }
 
-/* Even-odd inside test in the plane with the dominant normal axis dropped. */
-static int inside_polygon(const rt_vec3 *v, uint32_t n, int drop, rt_vec3 p)
-{
-    int ia = drop == 0 ? 1 : 0, ib = drop == 2 ? 1 : 2;
-    double px = rt_vec_axis(p, ia), py = rt_vec_axis(p, ib);
-    int inside = 0;
-    for (uint32_t i = 0, j = n - 1; i < n; j = i++) {
-        double xi = rt_vec_axis(v[i], ia), yi = rt_vec_axis(v[i], ib);
-        double xj = rt_vec_axis(v[j], ia), yj = rt_vec_axis(v[j], ib);
-        if ((yi > py) != (yj > py)) {
-            double x = xi + (py - yi) / (yj - yi) * (xj - xi);
-            if (px < x) inside = !inside;
-        }
-    }
-    return inside;
-}
-
 static int hit_polygon(const rt_scene *s, const rt_polygon_data *p, rt_vec3 o, rt_vec3 d,
                        double t_min, double t_max, double *t)
 {
@@ -57,7 +41,7 @@ static int hit_polygon(const rt_scene *s, const rt_polygon_data *p, rt_vec3 o, r
     double tt = (p->offset - rt_vec_dot(p->normal, o)) / denom;
     if (!(tt > t_min && tt < t_max)) return 0;
     rt_vec3 hp = rt_vec_add(o, rt_vec_scale(d, tt));
-    if (!inside_polygon(s->vertices + p->first_vertex, p->count, p->drop_axis, hp)) return 0;
+    if (!rt_polygon_inside(s->vertices + p->first_vertex, p->count, p->drop_axis, hp)) return 0;
     *t = tt;
     return 1;
 }

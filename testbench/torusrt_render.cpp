@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "cli_main.h"
 #include "kernel_handles.h"
 #include "option_parsing.h"
 #include "output_files.h"
@@ -126,19 +127,5 @@ int main(int argc, char **argv)
     app.add_option("--stats", opt.stats_path, "write statistics as JSON to this file");
     app.add_option("--timing", opt.timing_path, "timing file overriding the paper's table (for t1_s)");
     app.add_flag("-q,--quiet", opt.quiet, "print nothing but errors; no progress");
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::ParseError &e) {
-        int code = app.exit(e);
-        return code == 0 ? 0 : 2;
-    }
-    try {
-        return run(opt);
-    } catch (const UserError &e) {
-        std::fprintf(stderr, "torusrt-render: %s\n", e.what());
-        return e.exit_code();
-    } catch (const std::exception &e) {
-        std::fprintf(stderr, "torusrt-render: %s\n", e.what());
-        return 1;
-    }
+    return run_cli("torusrt-render", app, argc, argv, [&] { return run(opt); });
 }

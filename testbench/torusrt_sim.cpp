@@ -7,6 +7,7 @@
 #include <string>
 #include <systemc>
 
+#include "cli_main.h"
 #include "model_run.h"
 #include "option_parsing.h"
 #include "output_files.h"
@@ -151,13 +152,7 @@ int sc_main(int argc, char **argv)
     app.add_option("--dispatch", cl.dispatch, "cluster packet dispatch: round-robin (default) or shortest-queue");
     app.add_option("--t1", cl.t1, "T(1) in seconds for efficiency_t1 (default: run the model with one processor)");
     app.add_flag("-q,--quiet", quiet, "print nothing but errors; no progress");
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::ParseError &e) {
-        int code = app.exit(e);
-        return code == 0 ? 0 : 2;
-    }
-    try {
+    return run_cli("torusrt-sim", app, argc, argv, [&]() -> int {
         SimConfig config = make_config(scene, cl, quiet);
         config.cluster = cluster;
         config.vcd_path = vcd;
@@ -194,13 +189,7 @@ int sc_main(int argc, char **argv)
         }
         if (!quiet) print_summary_stdout(out.report);
         return 0;
-    } catch (const UserError &e) {
-        std::fprintf(stderr, "torusrt-sim: %s\n", e.what());
-        return e.exit_code();
-    } catch (const std::exception &e) {
-        std::fprintf(stderr, "torusrt-sim: %s\n", e.what());
-        return 1;
-    }
+    });
 }
 
 // Our own entry point: the SystemC banner is printed before sc_main runs, so it is switched off here.
