@@ -34,7 +34,6 @@ void IntersectionProcessor::run()
         m_params.on_test = &IntersectionProcessor::on_test;
         m_params.on_test_ctx = this;
     }
-    tlm::tlm_generic_payload fb_trans;
     for (;;) {
         if (m_queue.empty()) m_time.sync();
         TimedPacket tp = m_queue.pop_blocking();
@@ -53,12 +52,12 @@ void IntersectionProcessor::run()
 
         if (m_result.contrib_count) {
             sc_core::sc_time delay = sc_core::SC_ZERO_TIME;
-            fb_trans.set_command(tlm::TLM_WRITE_COMMAND);
-            fb_trans.set_data_ptr(reinterpret_cast<unsigned char *>(m_result.contrib));
-            fb_trans.set_data_length(static_cast<unsigned>(m_result.contrib_count * sizeof(rt_contribution)));
-            fb_trans.set_streaming_width(fb_trans.get_data_length());
-            fb_trans.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
-            fb_socket->b_transport(fb_trans, delay);
+            m_fb_trans.set_command(tlm::TLM_WRITE_COMMAND);
+            m_fb_trans.set_data_ptr(reinterpret_cast<unsigned char *>(m_result.contrib));
+            m_fb_trans.set_data_length(static_cast<unsigned>(m_result.contrib_count * sizeof(rt_contribution)));
+            m_fb_trans.set_streaming_width(m_fb_trans.get_data_length());
+            m_fb_trans.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
+            fb_socket->b_transport(m_fb_trans, delay);
         }
         // New packets are counted before the input is consumed, so the ledger never sees
         // zero outstanding while work remains.

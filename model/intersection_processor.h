@@ -66,6 +66,7 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf {
     sc_core::sc_time m_busy = sc_core::SC_ZERO_TIME;
     uint64_t m_packets_in = 0, m_packets_out = 0;
     bool m_busy_flag = false;
+    tlm::tlm_generic_payload m_fb_trans; // a member, not a thread local: freed with the module
 };
 
 }  // namespace torusrt
