@@ -6,7 +6,8 @@
  *   rt_framebuffer_to_rgb8(fb, pixels);       // w*h*3 bytes, row 0 = top
  *
  * Each contribution is converted on its own to units of 2^-32 (rounded to
- * nearest, clamped to +-2^30 per contribution) and summed as integers, so the
+ * nearest, clamped to +-2^20 per contribution, so 2^11 of the largest still
+ * sum without overflow; sums saturate) and summed as integers, so the
  * final image does not depend on the order contributions arrive in.
  * rt_framebuffer_new returns NULL for a zero size or when memory runs out.
  */

@@ -1,19 +1,54 @@
-// cluster_node.cpp - placeholder until the cluster bus exists: rejected by validation.
+// cluster_node.cpp - elaboration of one cluster: processors, memories, bus ports, dispatcher,
+// bus and arbiter, and their bindings.
 #include "cluster_node.h"
+
+#include <string>
+
+#include "cluster_memory.h"
 
 namespace torusrt {
 
-ClusterNode::ClusterNode(sc_core::sc_module_name name, const SimConfig &, const rt_scene *, const rt_grid *,
-                         const int32_t *, int, PacketLedger &)
-    : sc_module(name), from_comm_unit("from_comm_unit"), to_comm_unit("to_comm_unit")
+ClusterNode::ClusterNode(sc_core::sc_module_name name, const SimConfig &config, const rt_scene *scene,
+                         const rt_grid *grid, const int32_t *cell_owner, int node, PacketLedger &ledger)
+    : sc_module(name), from_comm_unit("from_comm_unit"), to_comm_unit("to_comm_unit"), m_node(node),
+      m_node_objects(cluster_node_objects(grid, cell_owner, node))
 {
     from_comm_unit.bind(*this);
-    SC_REPORT_FATAL(this->name(), "clusters are not available in this build");
+    int m = config.cluster;
+    bool shared = config.data == DataMode::shared;
+    bool lt = config.style == TimingStyle::lt;
+
+    // The communication unit (requester m) ranks first under fixed priority: see bus_arbiter.h.
+    m_arbiter = make_arbiter(arbiter_name(config.arbiter), "arbiter", m + 1, m);
+    m_bus = std::make_unique<ClusterBus>("bus", config.timing, lt, m + 1);
+    m_bus->arbiter.bind(*m_arbiter);
+
+    std::vector<IntersectionProcessor *> procs;
+    for (int k = 0; k < m; k++) {
+        int global = node * m + k;
+        auto ip = std::make_unique<IntersectionProcessor>(("ip_" + std::to_string(global)).c_str(), config, scene, grid,
+                                                          cell_owner, node, global, ledger);
+        auto mem = std::make_unique<TwoPortMemory>(("mem_" + std::to_string(k)).c_str(), config.timing, m_node_objects,
+                                                   shared ? k : 0, shared ? m : 1);
+        auto port = std::make_unique<ProcessorBusPort>(("port_" + std::to_string(k)).c_str(), config, scene, k,
+                                                       m_node_objects, m);
+        ip->out.bind(port->in);
+        if (shared) ip->fetch.bind(port->objects);
+        port->to_comm_unit.bind(to_comm_unit);
+        port->bus_socket.bind(m_bus->target);  // requester k
+        m_bus->memory.bind(mem->bus_side);     // memory port k
+        procs.push_back(ip.get());
+        m_processors.push_back(std::move(ip));
+        m_memories.push_back(std::move(mem));
+        m_ports.push_back(std::move(port));
+    }
+    m_dispatcher = std::make_unique<ClusterDispatcher>("dispatcher", config, procs);
+    m_dispatcher->bus_socket.bind(m_bus->target);  // requester m, bound last
 }
 
 ClusterNode::~ClusterNode() = default;
 
-void ClusterNode::accept(const TimedPacket &) {}
+void ClusterNode::accept(const TimedPacket &p) { m_dispatcher->accept(p); }
 
 std::vector<IntersectionProcessor *> ClusterNode::processors() const
 {
@@ -21,17 +56,5 @@ std::vector<IntersectionProcessor *> ClusterNode::processors() const
     for (const auto &p : m_processors) out.push_back(p.get());
     return out;
 }
-
-nlohmann::json cluster_memory_json(const SimConfig &, TorusSystem &, const rt_scene *, const rt_grid *,
-                                   const int32_t *, uint64_t pixel_partitioned)
-{
-    return {{"max_per_ip_bytes", 0}, {"total_bytes", 0}, {"pixel_partitioned_bytes", pixel_partitioned}};
-}
-
-void add_cluster_report(nlohmann::json &, const SimConfig &, TorusSystem &) {}
-
-void trace_cluster(sc_core::sc_trace_file *, ClusterNode &) {}
-
-std::string cluster_deadlock_lines(ClusterNode &) { return ""; }
 
 }  // namespace torusrt

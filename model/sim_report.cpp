@@ -105,6 +105,7 @@ nlohmann::json build_report(const SimConfig &config, TorusSystem &top, const Pac
         pixel_partitioned ? memory["total_bytes"].get<double>() / static_cast<double>(pixel_partitioned) : 0.0;
 
     uint64_t events = steps + hops + top.host().injected();
+    for (const auto &cl : top.clusters()) events += cl->bus().transfers();
     nlohmann::json report = {
         {"scene", config.scene_path},
         {"width", cam->width},

@@ -15,7 +15,8 @@ Tracer::Tracer(const std::string &path, const SimConfig &config, TorusSystem &to
 {
     m_file = sc_core::sc_create_vcd_trace_file(m_tmp_base.c_str()); // SystemC appends ".vcd"
     if (!m_file) throw UserError("--vcd " + path + ": cannot create the trace file");
-    m_file->set_time_unit(1, sc_core::SC_US);
+    // Bus transfers last fractions of a microsecond (0.25 us arbitration): clusters trace in ns.
+    m_file->set_time_unit(1, config.cluster > 1 ? sc_core::SC_NS : sc_core::SC_US);
     std::set<int> nodes(config.trace_ips.begin(), config.trace_ips.end());
     auto traced = [&](int node) { return nodes.empty() || nodes.count(node) > 0; };
     auto procs = top.processors();

@@ -73,6 +73,13 @@ static int hit_triangle(const rt_triangle_data *tr, rt_vec3 o, rt_vec3 d, double
 static int hit_cone(const rt_cone_data *c, rt_vec3 o, rt_vec3 d, double t_min, double t_max,
                     double *t)
 {
+    /* Solve from the point of the ray nearest the cone's middle: the quadratic's terms then
+     * have the cone's own size, so a tiny cone far away keeps its precision. */
+    rt_vec3 mid = rt_vec_scale(rt_vec_add(c->base, c->apex), 0.5);
+    double shift = rt_vec_dot(rt_vec_sub(mid, o), d);
+    o = rt_vec_add(o, rt_vec_scale(d, shift));
+    t_min -= shift;
+    t_max -= shift;
     rt_vec3 co = rt_vec_sub(o, c->base);
     double d_par = rt_vec_dot(d, c->axis), o_par = rt_vec_dot(co, c->axis);
     rt_vec3 d_perp = rt_vec_sub(d, rt_vec_scale(c->axis, d_par));
@@ -104,7 +111,7 @@ static int hit_cone(const rt_cone_data *c, rt_vec3 o, rt_vec3 d, double t_min, d
         best = r;
     }
     if (!isfinite(best)) return 0;
-    *t = best;
+    *t = best + shift;
     return 1;
 }
 

@@ -206,10 +206,25 @@ rt_status rt_scene_add_polygon(rt_scene *s, const rt_vec3 *v, size_t n)
     s->vertex_count += n;
     rt_vec3 nrm = newell_normal(v, n);
     double len = rt_vec_length(nrm);
-    /* Zero (or numerically negligible) area: kept so object numbering matches the file, never hit. */
     double scale = 0.0;
     for (size_t i = 0; i < n; i++) scale = fmax(scale, rt_vec_max_abs(rt_vec_sub(v[i], v[0])));
-    p->degenerate = !(len > 1e-300) || !(len > 1e-14 * scale * scale) || !isfinite(len);
+    /* Area is judged unsigned (the fan's triangle areas added up), so a self-crossing polygon
+     * whose lobes cancel in Newell's sum (a symmetric bow-tie) still counts as having area;
+     * its plane then comes from the largest fan triangle. */
+    double area = 0.0, best = 0.0;
+    rt_vec3 best_cross = rt_vec(0, 0, 0);
+    for (size_t i = 1; i + 1 < n; i++) {
+        rt_vec3 c = rt_vec_cross(rt_vec_sub(v[i], v[0]), rt_vec_sub(v[i + 1], v[0]));
+        double a = rt_vec_length(c);
+        area += a;
+        if (a > best) { best = a; best_cross = c; }
+    }
+    double floor_area = 1e-14 * scale * scale;
+    p->degenerate = !(area > 1e-300) || !(area > floor_area) || !isfinite(area);
+    if (!p->degenerate && !(len > floor_area)) {
+        nrm = best_cross;
+        len = best;
+    }
     p->normal = p->degenerate ? rt_vec(0, 0, 1) : rt_vec_scale(nrm, 1.0 / len);
     /* Plane offset from the centroid: the least biased point of a non-planar loop. */
     rt_vec3 c = rt_vec(0, 0, 0);

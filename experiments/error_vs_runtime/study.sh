@@ -1,0 +1,73 @@
+#!/usr/bin/env bash
+# study.sh - the error-against-run-time study of DESIGN.md section 8, end to end:
+#   1. quantum.sh  - LT at growing quanta against AT (both paper scenes, 144x144, 4x2x2 and 4x4x4)
+#   2. pruning.sh  - max-depth 0..8 and min-weight 1/512..1/8 against the full-depth image
+#   3. report.sh   - docs/img/error-*.png and docs/error-vs-runtime.md
+#
+# Usage: study.sh [--build DIR] [--results DIR] [--doc FILE] [--img-dir DIR] [--reps N]
+#                 [--only quantum|pruning|report] [--quick]
+#   --build DIR     folder with torusrt-sim and torusrt-render (default $TORUSRT_BUILD, else REPO/build)
+#   --results DIR   where the CSVs go (default experiments/error_vs_runtime/results)
+#   --doc FILE      the document (default docs/error-vs-runtime.md); --img-dir its plots (docs/img)
+#   --reps N        timed repetitions per point (default: 5 for the quantum study, 3 for pruning)
+#   --only STEP     run one step (report: regenerate the document from the existing CSVs)
+#   --quick         a smoke run: paper-image2 at 48x48 on 4x2x2 only, one repetition, a few
+#                   quanta; results into a temporary folder unless --results/--doc are given
+# Takes about 5 minutes on 2 cores with the defaults.
+set -euo pipefail
+# shellcheck source=experiments/error_vs_runtime/common.sh
+source "$(dirname "$0")/common.sh"
+
+RESULTS=$EVR_DIR/results
+DOC=$REPO/docs/error-vs-runtime.md
+IMG=$REPO/docs/img
+REPS=""
+ONLY=""
+QUICK=0
+ARGS_SEEN=()
+while [ $# -gt 0 ]; do
+  case $1 in
+    --build) BUILD=$2; shift 2 ;;
+    --results) RESULTS=$2; ARGS_SEEN+=(results); shift 2 ;;
+    --doc) DOC=$2; ARGS_SEEN+=(doc); shift 2 ;;
+    --img-dir) IMG=$2; ARGS_SEEN+=(img); shift 2 ;;
+    --reps) REPS=$2; shift 2 ;;
+    --only) ONLY=$2; shift 2 ;;
+    --quick) QUICK=1; shift ;;
+    -h|--help) sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
+    *) die "unknown option $1 (see --help)" ;;
+  esac
+done
+case $ONLY in ""|quantum|pruning|report) ;; *) die "--only: quantum, pruning or report" ;; esac
+export TORUSRT_BUILD=$BUILD
+
+qargs=() pargs=()
+command_line="experiments/error_vs_runtime/study.sh"
+if [ "$QUICK" = 1 ]; then
+  if [[ " ${ARGS_SEEN[*]-} " != *" results "* ]]; then
+    QTMP=$(mktemp -d)
+    trap 'rm -rf "$QTMP"' EXIT
+    RESULTS=$QTMP/results
+    [[ " ${ARGS_SEEN[*]-} " == *" doc "* ]] || DOC=$QTMP/doc/error-vs-runtime.md
+    [[ " ${ARGS_SEEN[*]-} " == *" img "* ]] || IMG=$QTMP/doc/img
+  fi
+  qargs=(--scenes paper-image2 --ips 4x2x2 --size 48x48 --quanta "0 1ms 100ms 1s 100s" --reps "${REPS:-1}")
+  pargs=(--scenes paper-image2 --ips 4x2x2 --size 48x48 --depths "0 2 4 8" --weights "1/512 1/64 1/8" --reps "${REPS:-1}")
+  command_line+=" --quick"
+else
+  [ -n "$REPS" ] && qargs=(--reps "$REPS") && pargs=(--reps "$REPS")
+fi
+mkdir -p "$RESULTS"
+if [ -z "$ONLY" ] || [ "$ONLY" = quantum ]; then
+  "$EVR_DIR/quantum.sh" --out "$RESULTS/quantum.csv" "${qargs[@]}"
+fi
+if [ -z "$ONLY" ] || [ "$ONLY" = pruning ]; then
+  "$EVR_DIR/pruning.sh" --out "$RESULTS/pruning.csv" "${pargs[@]}"
+fi
+if [ -z "$ONLY" ] || [ "$ONLY" = report ]; then
+  "$EVR_DIR/report.sh" --quantum "$RESULTS/quantum.csv" --pruning "$RESULTS/pruning.csv" --doc "$DOC" \
+    --img-dir "$IMG" --command "$command_line"
+fi
+[ "$QUICK" = 1 ] && [ -f "$DOC" ] && [ "${QTMP-}" != "" ] && [[ "$DOC" == "$QTMP"* ]] &&
+  echo "study: quick run only; its document was written to a temporary folder and removed" >&2
+exit 0

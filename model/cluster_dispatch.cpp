@@ -1,0 +1,93 @@
+// cluster_dispatch.cpp - dispatch policies and the dispatcher's process.
+#include "cluster_dispatch.h"
+
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <stdexcept>
+
+namespace torusrt {
+
+namespace {
+
+class RoundRobinDispatch : public DispatchPolicyIf {
+  public:
+    int choose(const std::vector<IntersectionProcessor *> &processors) override
+    {
+        m_next = (m_next + 1) % static_cast<int>(processors.size());
+        return m_next;
+    }
+
+  private:
+    int m_next = -1;
+};
+
+class ShortestQueueDispatch : public DispatchPolicyIf {
+  public:
+    int choose(const std::vector<IntersectionProcessor *> &processors) override
+    {
+        int best = 0;
+        size_t best_load = SIZE_MAX;
+        for (size_t k = 0; k < processors.size(); k++) {
+            size_t load = processors[k]->queue().size() + (processors[k]->busy_trace() ? 1 : 0);
+            if (load < best_load) {
+                best = static_cast<int>(k);
+                best_load = load;
+            }
+        }
+        return best;
+    }
+};
+
+}  // namespace
+
+std::unique_ptr<DispatchPolicyIf> make_dispatch_policy(const std::string &name)
+{
+    static const std::map<std::string, std::function<std::unique_ptr<DispatchPolicyIf>()>> table = {
+        {"round-robin", [] { return std::make_unique<RoundRobinDispatch>(); }},
+        {"shortest-queue", [] { return std::make_unique<ShortestQueueDispatch>(); }},
+    };
+    auto it = table.find(name);
+    if (it == table.end()) throw std::invalid_argument("unknown dispatch policy '" + name + "'");
+    return it->second();
+}
+
+ClusterDispatcher::ClusterDispatcher(sc_core::sc_module_name name, const SimConfig &config,
+                                     std::vector<IntersectionProcessor *> processors)
+    : sc_module(name), in("in"), bus_socket("bus_socket"), m_processors(std::move(processors)),
+      m_policy(make_dispatch_policy(dispatch_name(config.dispatch))),
+      m_inbox(std::string(basename()) + ".queue", config.queue_capacity), m_time(config.style == TimingStyle::lt),
+      m_dispatched(m_processors.size(), 0)
+{
+    in.bind(*this);
+    SC_HAS_PROCESS(ClusterDispatcher);
+    SC_THREAD(run);
+}
+
+void ClusterDispatcher::run()
+{
+    for (;;) {
+        if (m_inbox.empty()) m_time.sync();
+        TimedPacket tp = m_inbox.pop_blocking();
+        m_time.advance_to(tp.stamp);  // cannot move a packet before it arrived
+        int k = m_policy->choose(m_processors);
+        m_busy_flag = true;
+        // Packet write over the bus; the delay argument carries this process's local offset.
+        sc_core::sc_time delay = m_time.now() - sc_core::sc_time_stamp();
+        m_trans.set_command(tlm::TLM_WRITE_COMMAND);
+        m_trans.set_address(static_cast<uint64_t>(k));
+        m_trans.set_data_ptr(reinterpret_cast<unsigned char *>(&tp.packet));
+        m_trans.set_data_length(sizeof(rt_packet));
+        m_trans.set_streaming_width(sizeof(rt_packet));
+        m_trans.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
+        bus_socket->b_transport(m_trans, delay);
+        if (m_trans.is_response_error()) SC_REPORT_FATAL(name(), "packet transfer over the cluster bus failed");
+        m_time.advance_to(sc_core::sc_time_stamp() + delay);
+        m_busy_flag = false;
+        tp.stamp = m_time.now();
+        m_dispatched[k]++;
+        m_processors[k]->accept(tp);
+    }
+}
+
+}  // namespace torusrt

@@ -1,0 +1,63 @@
+// cluster_dispatch.h - the processor side of a cluster's communication unit. Packets the
+// communication unit routes to this node wait in the dispatcher's input queue; for each, a
+// dispatch policy picks a processor, the packet crosses the cluster bus (the communication unit
+// is the master: requester m) and is written into that processor's input queue (waiting while
+// that queue is full). Policies register by name, like the bus arbiters:
+//   round-robin    - processors 0, 1, ..., m-1, 0, ... in turn;
+//   shortest-queue - the processor with the fewest packets waiting or in service (its input
+//                    queue plus the one it is working on), ties to the lowest index.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <systemc>
+#include <tlm>
+#include <tlm_utils/simple_initiator_socket.h>
+#include <vector>
+
+#include "intersection_processor.h"
+#include "packet_queue.h"
+#include "packet_sink_if.h"
+#include "sim_config.h"
+#include "time_keeper.h"
+
+namespace torusrt {
+
+class DispatchPolicyIf {
+  public:
+    virtual ~DispatchPolicyIf() = default;
+    // The processor (index into `processors`) to receive the next packet.
+    virtual int choose(const std::vector<IntersectionProcessor *> &processors) = 0;
+};
+
+// Builds a dispatch policy by name ("round-robin", "shortest-queue"); throws std::invalid_argument
+// for an unknown name.
+std::unique_ptr<DispatchPolicyIf> make_dispatch_policy(const std::string &name);
+
+class ClusterDispatcher : public sc_core::sc_module, public PacketSinkIf {
+  public:
+    sc_core::sc_export<PacketSinkIf> in;                               // packets for this node's cells
+    tlm_utils::simple_initiator_socket<ClusterDispatcher> bus_socket;  // packet writes over the bus
+
+    ClusterDispatcher(sc_core::sc_module_name name, const SimConfig &config,
+                      std::vector<IntersectionProcessor *> processors);
+
+    void accept(const TimedPacket &p) override { m_inbox.push_blocking(p); }
+
+    PacketQueue &inbox() { return m_inbox; }
+    uint64_t dispatched(int k) const { return m_dispatched[k]; }
+    bool &busy_trace() { return m_busy_flag; }
+
+  private:
+    void run();
+
+    std::vector<IntersectionProcessor *> m_processors;
+    std::unique_ptr<DispatchPolicyIf> m_policy;
+    PacketQueue m_inbox;
+    TimeKeeper m_time;
+    std::vector<uint64_t> m_dispatched;
+    bool m_busy_flag = false;
+    tlm::tlm_generic_payload m_trans;
+};
+
+}  // namespace torusrt

@@ -1,0 +1,130 @@
+#!/usr/bin/env bash
+# cluster_scaling.sh - the paper's hierarchical-system study in small: paper-image1 on 16
+# clusters (--ips 4x2x2) with m = 1, 2, 4, 8, 16, 32, 64 processors per cluster.
+#   - replicated data: simulated image time strictly falls as m grows, with either dispatch
+#     policy, and 64 processors per cluster are more than 32x faster than one;
+#   - shared data is never faster than replicated (shortest-queue dispatch at every m), and with
+#     either dispatch policy its processors are busier in total (the remote object reads);
+#   - every image equals torusrt-render's.
+# Image size: the scene's full 144x144 (each run takes 1-3 s); at 48x48 the handful of packets
+# per processor makes scheduling luck (which processor gets which packet) larger than the few
+# microseconds a remote object read costs, and shared runs can come out faster by chance.
+# With round-robin dispatch that luck also shows at 144x144 (shared 0.2 % faster at m = 2 and
+# 1 % at m = 64), so the shared-vs-replicated time comparison uses the load-aware shortest-queue
+# dispatch; the busy-time comparison, which does not depend on scheduling, uses both.
+#
+# Usage (CTest runs it so): bash tests/cli/cluster_scaling.sh BUILD_DIR SOURCE_DIR
+set -u
+
+if [ $# -ne 2 ]; then
+    echo "usage: $0 BUILD_DIR SOURCE_DIR" >&2
+    exit 2
+fi
+build_dir=$1
+source_dir=$2
+sim="$build_dir/torusrt-sim"
+render="$build_dir/torusrt-render"
+for exe in "$sim" "$render"; do
+    if [ ! -x "$exe" ]; then
+        echo "cluster_scaling: $exe not found or not executable" >&2
+        exit 1
+    fi
+done
+run_limited=()
+if command -v timeout >/dev/null 2>&1; then run_limited=(timeout -k 5 300); fi
+
+work=$(mktemp -d "${TMPDIR:-/tmp}/cluster_scaling.XXXXXX") || exit 1
+trap 'rm -rf "$work"' EXIT
+passed=0
+failed=0
+pass() { passed=$((passed + 1)); }
+fail() {
+    failed=$((failed + 1))
+    echo "FAIL: $*"
+}
+
+# json_get FILE a.b.c - a scalar of torusrt's pretty-printed JSON (see cluster_images.sh).
+json_get() {
+    awk -v path="$2" '
+        {
+            match($0, /^ */); depth = RLENGTH / 2
+            if (match($0, /^ *"[^"]*": /)) {
+                key = substr($0, RSTART, RLENGTH); sub(/^ *"/, "", key); sub(/": $/, "", key)
+                stack[depth] = key
+                p = stack[1]; for (i = 2; i <= depth; i++) p = p "." stack[i]
+                if (p == path) { v = substr($0, RSTART + RLENGTH); sub(/,$/, "", v); print v; exit }
+            } else stack[depth] = "[]"
+        }' "$1"
+}
+# less A B - exit 0 if A < B (numbers).
+less() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a != "" && b != "" && a + 0 < b + 0) }'; }
+
+scene="$source_dir/scenes/paper-image1.nff"
+if [ ! -f "$scene" ]; then
+    gen="$build_dir/torusrt-genscenes"
+    if [ ! -x "$gen" ] || ! "$gen" "$work" paper-image1 >/dev/null; then
+        echo "cluster_scaling: no $scene and cannot generate it with $gen" >&2
+        exit 1
+    fi
+    scene="$work/paper-image1.nff"
+fi
+ref="$work/ref.png"
+if ! "$render" "$scene" -q -o "$ref"; then
+    echo "cluster_scaling: torusrt-render failed" >&2
+    exit 1
+fi
+
+ms="1 2 4 8 16 32 64"
+declare -A T BUSY UTIL
+for dispatch in round-robin shortest-queue; do
+    for data in replicated shared; do
+        for m in $ms; do
+            name="$dispatch.$data.m$m"
+            if ! "${run_limited[@]}" "$sim" "$scene" --ips 4x2x2 --cluster "$m" --data "$data" --dispatch "$dispatch" \
+                --t1 1 -q -o "$work/$name.png" --stats "$work/$name.json" 2>"$work/$name.err"; then
+                fail "$name: torusrt-sim failed: $(head -c 400 "$work/$name.err")"
+                continue
+            fi
+            if cmp -s "$work/$name.png" "$ref"; then pass; else fail "$name: PNG differs from torusrt-render's"; fi
+            T[$name]=$(json_get "$work/$name.json" sim_time_s)
+            BUSY[$name]=$(json_get "$work/$name.json" load.busy_s.mean)
+            UTIL[$name]=$(json_get "$work/$name.json" bus.utilisation.mean)
+        done
+    done
+done
+
+printf '%-15s %4s %14s %14s %10s\n' dispatch m replicated_s shared_s shared_bus
+for dispatch in round-robin shortest-queue; do
+    for m in $ms; do
+        printf '%-15s %4s %14.6f %14.6f %10s\n' "$dispatch" "$m" "${T[$dispatch.replicated.m$m]:-0}" \
+            "${T[$dispatch.shared.m$m]:-0}" "${UTIL[$dispatch.shared.m$m]:-}"
+    done
+done
+
+for dispatch in round-robin shortest-queue; do
+    prev=""
+    for m in $ms; do
+        t=${T[$dispatch.replicated.m$m]:-}
+        if [ -n "$prev" ]; then
+            if less "$t" "$prev"; then pass
+            else fail "$dispatch replicated: m=$m ($t s) not faster than before ($prev s)"; fi
+        fi
+        prev=$t
+        if [ "$m" -gt 1 ]; then
+            if less "${BUSY[$dispatch.replicated.m$m]:-}" "${BUSY[$dispatch.shared.m$m]:-}"; then pass
+            else fail "$dispatch m=$m: shared processors not busier than replicated"; fi
+        fi
+    done
+    if awk -v a="${T[$dispatch.replicated.m1]:-}" -v b="${T[$dispatch.replicated.m64]:-}" \
+        'BEGIN { exit !(a != "" && b + 0 > 0 && a / b > 32) }'; then pass
+    else fail "$dispatch replicated: speed-up from m=1 to m=64 not above 32"; fi
+done
+for m in $ms; do
+    r=${T[shortest-queue.replicated.m$m]:-}
+    s=${T[shortest-queue.shared.m$m]:-}
+    if [ -n "$r" ] && [ -n "$s" ] && ! less "$s" "$r"; then pass
+    else fail "shortest-queue m=$m: shared ($s s) faster than replicated ($r s)"; fi
+done
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]

@@ -1,0 +1,118 @@
+#!/usr/bin/env bash
+# The reproduction pipeline in quick mode (32x32, n = 1, 4, 16, m = 1, 4, 16): experiments/sweep.sh
+# runs every point through GNU parallel, reports a failing point (non-zero exit, its command line,
+# a "failed" row in the CSV) instead of dropping it, re-runs only what is not done, and
+# collect/plot/report produce the CSVs, PNG plots and the Markdown report. On the quick data the
+# directions of the paper's claims hold: cyclic efficiency_busy >= block at 16 IPs, memory at 16
+# IPs below pixel-partitioned, preprocessing units fall with P, replicated time falls with m,
+# shared memory below replicated at the largest m. Every image equals the one-processor image.
+# Run: bash reproduction_quick.sh BUILD_DIR SOURCE_DIR
+source "$(dirname "$0")/common.bash" "$@"
+EXP=$SRC/experiments
+RES=$TMP/res
+for tool in parallel gnuplot jq; do
+    command -v $tool >/dev/null || { fail "$tool not installed"; finish; exit 1; }
+done
+
+# Builds without the cluster model say so; then figures 10-12 are left out (any other failure of
+# a cluster run is a failure of this test).
+clusters=(); have_clusters=1
+if ! "$BUILD/torusrt-sim" "$SRC/scenes/one-pixel.nff" -o "$TMP/probe.png" --stats "$TMP/probe.json" -q --ips 2 \
+        --cluster 2 >"$TMP/probe.log" 2>&1 && grep -q 'not available in this build' "$TMP/probe.log"; then
+    echo "note: this build has no cluster model; figures 10-12 left out"
+    clusters=(--no-clusters); have_clusters=0
+fi
+
+# 1. A sweep in which one point fails (a stand-in simulator refuses block-cyclic on 16 IPs).
+mkdir -p "$TMP/fakebuild"
+cat >"$TMP/fakebuild/torusrt-sim" <<EOF
+#!/usr/bin/env bash
+case " \$* " in *" --ips 4x2x2 --map block-cyclic:2 "*) echo "injected failure" >&2; exit 7 ;; esac
+exec "$BUILD/torusrt-sim" "\$@"
+EOF
+chmod +x "$TMP/fakebuild/torusrt-sim"
+TORUSRT_BUILD=$TMP/fakebuild bash "$EXP/sweep.sh" --quick "${clusters[@]}" --results "$RES" -j 2 \
+    >"$TMP/sweep1.out" 2>"$TMP/sweep1.err"
+rc=$?
+check "sweep with a failing point exits non-zero (got $rc)" test "$rc" -ne 0
+check "the failed point's command line is reported" grep -q 'exit 7 .*--map block-cyclic:2' "$TMP/sweep1.err"
+check "the failed point is a 'failed' row of fig5_6.csv" \
+    test "$(awk -F, '$2 == "bc2" && $3 == 16 && $5 == "failed"' "$RES/fig5_6.csv" | wc -l)" -eq 2
+check "the failed point's messages are kept" grep -q 'injected failure' "$RES/fig5_6/image1-bc2-n16.log"
+check "the report lists the failed points" grep -q 'bc2 mapping, n = 16: \*\*failed\*\*' "$RES/reproduction.md"
+
+# 2. Re-run with the real simulator: only the two failed points are computed.
+start=$(date +%s)
+TORUSRT_BUILD=$BUILD bash "$EXP/sweep.sh" --quick "${clusters[@]}" --results "$RES" -j 2 >"$TMP/sweep2.out" 2>"$TMP/sweep2.err"
+rc=$?
+echo "quick sweep re-run: $(( $(date +%s) - start )) s"
+check "re-run exits 0 (got $rc; $(tail -n 3 "$TMP/sweep2.err" | tr '\n' ' '))" test "$rc" -eq 0
+check "re-run computes only the 2 missing points" test "$(tail -n 1 "$RES/runs.tsv" | cut -f7)" = 2
+check "no failed points left" test ! -s "$RES/failed.tsv"
+
+# 3. The CSVs: every expected row, all ok, identical images.
+rows() { awk 'NR > 1' "$1" | wc -l; }
+# not CSV COLUMN VALUE: the number of rows whose COLUMN (by header name) is not VALUE.
+not() { awk -F, -v c="$2" -v want="$3" 'NR == 1 { for (i = 1; i <= NF; i++) ix[$i] = i; next } $ix[c] != want' "$1" | wc -l; }
+check "fig5_6.csv has 18 rows" test "$(rows "$RES/fig5_6.csv")" -eq 18
+check "fig7.csv has 18 rows" test "$(rows "$RES/fig7.csv")" -eq 18
+check "fig8.csv has 6 rows" test "$(rows "$RES/fig8.csv")" -eq 6
+expect10=$((have_clusters ? 6 : 0))
+check "fig10_12.csv has $expect10 rows" test "$(rows "$RES/fig10_12.csv")" -eq $expect10
+check "fig5_6.csv header" grep -q '^scene,mapping,n,torus,status,sim_time_s,t1_s,speedup,efficiency_t1,efficiency_busy,' "$RES/fig5_6.csv"
+check "every fig5_6 point ok" test "$(not "$RES/fig5_6.csv" status ok)" -eq 0
+check "every fig10_12 point ok" test "$(not "$RES/fig10_12.csv" status ok)" -eq 0
+check "every flat-torus image equals the one-processor image" test "$(not "$RES/fig5_6.csv" image_identical yes)" -eq 0
+check "every cluster image equals the one-processor image" test "$(not "$RES/fig10_12.csv" image_identical yes)" -eq 0
+check "efficiency is 1 at n = 1" \
+    test "$(awk -F, 'NR > 1 && $3 == 1 && ($9 != 1 || $10 != 1)' "$RES/fig5_6.csv" | wc -l)" -eq 0
+
+# 4. Plots and report.
+ispng() { [ "$(head -c 8 "$1" | od -An -tx1 | tr -d ' \n')" = 89504e470d0a1a0a ]; }
+figs=(5 6 7 8)
+[ $have_clusters = 1 ] && figs+=(10 11 12)
+for f in "${figs[@]}"; do
+    check "fig$f.png is a PNG" ispng "$RES/plots/fig$f.png"
+    check "report embeds fig$f" grep -q "(img/reproduction-fig$f.png)" "$RES/reproduction.md"
+    check "embedded fig$f exists" ispng "$RES/img/reproduction-fig$f.png"
+done
+check "report has the claims table" grep -q '^| # | claim (paper section) | paper | ours | verdict | notes |' "$RES/reproduction.md"
+check "report has a row per claim" test "$(grep -c '^| [0-9][0-9]* | ' "$RES/reproduction.md")" -ge 17
+check "report gives the wall time" grep -q 'wall time of the points | \*\*[0-9.]* s\*\*' "$RES/reproduction.md"
+
+# 5. Directions of the paper's claims on the quick data.
+v() { awk -F, -v f="$2" -v c="$3" 'NR == 1 { for (i = 1; i <= NF; i++) ix[$i] = i; n = split(f, a, ","); next }
+        { for (k = 1; k <= n; k++) { split(a[k], kv, "="); if ($ix[kv[1]] != kv[2]) next } print $ix[c]; exit }' "$1"; }
+gt() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a != "" && b != "" && a + 0 > b + 0) }'; }
+ge() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a != "" && b != "" && a + 0 >= b + 0) }'; }
+for s in image1 image2; do
+    c=$(v "$RES/fig5_6.csv" "scene=$s,mapping=cyclic,n=16" efficiency_busy)
+    b=$(v "$RES/fig5_6.csv" "scene=$s,mapping=block,n=16" efficiency_busy)
+    check "$s: cyclic efficiency_busy ($c) >= block ($b) at 16 IPs" ge "$c" "$b"
+    for map in block cyclic; do
+        t=$(v "$RES/fig7.csv" "scene=$s,mapping=$map,n=16" total_bytes)
+        p=$(v "$RES/fig7.csv" "scene=$s,mapping=$map,n=16" pixel_partitioned_bytes)
+        check "$s $map: memory at 16 IPs ($t) below pixel-partitioned ($p)" gt "$p" "$t"
+    done
+    u1=$(v "$RES/fig8.csv" "scene=$s,n=1" units_parallel)
+    u4=$(v "$RES/fig8.csv" "scene=$s,n=4" units_parallel)
+    u16=$(v "$RES/fig8.csv" "scene=$s,n=16" units_parallel)
+    check "$s: preprocessing units fall with P ($u1 > $u4 > $u16)" eval 'gt "$u1" "$u4" && gt "$u4" "$u16"'
+done
+check "fig8 carries the paper's 9438 / 738" \
+    test "$(v "$RES/fig8.csv" "scene=image1,n=1" paper_units)/$(v "$RES/fig8.csv" "scene=image1,n=16" paper_units)" = 9438/738
+if [ $have_clusters = 1 ]; then
+    t1=$(v "$RES/fig10_12.csv" "scene=image1,data=replicated,m=1" sim_time_s)
+    t4=$(v "$RES/fig10_12.csv" "scene=image1,data=replicated,m=4" sim_time_s)
+    t16=$(v "$RES/fig10_12.csv" "scene=image1,data=replicated,m=16" sim_time_s)
+    check "replicated time falls with m ($t1 > $t4 > $t16)" eval 'gt "$t1" "$t4" && gt "$t4" "$t16"'
+    sh=$(v "$RES/fig10_12.csv" "scene=image1,data=shared,m=16" total_bytes)
+    re=$(v "$RES/fig10_12.csv" "scene=image1,data=replicated,m=16" total_bytes)
+    check "shared memory ($sh) below replicated ($re) at m = 16" gt "$re" "$sh"
+fi
+
+# 6. The point list is one command per line, and the Slurm script runs line i of it.
+check "points.sh prints one command per point" \
+    test "$(bash "$EXP/points.sh" --build "$BUILD" "${clusters[@]}" quick "$TMP/res2" | wc -l)" -eq $((20 + expect10))
+check "slurm.sbatch is valid bash" bash -n "$EXP/slurm.sbatch"
+finish
