@@ -111,7 +111,7 @@ plot ${plots_q_t}${plots_q_e%, }
 GP
 gnuplot "$TMP/quantum.gp"
 
-fmt_err='function fe(x) { if (x == 0) return "0"; return sprintf((x < 0 ? -x : x) >= 10 ? "%+.2f" : "%+.4f", x) }'
+fmt_err='function fe(x) { if (x == 0) return "0"; a = x < 0 ? -x : x; return sprintf(a >= 10 ? "%+.2f" : a >= 0.0001 ? "%+.4f" : "%+.1e", x) }'
 
 # Table per configuration.
 quantum_tables() {
@@ -199,12 +199,12 @@ for scene in $pscenes; do
       awk -F, -v s="$scene" -v r="$runner" -v w="$sweep" -v cap="$CAP" '
         $1 == s && $5 == r && $2 == w { print $7, $8, ($11 == "inf" ? cap : $11), (w == "max_depth" ? $3 : $4) }' "$PCSV" > "$TMP/p$j.$sweep.dat"
     done
-    label=$([ "$runner" = render ] && echo "torusrt-render (1 IP, T(1))" || echo "torusrt-sim ${runner#sim-}")
+    label=$([ "$runner" = render ] && echo "render, T(1)" || echo "sim ${runner#sim-}")
     lt=$j
-    pl_dt+="'$TMP/p$j.max_depth.dat' using 1:3 with linespoints pt 7 lc $lt title '$scene, $label', "
-    pl_dw+="'$TMP/p$j.max_depth.dat' using 2:3 with points pt 7 lc $lt title '$scene, $label', "
-    pl_wt+="'$TMP/p$j.min_weight.dat' using 1:3 with linespoints pt 9 lc $lt title '$scene, $label', "
-    pl_ww+="'$TMP/p$j.min_weight.dat' using 2:3 with points pt 9 lc $lt title '$scene, $label', "
+    pl_dt+="'$TMP/p$j.max_depth.dat' using 1:3 with linespoints pt 7 lc $lt title '${scene#paper-}, $label', "
+    pl_dw+="'$TMP/p$j.max_depth.dat' using 2:3 with points pt 7 lc $lt title '${scene#paper-}, $label', "
+    pl_wt+="'$TMP/p$j.min_weight.dat' using 1:3 with linespoints pt 9 lc $lt title '${scene#paper-}, $label', "
+    pl_ww+="'$TMP/p$j.min_weight.dat' using 2:3 with points pt 9 lc $lt title '${scene#paper-}, $label', "
     if [ "$runner" = render ]; then
       pl_dt+="'$TMP/p$j.max_depth.dat' using 1:3:4 with labels offset 0,0.9 font ',8' tc lt $lt notitle, "
       pl_wt+="'$TMP/p$j.min_weight.dat' using 1:3:4 with labels offset 0,0.9 font ',8' tc lt $lt notitle, "
@@ -216,7 +216,7 @@ set terminal $TERM_PNG size 1300,1050
 set output '$IMG/error-pruning.png'
 set multiplot layout 2,2 title "Shade-tree pruning: PSNR against the default-settings image (max-depth 8, min-weight 1/512)\\nidentical images (PSNR = inf) drawn at ${CAP} dB; labels on the renderer's points give the setting"
 set grid
-set key below font ',8' maxrows 3
+set key below horizontal maxcols 3 font ',8'
 set yrange [*:${CAP}+8]
 set logscale x
 set ylabel 'PSNR, dB'
@@ -316,9 +316,9 @@ at growing quanta against the approximately-timed (AT) reference, and shade-tree
 (\`experiments/error_vs_runtime/study.sh --help\` lists the options; \`--build DIR\` or
 \`TORUSRT_BUILD\` picks the build folder). The raw numbers are in
 \`experiments/error_vs_runtime/results/quantum.csv\` and \`pruning.csv\`; the columns are described
-at the top of \`quantum.sh\` and \`pruning.sh\`. Wall-clock times are the fastest of repeated runs (other load only adds time) on
-the machine that ran the study (other work on the machine can still add noise of some 10-20 % to a point);
-simulated times and errors are deterministic.
+at the top of \`quantum.sh\` and \`pruning.sh\`. Wall-clock times are the fastest of repeated
+runs on the machine that ran the study (other load only adds time, but can still add some
+10-20 % to a point); simulated times and errors are deterministic.
 
 ## 1. Timing style: loosely timed against approximately timed
 
