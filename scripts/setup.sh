@@ -17,5 +17,11 @@ if [ "${#missing[@]}" -gt 0 ]; then
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -q "${missing[@]}"
 fi
 
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build -j"$(nproc)"
+# Build output goes to build/build.log and is shown only when the build fails.
+mkdir -p build
+if ! { cmake -S . -B build -DCMAKE_BUILD_TYPE=Release && cmake --build build -j"$(nproc)"; } > build/build.log 2>&1; then
+  cat build/build.log
+  echo "setup: the build failed (log: build/build.log)" >&2
+  exit 1
+fi
+echo "setup: built torusrt in build/ (log: build/build.log)"
