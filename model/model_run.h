@@ -19,8 +19,8 @@ struct ModelOutcome {
     nlohmann::json report;            // the full statistics
 };
 
-// Runs `config` on a loaded scene. `t1_s` < 0 means "this run is T(1)" (one processor).
-// `vcd_commit` is called with the tracer work done only if the run succeeds.
+// Runs `config` on a loaded scene. `t1_s` < 0 means "this run is T(1)" (one processor). A VCD
+// trace, if asked for, is moved to its final name only when the run succeeds.
 ModelOutcome run_model(const SimConfig &config, const rt_scene *scene, const rt_grid *grid, double t1_s,
                        const std::string &t1_source, double wall_start_s);
 
