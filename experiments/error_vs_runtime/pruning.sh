@@ -38,48 +38,17 @@ DEFAULT_DEPTH=8
 DEFAULT_WEIGHT=1/512
 while [ $# -gt 0 ]; do
   case $1 in
-    --build) BUILD=$2; shift 2 ;;
-    --out) OUT=$2; shift 2 ;;
-    --scenes) SCENES=$2; shift 2 ;;
-    --ips) IPS=$2; shift 2 ;;
-    --size) SIZE=$2; shift 2 ;;
     --depths) DEPTHS=$2; shift 2 ;;
     --weights) WEIGHTS=$2; shift 2 ;;
-    --reps) REPS=$2; shift 2 ;;
     --no-beyond) BEYOND=0; shift ;;
-    -h|--help) sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
-    *) die "unknown option $1 (see --help)" ;;
+    *) study_option "$@"; shift "$SHIFT" ;;
   esac
 done
 [[ $REPS =~ ^[1-9][0-9]*$ ]] || die "--reps: a positive integer"
 need_build
 CMP=$(png_compare_tool) || die "cannot build png_compare (needs g++ and libpng-dev)"
 
-scene_file() { if [ -f "$1" ]; then echo "$1"; else echo "$REPO/scenes/$1.nff"; fi; }
-scene_name() { local b=${1##*/}; echo "${b%.nff}"; }
-
-TMP=$(mktemp -d)
-trap 'rm -rf "$TMP"' EXIT
-mkdir -p "$(dirname "$OUT")"
-CSV=$TMP/out.csv
-echo "scene,sweep,max_depth,min_weight,runner,processors,image_time_s,wall_s,sim_wall_s,packets,psnr_db,max_abs_diff,pixels_off_gt2,total_pixels,image_equals_render" > "$CSV"
-
-# timed TAG PROGRAM ARGS...: REPS runs; TAG.png/TAG.json from the first; M_WALL, M_SIM_WALL the fastest.
-timed() {
-  local tag=$1 prog=$2; shift 2
-  local walls=() simwalls=() r
-  for ((r = 0; r < REPS; r++)); do
-    "$BUILD/$prog" "$F" -o "$TMP/$tag.$r.png" --stats "$TMP/$tag.$r.json" -q --size "$SIZE" "$@" ||
-      die "$prog failed: $F $*"
-    walls+=("$(jq -r .wall_s "$TMP/$tag.$r.json")")
-    simwalls+=("$(jq -r '.sim_wall_s // .wall_s' "$TMP/$tag.$r.json")")
-  done
-  M_WALL=$(fastest "${walls[@]}")
-  M_SIM_WALL=$(fastest "${simwalls[@]}")
-  mv "$TMP/$tag.0.json" "$TMP/$tag.json"
-  mv "$TMP/$tag.0.png" "$TMP/$tag.png"
-  rm -f "$TMP/$tag".[0-9]*.png "$TMP/$tag".[0-9]*.json
-}
+csv_start "scene,sweep,max_depth,min_weight,runner,processors,image_time_s,wall_s,sim_wall_s,packets,psnr_db,max_abs_diff,pixels_off_gt2,total_pixels,image_equals_render"
 
 for s in $SCENES; do
   F=$(scene_file "$s")
@@ -92,14 +61,14 @@ for s in $SCENES; do
   [ "$BEYOND" = 1 ] && settings+=("beyond 32 1/65536")
   for setting in "${settings[@]}"; do
     read -r sweep d w <<<"$setting"
-    timed render torusrt-render --max-depth "$d" --min-weight "$w"
+    timed_runs render torusrt-render --max-depth "$d" --min-weight "$w"
     read -r psnr maxd off total < <("$CMP" "$TMP/ref.png" "$TMP/render.png") || die "png_compare failed"
     t1=$(jq -r .t1_s "$TMP/render.json")
     packets=$(jq -r .packets.created.total "$TMP/render.json")
     echo "$name,$sweep,$d,$w,render,1,$t1,$M_WALL,$M_SIM_WALL,$packets,$psnr,$maxd,$off,$total,true" >> "$CSV"
     echo "pruning: $name $sweep depth $d weight $w  render PSNR $psnr dB  T(1) $t1 s" >&2
     for ips in $IPS; do
-      timed sim torusrt-sim --ips "$ips" --max-depth "$d" --min-weight "$w" --t1 "$t1"
+      timed_runs sim torusrt-sim --ips "$ips" --max-depth "$d" --min-weight "$w" --t1 "$t1"
       eq=false
       cmp -s "$TMP/render.png" "$TMP/sim.png" && eq=true
       read -r psnr maxd off total < <("$CMP" "$TMP/ref.png" "$TMP/sim.png") || die "png_compare failed"
@@ -112,5 +81,4 @@ for s in $SCENES; do
     done
   done
 done
-mv -f "$CSV" "$OUT"
-echo "pruning: wrote $OUT" >&2
+csv_finish

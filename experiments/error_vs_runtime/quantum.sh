@@ -33,51 +33,16 @@ MAX_ERR=20
 REPS=5
 while [ $# -gt 0 ]; do
   case $1 in
-    --build) BUILD=$2; shift 2 ;;
-    --out) OUT=$2; shift 2 ;;
-    --scenes) SCENES=$2; shift 2 ;;
-    --ips) IPS=$2; shift 2 ;;
-    --size) SIZE=$2; shift 2 ;;
     --quanta) QUANTA=$2; shift 2 ;;
     --max-error) MAX_ERR=$2; shift 2 ;;
-    --reps) REPS=$2; shift 2 ;;
-    -h|--help) sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
-    *) die "unknown option $1 (see --help)" ;;
+    *) study_option "$@"; shift "$SHIFT" ;;
   esac
 done
 [[ $REPS =~ ^[1-9][0-9]*$ ]] || die "--reps: a positive integer"
 need_build
 for q in $QUANTA; do [ "$(quantum_seconds "$q" 2>/dev/null)" != bad ] || die "--quanta: bad quantum '$q'"; done
 
-scene_file() { if [ -f "$1" ]; then echo "$1"; else echo "$REPO/scenes/$1.nff"; fi; }
-scene_name() { local b=${1##*/}; echo "${b%.nff}"; }
-
-TMP=$(mktemp -d)
-trap 'rm -rf "$TMP"' EXIT
-mkdir -p "$(dirname "$OUT")"
-CSV=$TMP/out.csv
-echo "scene,ips,processors,style,quantum,quantum_s,sim_time_s,efficiency_busy,efficiency_t1,err_time_pct,err_eff_pct,wall_s,sim_wall_s,speedup,speedup_sim,events,events_per_s,packet_hops,packet_hops_per_s,delta_cycles,image_equal,deterministic,t1_s" > "$CSV"
-
-# measure TAG ARGS...: REPS runs of torusrt-sim; leaves TAG.png and TAG.json (first run) and sets
-# M_WALL, M_SIM_WALL (the fastest) and M_DET (true when every run gave the same sim_time_s).
-measure() {
-  local tag=$1; shift
-  local walls=() simwalls=() times=() r
-  for ((r = 0; r < REPS; r++)); do
-    "$BUILD/torusrt-sim" "$F" -o "$TMP/$tag.$r.png" --stats "$TMP/$tag.$r.json" -q --size "$SIZE" "$@" ||
-      die "torusrt-sim failed: $F $*"
-    walls+=("$(jq -r .wall_s "$TMP/$tag.$r.json")")
-    simwalls+=("$(jq -r .sim_wall_s "$TMP/$tag.$r.json")")
-    times+=("$(jq -r .sim_time_s "$TMP/$tag.$r.json")")
-  done
-  M_WALL=$(fastest "${walls[@]}")
-  M_SIM_WALL=$(fastest "${simwalls[@]}")
-  M_DET=true
-  [ "$(printf '%s\n' "${times[@]}" | sort -u | wc -l)" -eq 1 ] || M_DET=false
-  mv "$TMP/$tag.0.json" "$TMP/$tag.json"
-  mv "$TMP/$tag.0.png" "$TMP/$tag.png"
-  rm -f "$TMP/$tag".[0-9]*.png "$TMP/$tag".[0-9]*.json
-}
+csv_start "scene,ips,processors,style,quantum,quantum_s,sim_time_s,efficiency_busy,efficiency_t1,err_time_pct,err_eff_pct,wall_s,sim_wall_s,speedup,speedup_sim,events,events_per_s,packet_hops,packet_hops_per_s,delta_cycles,image_equal,deterministic,t1_s"
 
 for s in $SCENES; do
   F=$(scene_file "$s")
@@ -89,7 +54,7 @@ for s in $SCENES; do
     "$BUILD/torusrt-sim" "$F" -o "$TMP/t1.png" --stats "$TMP/t1.json" -q --size "$SIZE" --ips "$ips" ||
       die "torusrt-sim failed: $F --ips $ips"
     t1=$(jq -r .t1_s "$TMP/t1.json")
-    measure at --ips "$ips" --style at --t1 "$t1"
+    timed_runs at torusrt-sim --ips "$ips" --style at --t1 "$t1"
     at_T=$(jq -r .sim_time_s "$TMP/at.json")
     at_E=$(jq -r .efficiency_busy "$TMP/at.json")
     at_W=$M_WALL
@@ -109,7 +74,7 @@ for s in $SCENES; do
     echo "quantum: $name $ips AT  sim_time_s $at_T  wall $at_W s" >&2
     for q in $QUANTA; do
       qs=$(quantum_seconds "$q")
-      measure lt --ips "$ips" --style lt --quantum "$q" --t1 "$t1"
+      timed_runs lt torusrt-sim --ips "$ips" --style lt --quantum "$q" --t1 "$t1"
       eq=false
       cmp -s "$TMP/at.png" "$TMP/lt.png" && eq=true
       row lt "$q" "$qs" "$TMP/lt.json" "$eq" >> "$CSV"
@@ -119,5 +84,4 @@ for s in $SCENES; do
     done
   done
 done
-mv -f "$CSV" "$OUT"
-echo "quantum: wrote $OUT" >&2
+csv_finish

@@ -5,36 +5,18 @@
 #
 # Usage (CTest runs it so): bash tests/cli/bad_nff.sh BUILD_DIR SOURCE_DIR
 set -u
-
-if [ $# -ne 2 ]; then
-    echo "usage: $0 BUILD_DIR SOURCE_DIR" >&2
-    exit 2
-fi
-build_dir=$1
-source_dir=$2
-render="$build_dir/torusrt-render"
-corpus="$source_dir/tests/nff_bad"
-
-if [ ! -x "$render" ]; then
-    echo "bad_nff: $render not found or not executable (build the torusrt-render target)" >&2
-    exit 1
-fi
+source "$(dirname "$0")/common.bash" "$@"
+need_exe torusrt-render
+render="$BUILD/torusrt-render"
+corpus="$SRC/tests/nff_bad"
 if [ ! -d "$corpus" ]; then
     echo "bad_nff: no corpus folder $corpus" >&2
     exit 1
 fi
 
-# A hung renderer is a failure, not a stuck test run; `timeout` is in coreutils.
-run_limited=()
-if command -v timeout >/dev/null 2>&1; then
-    run_limited=(timeout -k 5 120)
-fi
+# A hung renderer is a failure, not a stuck test run.
+time_limit 120
 
-work=$(mktemp -d "${TMPDIR:-/tmp}/bad_nff.XXXXXX") || exit 1
-trap 'rm -rf "$work"' EXIT
-
-passed=0
-failed=0
 shopt -s nullglob
 files=("$corpus"/*.nff)
 if [ ${#files[@]} -eq 0 ]; then
@@ -59,8 +41,8 @@ names_file_and_line() {
 
 for file in "${files[@]}"; do
     name=$(basename "$file")
-    out_dir="$work/out_$name"   # the renderer's output folder: must stay empty
-    log="$work/stderr_$name"    # kept outside out_dir
+    out_dir="$TMP/out_$name"   # the renderer's output folder: must stay empty
+    log="$TMP/stderr_$name"    # kept outside out_dir
     mkdir -p "$out_dir"
     "${run_limited[@]}" "$render" "$file" -o "$out_dir/out.png" --stats "$out_dir/out.json" \
         >/dev/null 2>"$log" </dev/null
@@ -83,10 +65,9 @@ for file in "${files[@]}"; do
     fi
 
     if [ ${#problems[@]} -eq 0 ]; then
-        passed=$((passed + 1))
+        pass
     else
-        failed=$((failed + 1))
-        echo "FAIL $name:"
+        fail "$name:"
         for p in "${problems[@]}"; do
             echo "    $p"
         done
@@ -94,5 +75,4 @@ for file in "${files[@]}"; do
     fi
 done
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

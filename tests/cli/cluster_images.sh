@@ -8,65 +8,21 @@
 #   - replicated data moves zero object bytes over the bus, shared data moves some;
 #   - with shared data the bus utilisation (mean over buses) rises from m = 2 to 4 to 8;
 #   - with --cluster 1 no bus section is reported (no bus is elaborated).
-# JSON values are read with awk from the pretty-printed report (no jq or python needed).
+# JSON values are read with awk (json_get in common.bash) from the pretty-printed report (no jq or
+# python needed).
 #
 # Usage (CTest runs it so): bash tests/cli/cluster_images.sh BUILD_DIR SOURCE_DIR
 set -u
-
-if [ $# -ne 2 ]; then
-    echo "usage: $0 BUILD_DIR SOURCE_DIR" >&2
-    exit 2
-fi
-build_dir=$1
-source_dir=$2
-sim="$build_dir/torusrt-sim"
-render="$build_dir/torusrt-render"
-for exe in "$sim" "$render"; do
-    if [ ! -x "$exe" ]; then
-        echo "cluster_images: $exe not found or not executable" >&2
-        exit 1
-    fi
-done
-run_limited=()
-if command -v timeout >/dev/null 2>&1; then run_limited=(timeout -k 5 300); fi
-
-work=$(mktemp -d "${TMPDIR:-/tmp}/cluster_images.XXXXXX") || exit 1
-trap 'rm -rf "$work"' EXIT
-passed=0
-failed=0
-pass() { passed=$((passed + 1)); }
-fail() {
-    failed=$((failed + 1))
-    echo "FAIL: $*"
-}
-
-# json_get FILE a.b.c - the scalar at that path of torusrt's pretty-printed (2-space) JSON, not
-# through arrays; empty if absent.
-json_get() {
-    awk -v path="$2" '
-        {
-            match($0, /^ */); depth = RLENGTH / 2
-            if (match($0, /^ *"[^"]*": /)) {
-                key = substr($0, RSTART, RLENGTH); sub(/^ *"/, "", key); sub(/": $/, "", key)
-                stack[depth] = key
-                p = stack[1]; for (i = 2; i <= depth; i++) p = p "." stack[i]
-                if (p == path) { v = substr($0, RSTART + RLENGTH); sub(/,$/, "", v); print v; exit }
-            } else stack[depth] = "[]"
-        }' "$1"
-}
+source "$(dirname "$0")/common.bash" "$@"
+need_exe torusrt-sim torusrt-render
+sim="$BUILD/torusrt-sim"
+render="$BUILD/torusrt-render"
+time_limit 300
 
 # The scene with paper-image2, from the source tree or generated.
-scene2="$source_dir/scenes/paper-image2.nff"
-if [ ! -f "$scene2" ]; then
-    gen="$build_dir/torusrt-genscenes"
-    if [ ! -x "$gen" ] || ! "$gen" "$work" paper-image2 >/dev/null; then
-        echo "cluster_images: no $scene2 and cannot generate it with $gen" >&2
-        exit 1
-    fi
-    scene2="$work/paper-image2.nff"
-fi
+scene2=$(source_scene paper-image2) || exit 1
 # A small mixed scene: mirror, glass, polygons, a cylinder and overlapping spheres.
-mixed="$work/mixed.nff"
+mixed="$TMP/mixed.nff"
 cat >"$mixed" <<'NFF'
 v
 from 0 2 9
@@ -97,13 +53,13 @@ f 0.9 0.9 0.2 0.6 0.5 10 0 1
 s 2.5 1.2 -1 0.6
 NFF
 
-# run NAME SCENE SIZE ARGS... - one torusrt-sim run into $work/NAME.{png,json}; 0 if it succeeded.
+# run NAME SCENE SIZE ARGS... - one torusrt-sim run into $TMP/NAME.{png,json}; 0 if it succeeded.
 run() {
     local name=$1 scene=$2 size=$3
     shift 3
-    if ! "${run_limited[@]}" "$sim" "$scene" --size "$size" --ips 2x2x1 --t1 1 -q -o "$work/$name.png" \
-        --stats "$work/$name.json" "$@" 2>"$work/$name.err"; then
-        fail "$name: torusrt-sim $* failed: $(head -c 400 "$work/$name.err")"
+    if ! "${run_limited[@]}" "$sim" "$scene" --size "$size" --ips 2x2x1 --t1 1 -q -o "$TMP/$name.png" \
+        --stats "$TMP/$name.json" "$@" 2>"$TMP/$name.err"; then
+        fail "$name: torusrt-sim $* failed: $(head -c 400 "$TMP/$name.err")"
         return 1
     fi
     return 0
@@ -111,7 +67,7 @@ run() {
 
 for scene_name in paper-image2 mixed; do
     if [ "$scene_name" = mixed ]; then scene=$mixed; size=24x24; else scene=$scene2; size=32x32; fi
-    ref="$work/$scene_name.ref.png"
+    ref="$TMP/$scene_name.ref.png"
     if ! "$render" "$scene" --size "$size" -q -o "$ref"; then
         fail "$scene_name: torusrt-render failed"
         continue
@@ -121,8 +77,8 @@ for scene_name in paper-image2 mixed; do
             for arb in round-robin fixed-priority; do
                 name="$scene_name.m$m.$data.$arb"
                 run "$name" "$scene" "$size" --cluster "$m" --data "$data" --arbiter "$arb" || continue
-                if cmp -s "$work/$name.png" "$ref"; then pass; else fail "$name: PNG differs from torusrt-render's"; fi
-                obj=$(json_get "$work/$name.json" bus.object_bytes)
+                if cmp -s "$TMP/$name.png" "$ref"; then pass; else fail "$name: PNG differs from torusrt-render's"; fi
+                obj=$(json_get "$TMP/$name.json" bus.object_bytes)
                 if [ "$m" = 1 ]; then
                     if [ -z "$obj" ]; then pass; else fail "$name: --cluster 1 reports a bus"; fi
                 elif [ "$data" = replicated ]; then
@@ -140,10 +96,10 @@ for scene_name in paper-image2 mixed; do
         "--cluster 4 --style lt --quantum 1ms --data shared" \
         "--cluster 64 --style lt --quantum 50ms --data shared --arbiter fixed-priority" \
         "--cluster 3 --style lt --dispatch shortest-queue"; do
-        name="$scene_name.extra$((passed + failed))"
+        name="$scene_name.extra$((PASSED + FAILED))"
         # shellcheck disable=SC2086
         run "$name" "$scene" "$size" $extra || continue
-        if cmp -s "$work/$name.png" "$ref"; then pass; else fail "$name ($extra): PNG differs"; fi
+        if cmp -s "$TMP/$name.png" "$ref"; then pass; else fail "$name ($extra): PNG differs"; fi
     done
 done
 
@@ -152,7 +108,7 @@ prev=""
 for m in 2 4 8; do
     name="util.m$m"
     run "$name" "$scene2" 32x32 --cluster "$m" --data shared || continue
-    u=$(json_get "$work/$name.json" bus.utilisation.mean)
+    u=$(json_get "$TMP/$name.json" bus.utilisation.mean)
     echo "shared m=$m: bus utilisation mean $u"
     if [ -n "$prev" ]; then
         if awk -v a="$prev" -v b="$u" 'BEGIN { exit !(b + 0 > a + 0) }'; then pass
@@ -162,14 +118,13 @@ for m in 2 4 8; do
 done
 
 # The VCD holds the bus owner and request lines.
-if run vcd "$mixed" 12x12 --cluster 3 --data shared --vcd "$work/trace.vcd" --trace-ips 1; then
-    if grep -q ' owner ' "$work/trace.vcd" && grep -q ' request_0 ' "$work/trace.vcd" &&
-        grep -q ' request_cu ' "$work/trace.vcd" && grep -q '^\$scope module cluster_1 ' "$work/trace.vcd"; then
+if run vcd "$mixed" 12x12 --cluster 3 --data shared --vcd "$TMP/trace.vcd" --trace-ips 1; then
+    if grep -q ' owner ' "$TMP/trace.vcd" && grep -q ' request_0 ' "$TMP/trace.vcd" &&
+        grep -q ' request_cu ' "$TMP/trace.vcd" && grep -q '^\$scope module cluster_1 ' "$TMP/trace.vcd"; then
         pass
     else
         fail "VCD lacks the bus owner / request lines of cluster_1"
     fi
 fi
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

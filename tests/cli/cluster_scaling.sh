@@ -15,60 +15,17 @@
 #
 # Usage (CTest runs it so): bash tests/cli/cluster_scaling.sh BUILD_DIR SOURCE_DIR
 set -u
+source "$(dirname "$0")/common.bash" "$@"
+need_exe torusrt-sim torusrt-render
+sim="$BUILD/torusrt-sim"
+render="$BUILD/torusrt-render"
+time_limit 300
 
-if [ $# -ne 2 ]; then
-    echo "usage: $0 BUILD_DIR SOURCE_DIR" >&2
-    exit 2
-fi
-build_dir=$1
-source_dir=$2
-sim="$build_dir/torusrt-sim"
-render="$build_dir/torusrt-render"
-for exe in "$sim" "$render"; do
-    if [ ! -x "$exe" ]; then
-        echo "cluster_scaling: $exe not found or not executable" >&2
-        exit 1
-    fi
-done
-run_limited=()
-if command -v timeout >/dev/null 2>&1; then run_limited=(timeout -k 5 300); fi
-
-work=$(mktemp -d "${TMPDIR:-/tmp}/cluster_scaling.XXXXXX") || exit 1
-trap 'rm -rf "$work"' EXIT
-passed=0
-failed=0
-pass() { passed=$((passed + 1)); }
-fail() {
-    failed=$((failed + 1))
-    echo "FAIL: $*"
-}
-
-# json_get FILE a.b.c - a scalar of torusrt's pretty-printed JSON (see cluster_images.sh).
-json_get() {
-    awk -v path="$2" '
-        {
-            match($0, /^ */); depth = RLENGTH / 2
-            if (match($0, /^ *"[^"]*": /)) {
-                key = substr($0, RSTART, RLENGTH); sub(/^ *"/, "", key); sub(/": $/, "", key)
-                stack[depth] = key
-                p = stack[1]; for (i = 2; i <= depth; i++) p = p "." stack[i]
-                if (p == path) { v = substr($0, RSTART + RLENGTH); sub(/,$/, "", v); print v; exit }
-            } else stack[depth] = "[]"
-        }' "$1"
-}
 # less A B - exit 0 if A < B (numbers).
 less() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a != "" && b != "" && a + 0 < b + 0) }'; }
 
-scene="$source_dir/scenes/paper-image1.nff"
-if [ ! -f "$scene" ]; then
-    gen="$build_dir/torusrt-genscenes"
-    if [ ! -x "$gen" ] || ! "$gen" "$work" paper-image1 >/dev/null; then
-        echo "cluster_scaling: no $scene and cannot generate it with $gen" >&2
-        exit 1
-    fi
-    scene="$work/paper-image1.nff"
-fi
-ref="$work/ref.png"
+scene=$(source_scene paper-image1) || exit 1
+ref="$TMP/ref.png"
 if ! "$render" "$scene" -q -o "$ref"; then
     echo "cluster_scaling: torusrt-render failed" >&2
     exit 1
@@ -81,14 +38,14 @@ for dispatch in round-robin shortest-queue; do
         for m in $ms; do
             name="$dispatch.$data.m$m"
             if ! "${run_limited[@]}" "$sim" "$scene" --ips 4x2x2 --cluster "$m" --data "$data" --dispatch "$dispatch" \
-                --t1 1 -q -o "$work/$name.png" --stats "$work/$name.json" 2>"$work/$name.err"; then
-                fail "$name: torusrt-sim failed: $(head -c 400 "$work/$name.err")"
+                --t1 1 -q -o "$TMP/$name.png" --stats "$TMP/$name.json" 2>"$TMP/$name.err"; then
+                fail "$name: torusrt-sim failed: $(head -c 400 "$TMP/$name.err")"
                 continue
             fi
-            if cmp -s "$work/$name.png" "$ref"; then pass; else fail "$name: PNG differs from torusrt-render's"; fi
-            T[$name]=$(json_get "$work/$name.json" sim_time_s)
-            BUSY[$name]=$(json_get "$work/$name.json" load.busy_s.mean)
-            UTIL[$name]=$(json_get "$work/$name.json" bus.utilisation.mean)
+            if cmp -s "$TMP/$name.png" "$ref"; then pass; else fail "$name: PNG differs from torusrt-render's"; fi
+            T[$name]=$(json_get "$TMP/$name.json" sim_time_s)
+            BUSY[$name]=$(json_get "$TMP/$name.json" load.busy_s.mean)
+            UTIL[$name]=$(json_get "$TMP/$name.json" bus.utilisation.mean)
         done
     done
 done
@@ -126,5 +83,4 @@ for m in $ms; do
     else fail "shortest-queue m=$m: shared ($s s) faster than replicated ($r s)"; fi
 done
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

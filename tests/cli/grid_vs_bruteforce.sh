@@ -12,34 +12,10 @@
 # Usage (CTest runs it so): bash tests/cli/grid_vs_bruteforce.sh BUILD_DIR SOURCE_DIR
 # $TORUSRT_SCENE_DIR, when set, replaces SOURCE_DIR/scenes.
 set -u
-
-if [ $# -ne 2 ]; then
-    echo "usage: $0 BUILD_DIR SOURCE_DIR" >&2
-    exit 2
-fi
-build_dir=$1
-source_dir=$2
-render="$build_dir/torusrt-render"
-scene_dir=${TORUSRT_SCENE_DIR:-$source_dir/scenes}
+source "$(dirname "$0")/common.bash" "$@"
+need_exe torusrt-render
 max_objects=400
-
-if [ ! -x "$render" ]; then
-    echo "grid_vs_bruteforce: $render not found or not executable (build the torusrt-render target)" >&2
-    exit 1
-fi
-
-run_limited=()
-if command -v timeout >/dev/null 2>&1; then
-    run_limited=(timeout -k 5 300)
-fi
-
-work=$(mktemp -d "${TMPDIR:-/tmp}/grid_vs_bf.XXXXXX") || exit 1
-trap 'rm -rf "$work"' EXIT
-
-passed=0
-failed=0
-pass() { passed=$((passed + 1)); }
-fail() { failed=$((failed + 1)); echo "FAIL $*"; }
+time_limit 300
 
 # Objects in an NFF file, roughly: one per s, p or c, n - 2 per `pp n` (comments dropped).
 # NFF is a token stream, so tokens are counted, not lines.
@@ -51,28 +27,19 @@ count_objects() {
         END { print count + 0 }'
 }
 
-# render NAME OUT ARGS...: renders, reporting a failure (with stderr) if it does not work.
-render_to() {
-    local name=$1 out=$2
-    shift 2
-    local log="$work/stderr"
-    if "${run_limited[@]}" "$render" "$scene" -o "$out" -q "$@" >/dev/null 2>"$log" </dev/null && [ -s "$out" ]; then
-        return 0
-    fi
-    fail "$name: torusrt-render $* did not produce $out: $(head -c 300 "$log")"
-    return 1
-}
+# render_to NAME OUT ARGS...: renders $scene, reporting a failure (with stderr) if it does not work.
+render_to() { render_ok "$1" "$scene" "${@:2}"; }
 
 shopt -s nullglob
-scenes=("$scene_dir"/*.nff)
+scenes=("$SCENE_DIR"/*.nff)
 for required in paper-image1 paper-image2; do
-    if [ ! -f "$scene_dir/$required.nff" ]; then
-        fail "$required: scene file missing: $scene_dir/$required.nff"
+    if [ ! -f "$SCENE_DIR/$required.nff" ]; then
+        fail "$required: scene file missing: $SCENE_DIR/$required.nff"
     fi
 done
 if [ ${#scenes[@]} -eq 0 ]; then
-    echo "grid_vs_bruteforce: no .nff files in $scene_dir" >&2
-    echo "$passed passed, $((failed + 1)) failed"
+    fail "grid_vs_bruteforce: no .nff files in $SCENE_DIR"
+    finish
     exit 1
 fi
 
@@ -90,10 +57,10 @@ for scene in "${scenes[@]}"; do
         ;;
     esac
     if [ "${size[0]:-}" != skip ]; then
-        bf="$work/$name.bf.png"
+        bf="$TMP/$name.bf.png"
         if render_to "$name" "$bf" --brute-force "${size[@]}"; then
             for cells in 1 7 24 64; do
-                out="$work/$name.cells$cells.png"
+                out="$TMP/$name.cells$cells.png"
                 render_to "$name" "$out" --cells "$cells" "${size[@]}" || continue
                 if cmp -s "$bf" "$out"; then
                     pass
@@ -104,8 +71,8 @@ for scene in "${scenes[@]}"; do
         fi
     fi
     # Determinism at default settings.
-    a="$work/$name.a.png"
-    b="$work/$name.b.png"
+    a="$TMP/$name.a.png"
+    b="$TMP/$name.b.png"
     if render_to "$name" "$a" && render_to "$name" "$b"; then
         if cmp -s "$a" "$b"; then
             pass
@@ -113,8 +80,7 @@ for scene in "${scenes[@]}"; do
             fail "$name: two renders at default settings differ"
         fi
     fi
-    rm -f "$work/$name".*.png
+    rm -f "$TMP/$name".*.png
 done
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

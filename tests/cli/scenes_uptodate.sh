@@ -7,49 +7,29 @@
 # the paper's scenes hold 369 and 123 objects, and that the generator is deterministic.
 # Prints "N passed, M failed"; exits 1 on any failure.
 set -u
-
-if [ $# -ne 2 ]; then
-    echo "usage: bash $0 BUILD_DIR SOURCE_DIR" >&2
-    exit 2
-fi
-build=$1
-src=$2
-gen="$build/torusrt-genscenes"
-scenes="$src/scenes"
-
-passed=0
-failed=0
-pass() { passed=$((passed + 1)); }
-fail() {
-    echo "FAIL: $*"
-    failed=$((failed + 1))
-}
-finish() {
-    echo "$passed passed, $failed failed"
-    [ "$failed" -eq 0 ]
-    exit $?
-}
-
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/scenes_uptodate.XXXXXX") || exit 1
-trap 'rm -rf "$tmp"' EXIT
+source "$(dirname "$0")/common.bash" "$@"
+gen="$BUILD/torusrt-genscenes"
+scenes="$SRC/scenes"
 
 if [ ! -x "$gen" ]; then
     fail "$gen does not exist or is not executable"
     finish
+    exit 1
 fi
 
 # 1. Generate everything.
-mkdir -p "$tmp/a" "$tmp/b"
-if "$gen" "$tmp/a" >"$tmp/log" 2>&1; then
+mkdir -p "$TMP/a" "$TMP/b"
+if "$gen" "$TMP/a" >"$TMP/log" 2>&1; then
     pass
 else
-    fail "torusrt-genscenes $tmp/a exited non-zero:"
-    sed 's/^/    /' "$tmp/log"
+    fail "torusrt-genscenes $TMP/a exited non-zero:"
+    sed 's/^/    /' "$TMP/log"
     finish
+    exit 1
 fi
 
 # 2. Every generated file is checked in, byte for byte.
-for f in "$tmp"/a/*.nff; do
+for f in "$TMP"/a/*.nff; do
     [ -e "$f" ] || { fail "the generator wrote no .nff files"; break; }
     name=$(basename "$f")
     if [ ! -f "$scenes/$name" ]; then
@@ -67,7 +47,7 @@ done
 for f in "$scenes"/*.nff; do
     [ -e "$f" ] || continue
     name=$(basename "$f")
-    if [ -f "$tmp/a/$name" ]; then
+    if [ -f "$TMP/a/$name" ]; then
         pass
     else
         fail "scenes/$name is checked in but torusrt-genscenes does not write it"
@@ -75,9 +55,9 @@ for f in "$scenes"/*.nff; do
 done
 
 # 4. --list names the same set.
-if "$gen" --list >"$tmp/list" 2>&1; then
-    listed=$(awk '{print $1 ".nff"}' "$tmp/list" | sort)
-    written=$(cd "$tmp/a" && ls -1 -- *.nff | sort)
+if "$gen" --list >"$TMP/list" 2>&1; then
+    listed=$(awk '{print $1 ".nff"}' "$TMP/list" | sort)
+    written=$(cd "$TMP/a" && ls -1 -- *.nff | sort)
     if [ "$listed" = "$written" ]; then
         pass
     else
@@ -129,30 +109,30 @@ done
 
 # 6. Deterministic: a second run, and a run naming two scenes, write the same bytes;
 #    no temporary files are left behind.
-if "$gen" "$tmp/b" paper-image1 one-cell >/dev/null 2>&1 &&
-    cmp -s "$tmp/a/paper-image1.nff" "$tmp/b/paper-image1.nff" &&
-    cmp -s "$tmp/a/one-cell.nff" "$tmp/b/one-cell.nff" &&
-    [ "$(ls -1 "$tmp/b" | wc -l)" -eq 2 ]; then
+if "$gen" "$TMP/b" paper-image1 one-cell >/dev/null 2>&1 &&
+    cmp -s "$TMP/a/paper-image1.nff" "$TMP/b/paper-image1.nff" &&
+    cmp -s "$TMP/a/one-cell.nff" "$TMP/b/one-cell.nff" &&
+    [ "$(ls -1 "$TMP/b" | wc -l)" -eq 2 ]; then
     pass
 else
     fail "writing only paper-image1 and one-cell did not reproduce the same two files"
 fi
-if ls "$tmp"/a/*.tmp >/dev/null 2>&1; then
+if ls "$TMP"/a/*.tmp >/dev/null 2>&1; then
     fail "temporary .tmp files left behind"
 else
     pass
 fi
 
 # 7. Errors: unknown name and unwritable folder exit non-zero and write nothing.
-mkdir -p "$tmp/c"
-if "$gen" "$tmp/c" no-such-scene >/dev/null 2>&1; then
+mkdir -p "$TMP/c"
+if "$gen" "$TMP/c" no-such-scene >/dev/null 2>&1; then
     fail "an unknown scene name did not make torusrt-genscenes fail"
-elif [ -n "$(ls -A "$tmp/c")" ]; then
+elif [ -n "$(ls -A "$TMP/c")" ]; then
     fail "an unknown scene name still wrote files"
 else
     pass
 fi
-if "$gen" "$tmp/missing/folder" empty >/dev/null 2>&1; then
+if "$gen" "$TMP/missing/folder" empty >/dev/null 2>&1; then
     fail "writing into a missing folder did not make torusrt-genscenes fail"
 else
     pass

@@ -18,43 +18,14 @@
 # Usage (CTest runs it so): bash tests/cli/stiff_scenes.sh BUILD_DIR SOURCE_DIR
 # $TORUSRT_SCENE_DIR, when set, replaces SOURCE_DIR/scenes.
 set -u
-
-if [ $# -ne 2 ]; then
-    echo "usage: $0 BUILD_DIR SOURCE_DIR" >&2
-    exit 2
-fi
-build_dir=$1
-source_dir=$2
-render="$build_dir/torusrt-render"
-scene_dir=${TORUSRT_SCENE_DIR:-$source_dir/scenes}
-
-if [ ! -x "$render" ]; then
-    echo "stiff_scenes: $render not found or not executable (build the torusrt-render target)" >&2
-    exit 1
-fi
+source "$(dirname "$0")/common.bash" "$@"
+need_exe torusrt-render
 have_jq=1
 if ! command -v jq >/dev/null 2>&1; then
     have_jq=0
     echo "note: jq not found: the --stats checks are skipped"
 fi
-run_limited=()
-if command -v timeout >/dev/null 2>&1; then
-    run_limited=(timeout -k 5 300)
-fi
-
-work=$(mktemp -d "${TMPDIR:-/tmp}/stiff_scenes.XXXXXX") || exit 1
-trap 'rm -rf "$work"' EXIT
-
-passed=0
-failed=0
-pass() { passed=$((passed + 1)); }
-fail() { failed=$((failed + 1)); echo "FAIL $*"; }
-# check DESCRIPTION COMMAND...: one pass or one failure.
-check() {
-    local what=$1
-    shift
-    if "$@"; then pass; else fail "$what"; fi
-}
+time_limit 300
 
 scenes=(scale-1 scale-tiny scale-huge scale-pow2-tiny scale-pow2-huge tiny-sphere tiny-sphere-alone
     facing-mirrors light-inside tir grazing axis-rays grid-corners eye-inside empty one-cell
@@ -68,30 +39,17 @@ png_size() {
 scene_resolution() {
     sed 's/#.*//' "$1" | tr -s ' \t\r' '\n\n\n' | awk 'take == 2 { w = $0; take = 1; next } take == 1 { print w + 0, $0 + 0; exit } $0 == "resolution" { take = 2 }'
 }
-# stat_value JSON FILTER
-stat_value() { jq -r "$2" "$1"; }
-
 # render_scene NAME OUT.png [ARGS...]: renders with --stats OUT.json; fails loudly if it cannot.
-render_scene() {
-    local name=$1 out=$2
-    shift 2
-    local log="$work/$name.stderr"
-    if "${run_limited[@]}" "$render" "$scene_dir/$name.nff" -o "$out" --stats "${out%.png}.json" -q "$@" \
-        >/dev/null 2>"$log" </dev/null && [ -s "$out" ]; then
-        return 0
-    fi
-    fail "$name: torusrt-render $* failed: $(head -c 300 "$log")"
-    return 1
-}
+render_scene() { render_ok "$1" "$SCENE_DIR/$1.nff" "$2" --stats "${2%.png}.json" "${@:3}"; }
 
 declare -A ok
 for name in "${scenes[@]}"; do
-    file="$scene_dir/$name.nff"
+    file="$SCENE_DIR/$name.nff"
     if [ ! -f "$file" ]; then
         fail "$name: scene file missing: $file"
         continue
     fi
-    png="$work/$name.png"
+    png="$TMP/$name.png"
     render_scene "$name" "$png" || continue
     ok[$name]=1
     pass
@@ -99,18 +57,18 @@ for name in "${scenes[@]}"; do
     got=$(png_size "$png")
     check "$name: PNG is $got, the scene asks for $want" [ "$got" = "$want" ]
     if [ "$have_jq" -eq 1 ]; then
-        json="$work/$name.json"
+        stats="$TMP/$name.json"
         check "$name: ray packets created != consumed" \
-            [ "$(stat_value "$json" .packets.created.ray)" = "$(stat_value "$json" .packets.consumed.ray)" ]
+            [ "$(json "$stats" .packets.created.ray)" = "$(json "$stats" .packets.consumed.ray)" ]
         check "$name: shadow packets created != consumed" \
-            [ "$(stat_value "$json" .packets.created.shadow)" = "$(stat_value "$json" .packets.consumed.shadow)" ]
+            [ "$(json "$stats" .packets.created.shadow)" = "$(json "$stats" .packets.consumed.shadow)" ]
     fi
 done
 
 # Power-of-two scales: exact products, so the same image byte for byte.
 for name in scale-pow2-tiny scale-pow2-huge; do
     if [ -n "${ok[scale-1]:-}" ] && [ -n "${ok[$name]:-}" ]; then
-        check "$name: PNG differs from scale-1's" cmp -s "$work/scale-1.png" "$work/$name.png"
+        check "$name: PNG differs from scale-1's" cmp -s "$TMP/scale-1.png" "$TMP/$name.png"
     fi
 done
 # Decimal scales and the tiny sphere: same size here; pixels are compared in kernel_tests.
@@ -118,21 +76,21 @@ for pair in scale-tiny:scale-1 scale-huge:scale-1 tiny-sphere:tiny-sphere-alone;
     a=${pair%%:*}
     b=${pair#*:}
     if [ -n "${ok[$a]:-}" ] && [ -n "${ok[$b]:-}" ]; then
-        check "$a: PNG size differs from $b's" [ "$(png_size "$work/$a.png")" = "$(png_size "$work/$b.png")" ]
+        check "$a: PNG size differs from $b's" [ "$(png_size "$TMP/$a.png")" = "$(png_size "$TMP/$b.png")" ]
     fi
 done
 
 # Facing mirrors: the depth limit.
 if [ -n "${ok[facing-mirrors]:-}" ]; then
-    d8="$work/fm8.png"
-    d7="$work/fm7.png"
+    d8="$TMP/fm8.png"
+    d7="$TMP/fm7.png"
     if render_scene facing-mirrors "$d8" --max-depth 8 && render_scene facing-mirrors "$d7" --max-depth 7; then
-        check "facing-mirrors: --max-depth 8 differs from the default" cmp -s "$work/facing-mirrors.png" "$d8"
+        check "facing-mirrors: --max-depth 8 differs from the default" cmp -s "$TMP/facing-mirrors.png" "$d8"
         check "facing-mirrors: depth-8 rays change nothing (--max-depth 7 gives the same image)" \
             bash -c "! cmp -s '$d7' '$d8'"
         if [ "$have_jq" -eq 1 ]; then
-            r8=$(stat_value "${d8%.png}.json" .packets.created.ray)
-            r7=$(stat_value "${d7%.png}.json" .packets.created.ray)
+            r8=$(json "${d8%.png}.json" .packets.created.ray)
+            r7=$(json "${d7%.png}.json" .packets.created.ray)
             check "facing-mirrors: no more ray packets at --max-depth 8 ($r8) than at 7 ($r7)" [ "$r8" -gt "$r7" ]
         fi
     fi
@@ -140,22 +98,21 @@ fi
 
 if [ "$have_jq" -eq 1 ]; then
     if [ -n "${ok[empty]:-}" ]; then
-        j="$work/empty.json"
-        pixels=$(($(stat_value "$j" .width) * $(stat_value "$j" .height)))
-        check "empty: primary rays missing the space != pixels" [ "$(stat_value "$j" .packets.primary_missed)" = "$pixels" ]
-        check "empty: something was shaded" [ "$(stat_value "$j" .ops.shadings)" = 0 ]
+        j="$TMP/empty.json"
+        pixels=$(($(json "$j" .width) * $(json "$j" .height)))
+        check "empty: primary rays missing the space != pixels" [ "$(json "$j" .packets.primary_missed)" = "$pixels" ]
+        check "empty: something was shaded" [ "$(json "$j" .ops.shadings)" = 0 ]
     fi
     if [ -n "${ok[eye-inside]:-}" ]; then
         check "eye-inside: a primary ray missed the space although the eye is inside it" \
-            [ "$(stat_value "$work/eye-inside.json" .packets.primary_missed)" = 0 ]
+            [ "$(json "$TMP/eye-inside.json" .packets.primary_missed)" = 0 ]
     fi
     if [ -n "${ok[one-pixel]:-}" ]; then
-        check "one-pixel: the single ray shaded nothing" [ "$(stat_value "$work/one-pixel.json" .ops.shadings)" -ge 1 ]
+        check "one-pixel: the single ray shaded nothing" [ "$(json "$TMP/one-pixel.json" .ops.shadings)" -ge 1 ]
     fi
 fi
 if [ -n "${ok[one-pixel]:-}" ]; then
-    check "one-pixel: PNG is not 1x1" [ "$(png_size "$work/one-pixel.png")" = "1 1" ]
+    check "one-pixel: PNG is not 1x1" [ "$(png_size "$TMP/one-pixel.png")" = "1 1" ]
 fi
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

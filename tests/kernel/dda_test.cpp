@@ -16,7 +16,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -24,42 +23,11 @@
 #include "rt_dda.h"
 #include "rt_grid.h"
 #include "rt_scene.h"
+#include "test_support.h"
+
+using namespace torusrt_test;
 
 namespace {
-
-struct SceneDeleter {
-    void operator()(rt_scene *s) const { rt_scene_free(s); }
-};
-struct GridDeleter {
-    void operator()(rt_grid *g) const { rt_grid_free(g); }
-};
-using ScenePtr = std::unique_ptr<rt_scene, SceneDeleter>;
-using GridPtr = std::unique_ptr<rt_grid, GridDeleter>;
-
-// splitmix64: the same numbers on every platform and library.
-class DdaRng {
-  public:
-    explicit DdaRng(uint64_t seed) : state_(seed) {}
-    uint64_t next() {
-        uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-        return z ^ (z >> 31);
-    }
-    double uniform(double lo, double hi) { return lo + (hi - lo) * double(next() >> 11) * 0x1.0p-53; }
-    int below(int n) { return int(next() % uint64_t(n)); }
-    rt_vec3 unit() {
-        for (;;) {
-            rt_vec3 v = rt_vec(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
-            double l = rt_vec_length(v);
-            if (l > 0.1 && l <= 1.0)
-                return rt_vec_scale(v, 1.0 / l);
-        }
-    }
-
-  private:
-    uint64_t state_;
-};
 
 double ax(rt_vec3 v, int a) { return a == 0 ? v.x : a == 1 ? v.y : v.z; }
 void set_ax(rt_vec3 &v, int a, double x) { (a == 0 ? v.x : a == 1 ? v.y : v.z) = x; }
@@ -72,19 +40,7 @@ std::string vstr(rt_vec3 v) {
 }
 
 // Two spheres of radius r at lo and hi: the object space is known exactly.
-ScenePtr two_spheres(rt_vec3 lo, rt_vec3 hi, double r) {
-    ScenePtr s(rt_scene_new());
-    EXPECT_EQ(rt_scene_add_sphere(s.get(), lo, r), RT_OK);
-    EXPECT_EQ(rt_scene_add_sphere(s.get(), hi, r), RT_OK);
-    return s;
-}
-
-GridPtr make_grid(const rt_scene *s, int nx, int ny, int nz) {
-    char msg[RT_MSG_LEN] = "";
-    GridPtr g(rt_grid_new(s, nx, ny, nz, msg, sizeof msg));
-    EXPECT_TRUE(g) << msg;
-    return g;
-}
+ScenePtr two_spheres(rt_vec3 lo, rt_vec3 hi, double r) { return scene_with_spheres({{lo, r}, {hi, r}}); }
 
 // What the test knows of a grid: its dimensions and planes, read through the public API.
 struct Planes {
@@ -359,7 +315,7 @@ std::vector<TestSpace> test_spaces() {
 const int kGridDims[][3] = {{1, 1, 1}, {7, 7, 7}, {24, 24, 24}, {5, 9, 13}, {64, 1, 3}, {1, 24, 1}};
 
 // A random point in the object space grown by `factor` around its centre.
-rt_vec3 random_point(DdaRng &rng, const rt_box &b, double factor) {
+rt_vec3 random_point(TestRng &rng, const rt_box &b, double factor) {
     rt_vec3 c = rt_vec_scale(rt_vec_add(b.lo, b.hi), 0.5),
             h = rt_vec_scale(rt_vec_sub(b.hi, b.lo), 0.5 * factor);
     return rt_vec(c.x + rng.uniform(-h.x, h.x), c.y + rng.uniform(-h.y, h.y), c.z + rng.uniform(-h.z, h.z));
@@ -368,7 +324,7 @@ rt_vec3 random_point(DdaRng &rng, const rt_box &b, double factor) {
 } // namespace
 
 TEST(DdaWalk, RandomRaysInsideAndOutside) {
-    DdaRng rng(12345);
+    TestRng rng(12345);
     for (auto &sp : test_spaces()) {
         for (auto &dm : kGridDims) {
             GridPtr g = make_grid(sp.scene.get(), dm[0], dm[1], dm[2]);
@@ -396,7 +352,7 @@ TEST(DdaWalk, RandomRaysInsideAndOutside) {
 }
 
 TEST(DdaWalk, RandomRaysWithZeroComponents) {
-    DdaRng rng(777);
+    TestRng rng(777);
     for (auto &sp : test_spaces()) {
         for (auto &dm : kGridDims) {
             GridPtr g = make_grid(sp.scene.get(), dm[0], dm[1], dm[2]);
@@ -429,7 +385,7 @@ TEST(DdaWalk, RandomRaysWithZeroComponents) {
 TEST(DdaWalk, RaysFromGridPlanePoints) {
     // Origins exactly on grid planes (cell faces, edges and corners), random directions
     // and the diagonal directions through edges and corners.
-    DdaRng rng(4242);
+    TestRng rng(4242);
     const rt_vec3 diag_dirs[] = {rt_vec(1, 1, 1),  rt_vec(-1, -1, -1), rt_vec(1, -1, 1), rt_vec(1, 1, 0),
                                  rt_vec(0, 1, -1), rt_vec(-1, 0, -1),  rt_vec(1, 0, 0),  rt_vec(0, 0, -1),
                                  rt_vec(2, 1, 0),  rt_vec(1, 2, 3)};
@@ -603,7 +559,7 @@ TEST(DdaStart, RaysThatMissTheSpace) {
     EXPECT_EQ(rt_dda_start(g.get(), rt_vec(5, 5, 5), rt_vec(INFINITY, 0, 0), 0.0, &d), 0);
     EXPECT_EQ(rt_dda_start(g.get(), rt_vec(NAN, 5, 5), rt_vec(1, 0, 0), 0.0, &d), 0);
     // Random misses: origins outside, aimed away from the space's bounding sphere.
-    DdaRng rng(99);
+    TestRng rng(99);
     rt_box b = rt_grid_bounds(g.get());
     rt_vec3 c = rt_vec_scale(rt_vec_add(b.lo, b.hi), 0.5);
     double r = 0.5 * rt_vec_length(rt_vec_sub(b.hi, b.lo));
@@ -624,7 +580,7 @@ TEST(DdaStart, RaysThatMissTheSpace) {
 
 TEST(DdaStart, TMinLaterThanTheEntry) {
     // The walk starts where the ray is at t_min, in that point's cell.
-    DdaRng rng(31337);
+    TestRng rng(31337);
     ScenePtr s = two_spheres(rt_vec(0, 0, 0), rt_vec(10, 10, 10), 1.0);
     GridPtr g = make_grid(s.get(), 7, 7, 7);
     ASSERT_TRUE(g);
@@ -681,7 +637,7 @@ TEST(DdaWalk, HugeOriginDistanceAndExtremeDirections) {
     GridPtr g = make_grid(s.get(), 24, 24, 24);
     ASSERT_TRUE(g);
     FailureBudget budget;
-    DdaRng rng(2024);
+    TestRng rng(2024);
     for (int i = 0; i < 500; i++) {
         rt_box b = rt_grid_bounds(g.get());
         rt_vec3 target = random_point(rng, b, 0.95);

@@ -12,49 +12,16 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <memory>
 #include <string>
 #include <vector>
 
 #include "rt_grid.h"
 #include "rt_scene.h"
+#include "test_support.h"
+
+using namespace torusrt_test;
 
 namespace {
-
-struct SceneDeleter {
-    void operator()(rt_scene *s) const { rt_scene_free(s); }
-};
-struct GridDeleter {
-    void operator()(rt_grid *g) const { rt_grid_free(g); }
-};
-using ScenePtr = std::unique_ptr<rt_scene, SceneDeleter>;
-using GridPtr = std::unique_ptr<rt_grid, GridDeleter>;
-
-// splitmix64: the same numbers on every platform and library.
-class Rng {
-public:
-    explicit Rng(uint64_t seed) : state_(seed) {}
-    uint64_t next()
-    {
-        uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-        return z ^ (z >> 31);
-    }
-    double uniform(double lo, double hi) { return lo + (hi - lo) * double(next() >> 11) * 0x1.0p-53; }
-    rt_vec3 point(double lo, double hi) { return rt_vec(uniform(lo, hi), uniform(lo, hi), uniform(lo, hi)); }
-    rt_vec3 unit()
-    {
-        for (;;) {
-            rt_vec3 v = point(-1, 1);
-            double l = rt_vec_length(v);
-            if (l > 0.1 && l <= 1.0) return rt_vec_scale(v, 1.0 / l);
-        }
-    }
-
-private:
-    uint64_t state_;
-};
 
 // What the test knows of each object, kept apart from the scene's internals.
 struct TestObject {
@@ -282,7 +249,7 @@ std::vector<rt_vec3> pentagram(rt_vec3 c, rt_vec3 n, double r, double phase)
 
 void random_scene(TestScene &ts, uint64_t seed, int spheres, int triangles, int stars, int pentagrams)
 {
-    Rng rng(seed);
+    TestRng rng(seed);
     for (int i = 0; i < spheres; i++) ts.sphere(rng.point(0, 10), rng.uniform(0.05, 1.5));
     for (int i = 0; i < triangles; i++) {
         rt_vec3 c = rng.point(0, 10);
@@ -300,15 +267,18 @@ void random_scene(TestScene &ts, uint64_t seed, int spheres, int triangles, int 
         ts.polygon(pentagram(rng.point(0, 10), rng.unit(), rng.uniform(0.5, 3.0), rng.uniform(0, 6.3)));
 }
 
-GridPtr make_grid(const rt_scene *s, int nx, int ny, int nz)
-{
-    char msg[RT_MSG_LEN] = "";
-    GridPtr g(rt_grid_new(s, nx, ny, nz, msg, sizeof msg));
-    EXPECT_TRUE(g) << msg;
-    return g;
-}
-
 const int kDims[][3] = {{1, 1, 1}, {7, 7, 7}, {24, 24, 24}, {5, 9, 13}};
+
+// expect_lists_match_oracle on a grid of every size in kDims.
+void expect_lists_match_oracle_on_every_grid(const TestScene &ts)
+{
+    for (const auto &d : kDims) {
+        SCOPED_TRACE(std::to_string(d[0]) + "x" + std::to_string(d[1]) + "x" + std::to_string(d[2]));
+        GridPtr g = make_grid(ts.scene.get(), d[0], d[1], d[2]);
+        ASSERT_TRUE(g);
+        expect_lists_match_oracle(ts, g.get());
+    }
+}
 
 } // namespace
 
@@ -316,55 +286,35 @@ TEST(GridLists, SpheresMatchOracle)
 {
     TestScene ts;
     random_scene(ts, 1, 150, 0, 0, 0);
-    for (const auto &d : kDims) {
-        SCOPED_TRACE(std::to_string(d[0]) + "x" + std::to_string(d[1]) + "x" + std::to_string(d[2]));
-        GridPtr g = make_grid(ts.scene.get(), d[0], d[1], d[2]);
-        ASSERT_TRUE(g);
-        expect_lists_match_oracle(ts, g.get());
-    }
+    expect_lists_match_oracle_on_every_grid(ts);
 }
 
 TEST(GridLists, TrianglesMatchOracle)
 {
     TestScene ts;
     random_scene(ts, 2, 0, 80, 0, 0);
-    for (const auto &d : kDims) {
-        SCOPED_TRACE(std::to_string(d[0]) + "x" + std::to_string(d[1]) + "x" + std::to_string(d[2]));
-        GridPtr g = make_grid(ts.scene.get(), d[0], d[1], d[2]);
-        ASSERT_TRUE(g);
-        expect_lists_match_oracle(ts, g.get());
-    }
+    expect_lists_match_oracle_on_every_grid(ts);
 }
 
 TEST(GridLists, ConcaveAndSelfCrossingPolygonsMatchOracle)
 {
     TestScene ts;
     random_scene(ts, 3, 0, 0, 50, 25);
-    for (const auto &d : kDims) {
-        SCOPED_TRACE(std::to_string(d[0]) + "x" + std::to_string(d[1]) + "x" + std::to_string(d[2]));
-        GridPtr g = make_grid(ts.scene.get(), d[0], d[1], d[2]);
-        ASSERT_TRUE(g);
-        expect_lists_match_oracle(ts, g.get());
-    }
+    expect_lists_match_oracle_on_every_grid(ts);
 }
 
 TEST(GridLists, MixedSceneMatchesOracle)
 {
     TestScene ts;
     random_scene(ts, 4, 40, 30, 20, 10);
-    for (const auto &d : kDims) {
-        SCOPED_TRACE(std::to_string(d[0]) + "x" + std::to_string(d[1]) + "x" + std::to_string(d[2]));
-        GridPtr g = make_grid(ts.scene.get(), d[0], d[1], d[2]);
-        ASSERT_TRUE(g);
-        expect_lists_match_oracle(ts, g.get());
-    }
+    expect_lists_match_oracle_on_every_grid(ts);
 }
 
 // Objects a million times smaller than the scene, far from the origin.
 TEST(GridLists, TinyObjectsInHugeSceneMatchOracle)
 {
     TestScene ts;
-    Rng rng(5);
+    TestRng rng(5);
     rt_vec3 off = rt_vec(1e6, -2e6, 3e6);
     ts.sphere(rt_vec_add(off, rt_vec(0, 0, 0)), 1.0);
     ts.sphere(rt_vec_add(off, rt_vec(10, 10, 10)), 1.0);
@@ -629,7 +579,7 @@ TEST(GridUnits, SerialIsSumOfObjects)
 TEST(GridUnits, ParallelShrinksWithProcessors)
 {
     ScenePtr s(rt_scene_new());
-    Rng rng(369);
+    TestRng rng(369);
     for (int i = 0; i < 369; i++) ASSERT_EQ(rt_scene_add_sphere(s.get(), rng.point(0, 100), rng.uniform(0.5, 4)), RT_OK);
     GridPtr g = make_grid(s.get(), 24, 24, 24);
     ASSERT_TRUE(g);

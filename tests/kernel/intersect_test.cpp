@@ -8,7 +8,6 @@
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
-#include <memory>
 #include <vector>
 
 #include "rt_scene.h"
@@ -19,35 +18,11 @@ extern "C" {
 #include "intersect.h"
 }
 
+#include "test_support.h"
+
+using namespace torusrt_test;
+
 namespace {
-
-struct SceneDeleter {
-    void operator()(rt_scene *s) const { rt_scene_free(s); }
-};
-using ScenePtr = std::unique_ptr<rt_scene, SceneDeleter>;
-
-class IsRng {
-  public:
-    explicit IsRng(uint64_t seed) : state_(seed) {}
-    uint64_t next() {
-        uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-        return z ^ (z >> 31);
-    }
-    double uniform(double lo, double hi) { return lo + (hi - lo) * double(next() >> 11) * 0x1.0p-53; }
-    rt_vec3 unit() {
-        for (;;) {
-            rt_vec3 v = rt_vec(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
-            double l = rt_vec_length(v);
-            if (l > 0.1 && l <= 1.0)
-                return rt_vec_scale(v, 1.0 / l);
-        }
-    }
-
-  private:
-    uint64_t state_;
-};
 
 const double kInf = INFINITY;
 
@@ -69,11 +44,7 @@ Hit shoot(const rt_scene *s, uint32_t obj, rt_vec3 o, rt_vec3 d, double t_min = 
     return r;
 }
 
-ScenePtr one_sphere(rt_vec3 c, double r) {
-    ScenePtr s(rt_scene_new());
-    EXPECT_EQ(rt_scene_add_sphere(s.get(), c, r), RT_OK);
-    return s;
-}
+ScenePtr one_sphere(rt_vec3 c, double r) { return scene_with_spheres({{c, r}}); }
 
 ScenePtr one_polygon(const std::vector<rt_vec3> &v) {
     ScenePtr s(rt_scene_new());
@@ -171,7 +142,7 @@ TEST(IntersectSphere, FrontHitPointAndNormal) {
 }
 
 TEST(IntersectSphere, RandomHitsMatchLongDouble) {
-    IsRng rng(5);
+    TestRng rng(5);
     for (int i = 0; i < 5000; i++) {
         rt_vec3 c = rt_vec(rng.uniform(-10, 10), rng.uniform(-10, 10), rng.uniform(-10, 10));
         double r = std::pow(10.0, rng.uniform(-2, 1));
@@ -203,7 +174,7 @@ TEST(IntersectSphere, RandomHitsMatchLongDouble) {
 
 TEST(IntersectSphere, FromInsideHitsTheFarSideWithOutwardNormal) {
     ScenePtr s = one_sphere(rt_vec(1, 2, 3), 2.0);
-    IsRng rng(11);
+    TestRng rng(11);
     for (int i = 0; i < 200; i++) {
         rt_vec3 d = rng.unit();
         Hit h = shoot(s.get(), 0, rt_vec(1, 2, 3), d);
@@ -264,7 +235,7 @@ TEST(IntersectSphere, BehindAndInterval) {
 }
 
 TEST(IntersectSphere, TinySphereSeenFromDistanceOne) {
-    IsRng rng(17);
+    TestRng rng(17);
     const double r = 1e-6;
     for (int i = 0; i < 2000; i++) {
         rt_vec3 c = rt_vec_scale(rng.unit(), 1.0); // at distance 1 from the origin
@@ -290,7 +261,7 @@ TEST(IntersectSphere, TinySphereSeenFromDistanceOne) {
 }
 
 TEST(IntersectSphere, HugeSphere) {
-    IsRng rng(23);
+    TestRng rng(23);
     const double r = 1e6;
     rt_vec3 c = rt_vec(0, 0, 3e6);
     ScenePtr s = one_sphere(c, r);
@@ -388,7 +359,7 @@ TEST(IntersectPolygon, ConcaveStarNotchesMiss) {
         EXPECT_FALSE(shoot(s.get(), 0, rt_vec(0.95 * std::cos(b), 0.95 * std::sin(b), 1), down).hit) << k;
     }
     // Random points against the even-odd oracle, away from the boundary.
-    IsRng rng(3);
+    TestRng rng(3);
     int hits = 0, misses = 0;
     for (int i = 0; i < 20000; i++) {
         double x = rng.uniform(-1.1, 1.1), y = rng.uniform(-1.1, 1.1);
@@ -418,7 +389,7 @@ TEST(IntersectPolygon, AsymmetricBowTieLobesHitMiddleMisses) {
     Hit h = shoot(s.get(), 0, rt_vec(3.5, 1.0, 1), down);
     ASSERT_TRUE(h.hit);
     expect_vec_near(h.n_geo, rt_vec(0, 0, -1), 1e-15);
-    IsRng rng(8);
+    TestRng rng(8);
     for (int i = 0; i < 20000; i++) {
         double x = rng.uniform(-0.5, 4.5), y = rng.uniform(-0.5, 2.5);
         if (edge_distance_xy(bow, x, y) < 1e-9)
@@ -444,7 +415,7 @@ TEST(IntersectPolygon, PentagramCentreIsOutsideByEvenOdd) {
         EXPECT_TRUE(shoot(s.get(), 0, rt_vec(0.7 * std::cos(a), 0.7 * std::sin(a), 1), down).hit)
             << "point " << k;
     }
-    IsRng rng(41);
+    TestRng rng(41);
     for (int i = 0; i < 20000; i++) {
         double x = rng.uniform(-1.1, 1.1), y = rng.uniform(-1.1, 1.1);
         if (edge_distance_xy(pg, x, y) < 1e-9)
@@ -468,7 +439,7 @@ TEST(IntersectPolygon, SymmetricBowTieIsHit) {
 }
 
 TEST(IntersectPolygon, ZeroAreaPolygonsAreNeverHit) {
-    IsRng rng(19);
+    TestRng rng(19);
     std::vector<std::vector<rt_vec3>> degenerate = {
         {rt_vec(0, 0, 0), rt_vec(1, 0, 0), rt_vec(2, 0, 0)},                        // collinear
         {rt_vec(0, 0, 0), rt_vec(1, 1, 1), rt_vec(2, 2, 2), rt_vec(0.5, 0.5, 0.5)}, // collinear, 4
@@ -522,7 +493,7 @@ TEST(IntersectTriangle, BarycentricsAndInterpolatedNormal) {
     ASSERT_EQ(rt_scene_object_count(s.get()), 1u);
     ASSERT_EQ(rt_scene_object_kind(s.get(), 0), RT_OBJ_TRIANGLE);
     rt_vec3 un[3] = {rt_vec_normalize(n[0]), rt_vec_normalize(n[1]), rt_vec_normalize(n[2])};
-    IsRng rng(29);
+    TestRng rng(29);
     for (int i = 0; i < 1000; i++) {
         double a = rng.uniform(0.001, 0.998), b = rng.uniform(0.001, 0.998 - a);
         double w = 1 - a - b;
@@ -662,7 +633,7 @@ TEST(IntersectCone, TrueConeNormalAndHits) {
 }
 
 TEST(IntersectCone, RandomOrientedConesHitPointsLieOnTheSurface) {
-    IsRng rng(37);
+    TestRng rng(37);
     int hits = 0;
     for (int i = 0; i < 3000; i++) {
         rt_vec3 base = rt_vec(rng.uniform(-5, 5), rng.uniform(-5, 5), rng.uniform(-5, 5));

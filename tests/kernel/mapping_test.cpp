@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <memory>
 #include <set>
 #include <string>
 #include <vector>
@@ -13,16 +12,11 @@
 #include "rt_memory.h"
 #include "rt_scene.h"
 
-namespace {
+#include "test_support.h"
 
-struct SceneDeleter {
-    void operator()(rt_scene *s) const { rt_scene_free(s); }
-};
-struct GridDeleter {
-    void operator()(rt_grid *g) const { rt_grid_free(g); }
-};
-using ScenePtr = std::unique_ptr<rt_scene, SceneDeleter>;
-using GridPtr = std::unique_ptr<rt_grid, GridDeleter>;
+using namespace torusrt_test;
+
+namespace {
 
 std::vector<int> owners_1d(rt_map_kind kind, int block, int cells, int procs)
 {

@@ -14,7 +14,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -26,45 +25,11 @@
 #include "rt_render.h"
 #include "rt_scene.h"
 #include "rt_step.h"
+#include "test_support.h"
+
+using namespace torusrt_test;
 
 namespace {
-
-struct SceneDeleter {
-    void operator()(rt_scene *s) const { rt_scene_free(s); }
-};
-struct GridDeleter {
-    void operator()(rt_grid *g) const { rt_grid_free(g); }
-};
-struct FbDeleter {
-    void operator()(rt_framebuffer *f) const { rt_framebuffer_free(f); }
-};
-using ScenePtr = std::unique_ptr<rt_scene, SceneDeleter>;
-using GridPtr = std::unique_ptr<rt_grid, GridDeleter>;
-using FbPtr = std::unique_ptr<rt_framebuffer, FbDeleter>;
-
-class ShRng {
-  public:
-    explicit ShRng(uint64_t seed) : state_(seed) {}
-    uint64_t next() {
-        uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-        return z ^ (z >> 31);
-    }
-    double uniform(double lo, double hi) { return lo + (hi - lo) * double(next() >> 11) * 0x1.0p-53; }
-    uint32_t below(uint32_t n) { return uint32_t(next() % n); }
-    rt_vec3 unit() {
-        for (;;) {
-            rt_vec3 v = rt_vec(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
-            double l = rt_vec_length(v);
-            if (l > 0.1 && l <= 1.0)
-                return rt_vec_scale(v, 1.0 / l);
-        }
-    }
-
-  private:
-    uint64_t state_;
-};
 
 rt_material mat(rt_vec3 c, double kd, double ks, double shine, double t, double ior) {
     rt_material m;
@@ -88,13 +53,6 @@ ScenePtr new_scene() {
 void finish(rt_scene *s) {
     char msg[RT_MSG_LEN] = "";
     ASSERT_EQ(rt_scene_finish(s, msg, sizeof msg), RT_OK) << msg;
-}
-
-GridPtr make_grid(const rt_scene *s, int nx, int ny, int nz) {
-    char msg[RT_MSG_LEN] = "";
-    GridPtr g(rt_grid_new(s, nx, ny, nz, msg, sizeof msg));
-    EXPECT_TRUE(g) << msg;
-    return g;
 }
 
 // The two ways every shading case runs.
@@ -511,7 +469,7 @@ TEST(ShadingShadow, LightInsideTheGridIsReachedInsideACell) {
 }
 
 TEST(ShadingReflection, DirectionAndWeightOnAnObliqueHit) {
-    ShRng rng(101);
+    TestRng rng(101);
     ScenePtr s = new_scene();
     const double ks = 0.6;
     rt_material m = mat(rt_vec(0.3, 0.3, 0.3), 0.2, ks, 0, 0, 1);
@@ -874,7 +832,7 @@ TEST(StepTies, ObjectListedFirstWinsATie) {
             }
         }
         finish(s.get());
-        ShRng rng(77);
+        TestRng rng(77);
         for (const Mode &md : kModes) {
             SCOPED_TRACE(md.name);
             GridPtr g = make_grid(s.get(), md.cells, md.cells, md.cells);
@@ -927,7 +885,7 @@ TEST(StepErrors, CapacityAndBadPackets) {
 
 TEST(FramebufferOrder, TenThousandContributionsInTwoOrders) {
     const uint32_t W = 16, H = 12;
-    ShRng rng(555);
+    TestRng rng(555);
     std::vector<rt_contribution> c(10000);
     for (auto &x : c) {
         x.x = rng.below(W);
@@ -980,7 +938,7 @@ TEST(FramebufferOrder, TenThousandContributionsInTwoOrders) {
 TEST(FramebufferRounding, FloorTimes255PlusHalf) {
     FbPtr fb(rt_framebuffer_new(1, 1));
     ASSERT_TRUE(fb);
-    ShRng rng(7);
+    TestRng rng(7);
     std::vector<double> values = {0.0,         1.0,          0.5,         0.25,
                                   1.0 / 255,   0.5 / 255,    0.49 / 255,  0.51 / 255,
                                   254.5 / 255, 254.49 / 255, 127.5 / 255, 100.5 / 255};
@@ -1069,7 +1027,7 @@ namespace {
 // Every coordinate and size is multiplied by `scale`; eye_inside puts the camera in the
 // middle of the object space.
 ScenePtr random_scene(uint64_t seed, uint32_t size, double scale = 1.0, bool eye_inside = false) {
-    ShRng rng(seed);
+    TestRng rng(seed);
     ScenePtr s(rt_scene_new());
     auto P = [scale](double x, double y, double z) { return rt_vec(x * scale, y * scale, z * scale); };
     if (eye_inside) {
@@ -1125,25 +1083,6 @@ ScenePtr random_scene(uint64_t seed, uint32_t size, double scale = 1.0, bool eye
     return s;
 }
 
-struct Rendered {
-    std::vector<uint8_t> rgb;
-    rt_render_stats stats;
-};
-
-Rendered render(const rt_scene *s, int cells, bool brute) {
-    Rendered out{};
-    GridPtr g = make_grid(s, cells, cells, cells);
-    const rt_camera *cam = rt_scene_camera(s);
-    FbPtr fb(rt_framebuffer_new(cam->width, cam->height));
-    rt_render_options o = rt_render_options_default();
-    o.step.brute_force = brute ? 1 : 0;
-    char msg[RT_MSG_LEN] = "";
-    EXPECT_EQ(rt_render(s, g.get(), &o, fb.get(), &out.stats, msg, sizeof msg), RT_OK) << msg;
-    out.rgb.resize(size_t(cam->width) * cam->height * 3);
-    rt_framebuffer_to_rgb8(fb.get(), out.rgb.data());
-    return out;
-}
-
 size_t differing_bytes(const std::vector<uint8_t> &a, const std::vector<uint8_t> &b) {
     size_t n = 0;
     for (size_t i = 0; i < a.size() && i < b.size(); i++)
@@ -1162,7 +1101,7 @@ void expect_conserved(const rt_render_stats &st) {
 
 TEST(RenderDeterminism, TwoRendersAreByteIdentical) {
     ScenePtr s = random_scene(1, 48);
-    Rendered a = render(s.get(), 24, false), b = render(s.get(), 24, false);
+    Image a = render(s.get(), 24, false), b = render(s.get(), 24, false);
     EXPECT_EQ(a.rgb, b.rgb);
     EXPECT_EQ(std::memcmp(&a.stats.ops, &b.stats.ops, sizeof a.stats.ops), 0);
     EXPECT_EQ(a.stats.packets.created[0], b.stats.packets.created[0]);
@@ -1173,7 +1112,7 @@ TEST(RenderDeterminism, TwoRendersAreByteIdentical) {
 TEST(RenderGridVsBruteForce, RandomSceneAtSeveralGridSizes) {
     for (uint64_t seed : {1ull, 2ull, 3ull}) {
         ScenePtr s = random_scene(seed, 64);
-        Rendered bf = render(s.get(), 1, true);
+        Image bf = render(s.get(), 1, true);
         expect_conserved(bf.stats);
         EXPECT_EQ(bf.stats.ops.dda_steps, 0u);
         // The image is not trivial: many distinct byte values.
@@ -1183,7 +1122,7 @@ TEST(RenderGridVsBruteForce, RandomSceneAtSeveralGridSizes) {
         EXPECT_GT(std::count(seen.begin(), seen.end(), true), 100);
         for (int cells : {1, 7, 24, 64}) {
             SCOPED_TRACE("seed " + std::to_string(seed) + " cells " + std::to_string(cells));
-            Rendered gr = render(s.get(), cells, false);
+            Image gr = render(s.get(), cells, false);
             EXPECT_EQ(differing_bytes(gr.rgb, bf.rgb), 0u) << "grid image differs from brute force";
             expect_conserved(gr.stats);
             // Same shade tree: the same packets and the same shading work.
@@ -1203,11 +1142,11 @@ TEST(RenderGridVsBruteForce, TinyHugeAndEyeInside) {
     for (double scale : {1e-6, 1.0, 1e6}) {
         for (bool inside : {false, true}) {
             ScenePtr s = random_scene(4, 40, scale, inside);
-            Rendered bf = render(s.get(), 1, true);
+            Image bf = render(s.get(), 1, true);
             for (int cells : {1, 7, 24}) {
                 SCOPED_TRACE("scale " + std::to_string(scale) + (inside ? " eye inside" : "") + " cells " +
                              std::to_string(cells));
-                Rendered gr = render(s.get(), cells, false);
+                Image gr = render(s.get(), cells, false);
                 EXPECT_EQ(differing_bytes(gr.rgb, bf.rgb), 0u) << "grid image differs from brute force";
                 expect_conserved(gr.stats);
                 if (inside) {
@@ -1222,7 +1161,7 @@ TEST(RenderConservation, PacketsCreatedEqualConsumed) {
     ScenePtr s = random_scene(9, 32);
     for (int cells : {1, 3, 24}) {
         for (bool brute : {false, true}) {
-            Rendered r = render(s.get(), cells, brute);
+            Image r = render(s.get(), cells, brute);
             expect_conserved(r.stats);
             EXPECT_GT(r.stats.packets.created[RT_PACKET_SHADOW], 0u);
             // Primary packets plus misses cover every pixel once.

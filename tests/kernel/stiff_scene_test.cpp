@@ -17,7 +17,6 @@
 #include <cstdint>
 #include <cstdlib>
 #include <deque>
-#include <memory>
 #include <string>
 #include <sys/stat.h>
 #include <vector>
@@ -29,21 +28,11 @@
 #include "rt_render.h"
 #include "rt_scene.h"
 #include "rt_step.h"
+#include "test_support.h"
+
+using namespace torusrt_test;
 
 namespace {
-
-struct SceneDeleter {
-    void operator()(rt_scene *s) const { rt_scene_free(s); }
-};
-struct GridDeleter {
-    void operator()(rt_grid *g) const { rt_grid_free(g); }
-};
-struct FbDeleter {
-    void operator()(rt_framebuffer *f) const { rt_framebuffer_free(f); }
-};
-using ScenePtr = std::unique_ptr<rt_scene, SceneDeleter>;
-using GridPtr = std::unique_ptr<rt_grid, GridDeleter>;
-using FbPtr = std::unique_ptr<rt_framebuffer, FbDeleter>;
 
 const char *const kStiffScenes[] = {
     "scale-1",     "scale-tiny",        "scale-huge",        "scale-pow2-tiny", "scale-pow2-huge",
@@ -77,36 +66,6 @@ ScenePtr load(const std::string &name) {
         return nullptr;
     }
     return ScenePtr(s);
-}
-
-struct Image {
-    uint32_t w = 0, h = 0;
-    std::vector<uint8_t> rgb;
-    rt_render_stats stats{};
-    bool ok = false;
-};
-
-Image render(const rt_scene *s, int cells = 24, bool brute = false, int max_depth = -1) {
-    Image im;
-    char msg[RT_MSG_LEN] = "";
-    GridPtr g(rt_grid_new(s, cells, cells, cells, msg, sizeof msg));
-    EXPECT_TRUE(g) << msg;
-    if (!g)
-        return im;
-    const rt_camera *cam = rt_scene_camera(s);
-    im.w = cam->width;
-    im.h = cam->height;
-    FbPtr fb(rt_framebuffer_new(im.w, im.h));
-    rt_render_options o = rt_render_options_default();
-    o.step.brute_force = brute ? 1 : 0;
-    if (max_depth >= 0)
-        o.step.max_depth = max_depth;
-    rt_status st = rt_render(s, g.get(), &o, fb.get(), &im.stats, msg, sizeof msg);
-    EXPECT_EQ(st, RT_OK) << msg;
-    im.rgb.resize(size_t(im.w) * im.h * 3);
-    rt_framebuffer_to_rgb8(fb.get(), im.rgb.data());
-    im.ok = st == RT_OK;
-    return im;
 }
 
 Image render_named(const std::string &name, int cells = 24, bool brute = false) {
