@@ -166,7 +166,7 @@ elif cond 'a >= 0.8 * 9438 && a <= 1.2 * 9438 && (b == "" || (b >= 0.8 * 738 && 
 else v="does not hold"; fi
 claim "Preprocessing of image 1: 9438 units on 1 IP, 738 on 16, 432 on 32 (sec. 7)" "9438 / 738 / 432" \
     "$(or_na "$u1") / $(or_na "$u16") / $(or_na "$u32")" "$v" \
-    "Our image 1 is a reconstruction from one sentence (369 spheres defined recursively: radii 1, 1/2, 1/4 and their spacing are ours, scenes/gen_scenes.c). The unit count grows with the number of sub-spaces each sphere overlaps at each level of the 2.2.2.3 split: our spheres cost $(num 'u / 369' '%.1f' u="$u1") units each on average, the paper's $(num '9438 / 369' '%.1f')."
+    "Our image 1 is a reconstruction from one sentence (369 spheres defined recursively: radii 1, 1/2, 1/4 and their spacing are ours, scenes/gen/paper_scenes.c). The unit count grows with the number of sub-spaces each sphere overlaps at each level of the 2.2.2.3 split: our spheres cost $(num 'u / 369' '%.1f' u="$u1") units each on average, the paper's $(num '9438 / 369' '%.1f')."
 sp16=$(num 'a / b' '%.1f' a="$u1" b="$u16")
 sp32=$(num 'a / b' '%.1f' a="$u1" b="$u32")
 if [ -z "$sp16" ]; then v="not run"
