@@ -87,6 +87,7 @@ void ClusterDispatcher::run()
         tp.stamp = m_time.now();
         m_dispatched[k]++;
         m_processors[k]->accept(tp);
+        m_time.settle(tp.stamp); // the processor's queue may have been full
     }
 }
 

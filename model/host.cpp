@@ -40,7 +40,9 @@ void Host::run()
             }
             m_ledger.created(RT_PACKET_RAY);
             m_injected++;
-            inject[m_owner[rt_packet_cell(m_grid, &p)]]->accept(TimedPacket{p, m_time.now()});
+            sc_core::sc_time now = m_time.now();
+            inject[m_owner[rt_packet_cell(m_grid, &p)]]->accept(TimedPacket{p, now, true});
+            m_time.settle(now); // a full input queue may have held the host
         }
     }
     m_time.sync();

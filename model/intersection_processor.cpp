@@ -65,10 +65,14 @@ void IntersectionProcessor::run()
         for (size_t i = 0; i < m_result.created_count; i++) m_ledger.created(m_result.created[i].kind);
         if (m_result.fate == RT_FATE_FORWARDED) m_ledger.forwarded();
         else m_ledger.consumed(tp.packet.kind, now);
-        for (size_t i = 0; i < m_result.created_count; i++) out->accept(TimedPacket{m_result.created[i], now});
+        for (size_t i = 0; i < m_result.created_count; i++) {
+            out->accept(TimedPacket{m_result.created[i], now});
+            m_time.settle(now); // a full queue may have held us
+        }
         m_packets_out += m_result.created_count;
         if (m_result.fate == RT_FATE_FORWARDED) {
             out->accept(TimedPacket{tp.packet, now});
+            m_time.settle(now);
             m_packets_out++;
         }
     }

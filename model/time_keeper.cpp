@@ -33,4 +33,11 @@ void TimeKeeper::sync()
     else if (m_lt) m_qk.reset();
 }
 
+void TimeKeeper::settle(const sc_core::sc_time &before)
+{
+    if (!m_lt) return;
+    sc_core::sc_time now = sc_core::sc_time_stamp();
+    m_qk.set(before > now ? before - now : sc_core::SC_ZERO_TIME);
+}
+
 }  // namespace torusrt

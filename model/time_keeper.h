@@ -19,6 +19,10 @@ class TimeKeeper {
     void advance_to(const sc_core::sc_time &t);
     // Synchronises with simulation time before waiting on an event.
     void sync();
+    // After a call that may have waited on an event (a full queue), local time becomes the later
+    // of `before` (the local time when the call began) and simulation time, rather than keeping
+    // an offset that predates the wait. No effect when approximately timed.
+    void settle(const sc_core::sc_time &before);
 
   private:
     bool m_lt;

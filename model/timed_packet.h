@@ -10,8 +10,10 @@
 namespace torusrt {
 
 struct TimedPacket {
-    rt_packet packet;      // the kernel's packet
+    rt_packet packet;       // the kernel's packet
     sc_core::sc_time stamp; // send time; after a link, arrival time (loosely-timed runs use it)
+    bool from_host = false; // a primary packet from the host: it waits in the host's memory, so
+                            // it does not count against a queue's capacity
 };
 
 // Packets cross links and the cluster bus as a generic payload (command WRITE, data = the packet's

@@ -39,7 +39,9 @@ void ToroidalLink::run()
         m_trans.set_data_length(sizeof(rt_packet));
         m_trans.set_streaming_width(sizeof(rt_packet));
         m_trans.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
+        sc_core::sc_time sent = m_time.now();
         socket->b_transport(m_trans, delay);
+        m_time.settle(sent); // the receiver may have held the packet while its queue was full
     }
 }
 
