@@ -50,8 +50,33 @@ struct Sender : sc_core::sc_module {
     }
 };
 
+// Pushes host packets and then network packets into a queue of capacity 2 nobody drains.
+struct Filler : sc_core::sc_module {
+    PacketQueue queue{"filler.queue", 2};
+    int host_pushed = 0, network_pushed = 0;
+    explicit Filler(sc_core::sc_module_name n) : sc_module(n)
+    {
+        SC_HAS_PROCESS(Filler);
+        SC_THREAD(run);
+    }
+    void run()
+    {
+        for (int i = 0; i < 5; i++) {
+            TimedPacket p{};
+            p.from_host = true;
+            queue.push_blocking(p);
+            host_pushed++;
+        }
+        for (int i = 0; i < 5; i++) {
+            queue.push_blocking(TimedPacket{});
+            network_pushed++;
+        }
+    }
+};
+
 int sc_main(int, char **)
 {
+    Filler filler("filler");
     SimConfig config;
     rt_timing_defaults(&config.timing);
     config.queue_capacity = 2;
@@ -71,5 +96,8 @@ int sc_main(int, char **)
     // With capacity 2 the sender must have been held back: its last push happens after t = 0.
     check(tx.pushed.size() == 5 && tx.pushed.back() > sc_core::SC_ZERO_TIME, "bounded queue blocks the writer");
     check(link.queue().high_water() <= 2, "queue never exceeds its capacity");
+    check(filler.host_pushed == 5, "host packets never wait for room (they live in host memory)");
+    check(filler.network_pushed == 2, "network packets stop at the capacity");
+    check(filler.queue.blocked_writers() == 1 && filler.queue.full(), "the writer is left waiting on a full queue");
     return harness::finish();
 }
