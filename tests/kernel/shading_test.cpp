@@ -682,17 +682,23 @@ TEST(StepEscape, RayLeavingTheSpaceAddsWeightTimesBackground) {
     }
 }
 
+// Sphere A (radius 1) at x = 0, sphere B (radius 2) at x = 10, one white light above B.
+static void add_two_spheres(rt_scene *s)
+{
+    rt_material m = mat(rt_vec(1, 1, 1), 1, 0, 0, 0, 1);
+    ASSERT_EQ(rt_scene_set_material(s, &m), RT_OK);
+    ASSERT_EQ(rt_scene_add_sphere(s, rt_vec(0, 0, 0), 1.0), RT_OK);
+    ASSERT_EQ(rt_scene_add_sphere(s, rt_vec(10, 0, 0), 2.0), RT_OK);
+    rt_vec3 white = rt_vec(1, 1, 1);
+    ASSERT_EQ(rt_scene_add_light(s, rt_vec(10, 10, 0), &white), RT_OK);
+    finish(s);
+}
+
 TEST(StepForward, NextCellWithAnotherOwner) {
     // Sphere A (radius 1) at x = 0, sphere B (radius 2) at x = 10: the space is
     // [-1, 12] x [-2, 2] x [-2, 2], two cells along x split at 5.5, owned by 0 and 1.
     ScenePtr s = new_scene();
-    rt_material m = mat(rt_vec(1, 1, 1), 1, 0, 0, 0, 1);
-    ASSERT_EQ(rt_scene_set_material(s.get(), &m), RT_OK);
-    ASSERT_EQ(rt_scene_add_sphere(s.get(), rt_vec(0, 0, 0), 1.0), RT_OK);
-    ASSERT_EQ(rt_scene_add_sphere(s.get(), rt_vec(10, 0, 0), 2.0), RT_OK);
-    rt_vec3 white = rt_vec(1, 1, 1);
-    ASSERT_EQ(rt_scene_add_light(s.get(), rt_vec(10, 10, 0), &white), RT_OK);
-    finish(s.get());
+    ASSERT_NO_FATAL_FAILURE(add_two_spheres(s.get()));
     GridPtr g = make_grid(s.get(), 2, 1, 1);
     ASSERT_TRUE(g);
     const int32_t owner[2] = {0, 1};
@@ -753,13 +759,7 @@ TEST(StepOps, HandCountedGridAndBruteForce) {
     // The scene of StepForward with no owners: the ray tests A in cell 0 (miss), steps to
     // cell 1, tests B (hit), shades and makes one shadow packet (one start-cell step).
     ScenePtr s = new_scene();
-    rt_material m = mat(rt_vec(1, 1, 1), 1, 0, 0, 0, 1);
-    ASSERT_EQ(rt_scene_set_material(s.get(), &m), RT_OK);
-    ASSERT_EQ(rt_scene_add_sphere(s.get(), rt_vec(0, 0, 0), 1.0), RT_OK);
-    ASSERT_EQ(rt_scene_add_sphere(s.get(), rt_vec(10, 0, 0), 2.0), RT_OK);
-    rt_vec3 white = rt_vec(1, 1, 1);
-    ASSERT_EQ(rt_scene_add_light(s.get(), rt_vec(10, 10, 0), &white), RT_OK);
-    finish(s.get());
+    ASSERT_NO_FATAL_FAILURE(add_two_spheres(s.get()));
     GridPtr g = make_grid(s.get(), 2, 1, 1);
     ASSERT_TRUE(g);
     rt_step_params prm = rt_step_params_default();
