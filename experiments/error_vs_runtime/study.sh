@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# study.sh - the error-against-run-time study of DESIGN.md section 8, end to end:
+# study.sh - the error-against-run-time study of docs/design.md section 8, end to end:
 #   1. quantum.sh  - LT at growing quanta against AT (both paper scenes, 144x144, 4x2x2 and 4x4x4)
 #   2. pruning.sh  - max-depth 0..8 and min-weight 1/512..1/8 against the full-depth image
 #   3. report.sh   - docs/img/error-*.png and docs/error-vs-runtime.md
