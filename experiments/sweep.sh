@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # sweep.sh - the whole reproduction in one command: run every point, then collect the CSVs,
-# draw the plots and write the comparison with the paper.
+# draw the plots (experiments/plots/*.gp) and write the comparison with the paper (experiments/report).
 #
 #   experiments/sweep.sh [--quick] [--results DIR] [-j N] [--sshloginfile FILE]
 #                        [--build DIR] [--doc FILE] [--no-report] [--no-clusters]
@@ -108,8 +108,8 @@ status=0
 [ "$failed" -eq 0 ] && [ "$after" -eq "$total" ] || status=1
 if [ "$report" = 1 ]; then
     "$EXP/collect.sh" "$RES" || status=1
-    "$EXP/plot.sh" "$RES" || status=1
-    "$EXP/report.sh" --doc "$doc" "$RES" || status=1
+    python3 "$EXP/report" plots "$RES" || status=1
+    python3 "$EXP/report" reproduction --doc "$doc" "$RES" || status=1
     echo "sweep: CSVs and plots in $RES, report $doc"
 fi
 exit $status

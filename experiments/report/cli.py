@@ -1,0 +1,48 @@
+"""The command line of the report package."""
+import argparse
+import os
+import subprocess
+import sys
+
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+def reproduction(args):
+    from . import reproduction as rep
+    from .verdict import HOLDS
+    res = os.path.abspath(args.results)
+    doc = args.doc
+    if not doc:
+        from .results import Results
+        full = Results(res).mode == "full"
+        doc = os.path.join(REPO, "docs", "reproduction.md") if full else os.path.join(res, "reproduction.md")
+    claim_list = rep.write(res, doc)
+    holding = sum(1 for c in claim_list if c.verdict == HOLDS)
+    print("report: %s (%d of %d claims hold)" % (doc, holding, len(claim_list)))
+    return 0
+
+
+def plots(args):
+    from . import plots as plotlib
+    for png in plotlib.reproduction(os.path.abspath(args.results)):
+        print("plot: %s" % png)
+    return 0
+
+
+def main(argv):
+    parser = argparse.ArgumentParser(prog="experiments/report", description=__doc__)
+    sub = parser.add_subparsers(dest="command", required=True)
+    p = sub.add_parser("reproduction", help="write the comparison with the paper from a sweep's CSVs")
+    p.add_argument("results", help="the sweep's results folder (fig5_6.csv, fig7.csv, fig8.csv, fig10_12.csv)")
+    p.add_argument("--doc", help="the page to write (default docs/reproduction.md for a full sweep, "
+                                 "RESULTS/reproduction.md otherwise); plots are copied to img/ beside it")
+    p.set_defaults(run=reproduction)
+    p = sub.add_parser("plots", help="draw RESULTS/plots/fig*.png with experiments/plots/*.gp")
+    p.add_argument("results")
+    p.set_defaults(run=plots)
+    args = parser.parse_args(argv)
+    try:
+        return args.run(args)
+    except (OSError, ValueError, KeyError, subprocess.CalledProcessError) as e:
+        print("experiments/report: %s" % e, file=sys.stderr)
+        return 1

@@ -1,0 +1,35 @@
+"""Every number the paper states that the reports compare with (docs/paper.md)."""
+
+# Section 7, flat torus.
+EFFICIENCY_FLOOR = 0.85          # load-balancing mapping, n <= EFFICIENCY_FLOOR_MAX_N
+EFFICIENCY_FLOOR_MAX_N = 16
+MAPPING_GAIN = 2.0               # load-balancing over block: "up to more than 2x"
+MEMORY_RATIO_AT_16 = (6, 7)      # data memory at 16 IPs: 1/6 to 1/7 of pixel-partitioned
+PREPROCESS_UNITS = {1: 9438, 16: 738, 32: 432}   # image 1
+PREPROCESS_OBJECTS = 369         # image 1's sphere count
+
+# Section 8, 16 clusters of m processors.
+CLUSTER_NODES = 16
+CLUSTER_M = 64                   # the m of the paper's times (16 x 64 = 1024 processors)
+CLUSTER_TIMES = {                # seconds at m = 64, 144 x 144
+    ("image1", "replicated"): 0.62, ("image2", "replicated"): 1.34,
+    ("image1", "shared"): 0.75, ("image2", "shared"): 1.67,
+}
+CLUSTER_EFFICIENCY_FLOOR = 0.80  # replicated at m = 64; shared up to SHARED_EFFICIENCY_MAX_M
+SHARED_EFFICIENCY_MAX_M = 12
+MEMORY_M = 12                    # the m of the memory statements
+SHARED_OVER_REPLICATED = 0.5     # shared needs less than half of replicated
+SHARED_PIXEL_PARTITIONED = 12    # shared needs less than 1/12 of pixel-partitioned
+
+# Section 6, the operation table (microseconds).
+HANDOVER_US = 1600 + 580         # packet creation + packet analysis
+
+
+def preprocess_speedup(n):
+    """The paper's preprocessing speed-up of image 1 on n IPs."""
+    return PREPROCESS_UNITS[1] / PREPROCESS_UNITS[n]
+
+
+def cluster_time(scene, data):
+    """The paper's image time at m = 64, or None."""
+    return CLUSTER_TIMES.get((scene, data))
