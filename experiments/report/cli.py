@@ -29,6 +29,26 @@ def plots(args):
     return 0
 
 
+def sweep_plan(args):
+    from . import sweep
+    axes = [sweep.parse_axis(a) for a in args.axis]
+    if len({n for n, _ in axes}) != len(axes):
+        raise ValueError("each --axis option may be given once")
+    fixed = args.fixed[1:] if args.fixed[:1] == ["--"] else args.fixed
+    sweep.plan(os.path.abspath(args.out), args.sim, args.scene, axes, fixed)
+    return 0
+
+
+def sweep_collect(args):
+    from . import sweep
+    columns = [c for c in args.columns.split(",") if c] if args.columns else sweep.DEFAULT_COLUMNS
+    out = os.path.abspath(args.out)
+    failed = sweep.collect(out, columns, args.y)
+    sweep.report_failed(out, failed)
+    print("sweep: %s/sweep.csv%s" % (out, "" if failed else ", %s/sweep.png" % out))
+    return 1 if failed else 0
+
+
 def main(argv):
     parser = argparse.ArgumentParser(prog="experiments/report", description=__doc__)
     sub = parser.add_subparsers(dest="command", required=True)
@@ -40,6 +60,18 @@ def main(argv):
     p = sub.add_parser("plots", help="draw RESULTS/plots/fig*.png with experiments/plots/*.gp")
     p.add_argument("results")
     p.set_defaults(run=plots)
+    p = sub.add_parser("sweep-plan", help="(experiments/sweep) write OUT/points.tsv, print one command per point")
+    p.add_argument("--out", required=True)
+    p.add_argument("--sim", required=True)
+    p.add_argument("--scene", required=True)
+    p.add_argument("--axis", action="append", required=True)
+    p.add_argument("fixed", nargs=argparse.REMAINDER)
+    p.set_defaults(run=sweep_plan)
+    p = sub.add_parser("sweep-collect", help="(experiments/sweep) OUT/sweep.csv and OUT/sweep.png from the points")
+    p.add_argument("--out", required=True)
+    p.add_argument("--columns", default="")
+    p.add_argument("--y", default="sim_time_s")
+    p.set_defaults(run=sweep_collect)
     args = parser.parse_args(argv)
     try:
         return args.run(args)
