@@ -29,6 +29,18 @@ def plots(args):
     return 0
 
 
+def error_vs_runtime(args):
+    from . import error_vs_runtime as evr
+    results = os.path.join(REPO, "experiments", "error_vs_runtime", "results")
+    quantum_csv = args.quantum or os.path.join(results, "quantum.csv")
+    pruning_csv = args.pruning or os.path.join(results, "pruning.csv")
+    doc = args.doc or os.path.join(REPO, "docs", "error-vs-runtime.md")
+    img = args.img_dir or os.path.join(REPO, "docs", "img")
+    evr.write(quantum_csv, pruning_csv, doc, img, args.command)
+    print("report: %s, plots in %s" % (doc, img))
+    return 0
+
+
 def sweep_plan(args):
     from . import sweep
     axes = [sweep.parse_axis(a) for a in args.axis]
@@ -60,6 +72,14 @@ def main(argv):
     p = sub.add_parser("plots", help="draw RESULTS/plots/fig*.png with experiments/plots/*.gp")
     p.add_argument("results")
     p.set_defaults(run=plots)
+    p = sub.add_parser("error-vs-runtime", help="write docs/error-vs-runtime.md and its plots from the study's CSVs")
+    p.add_argument("--quantum", help="quantum.csv (default experiments/error_vs_runtime/results/quantum.csv)")
+    p.add_argument("--pruning", help="pruning.csv (default experiments/error_vs_runtime/results/pruning.csv)")
+    p.add_argument("--doc", help="the page (default docs/error-vs-runtime.md)")
+    p.add_argument("--img-dir", help="where the plots go (default docs/img)")
+    p.add_argument("--command", default="experiments/error_vs_runtime/study.sh",
+                   help="the command line the page says produced it")
+    p.set_defaults(run=error_vs_runtime)
     p = sub.add_parser("sweep-plan", help="(experiments/sweep) write OUT/points.tsv, print one command per point")
     p.add_argument("--out", required=True)
     p.add_argument("--sim", required=True)
