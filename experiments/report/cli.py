@@ -22,6 +22,15 @@ def reproduction(args):
     return 0
 
 
+def collect(args):
+    from . import collect as collectlib
+    res = os.path.abspath(args.results)
+    points, bad, differ = collectlib.collect(res)
+    print("collect: %d points, %d not ok, %d images differing from the 1-processor image -> %s/fig*.csv"
+          % (points, bad, differ, res))
+    return 0
+
+
 def plots(args):
     from . import plots as plotlib
     for png in plotlib.reproduction(os.path.abspath(args.results)):
@@ -69,6 +78,10 @@ def main(argv):
     p.add_argument("--doc", help="the page to write (default docs/reproduction.md for a full sweep, "
                                  "RESULTS/reproduction.md otherwise); plots are copied to img/ beside it")
     p.set_defaults(run=reproduction)
+    p = sub.add_parser("collect", help="the sweep's JSON reports (RESULTS/points.tsv) into fig5_6.csv, fig7.csv, "
+                                       "fig8.csv and fig10_12.csv")
+    p.add_argument("results")
+    p.set_defaults(run=collect)
     p = sub.add_parser("plots", help="draw RESULTS/plots/fig*.png with experiments/plots/*.gp")
     p.add_argument("results")
     p.set_defaults(run=plots)
