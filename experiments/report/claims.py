@@ -50,16 +50,19 @@ def load_balancing_floor(r):
             continue
         total += 1
         ok += lowest > paper.EFFICIENCY_FLOOR
-        e16 = r.f56.value("efficiency_busy", scene=s, mapping="cyclic", n=16)
-        t16 = r.f56.value("efficiency_t1", scene=s, mapping="cyclic", n=16)
-        ours += "%s: lowest %s (n = %d); at n = 16 %s busy, %s by T(1). " % (
-            label(s), pct(lowest), at, pct(e16), pct(t16))
-    return make("Load-balancing mapping: efficiency above 85 % with 16 IPs or fewer (sec. 7)",
-                "> 85 % for n <= 16", ours, verdict(ok, total),
+        top = paper.EFFICIENCY_FLOOR_MAX_N
+        e16 = r.f56.value("efficiency_busy", scene=s, mapping="cyclic", n=top)
+        t16 = r.f56.value("efficiency_t1", scene=s, mapping="cyclic", n=top)
+        ours += "%s: lowest %s (n = %d); at n = %d %s busy, %s by T(1). " % (
+            label(s), pct(lowest), at, top, pct(e16), pct(t16))
+    floor, top = paper.pct(paper.EFFICIENCY_FLOOR), paper.EFFICIENCY_FLOOR_MAX_N
+    return make("Load-balancing mapping: efficiency above %s with %d IPs or fewer (sec. 7)" % (floor, top),
+                "> %s for n <= %d" % (floor, top), ours, verdict(ok, total),
                 "With the busy-time definition (the paper's: ideal = the work actually done, spread "
                 "evenly). By T(1)/(n T(n)) it does not hold: every cell crossing into another IP's "
-                "cell costs a packet creation (1600 us) and analysis (580 us), and the cyclic mapping "
-                "makes nearly every crossing one; see *Efficiency* below.")
+                "cell costs a packet creation (%d us) and analysis (%d us), and the cyclic mapping "
+                "makes nearly every crossing one; see *Efficiency* below."
+                % (paper.TIMING_US["packet_creation"], paper.TIMING_US["packet_analysis"]))
 
 
 def falls_beyond_16(r):
@@ -105,8 +108,8 @@ def mapping_gain(r):
         total += 1
         ok += x > paper.MAPPING_GAIN
         ours += "%s: up to %.2fx (n = %d) busy, %.2fx (n = %d) by T(1). " % (label(s), x, at, xt, att)
-    return make("Load-balancing beats block mapping by up to more than 2x in efficiency (sec. 7)",
-                "up to > 2x", ours, verdict(ok, total, need_all=False),
+    return make("Load-balancing beats block mapping by up to more than %gx in efficiency (sec. 7)" % paper.MAPPING_GAIN,
+                "up to > %gx" % paper.MAPPING_GAIN, ours, verdict(ok, total, need_all=False),
                 "Busy-time efficiencies, cyclic over block at the same n. Image 2 (hot spots in the "
                 "glass and mirror spheres) gains most, as in the paper. By T(1) the cyclic mapping is "
                 "often *below* block, since its extra forwarding is counted as loss.")
@@ -159,8 +162,8 @@ def memory_ratio_at_16(r):
     short = DIRECTION if below == total else FAILS
     cells = r.facts.cells
     whole = r.f7.value("whole_scene_bytes", scene="image1", n=1)
-    return make("At 16 IPs the data memory is 1/6 to 1/7 of the pixel-partitioned system's (sec. 7)",
-                "1/6 to 1/7", ours, verdict(ok, total, partial=short, failing=short),
+    return make("At 16 IPs the data memory is %s of the pixel-partitioned system's (sec. 7)"
+                % paper.ratio_range(paper.MEMORY_RATIO_AT_16), paper.ratio_range(paper.MEMORY_RATIO_AT_16), ours, verdict(ok, total, partial=short, failing=short),
                 "Ours is lower still (less memory). The ratio is (largest per-IP data) / (whole "
                 "scene) and depends on what is counted, which the paper does not say. We count each "
                 "object record once per IP that lists it, its material, and the cell lists: a 4-byte "
@@ -178,8 +181,9 @@ def preprocessing_units(r):
     ok = checks and within(units[1], paper.PREPROCESS_UNITS[1], 0.2) and (
         units[16] is None or within(units[16], paper.PREPROCESS_UNITS[16], 0.2))
     ours = " / ".join(or_na(fmt("%.0f", units[n])) for n in sorted(units))
-    return make("Preprocessing of image 1: 9438 units on 1 IP, 738 on 16, 432 on 32 (sec. 7)",
-                " / ".join(str(paper.PREPROCESS_UNITS[n]) for n in sorted(units)), ours,
+    u = paper.PREPROCESS_UNITS
+    return make("Preprocessing of image 1: %d units on 1 IP, %d on 16, %d on 32 (sec. 7)" % (u[1], u[16], u[32]),
+                paper.preprocess_units_text(), ours,
                 verdict(int(bool(ok)), checks),
                 "Our image 1 is a reconstruction from one sentence (369 spheres defined recursively: "
                 "radii 1, 1/2, 1/4 and their spacing are ours, scenes/gen/paper_scenes.c). The unit "
@@ -267,18 +271,20 @@ def sharing_cost(r):
         get = lambda col: _c(r, "image1", "shared", pm, col)
         nreads, obytes, packets = float(reads), get("bus_object_bytes"), get("bus_packet_transfers")
         why += (" Sharing costs us almost nothing: a remote object read moves %.0f bytes on average, "
-                "%.0f bus cycles of %s us, against 1300-1750 us for the intersection test it feeds "
+                "%.0f bus cycles of %s us, against %d-%d us for the intersection test it feeds "
                 "(image 1, m = %d: %s remote reads; %.0f %% of the bus transfers are packets, and the "
                 "bus is %s busy). The paper gives no bus or memory timing; ours are assumptions "
                 "(timing-file keys bus_cycle, bus_width_bytes, memory_access, bus_arbitration). Its "
-                "21-25 %% penalty implies a far slower bus or memory." % (
+                "%.0f-%.0f %% penalty implies a far slower bus or memory." % (
                     obytes / nreads, obytes / nreads / get("bus_width_bytes"),
-                    r.f10.text("bus_cycle_us", scene="image1", data="shared", m=pm), pm, reads,
-                    100 * packets / (packets + nreads), pct(get("bus_util_mean"))))
-    ratio = lambda s: paper.cluster_time(s, "shared") / paper.cluster_time(s, "replicated")
-    return make("Sharing the object data over the bus costs time at m = 64 (0.75 / 0.62 and "
-                "1.67 / 1.34, sec. 8)",
-                "shared / replicated = %.2f (image 1), %.2f (image 2)" % (ratio("image1"), ratio("image2")),
+                    r.f10.text("bus_cycle_us", scene="image1", data="shared", m=pm),
+                    paper.TIMING_US["test_miss"], paper.TIMING_US["test_hit"], pm, reads,
+                    100 * packets / (packets + nreads), pct(get("bus_util_mean")),
+                    *(100 * (x - 1) for x in paper.sharing_penalty())))
+    t = paper.cluster_time
+    return make("Sharing the object data over the bus costs time at m = %d (%g / %g and %g / %g, sec. 8)" % (
+                    pm, t("image1", "shared"), t("image1", "replicated"), t("image2", "shared"), t("image2", "replicated")),
+                "shared / replicated = %.2f (image 1), %.2f (image 2)" % paper.sharing_penalty(),
                 "%s (image 1), %s (image 2)" % (or_na(fmt("%.2f", ratios["image1"])),
                                                  or_na(fmt("%.2f", ratios["image2"]))),
                 verdict(int(in_range), len(known[:1]), failing=DIRECTION if slower else FAILS), why)
@@ -298,7 +304,8 @@ def replicated_efficiency(r):
         why += "%s: %s at m = 1, bus %s busy at m = %d. " % (
             label(s), or_na(pct(_c(r, s, "replicated", 1, "efficiency_busy"))),
             or_na(pct(_c(r, s, "replicated", pm, "bus_util_mean"))), pm)
-    return make("Replicated data, 64 per cluster: efficiency above 80 % (sec. 8)", "> 80 %", or_na(ours),
+    floor = paper.pct(paper.CLUSTER_EFFICIENCY_FLOOR)
+    return make("Replicated data, %d per cluster: efficiency above %s (sec. 8)" % (pm, floor), "> " + floor, or_na(ours),
                 verdict(ok, total),
                 "Over all 16 m processors. Inside a cluster any processor takes the next packet, so the "
                 "16-node load balance (the efficiency at m = 1) bounds it, and the bus, which carries "
@@ -339,11 +346,12 @@ def shared_efficiency(r):
             label(s), pct(e), low["m"], top, or_na(pct(_c(r, s, "shared", top, "efficiency_t1"))))
         above = [int(row["m"]) for row in rows if float(row["efficiency_busy"]) > paper.CLUSTER_EFFICIENCY_FLOOR]
         beyond.append("%s m = %d" % (label(s), max(above, default=0)))
-    return make("Shared data: efficiency above 80 % up to 12 processors per cluster (sec. 8)",
-                "> 80 % for m <= 12", or_na(ours), verdict(ok, total),
+    floor = paper.pct(paper.CLUSTER_EFFICIENCY_FLOOR)
+    return make("Shared data: efficiency above %s up to %d processors per cluster (sec. 8)" % (floor, top),
+                "> %s for m <= %d" % (floor, top), or_na(ours), verdict(ok, total),
                 "Busy time includes the time a processor waits for the bus to read an object held by "
-                "another processor of its cluster. Largest m with shared data above 80 %%: %s (our bus "
-                "reads are cheap, claim 11)." % "; ".join(beyond))
+                "another processor of its cluster. Largest m with shared data above %s: %s (our bus "
+                "reads are cheap, claim 11)." % (floor, "; ".join(beyond)))
 
 
 def _memory_at_12(r):
@@ -371,7 +379,8 @@ def shared_memory_half(r):
         if lists is not None:
             why += "%s: %s of a node's %s bytes (%.0f %%). " % (label(s), lists, node, 100 * float(lists) / float(node))
     ok = sum(1 for _, x, _ in rows if x < paper.SHARED_OVER_REPLICATED)
-    return make("12 per cluster: shared data needs less than half the memory of replicated (sec. 8)", "< 1/2",
+    return make("%d per cluster: shared data needs less than half the memory of replicated (sec. 8)" % m,
+                "< 1/%g" % (1 / paper.SHARED_OVER_REPLICATED),
                 or_na(ours), verdict(ok, len(rows)),
                 "Shared: each object of a node is held by one of its processors; the cell lists, as in "
                 "the paper, by every processor. So shared / replicated can go no lower than the lists' "
@@ -385,8 +394,9 @@ def shared_memory_pixel_partitioned(r):
     rows = _memory_at_12(r)
     ours = "".join("%s: 1/%s. " % (label(s), fmt("%.1f", y)) for s, _, y in rows)
     ok = sum(1 for _, _, y in rows if y is not None and y > paper.SHARED_PIXEL_PARTITIONED)
-    return make("12 per cluster: shared data needs less than 1/12 of the pixel-partitioned memory (sec. 8)",
-                "< 1/12", or_na(ours), verdict(ok, len(rows)), "Pixel-partitioned: whole scene x 16 m processors.")
+    twelfth = "1/%d" % paper.SHARED_PIXEL_PARTITIONED
+    return make("%d per cluster: shared data needs less than %s of the pixel-partitioned memory (sec. 8)"
+                % (paper.MEMORY_M, twelfth), "< " + twelfth, or_na(ours), verdict(ok, len(rows)), "Pixel-partitioned: whole scene x 16 m processors.")
 
 
 def replicated_memory_ratio(r):
@@ -400,7 +410,8 @@ def replicated_memory_ratio(r):
         total += 1
         ok += lo - 0.5 <= 1 / x <= hi + 0.5
         ours += "%s: 1/%.1f. " % (label(s), 1 / x)
-    return make("Replicated data keeps the 1/6 to 1/7 ratio against pixel-partitioned (sec. 8)", "1/6 to 1/7",
+    return make("Replicated data keeps the %s ratio against pixel-partitioned (sec. 8)"
+                % paper.ratio_range(paper.MEMORY_RATIO_AT_16), paper.ratio_range(paper.MEMORY_RATIO_AT_16),
                 or_na(ours), verdict(ok, total, failing=DIRECTION),
                 "Replicated per-processor data is the node's, so the ratio is the 16-IP flat-torus ratio "
                 "of claim 6, and differs from the paper's for the same reasons.")

@@ -22,7 +22,29 @@ SHARED_OVER_REPLICATED = 0.5     # shared needs less than half of replicated
 SHARED_PIXEL_PARTITIONED = 12    # shared needs less than 1/12 of pixel-partitioned
 
 # Section 6, the operation table (microseconds).
-HANDOVER_US = 1600 + 580         # packet creation + packet analysis
+TIMING_US = {"test_miss": 1300, "test_hit": 1750, "dda_step": 340, "shading": 4600, "reflection": 680,
+             "refraction": 1100, "packet_analysis": 580, "packet_creation": 1600, "link": 50}
+HANDOVER_US = TIMING_US["packet_creation"] + TIMING_US["packet_analysis"]
+
+
+def pct(x):
+    """0.85 -> '85 %'."""
+    return "%g %%" % (100 * x)
+
+
+def ratio_range(pair):
+    """(6, 7) -> '1/6 to 1/7'."""
+    return "1/%d to 1/%d" % pair
+
+
+def preprocess_units_text():
+    """'9438 / 738 / 432' (1, 16 and 32 IPs)."""
+    return " / ".join(str(PREPROCESS_UNITS[n]) for n in sorted(PREPROCESS_UNITS))
+
+
+def sharing_penalty():
+    """Shared over replicated time at m = 64, per image: the paper's (1.21, 1.25)."""
+    return tuple(cluster_time(s, "shared") / cluster_time(s, "replicated") for s in ("image1", "image2"))
 
 
 def preprocess_speedup(n):

@@ -3,6 +3,7 @@ import os
 import shutil
 
 from . import claims as claimlib
+from . import paper
 from .csvdata import num
 from .verdict import summary
 
@@ -254,7 +255,8 @@ def document(r, doc_dir, drawn):
         "",
         timing_note,
         "",
-        WHAT_IS_COMPARED,
+        WHAT_IS_COMPARED.format(creation=paper.TIMING_US["packet_creation"],
+                                analysis=paper.TIMING_US["packet_analysis"], handover=paper.HANDOVER_US),
         "  missed intersection test. With the cyclic mapping nearly every cell crossing changes IP." + efficiency_note(r),
         "",
         "The paper's \"above 85 % with the load-balancing mapping\" is only reachable by the busy reading,",
@@ -317,7 +319,7 @@ model reports both readings:
   take as the paper's system efficiency.
 - **T(1)** = T(1) / (n T(n)): against the one-processor time. The difference is the work
   parallelism adds: every time a ray crosses into a cell another IP owns, the packet is created
-  (1600 us) and analysed again (580 us), i.e. 2180 us, more than six DDA steps and more than a"""
+  ({creation} us) and analysed again ({analysis} us), i.e. {handover} us, more than six DDA steps and more than a"""
 
 
 def write(res, doc):
