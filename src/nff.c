@@ -10,6 +10,8 @@
  * Decisions (for the NFF section of the project README):
  *  - a negative sphere or cone radius (NFF's "inside only") is rejected;
  *  - `hither` is read and ignored;
+ *  - Shine >= 0 of any size; ior is checked (> 0) only when T > 0; colours and
+ *    coefficients are not bounded (NFF bounds none of them);
  *  - a `#` starts a comment to the end of the line, also right after a token;
  *  - a leading UTF-8 byte-order mark is skipped; other control bytes are
  *    "binary data".
@@ -171,10 +173,18 @@ static rt_status parse_material(nff_parser *P, const rt_nff_entity *e)
         (st = rt_nff_read_number(&P->in, e, "T", NULL, &m.t)) ||
         (st = rt_nff_read_number(&P->in, e, "ior", NULL, &m.ior)))
         return st;
+    if (m.shine < 0.0)
+        return rt_nff_fail(&P->in, e->line, RT_ERR_PARSE,
+                           "bad Shine of 'f': %g is negative (the Phong exponent must be >= 0)",
+                           m.shine);
+    if (m.t > 0.0 && !(m.ior > 0.0))
+        return rt_nff_fail(&P->in, e->line, RT_ERR_PARSE,
+                           "bad ior of 'f': %g with T = %g (a transmitting surface needs ior > 0)",
+                           m.ior, m.t);
     st = rt_scene_set_material(P->scene, &m);
     if (st)
         return builder_fail(P, e->line, st,
-                            "material values out of range (Shine must be >= 0 and ior > 0)");
+                            "material values out of range (|Kd|, |Ks| and |T| must be <= 1e30)");
     P->have_material = 1;
     return RT_OK;
 }

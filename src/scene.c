@@ -113,10 +113,13 @@ rt_status rt_scene_add_light(rt_scene *s, rt_vec3 position, const rt_vec3 *rgb)
     return RT_OK;
 }
 
+/* NFF bounds none of the numbers; only what shading needs is checked: a
+ * Shine below 0 makes pow(0, Shine) infinite, and ior divides only where
+ * T > 0 (SPD's opaque surfaces say `0`). */
 static int material_valid(const rt_material *m)
 {
-    return finite3(m->color) && isfinite(m->kd) && isfinite(m->ks) && isfinite(m->shine) &&
-           isfinite(m->t) && isfinite(m->ior) && m->ior > 0.0 && m->shine >= 0.0;
+    return finite3(m->color) && sane(m->kd) && sane(m->ks) && isfinite(m->shine) &&
+           sane(m->t) && isfinite(m->ior) && m->shine >= 0.0 && (m->t <= 0.0 || m->ior > 0.0);
 }
 
 rt_status rt_scene_set_material(rt_scene *s, const rt_material *m)
