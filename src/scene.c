@@ -270,6 +270,8 @@ rt_status rt_scene_add_patch(rt_scene *s, const rt_vec3 *v, const rt_vec3 *norma
         /* A zero vertex normal falls back to the face normal. */
         for (int k = 0; k < 3; k++)
             if (rt_vec_is_zero(t->n[k])) t->n[k] = t->normal;
+        rt_vec3 sum = rt_vec_add(t->n[0], rt_vec_add(t->n[1], t->n[2]));
+        t->side = rt_vec_dot(sum, t->normal) < 0.0 ? -1.0 : 1.0;
         o->bounds = empty_box();
         if (!t->degenerate)
             for (int k = 0; k < 3; k++) box_add(&o->bounds, t->v[k]);
