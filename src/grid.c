@@ -419,6 +419,21 @@ nomem:
     return 0;
 }
 
+/* Split factors per axis and level (shorter factor lists padded with 1s) and spans. */
+static void setup_levels(build *bd, const int dims[3])
+{
+    int count[3];
+    for (int a = 0; a < 3; a++) {
+        count[a] = factorise(dims[a], bd->factor[a]);
+        if (count[a] > bd->levels) bd->levels = count[a];
+    }
+    for (int a = 0; a < 3; a++) {
+        for (int l = count[a]; l < bd->levels; l++) bd->factor[a][l] = 1;
+        bd->span[a][0] = dims[a];
+        for (int l = 0; l < bd->levels; l++) bd->span[a][l + 1] = bd->span[a][l] / bd->factor[a][l];
+    }
+}
+
 rt_grid *rt_grid_new(const rt_scene *scene, int nx, int ny, int nz, char *msg, size_t msg_len)
 {
     return rt_grid_new_budget(scene, nx, ny, nz, NULL, msg, msg_len);
@@ -486,16 +501,7 @@ rt_grid *rt_grid_new_budget(const rt_scene *scene, int nx, int ny, int nz, rt_bu
     memset(&bd, 0, sizeof bd);
     bd.scene = scene;
     bd.g = g;
-    int count[3];
-    for (int a = 0; a < 3; a++) {
-        count[a] = factorise(dims[a], bd.factor[a]);
-        if (count[a] > bd.levels) bd.levels = count[a];
-    }
-    for (int a = 0; a < 3; a++) {
-        for (int l = count[a]; l < bd.levels; l++) bd.factor[a][l] = 1;
-        bd.span[a][0] = dims[a];
-        for (int l = 0; l < bd.levels; l++) bd.span[a][l + 1] = bd.span[a][l] / bd.factor[a][l];
-    }
+    setup_levels(&bd, dims);
 
     uint64_t allowed = rt_budget_left(budget) / ENTRY_BYTES;
     bd.max_entries = allowed > (uint64_t)SIZE_MAX / ENTRY_BYTES ? SIZE_MAX / ENTRY_BYTES : (size_t)allowed;
