@@ -25,6 +25,9 @@ extern "C" {
 typedef struct rt_framebuffer rt_framebuffer;
 
 rt_framebuffer *rt_framebuffer_new(uint32_t width, uint32_t height);
+/* Bytes a width x height image takes: the 64-bit sums plus the final 8-bit pixels (for a
+ * memory budget check before rt_framebuffer_new). */
+uint64_t rt_framebuffer_bytes(uint32_t width, uint32_t height);
 void rt_framebuffer_free(rt_framebuffer *fb);
 uint32_t rt_framebuffer_width(const rt_framebuffer *fb);
 uint32_t rt_framebuffer_height(const rt_framebuffer *fb);

@@ -21,6 +21,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "rt_budget.h"
 #include "rt_scene.h"
 
 #ifdef __cplusplus
@@ -33,6 +34,11 @@ extern "C" {
 typedef struct rt_grid rt_grid;
 
 rt_grid *rt_grid_new(const rt_scene *scene, int nx, int ny, int nz, char *msg, size_t msg_len);
+/* The same within a memory budget (NULL: none): the grid's tables and 8 bytes per cell-list
+ * entry are reserved before they are allocated; when the lists would pass what is left,
+ * listing stops and NULL comes back with a "memory budget exceeded: ..." message. */
+rt_grid *rt_grid_new_budget(const rt_scene *scene, int nx, int ny, int nz, rt_budget *budget,
+                            char *msg, size_t msg_len);
 void rt_grid_free(rt_grid *grid);
 
 /* Cells per axis. */

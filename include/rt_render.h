@@ -17,6 +17,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "rt_budget.h"
 #include "rt_framebuffer.h"
 #include "rt_grid.h"
 #include "rt_ops.h"
@@ -40,6 +41,9 @@ typedef struct rt_render_options {
     /* Called now and then with pixels done out of total (NULL: not called). */
     void (*progress)(void *ctx, uint64_t done, uint64_t total);
     void *progress_ctx;
+    /* Memory budget for the work queue (NULL: none): the queue grows only while its
+     * packets fit in what is left; past that rt_render fails with RT_ERR_LIMIT. */
+    rt_budget *budget;
 } rt_render_options;
 
 typedef struct rt_render_stats {

@@ -40,9 +40,9 @@ typedef struct rt_material {
     rt_vec3 color; /* diffuse colour C, each channel in [0, 1] usually */
     double kd;     /* diffuse coefficient */
     double ks;     /* specular (mirror) coefficient; > 0 spawns reflection */
-    double shine;  /* Phong exponent of the highlight; 0 = no highlight */
+    double shine;  /* Phong exponent of the highlight, >= 0 (any size); 0 = no highlight */
     double t;      /* transmission coefficient; > 0 spawns refraction */
-    double ior;    /* index of refraction of the inside */
+    double ior;    /* index of refraction of the inside; must be > 0 only when t > 0 */
 } rt_material;
 
 typedef struct rt_camera {

@@ -48,6 +48,8 @@ ModelOutcome run_model(const SimConfig &config, const rt_scene *scene, const rt_
     if (!fb) throw UserError("out of memory for the frame buffer");
 
     PacketLedger ledger;
+    rt_budget memory = config.memory;
+    ledger.set_limit(rt_budget_packets_allowed(&memory, sizeof(rt_packet)));
     Progress progress("torusrt-sim", config.quiet);
     ledger.set_progress(show_progress, &progress);
     if (config.style == TimingStyle::lt)
@@ -62,6 +64,11 @@ ModelOutcome run_model(const SimConfig &config, const rt_scene *scene, const rt_
     progress.finish();
 
     ModelOutcome out;
+    if (ledger.over_limit()) {
+        rt_budget_packets_exceeded(&memory, ledger.outstanding_over_limit(), sizeof(rt_packet), msg,
+                                   sizeof msg);
+        throw UserError(msg); // the tracer's destructor removes the partial trace
+    }
     if (ledger.outstanding() != 0 || !top.host().done_injecting()) {
         out.deadlock = true;
         out.deadlock_details = deadlock_report(top);

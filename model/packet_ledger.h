@@ -11,7 +11,22 @@ namespace torusrt {
 
 class PacketLedger {
   public:
-    void created(int kind) { m_totals.created[kind]++; m_outstanding++; }
+    void created(int kind)
+    {
+        m_totals.created[kind]++;
+        // Past the memory budget's packet limit the run stops (checked by run_model).
+        if (static_cast<uint64_t>(++m_outstanding) > m_limit && !m_over_limit) {
+            m_over_limit = true;
+            m_over_at = static_cast<uint64_t>(m_outstanding);
+            // The run fails with its own message: no "stopped by user" note.
+            sc_core::sc_report_handler::set_actions("/OSCI/SystemC", sc_core::SC_INFO, sc_core::SC_DO_NOTHING);
+            sc_core::sc_stop();
+        }
+    }
+    // Most packets that may be outstanding at once (the memory budget's share).
+    void set_limit(uint64_t packets) { m_limit = packets; }
+    bool over_limit() const { return m_over_limit; }
+    uint64_t outstanding_over_limit() const { return m_over_at; }
     // `when` is the consumer's local time (its simulated completion).
     void consumed(int kind, const sc_core::sc_time &when)
     {
@@ -48,6 +63,9 @@ class PacketLedger {
     void (*m_progress)(void *, uint64_t, int64_t) = nullptr;
     void *m_progress_ctx = nullptr;
     uint64_t m_consumed_count = 0;
+    uint64_t m_limit = UINT64_MAX;
+    bool m_over_limit = false;
+    uint64_t m_over_at = 0;
 };
 
 }  // namespace torusrt

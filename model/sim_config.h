@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "rt_budget.h"
 #include "rt_mapping.h"
 #include "rt_step.h"
 #include "rt_timing.h"
@@ -38,6 +39,7 @@ struct SimConfig {
     std::string vcd_path;                   // VCD trace file ("" = no tracing)
     std::vector<int> trace_ips;             // nodes to trace (empty = all)
     double t1_s = -1;                       // T(1) passed in (< 0: compute)
+    rt_budget memory{};                     // what is left of --memory-budget for packets
     bool quiet = false;
 
     int node_count() const { return ips[0] * ips[1] * ips[2]; }

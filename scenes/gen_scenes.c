@@ -75,6 +75,8 @@ static const scene_def SCENES[] = {
     {"cones-and-patches", "every primitive: cone, cylinder, pp patches, concave polygon",
      build_cones_and_patches, 1},
     {"one-pixel", "a small scene rendered at 1x1", build_one_pixel, 1},
+    {"opposing-normals", "pp triangles whose vertex normals cancel (a teapot pole)",
+     build_opposing_normals, 1},
 };
 #define NSCENES ((int)(sizeof SCENES / sizeof SCENES[0]))
 

@@ -27,6 +27,11 @@ rt_framebuffer *rt_framebuffer_new(uint32_t width, uint32_t height)
     return fb;
 }
 
+uint64_t rt_framebuffer_bytes(uint32_t width, uint32_t height)
+{
+    return (uint64_t)width * height * 3u * (sizeof(int64_t) + 1u);
+}
+
 void rt_framebuffer_free(rt_framebuffer *fb)
 {
     if (!fb) return;

@@ -74,6 +74,8 @@ typedef struct build {
     size_t cell_n, cell_cap;
     size_t *pair_start;
     int nomem;
+    size_t max_entries;           /* what the memory budget allows */
+    int over_budget;              /* listing stopped at max_entries */
 } build;
 
 static int box_is_empty(const rt_box *b)
@@ -209,8 +211,13 @@ static void slab_range(build *bd, int axis, int c0, int f, int m, int *first, in
 
 static void add_cell(build *bd, const int c[3])
 {
+    if (bd->cell_n == bd->max_entries) {
+        bd->over_budget = bd->nomem = 1;
+        return;
+    }
     if (bd->cell_n == bd->cell_cap) {
         size_t cap = bd->cell_cap ? 2 * bd->cell_cap : 1024;
+        if (cap > bd->max_entries) cap = bd->max_entries;
         uint32_t *p = realloc(bd->cells, cap * sizeof *p);
         if (!p) {
             bd->nomem = 1;
@@ -332,8 +339,32 @@ static int object_space(const rt_scene *s, rt_box *out)
     return 1;
 }
 
+/* Entries are 8 bytes while the lists are built (4 staged, 4 listed). */
+#define ENTRY_BYTES 8u
+
+/* Listing stopped in object `object`: the lists' size so far, and an estimate of the
+ * whole from the share of objects listed, say by how much the budget falls short. */
+static void over_budget_msg(const build *bd, size_t object, const rt_budget *budget, char *msg,
+                            size_t msg_len)
+{
+    const rt_grid *g = bd->g;
+    size_t n = bd->scene->object_count;
+    double estimate = (double)bd->cell_n * (double)n / (double)(object + 1) * ENTRY_BYTES;
+    char left_s[32], limit_s[32], est_s[32];
+    rt_budget_format(rt_budget_left(budget), left_s, sizeof left_s);
+    rt_budget_format(budget ? budget->limit : 0, limit_s, sizeof limit_s);
+    rt_budget_format(estimate < 1.8e19 ? (uint64_t)estimate : UINT64_MAX, est_s, sizeof est_s);
+    if (msg && msg_len)
+        snprintf(msg, msg_len,
+                 "memory budget exceeded: the cell lists of the %dx%dx%d grid filled the %s left "
+                 "of the %s budget at %zu entries (%u bytes each while they are built) with %zu of "
+                 "%zu objects still to list: about %s in all (raise it with --memory-budget)",
+                 g->dims[0], g->dims[1], g->dims[2], left_s, limit_s, bd->cell_n, ENTRY_BYTES,
+                 n - object, n, est_s);
+}
+
 /* Runs the subdivision for every object and fills the grid's lists. */
-static int build_lists(build *bd, char *msg, size_t msg_len)
+static int build_lists(build *bd, rt_budget *budget, char *msg, size_t msg_len)
 {
     rt_grid *g = bd->g;
     const rt_scene *s = bd->scene;
@@ -350,6 +381,10 @@ static int build_lists(build *bd, char *msg, size_t msg_len)
         if (!prepare_object(bd, o)) goto nomem;
         bd->units = 0;
         subdivide(bd, 0, root);
+        if (bd->over_budget) {
+            over_budget_msg(bd, o, budget, msg, msg_len);
+            return 0;
+        }
         if (bd->nomem) goto nomem;
         g->units[o] = bd->units;
         g->units_serial += bd->units;
@@ -371,6 +406,7 @@ static int build_lists(build *bd, char *msg, size_t msg_len)
         free(fill);
         goto nomem;
     }
+    if (budget) rt_budget_reserve(budget, (uint64_t)bd->cell_n * ENTRY_BYTES, "", NULL, 0);
     memcpy(fill, g->list_start, cells * sizeof *fill);
     for (size_t o = 0; o < n; o++)
         for (size_t i = bd->pair_start[o]; i < bd->pair_start[o + 1]; i++)
@@ -383,7 +419,28 @@ nomem:
     return 0;
 }
 
+/* Split factors per axis and level (shorter factor lists padded with 1s) and spans. */
+static void setup_levels(build *bd, const int dims[3])
+{
+    int count[3];
+    for (int a = 0; a < 3; a++) {
+        count[a] = factorise(dims[a], bd->factor[a]);
+        if (count[a] > bd->levels) bd->levels = count[a];
+    }
+    for (int a = 0; a < 3; a++) {
+        for (int l = count[a]; l < bd->levels; l++) bd->factor[a][l] = 1;
+        bd->span[a][0] = dims[a];
+        for (int l = 0; l < bd->levels; l++) bd->span[a][l + 1] = bd->span[a][l] / bd->factor[a][l];
+    }
+}
+
 rt_grid *rt_grid_new(const rt_scene *scene, int nx, int ny, int nz, char *msg, size_t msg_len)
+{
+    return rt_grid_new_budget(scene, nx, ny, nz, NULL, msg, msg_len);
+}
+
+rt_grid *rt_grid_new_budget(const rt_scene *scene, int nx, int ny, int nz, rt_budget *budget,
+                            char *msg, size_t msg_len)
 {
     if (!scene) {
         set_msg(msg, msg_len, "no scene given for the grid");
@@ -405,6 +462,11 @@ rt_grid *rt_grid_new(const rt_scene *scene, int nx, int ny, int nz, char *msg, s
         return NULL;
     }
 
+    /* The per-cell and per-object arrays, reserved before any is allocated. */
+    size_t objects = scene->object_count;
+    uint64_t fixed = (total + 1) * 4u + total * 4u + ((uint64_t)objects + 1) * 8u + objects * 8u;
+    if (rt_budget_reserve(budget, fixed, "the grid's cell and object tables", msg, msg_len))
+        return NULL;
     rt_grid *g = calloc(1, sizeof *g);
     if (!g) {
         set_msg(msg, msg_len, "out of memory creating the grid");
@@ -439,18 +501,11 @@ rt_grid *rt_grid_new(const rt_scene *scene, int nx, int ny, int nz, char *msg, s
     memset(&bd, 0, sizeof bd);
     bd.scene = scene;
     bd.g = g;
-    int count[3];
-    for (int a = 0; a < 3; a++) {
-        count[a] = factorise(dims[a], bd.factor[a]);
-        if (count[a] > bd.levels) bd.levels = count[a];
-    }
-    for (int a = 0; a < 3; a++) {
-        for (int l = count[a]; l < bd.levels; l++) bd.factor[a][l] = 1;
-        bd.span[a][0] = dims[a];
-        for (int l = 0; l < bd.levels; l++) bd.span[a][l + 1] = bd.span[a][l] / bd.factor[a][l];
-    }
+    setup_levels(&bd, dims);
 
-    int ok = build_lists(&bd, msg, msg_len);
+    uint64_t allowed = rt_budget_left(budget) / ENTRY_BYTES;
+    bd.max_entries = allowed > (uint64_t)SIZE_MAX / ENTRY_BYTES ? SIZE_MAX / ENTRY_BYTES : (size_t)allowed;
+    int ok = build_lists(&bd, budget, msg, msg_len);
     free(bd.loop);
     free(bd.cells);
     free(bd.pair_start);

@@ -16,6 +16,11 @@ typedef struct rt_hit {
 int rt_intersect_object(const rt_scene *scene, uint32_t index, rt_vec3 origin, rt_vec3 dir,
                         double t_min, double t_max, rt_hit *hit);
 
+/* A `pp` triangle's interpolated normal sum shorter than this times the sum
+ * of the weights (the vertex normals are unit, the weights sum to 1) is taken
+ * as cancelled: the face normal shades instead. */
+#define RT_PATCH_MIN_NORMAL 1e-3
+
 /* Normals at a hit point: n_geo is the unit outward normal that decides
  * entering or leaving (vertex order for polygons); n_shade the normal used
  * for shading (interpolated for `pp` triangles, else n_geo). */

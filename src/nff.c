@@ -10,21 +10,21 @@
  * Decisions (for the NFF section of the project README):
  *  - a negative sphere or cone radius (NFF's "inside only") is rejected;
  *  - `hither` is read and ignored;
+ *  - Shine >= 0 of any size; ior is checked (> 0) only when T > 0; colours and
+ *    coefficients are not bounded (NFF bounds none of them);
  *  - a `#` starts a comment to the end of the line, also right after a token;
  *  - a leading UTF-8 byte-order mark is skipped; other control bytes are
  *    "binary data".
  */
-#include <errno.h>
 #include <locale.h>
-#include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
-#include "rt_nff.h"
+#include "file_read.h"
 #include "nff_tokens.h"
+#include "rt_nff.h"
 
 typedef struct nff_parser {
     rt_nff_stream in;      /* tokens, their lines, and the message buffer */
@@ -171,10 +171,18 @@ static rt_status parse_material(nff_parser *P, const rt_nff_entity *e)
         (st = rt_nff_read_number(&P->in, e, "T", NULL, &m.t)) ||
         (st = rt_nff_read_number(&P->in, e, "ior", NULL, &m.ior)))
         return st;
+    if (m.shine < 0.0)
+        return rt_nff_fail(&P->in, e->line, RT_ERR_PARSE,
+                           "bad Shine of 'f': %g is negative (the Phong exponent must be >= 0)",
+                           m.shine);
+    if (m.t > 0.0 && !(m.ior > 0.0))
+        return rt_nff_fail(&P->in, e->line, RT_ERR_PARSE,
+                           "bad ior of 'f': %g with T = %g (a transmitting surface needs ior > 0)",
+                           m.ior, m.t);
     st = rt_scene_set_material(P->scene, &m);
     if (st)
         return builder_fail(P, e->line, st,
-                            "material values out of range (Shine must be >= 0 and ior > 0)");
+                            "material values out of range (|Kd|, |Ks| and |T| must be <= 1e30)");
     P->have_material = 1;
     return RT_OK;
 }
@@ -405,87 +413,18 @@ rt_status rt_nff_parse(const char *name, const char *text, size_t length, rt_sce
     return RT_OK;
 }
 
-/* Writes a message without a line number (the file as a whole is at fault). */
-static rt_status file_fail(char *msg, size_t msg_len, rt_status status, const char *fmt, ...)
-{
-    if (msg && msg_len) {
-        va_list ap;
-        va_start(ap, fmt);
-        vsnprintf(msg, msg_len, fmt, ap);
-        va_end(ap);
-    }
-    return status;
-}
-
-/* Reads a whole file into a malloc'd buffer, refusing more than the limit.
- * The size check comes before reading, so a huge regular file costs nothing;
- * the read loop still stops at the limit for pipes and growing files. */
-static rt_status read_file(const char *path, FILE *f, char **text, size_t *length, char *msg,
-                           size_t msg_len)
-{
-    struct stat info;
-    size_t capacity = 65536, used = 0;
-    const size_t cap_max = (size_t)RT_NFF_MAX_FILE_BYTES + 1;
-    if (fstat(fileno(f), &info) == 0) {
-        if (S_ISDIR(info.st_mode))
-            return file_fail(msg, msg_len, RT_ERR_IO, "%s: cannot read: %s", path,
-                             strerror(EISDIR));
-        if (S_ISREG(info.st_mode)) {
-            if ((uintmax_t)info.st_size > RT_NFF_MAX_FILE_BYTES)
-                return file_fail(msg, msg_len, RT_ERR_LIMIT,
-                                 "%s:1: the file is %jd bytes, more than the limit of %u", path,
-                                 (intmax_t)info.st_size, RT_NFF_MAX_FILE_BYTES);
-            capacity = (size_t)info.st_size + 1; /* + 1: end of file is seen in one read */
-        }
-    }
-    char *buf = malloc(capacity);
-    if (!buf) return file_fail(msg, msg_len, RT_ERR_NOMEM, "%s: out of memory", path);
-    for (;;) {
-        if (used == capacity) {
-            if (capacity >= cap_max) break; /* one byte over the limit: stop */
-            size_t grown = capacity > cap_max / 2 ? cap_max : capacity * 2;
-            char *bigger = realloc(buf, grown);
-            if (!bigger) {
-                free(buf);
-                return file_fail(msg, msg_len, RT_ERR_NOMEM, "%s: out of memory", path);
-            }
-            buf = bigger;
-            capacity = grown;
-        }
-        size_t got = fread(buf + used, 1, capacity - used, f);
-        used += got;
-        if (got == 0) break;
-    }
-    if (ferror(f)) {
-        int saved = errno;
-        free(buf);
-        return file_fail(msg, msg_len, RT_ERR_IO, "%s: cannot read: %s", path, strerror(saved));
-    }
-    if (used > RT_NFF_MAX_FILE_BYTES) {
-        free(buf);
-        return file_fail(msg, msg_len, RT_ERR_LIMIT,
-                         "%s:1: the file is more than the limit of %u bytes", path,
-                         RT_NFF_MAX_FILE_BYTES);
-    }
-    *text = buf;
-    *length = used;
-    return RT_OK;
-}
-
 rt_status rt_nff_load(const char *path, rt_scene **out, char *msg, size_t msg_len,
                       rt_nff_warn_fn warn, void *warn_ctx)
 {
     if (out) *out = NULL;
     if (msg && msg_len) msg[0] = '\0';
-    if (!path || !out)
-        return file_fail(msg, msg_len, RT_ERR_INVALID, "rt_nff_load: null argument");
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return file_fail(msg, msg_len, RT_ERR_IO, "%s: cannot open: %s", path, strerror(errno));
+    if (!path || !out) {
+        if (msg && msg_len) snprintf(msg, msg_len, "rt_nff_load: null argument");
+        return RT_ERR_INVALID;
+    }
     char *text = NULL;
     size_t length = 0;
-    rt_status st = read_file(path, f, &text, &length, msg, msg_len);
-    fclose(f);
+    rt_status st = rt_read_regular_file(path, RT_NFF_MAX_FILE_BYTES, &text, &length, msg, msg_len);
     if (st) return st;
     st = rt_nff_parse(path, text, length, out, msg, msg_len, warn, warn_ctx);
     free(text);

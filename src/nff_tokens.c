@@ -2,6 +2,8 @@
  * one token of look-ahead, strict decimal numbers, and "file:line: message" errors. */
 #include "nff_tokens.h"
 
+#include "file_read.h"
+
 #include <errno.h>
 #include <math.h>
 #include <stdarg.h>
@@ -34,7 +36,9 @@ void rt_nff_stream_init(rt_nff_stream *S, const char *name, const char *text, si
 rt_status rt_nff_fail(rt_nff_stream *S, size_t line, rt_status status, const char *fmt, ...)
 {
     if (S->msg && S->msg_len > 0) {
-        int n = snprintf(S->msg, S->msg_len, "%s:%zu: ", S->name, line);
+        char name[256];
+        rt_escape_bytes(S->name, strlen(S->name), 0, name, sizeof name);
+        int n = snprintf(S->msg, S->msg_len, "%s:%zu: ", name, line);
         if (n >= 0 && (size_t)n < S->msg_len) {
             va_list ap;
             va_start(ap, fmt);
@@ -45,14 +49,11 @@ rt_status rt_nff_fail(rt_nff_stream *S, size_t line, rt_status status, const cha
     return status;
 }
 
-/* Copies a token for quoting in a message, shortened if long. */
+/* Copies a token for quoting in a message, shortened if long; bytes outside
+ * printable ASCII are escaped (NFF is ASCII text). */
 const char *rt_nff_show(const rt_nff_token *t, char buf[RT_NFF_SHOW_CHARS + 4])
 {
-    size_t n = t->len > RT_NFF_SHOW_CHARS ? RT_NFF_SHOW_CHARS : t->len;
-    memcpy(buf, t->text, n);
-    if (t->len > RT_NFF_SHOW_CHARS) memcpy(buf + n, "...", 3), n += 3;
-    buf[n] = '\0';
-    return buf;
+    return rt_escape_bytes(t->text, t->len, 1, buf, RT_NFF_SHOW_CHARS + 4);
 }
 
 /* The end-of-file error: the entity's line is named because the message

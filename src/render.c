@@ -18,15 +18,24 @@ rt_render_options rt_render_options_default(void)
 typedef struct queue {
     rt_packet *items;
     size_t head, count, capacity;
+    uint64_t wanted; /* bytes a growth the budget refused asked for (old + new array) */
 } queue;
 
-static int queue_push(queue *q, const rt_packet *p)
+/* 0 when memory runs out, -1 when the budget does not allow the queue to grow. */
+static int queue_push(queue *q, const rt_packet *p, rt_budget *budget)
 {
     if (q->count == q->capacity) {
         size_t cap = q->capacity ? q->capacity * 2 : 256;
+        /* Old and new arrays live together while packets are copied: both count. */
+        q->wanted = (uint64_t)(cap + q->capacity) * sizeof *p;
+        uint64_t more = rt_budget_packets_allowed(budget, sizeof *p);
+        if ((uint64_t)cap > more) cap = (size_t)more;
+        if (cap <= q->capacity) return -1;
+        if (rt_budget_reserve(budget, (uint64_t)cap * sizeof *p, "", NULL, 0)) return -1;
         rt_packet *n = malloc(cap * sizeof *n);
         if (!n) return 0;
         for (size_t i = 0; i < q->count; i++) n[i] = q->items[(q->head + i) % q->capacity];
+        if (budget && budget->limit) budget->used -= (uint64_t)q->capacity * sizeof *p;
         free(q->items);
         q->items = n;
         q->head = 0;
@@ -35,6 +44,11 @@ static int queue_push(queue *q, const rt_packet *p)
     q->items[(q->head + q->count) % q->capacity] = *p;
     q->count++;
     return 1;
+}
+
+static rt_status push_status(int pushed)
+{
+    return pushed > 0 ? RT_OK : pushed < 0 ? RT_ERR_LIMIT : RT_ERR_NOMEM;
 }
 
 static rt_packet queue_pop(queue *q)
@@ -75,7 +89,7 @@ rt_status rt_render(const rt_scene *scene, const rt_grid *grid, const rt_render_
                 continue;
             }
             stats->packets.created[RT_PACKET_RAY]++;
-            if (!queue_push(&q, &p)) status = RT_ERR_NOMEM;
+            status = push_status(queue_push(&q, &p, options->budget));
             while (q.count && status == RT_OK) {
                 if (q.count > stats->queue_high_water) stats->queue_high_water = q.count;
                 rt_packet cur = queue_pop(&q);
@@ -86,7 +100,8 @@ rt_status rt_render(const rt_scene *scene, const rt_grid *grid, const rt_render_
                     rt_framebuffer_add(fb, r.contrib[i].x, r.contrib[i].y, r.contrib[i].rgb);
                 for (size_t i = 0; i < r.created_count; i++) {
                     stats->packets.created[r.created[i].kind]++;
-                    if (!queue_push(&q, &r.created[i])) status = RT_ERR_NOMEM;
+                    if (status == RT_OK)
+                        status = push_status(queue_push(&q, &r.created[i], options->budget));
                 }
                 if (r.fate == RT_FATE_FORWARDED) stats->packets.forwarded++;
                 else stats->packets.consumed[cur.kind]++;
@@ -98,6 +113,17 @@ rt_status rt_render(const rt_scene *scene, const rt_grid *grid, const rt_render_
     }
     free(q.items);
     rt_step_result_release(&r);
+    /* The queue is gone: give its reservation back. */
+    if (options->budget && options->budget->limit)
+        options->budget->used -= (uint64_t)q.capacity * sizeof(rt_packet);
+    if (status == RT_ERR_LIMIT) {
+        char what[160];
+        snprintf(what, sizeof what,
+                 "the work queue, full with %zu packets of %zu bytes, growing (old and new arrays "
+                 "while packets are copied)",
+                 q.count, sizeof(rt_packet));
+        return rt_budget_exceeded(options->budget, what, q.wanted, msg, msg_len);
+    }
     if (status != RT_OK) {
         if (msg) snprintf(msg, msg_len, "render failed: %s", rt_status_name(status));
         return status;

@@ -113,10 +113,13 @@ rt_status rt_scene_add_light(rt_scene *s, rt_vec3 position, const rt_vec3 *rgb)
     return RT_OK;
 }
 
+/* NFF bounds none of the numbers; only what shading needs is checked: a
+ * Shine below 0 makes pow(0, Shine) infinite, and ior divides only where
+ * T > 0 (SPD's opaque surfaces say `0`). */
 static int material_valid(const rt_material *m)
 {
-    return finite3(m->color) && isfinite(m->kd) && isfinite(m->ks) && isfinite(m->shine) &&
-           isfinite(m->t) && isfinite(m->ior) && m->ior > 0.0 && m->shine >= 0.0;
+    return finite3(m->color) && sane(m->kd) && sane(m->ks) && isfinite(m->shine) &&
+           sane(m->t) && isfinite(m->ior) && m->shine >= 0.0 && (m->t <= 0.0 || m->ior > 0.0);
 }
 
 rt_status rt_scene_set_material(rt_scene *s, const rt_material *m)
@@ -267,6 +270,8 @@ rt_status rt_scene_add_patch(rt_scene *s, const rt_vec3 *v, const rt_vec3 *norma
         /* A zero vertex normal falls back to the face normal. */
         for (int k = 0; k < 3; k++)
             if (rt_vec_is_zero(t->n[k])) t->n[k] = t->normal;
+        rt_vec3 sum = rt_vec_add(t->n[0], rt_vec_add(t->n[1], t->n[2]));
+        t->side = rt_vec_dot(sum, t->normal) < 0.0 ? -1.0 : 1.0;
         o->bounds = empty_box();
         if (!t->degenerate)
             for (int k = 0; k < 3; k++) box_add(&o->bounds, t->v[k]);

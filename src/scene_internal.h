@@ -25,6 +25,7 @@ typedef struct rt_triangle_data {
     rt_vec3 v[3];          /* vertices */
     rt_vec3 n[3];          /* unit vertex normals */
     rt_vec3 normal;        /* unit geometric normal from the vertex order */
+    double side;           /* +1 or -1: the side of `normal` the vertex normals, summed, lie on */
     int degenerate;        /* zero area: never hit */
 } rt_triangle_data;
 

@@ -125,7 +125,8 @@ static void shade(const rt_scene *scene, const rt_grid *grid, const rt_step_para
         if (!(c > 0.0)) continue;
         rt_vec3 value = rt_vec_scale(m->color, m->kd * c);
         if (m->shine > 0.0) {
-            double spec = m->ks * pow(fmax(0.0, rt_vec_dot(refl, l)), m->shine);
+            /* Clamped to [0, 1] (rounding can pass 1), so any Shine gives a finite power. */
+            double spec = m->ks * pow(fmin(1.0, fmax(0.0, rt_vec_dot(refl, l))), m->shine);
             value = rt_vec_add(value, rt_vec(spec, spec, spec));
         }
         value = rt_vec_mul(rt_vec_mul(w, lj->color), value);

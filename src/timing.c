@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "file_read.h"
 #include "rt_timing.h"
 
 typedef struct timing_key {
@@ -69,7 +70,10 @@ rt_status rt_timing_set(rt_timing *t, const char *key, double value, char *msg, 
 {
     int i = key ? find_key(key) : -1;
     if (i < 0) {
-        if (msg && msg_len) snprintf(msg, msg_len, "unknown key '%s'", key ? key : "");
+        char quoted[256];
+        if (msg && msg_len)
+            snprintf(msg, msg_len, "unknown key '%s'",
+                     key ? rt_escape_bytes(key, strlen(key), 1, quoted, sizeof quoted) : "");
         return RT_ERR_INVALID;
     }
     if (!isfinite(value) || value < 0.0 || (keys[i].positive && !(value > 0.0))) {
@@ -114,7 +118,10 @@ static int parse_line(char *line, rt_timing *t, char *msg, size_t msg_len)
     name[key_len] = '\0';
     int i = find_key(name);
     if (i < 0) {
-        if (msg && msg_len) snprintf(msg, msg_len, "unknown key '%s'", name);
+        char quoted[4 * sizeof name];
+        if (msg && msg_len)
+            snprintf(msg, msg_len, "unknown key '%s'",
+                     rt_escape_bytes(key, key_len, 1, quoted, sizeof quoted));
         return 0;
     }
     char *end;
@@ -127,34 +134,47 @@ static int parse_line(char *line, rt_timing *t, char *msg, size_t msg_len)
     return rt_timing_set(t, name, v, msg, msg_len) == RT_OK;
 }
 
+/* A timing file is a few dozen lines: these bounds are far beyond any real one
+ * and keep /dev/zero-like input from costing memory. */
+#define TIMING_MAX_FILE_BYTES (1024u * 1024u)
+#define TIMING_MAX_LINE_BYTES 4096u
+
 rt_status rt_timing_load(const char *path, rt_timing *timing, char *msg, size_t msg_len)
 {
-    FILE *f = fopen(path, "r");
-    if (!f) {
-        if (msg && msg_len) snprintf(msg, msg_len, "%s: cannot open: %s", path, strerror(errno));
-        return RT_ERR_IO;
-    }
+    char *text = NULL;
+    size_t length = 0;
+    rt_status st = rt_read_regular_file(path, TIMING_MAX_FILE_BYTES, &text, &length, msg, msg_len);
+    if (st) return st;
+    char shown[256];
+    rt_escape_bytes(path, strlen(path), 0, shown, sizeof shown);
     /* Work on a copy: a bad file leaves the caller's table untouched. */
     rt_timing t = *timing;
-    char *line = NULL;
-    size_t cap = 0;
-    long number = 0;
-    rt_status st = RT_OK;
     char why[256];
-    while (getline(&line, &cap, f) != -1) {
+    long number = 0;
+    for (char *line = text; st == RT_OK && line < text + length;) {
+        char *nl = memchr(line, '\n', (size_t)(text + length - line));
+        char *stop = nl ? nl : text + length;
         number++;
-        if (!parse_line(line, &t, why, sizeof why)) {
-            if (msg && msg_len) snprintf(msg, msg_len, "%s:%ld: %s", path, number, why);
+        if ((size_t)(stop - line) > TIMING_MAX_LINE_BYTES) {
+            if (msg && msg_len)
+                snprintf(msg, msg_len, "%s:%ld: line longer than %u bytes", shown, number,
+                         TIMING_MAX_LINE_BYTES);
             st = RT_ERR_PARSE;
-            break;
+        } else if (memchr(line, '\0', (size_t)(stop - line))) {
+            if (msg && msg_len)
+                snprintf(msg, msg_len, "%s:%ld: binary data (a NUL byte): not a timing file", shown,
+                         number);
+            st = RT_ERR_PARSE;
+        } else {
+            *stop = '\0';
+            if (!parse_line(line, &t, why, sizeof why)) {
+                if (msg && msg_len) snprintf(msg, msg_len, "%s:%ld: %s", shown, number, why);
+                st = RT_ERR_PARSE;
+            }
         }
+        line = stop + 1;
     }
-    if (st == RT_OK && ferror(f)) {
-        if (msg && msg_len) snprintf(msg, msg_len, "%s: read error", path);
-        st = RT_ERR_IO;
-    }
-    free(line);
-    fclose(f);
+    free(text);
     if (st == RT_OK) *timing = t;
     return st;
 }

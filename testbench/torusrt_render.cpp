@@ -23,7 +23,7 @@ namespace {
 
 struct RenderOptions {
     std::string scene_path, output_path, stats_path, timing_path;
-    std::string cells = "24", size, min_weight = "1/512";
+    std::string cells = "24", size, min_weight = "1/512", memory_budget = "4G";
     int max_depth = 8;
     bool brute_force = false, quiet = false;
 };
@@ -42,6 +42,7 @@ int run(const RenderOptions &opt)
     if (opt.max_depth < 0 || opt.max_depth > 1000)
         throw UserError("--max-depth " + std::to_string(opt.max_depth) + ": must be 0 to 1000", 2);
     double min_weight = parse_fraction("--min-weight", opt.min_weight);
+    rt_budget budget = rt_budget_make(parse_memory_size("--memory-budget", opt.memory_budget));
     check_output_folder("-o", opt.output_path);
     if (!opt.stats_path.empty()) check_output_folder("--stats", opt.stats_path);
 
@@ -51,7 +52,7 @@ int run(const RenderOptions &opt)
     if (!opt.timing_path.empty() && rt_timing_load(opt.timing_path.c_str(), &timing, msg, sizeof msg) != RT_OK)
         throw UserError(msg);
 
-    LoadedScene loaded = load_scene(opt.scene_path, size[0], size[1], cells, opt.quiet);
+    LoadedScene loaded = load_scene(opt.scene_path, size[0], size[1], cells, opt.quiet, &budget);
     const rt_camera *cam = rt_scene_camera(loaded.scene.get());
     FramebufferPtr fb(rt_framebuffer_new(cam->width, cam->height));
     if (!fb) throw UserError("out of memory for a " + std::to_string(cam->width) + "x" + std::to_string(cam->height) + " image");
@@ -63,6 +64,7 @@ int run(const RenderOptions &opt)
     Progress progress("torusrt-render", opt.quiet);
     ro.progress = on_progress;
     ro.progress_ctx = &progress;
+    ro.budget = &budget;
     rt_render_stats st;
     if (rt_render(loaded.scene.get(), loaded.grid.get(), &ro, fb.get(), &st, msg, sizeof msg) != RT_OK)
         throw UserError(opt.scene_path + ": " + msg);
@@ -123,6 +125,8 @@ int main(int argc, char **argv)
     app.add_option("--size", opt.size, "image size WxH, overriding the scene's resolution");
     app.add_option("--max-depth", opt.max_depth, "deepest shade-tree depth of a ray (default 8)");
     app.add_option("--min-weight", opt.min_weight, "smallest ray weight, e.g. 1/512 (default)");
+    app.add_option("--memory-budget", opt.memory_budget,
+                   "memory the run may use for cell lists, frame buffer and packets, e.g. 512M or 4G; 0 = no limit (default 4G)");
     app.add_flag("--brute-force", opt.brute_force, "test every object for every ray (the test oracle)");
     app.add_option("--stats", opt.stats_path, "write statistics as JSON to this file");
     app.add_option("--timing", opt.timing_path, "timing file overriding the paper's table (for t1_s)");

@@ -23,6 +23,7 @@ struct CommandLine {
     std::string output, stats, timing_file, ips = "1", map = "cyclic", topology = "torus", cells = "24", size;
     std::string min_weight = "1/512", style = "at", quantum = "0", data = "replicated", arbiter = "round-robin";
     std::string dispatch = "round-robin", trace_ips, link_us, packet_bytes, link_bytes_per_us, t1;
+    std::string memory_budget = "4G";
     long long queue = 0;
     int max_depth = 8;
 };
@@ -151,6 +152,8 @@ int sc_main(int argc, char **argv)
     app.add_option("--arbiter", cl.arbiter, "cluster bus arbiter: round-robin (default) or fixed-priority");
     app.add_option("--dispatch", cl.dispatch, "cluster packet dispatch: round-robin (default) or shortest-queue");
     app.add_option("--t1", cl.t1, "T(1) in seconds for efficiency_t1 (default: run the model with one processor)");
+    app.add_option("--memory-budget", cl.memory_budget,
+                   "memory the run may use for cell lists, frame buffer and packets, e.g. 512M or 4G; 0 = no limit (default 4G)");
     app.add_flag("-q,--quiet", quiet, "print nothing but errors; no progress");
     return run_cli("torusrt-sim", app, argc, argv, [&]() -> int {
         SimConfig config = make_config(scene, cl, quiet);
@@ -161,7 +164,8 @@ int sc_main(int argc, char **argv)
         if (!cl.stats.empty()) check_output_folder("--stats", cl.stats);
         if (!vcd.empty()) check_output_folder("--vcd", vcd);
 
-        LoadedScene loaded = load_scene(scene, config.width, config.height, config.cells, quiet);
+        config.memory = rt_budget_make(parse_memory_size("--memory-budget", cl.memory_budget));
+        LoadedScene loaded = load_scene(scene, config.width, config.height, config.cells, quiet, &config.memory);
         double t1 = config.t1_s;
         std::string t1_source = "passed with --t1";
         if (t1 < 0 && config.processor_count() > 1) {

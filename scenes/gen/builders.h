@@ -29,5 +29,6 @@ void build_tiny_sphere(scene *sc, double factor);
 void build_tiny_alone(scene *sc, double factor);
 void build_cones_and_patches(scene *sc, double factor);
 void build_one_pixel(scene *sc, double factor);
+void build_opposing_normals(scene *sc, double factor);
 
 #endif

@@ -405,3 +405,31 @@ void build_one_pixel(scene *sc, double factor)
     ambient(sc, 0.1, 0.1, 0.1);
     add_light(sc, v3(3, 4, 5), 1, 1, 1);
 }
+
+void build_opposing_normals(scene *sc, double factor)
+{
+    (void)factor;
+    note(sc, "A lid of 12 pp triangles around a raised pole whose vertex normals nearly cancel, as");
+    note(sc, "at the poles of Haines' teapot: on each triangle the pole's normal is the exact");
+    note(sc, "opposite of one rim normal (e.g. (-0.90, -0.43, 0) beside (0.90, 0.43, 0)), so the");
+    note(sc, "interpolated sum passes through zero and turns to the back of the face. Lit from");
+    note(sc, "above, the lid must shade smoothly: no speckles.");
+    diffuse(sc, 0.6, 0.6, 0.65, 0.8);
+    floor_quad(sc, -0.05, -2, 2, -2, 2);
+    mat(sc, 0.9, 0.6, 0.3, 0.8, 0, 100000, 0, 0);
+    const int seg = 12;
+    for (int k = 0; k < seg; ++k) {
+        double a0 = 2 * PI * k / seg, a1 = 2 * PI * (k + 1) / seg;
+        vec3 r0 = v3(0.90 * cos(a0), 0.43, 0.90 * sin(a0));
+        vec3 r1 = v3(0.90 * cos(a1), 0.43, 0.90 * sin(a1));
+        /* Counter-clockwise seen from above: pole, rim at a1, rim at a0. */
+        vec3 v[3] = {v3(0, 0.3, 0), v3(cos(a1), 0, sin(a1)), v3(cos(a0), 0, sin(a0))};
+        vec3 n[3] = {vmul(r0, -1), r1, r0};
+        polygon_n(sc, 3, v, n);
+    }
+    view(sc, v3(0.3, 3.2, 2.4), v3(0, 0.1, 0), v3(0, 1, 0), 40, 48, 48);
+    background(sc, 0.1, 0.12, 0.25);
+    ambient(sc, 0.1, 0.1, 0.1);
+    add_light(sc, v3(-2, 6, 3), 0.8, 0.8, 0.8);
+    add_light(sc, v3(3, 5, -1), 0.4, 0.4, 0.4);
+}

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <vector>
 
+#include "rt_budget.h"
 #include "user_error.h"
 
 namespace torusrt {
@@ -131,6 +132,14 @@ double parse_fraction(const std::string &option, const std::string &text)
     }
     if (v < 0) bad(option, text, "must not be negative");
     return v;
+}
+
+uint64_t parse_memory_size(const std::string &option, const std::string &text)
+{
+    uint64_t bytes = 0;
+    char msg[RT_MSG_LEN] = "";
+    if (rt_budget_parse(text.c_str(), &bytes, msg, sizeof msg) != RT_OK) bad(option, text, msg);
+    return bytes;
 }
 
 }  // namespace torusrt

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <string>
 
 namespace torusrt {
@@ -20,5 +21,7 @@ double parse_non_negative(const std::string &option, const std::string &text);
 double parse_time_us(const std::string &option, const std::string &text);
 // A weight: "0.002", "1/512".
 double parse_fraction(const std::string &option, const std::string &text);
+// A memory size: "512M", "4G", "1000000" (bytes); "0" = no limit.
+uint64_t parse_memory_size(const std::string &option, const std::string &text);
 
 }  // namespace torusrt

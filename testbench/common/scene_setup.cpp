@@ -3,6 +3,8 @@
 
 #include <cstdio>
 
+#include "rt_framebuffer.h"
+#include "rt_grid.h"
 #include "rt_nff.h"
 #include "user_error.h"
 
@@ -16,7 +18,7 @@ void print_warning(void *ctx, const char *message)
 }  // namespace
 
 LoadedScene load_scene(const std::string &path, unsigned width, unsigned height,
-                       const std::array<int, 3> &cells, bool quiet)
+                       const std::array<int, 3> &cells, bool quiet, rt_budget *budget)
 {
     char msg[RT_MSG_LEN] = "";
     rt_scene *raw = nullptr;
@@ -33,7 +35,14 @@ LoadedScene load_scene(const std::string &path, unsigned width, unsigned height,
                                 ": each side must be 1 to " + std::to_string(RT_SCENE_MAX_RESOLUTION),
                             2);
     }
-    out.grid.reset(rt_grid_new(raw, cells[0], cells[1], cells[2], msg, sizeof msg));
+    const rt_camera *cam = rt_scene_camera(raw);
+    std::string fb_what = "the frame buffer of " + std::to_string(cam->width) + "x" +
+                          std::to_string(cam->height) + " pixels";
+    if (rt_budget_reserve(budget, rt_framebuffer_bytes(cam->width, cam->height), fb_what.c_str(), msg,
+                          sizeof msg) != RT_OK)
+        throw UserError(path + ": " + msg);
+    out.grid.reset(rt_grid_new_budget(raw, cells[0], cells[1], cells[2], budget, msg, sizeof msg));
+    if (!out.grid && std::string(msg).rfind("memory budget", 0) == 0) throw UserError(path + ": " + msg);
     if (!out.grid) throw UserError(std::string("--cells: ") + msg, 2);
     return out;
 }

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "kernel_handles.h"
+#include "rt_budget.h"
 
 namespace torusrt {
 
@@ -14,9 +15,10 @@ struct LoadedScene {
 };
 
 // Loads an NFF file (warnings go to stderr), applies an optional resolution
-// override (width/height 0 = keep the file's) and builds a grid with `cells`.
+// override (width/height 0 = keep the file's), reserves the frame buffer in `budget`
+// (may be null) and builds a grid with `cells` within what is left of it.
 // Throws UserError with "FILE:LINE: message" style text on failure.
 LoadedScene load_scene(const std::string &path, unsigned width, unsigned height,
-                       const std::array<int, 3> &cells, bool quiet);
+                       const std::array<int, 3> &cells, bool quiet, rt_budget *budget = nullptr);
 
 }  // namespace torusrt

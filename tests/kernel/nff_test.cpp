@@ -413,3 +413,72 @@ TEST(NffGood, LoadsFromAFile)
     EXPECT_DOUBLE_EQ(rt_scene_light(r.scene, 0)->color.y, 1.0);
     fs::remove_all(dir);
 }
+
+// ------------------------------------------------- what NFF 3.9 allows (SPD output)
+
+TEST(NffFormat, OpaqueSurfaceWithIorZeroAndHugeShineLoads)
+{
+    // SPD generators write ior 0 for opaque surfaces and Shine up to 100000.
+    Loaded r;
+    parse_text(std::string(kView) + "f 1 0.75 0.33 0.8 0 100000 0 0\ns 0 0 0 1\n", r);
+    ASSERT_EQ(r.status, RT_OK) << r.msg;
+    const rt_material *m = rt_scene_object_material(r.scene, 0);
+    EXPECT_EQ(m->shine, 100000.0);
+    EXPECT_EQ(m->ior, 0.0);
+    EXPECT_EQ(m->t, 0.0);
+}
+
+TEST(NffFormat, NegativeIorWithoutTransmissionLoads)
+{
+    Loaded r;
+    parse_text(std::string(kView) + "f 1 1 1 1 0 3 0 -1\ns 0 0 0 1\n", r);
+    EXPECT_EQ(r.status, RT_OK) << r.msg;
+}
+
+TEST(NffFormat, TransmittingSurfaceStillNeedsAPositiveIor)
+{
+    for (const char *f : {"f 1 1 1 0 0 0 0.5 0\n", "f 1 1 1 0 0 0 1 -1.5\n"}) {
+        SCOPED_TRACE(f);
+        Loaded r;
+        parse_text(std::string(kView) + f + "s 0 0 0 1\n", r);
+        EXPECT_EQ(r.status, RT_ERR_PARSE);
+        EXPECT_EQ(message_line(r.msg, "mem.nff"), 8) << r.msg;
+        EXPECT_NE(r.msg.find("ior > 0"), std::string::npos) << r.msg;
+    }
+}
+
+TEST(NffFormat, ColoursAndCoefficientsAreNotBounded)
+{
+    // NFF gives usual ranges but bounds none: colours above 1, Kd + Ks > 1, a negative
+    // coefficient all load as written.
+    Loaded r;
+    parse_text(std::string(kView) + "b 2 0 1.5\nam 3 3 3\nf 1.5 -0.25 2 0.9 0.9 5 -0.5 1\n"
+                                    "l 1 2 3 4 5 6\ns 0 0 0 1\n",
+               r);
+    ASSERT_EQ(r.status, RT_OK) << r.msg;
+    const rt_material *m = rt_scene_object_material(r.scene, 0);
+    EXPECT_EQ(m->color.x, 1.5);
+    EXPECT_EQ(m->color.y, -0.25);
+    EXPECT_EQ(m->kd + m->ks, 1.8);
+    EXPECT_EQ(m->t, -0.5);
+    EXPECT_EQ(rt_scene_background(r.scene).x, 2.0);
+    EXPECT_EQ(rt_scene_light(r.scene, 0)->color.z, 6.0);
+}
+
+TEST(NffFormat, SpdLayoutHitherColourlessLightsAndOneLineCone)
+{
+    // `b` before `v`, a nonzero hither, lights with and without colour, a whole `c` on one
+    // line, a `pp` whose vertex normals oppose each other.
+    Loaded r;
+    parse_text("b 0.078 0.361 0.753\nv\nfrom 2.1 1.3 1.7\nat 0 0 0\nup 0 0 1\nangle 45\n"
+               "hither 0.001\nresolution 16 16\nl 4 3 2\nl 1 -4 4 0.5 0.5 0.5\n"
+               "f 1 0.75 0.33 0.8 0 100000 0 0\nc 0 0 0 0.5 0 0 1 0.25\n"
+               "pp 3\n0 0 0 -0.90 0 -0.43\n1 0 0 0.90 0 0.43\n0 1 0 0 0 1\n",
+               r);
+    ASSERT_EQ(r.status, RT_OK) << r.msg;
+    EXPECT_EQ(rt_scene_light_count(r.scene), 2u);
+    EXPECT_DOUBLE_EQ(rt_scene_light(r.scene, 0)->color.x, 1.0 / std::sqrt(2.0));
+    EXPECT_EQ(rt_scene_light(r.scene, 1)->color.x, 0.5);
+    EXPECT_EQ(rt_scene_object_count(r.scene), 2u);
+    EXPECT_EQ(rt_scene_background(r.scene).z, 0.753);
+}

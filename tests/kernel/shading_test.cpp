@@ -1169,3 +1169,39 @@ TEST(RenderConservation, PacketsCreatedEqualConsumed) {
         }
     }
 }
+
+TEST(ShadingHighlight, HugeShineGivesFiniteValuesWhereRLIsOne) {
+    // A light straight along the mirror direction makes R.L 1 up to rounding, which can
+    // land above 1: pow of that to a huge Shine must not overflow. SPD files use Shine
+    // up to 100000; any finite Shine >= 0 is accepted.
+    TestRng rng(99);
+    for (double shine : {100000.0, 1e300}) {
+        SCOPED_TRACE(shine);
+        for (int i = 0; i < 400; i++) {
+            ScenePtr s = new_scene();
+            rt_material m = mat(rt_vec(0.5, 0.5, 0.5), 0.5, 0.5, shine, 0, 1);
+            ASSERT_EQ(rt_scene_set_material(s.get(), &m), RT_OK);
+            ASSERT_EQ(rt_scene_add_sphere(s.get(), rt_vec(0, 0, 0), 1.0), RT_OK);
+            rt_vec3 eye = rt_vec_scale(rng.unit(), 5.0);
+            rt_vec3 aim = rt_vec_scale(rng.unit(), 0.5);
+            rt_vec3 d = rt_vec_normalize(rt_vec_sub(aim, eye));
+            // Where the ray meets the sphere, and the mirror direction there.
+            double b = rt_vec_dot(eye, d), c = rt_vec_dot(eye, eye) - 1.0;
+            double t = -b - std::sqrt(b * b - c);
+            rt_vec3 p = rt_vec_add(eye, rt_vec_scale(d, t)), n = rt_vec_normalize(p);
+            rt_vec3 r = rt_vec_sub(d, rt_vec_scale(n, 2.0 * rt_vec_dot(d, n)));
+            rt_vec3 white = rt_vec(1, 1, 1);
+            ASSERT_EQ(rt_scene_add_light(s.get(), rt_vec_add(p, rt_vec_scale(r, 3.0)), &white), RT_OK);
+            finish(s.get());
+            GridPtr g = make_grid(s.get(), 4, 4, 4);
+            rt_step_params prm = rt_step_params_default();
+            StepOut o = run_step(s.get(), g.get(), prm, make_packet(g.get(), RT_PACKET_RAY, eye, d, white));
+            ASSERT_EQ(o.status, RT_OK);
+            for (const rt_packet &pk : o.created) {
+                ASSERT_TRUE(rt_vec_is_finite(pk.weight)) << "packet " << i;
+                EXPECT_LE(rt_vec_max_component(pk.weight), 0.5 * 0.5 + 0.5 + 1e-12);
+            }
+            for (const rt_contribution &ct : o.contrib) ASSERT_TRUE(rt_vec_is_finite(ct.rgb));
+        }
+    }
+}

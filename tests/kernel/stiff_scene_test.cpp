@@ -38,7 +38,7 @@ const char *const kStiffScenes[] = {
     "scale-1",     "scale-tiny",        "scale-huge",        "scale-pow2-tiny", "scale-pow2-huge",
     "tiny-sphere", "tiny-sphere-alone", "facing-mirrors",    "light-inside",    "tir",
     "grazing",     "axis-rays",         "grid-corners",      "eye-inside",      "empty",
-    "one-cell",    "one-big-sphere",    "cones-and-patches", "one-pixel"};
+    "one-cell",    "one-big-sphere",    "cones-and-patches", "one-pixel",       "opposing-normals"};
 
 std::string scene_dir() {
     const char *env = std::getenv("TORUSRT_SCENE_DIR");

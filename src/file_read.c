@@ -1,0 +1,127 @@
+/* file_read.c - whole-file reads of regular files only, and escaped quoting for messages. */
+#include "file_read.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <stdarg.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "rt_status.h"
+
+static rt_status fail(char *msg, size_t msg_len, rt_status status, const char *fmt, ...)
+{
+    if (msg && msg_len) {
+        va_list ap;
+        va_start(ap, fmt);
+        vsnprintf(msg, msg_len, fmt, ap);
+        va_end(ap);
+    }
+    return status;
+}
+
+const char *rt_escape_bytes(const char *s, size_t len, int ascii_only, char *buf, size_t buf_len)
+{
+    size_t o = 0;
+    if (!buf_len) return buf;
+    for (size_t i = 0; i < len; i++) {
+        unsigned char c = (unsigned char)s[i];
+        char piece[5];
+        if (c == '\\') snprintf(piece, sizeof piece, "\\\\");
+        else if (c < 0x20 || c == 0x7f || (ascii_only && c >= 0x80))
+            snprintf(piece, sizeof piece, "\\x%02x", c);
+        else piece[0] = (char)c, piece[1] = '\0';
+        size_t n = strlen(piece);
+        if (o + n + 4 > buf_len) { /* room for "..." and the NUL */
+            if (o + 4 <= buf_len) memcpy(buf + o, "...", 3), o += 3;
+            break;
+        }
+        memcpy(buf + o, piece, n);
+        o += n;
+    }
+    buf[o < buf_len ? o : buf_len - 1] = '\0';
+    return buf;
+}
+
+/* Reads until end of file or one byte past max_bytes; a read error is an error. */
+static rt_status read_all(int fd, const char *shown, size_t max_bytes, size_t capacity, char **text,
+                          size_t *length, char *msg, size_t msg_len)
+{
+    size_t used = 0;
+    char *buf = malloc(capacity + 1);
+    if (!buf) return fail(msg, msg_len, RT_ERR_NOMEM, "%s: out of memory reading the file", shown);
+    for (;;) {
+        if (used == capacity) {
+            if (capacity > max_bytes) break; /* one byte over the limit: stop */
+            size_t grown = capacity > max_bytes / 2 ? max_bytes + 1 : capacity * 2;
+            char *bigger = realloc(buf, grown + 1);
+            if (!bigger) {
+                free(buf);
+                return fail(msg, msg_len, RT_ERR_NOMEM, "%s: out of memory reading the file", shown);
+            }
+            buf = bigger;
+            capacity = grown;
+        }
+        ssize_t got = read(fd, buf + used, capacity - used);
+        if (got < 0 && errno == EINTR) continue;
+        if (got < 0) {
+            int saved = errno;
+            free(buf);
+            return fail(msg, msg_len, RT_ERR_IO, "%s: cannot read: %s", shown, strerror(saved));
+        }
+        if (got == 0) break;
+        used += (size_t)got;
+    }
+    if (used > max_bytes) {
+        free(buf);
+        return fail(msg, msg_len, RT_ERR_LIMIT, "%s:1: the file is more than the limit of %zu bytes",
+                    shown, max_bytes);
+    }
+    buf[used] = '\0';
+    *text = buf;
+    *length = used;
+    return RT_OK;
+}
+
+rt_status rt_read_regular_file(const char *path, size_t max_bytes, char **text, size_t *length,
+                               char *msg, size_t msg_len)
+{
+    char shown[256];
+    rt_escape_bytes(path, strlen(path), 0, shown, sizeof shown);
+    *text = NULL;
+    *length = 0;
+    /* O_NONBLOCK: opening a FIFO with no writer returns at once instead of waiting. */
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
+    if (fd < 0) return fail(msg, msg_len, RT_ERR_IO, "%s: cannot open: %s", shown, strerror(errno));
+    struct stat info;
+    rt_status st = RT_OK;
+    if (fstat(fd, &info) != 0)
+        st = fail(msg, msg_len, RT_ERR_IO, "%s: cannot read: %s", shown, strerror(errno));
+    else if (S_ISDIR(info.st_mode))
+        st = fail(msg, msg_len, RT_ERR_IO, "%s: cannot read: %s", shown, strerror(EISDIR));
+    else if (!S_ISREG(info.st_mode))
+        st = fail(msg, msg_len, RT_ERR_IO,
+                  "%s: not a regular file (a %s): only regular files are read", shown,
+                  S_ISFIFO(info.st_mode)  ? "pipe"
+                  : S_ISCHR(info.st_mode) ? "character device"
+                  : S_ISBLK(info.st_mode) ? "block device"
+                  : S_ISSOCK(info.st_mode) ? "socket"
+                                           : "special file");
+    else if ((uintmax_t)info.st_size > max_bytes)
+        st = fail(msg, msg_len, RT_ERR_LIMIT, "%s:1: the file is %jd bytes, more than the limit of %zu",
+                  shown, (intmax_t)info.st_size, max_bytes);
+    else {
+        int flags = fcntl(fd, F_GETFL);
+        if (flags < 0 || fcntl(fd, F_SETFL, flags & ~O_NONBLOCK) < 0)
+            st = fail(msg, msg_len, RT_ERR_IO, "%s: cannot read: %s", shown, strerror(errno));
+    }
+    if (st == RT_OK)
+        /* + 1: the end of file is seen in the first read when the size holds. */
+        st = read_all(fd, shown, max_bytes, (size_t)info.st_size + 1, text, length, msg, msg_len);
+    close(fd);
+    return st;
+}
