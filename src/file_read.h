@@ -1,5 +1,5 @@
-/* file_read.h - reading a whole input file safely, and quoting its bytes in messages
- * (kernel internal; the NFF reader and the timing table use it).
+/* file_read.h - reading a whole input file safely (kernel internal; the NFF reader and
+ * the timing table use it).
  *
  * Usage:
  *   char *text; size_t len;
@@ -17,6 +17,7 @@
 #include <stddef.h>
 
 #include "rt_status.h"
+#include "rt_text.h"
 
 /* Reads the whole regular file (at most max_bytes) into a malloc'd buffer with a
  * NUL after the last byte. Returns RT_ERR_IO (cannot open or read, not a regular
@@ -24,11 +25,5 @@
  * "PATH: ..." in msg. */
 rt_status rt_read_regular_file(const char *path, size_t max_bytes, char **text, size_t *length,
                                char *msg, size_t msg_len);
-
-/* Copies up to `len` bytes of s into buf for a message, writing every byte outside
- * printable ASCII (control bytes, DEL, and, when `ascii_only`, bytes >= 0x80) as
- * \xNN and a backslash as \\, so no file or name can send raw control bytes to a
- * terminal. Stops (with "...") before buf overflows; returns buf. */
-const char *rt_escape_bytes(const char *s, size_t len, int ascii_only, char *buf, size_t buf_len);
 
 #endif

@@ -67,7 +67,7 @@ int run(const RenderOptions &opt)
     ro.budget = &budget;
     rt_render_stats st;
     if (rt_render(loaded.scene.get(), loaded.grid.get(), &ro, fb.get(), &st, msg, sizeof msg) != RT_OK)
-        throw UserError(opt.scene_path + ": " + msg);
+        throw UserError(shown_path(opt.scene_path) + ": " + msg);
     progress.finish();
 
     std::vector<uint8_t> rgb(static_cast<size_t>(cam->width) * cam->height * 3);

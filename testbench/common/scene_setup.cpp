@@ -6,6 +6,7 @@
 #include "rt_framebuffer.h"
 #include "rt_grid.h"
 #include "rt_nff.h"
+#include "rt_text.h"
 #include "user_error.h"
 
 namespace torusrt {
@@ -16,6 +17,12 @@ void print_warning(void *ctx, const char *message)
     if (!*static_cast<bool *>(ctx)) std::fprintf(stderr, "%s\n", message);
 }
 }  // namespace
+
+std::string shown_path(const std::string &path)
+{
+    std::string buf(4 * path.size() + 8, '\0');
+    return rt_escape_bytes(path.data(), path.size(), 0, &buf[0], buf.size());
+}
 
 LoadedScene load_scene(const std::string &path, unsigned width, unsigned height,
                        const std::array<int, 3> &cells, bool quiet, rt_budget *budget)
@@ -40,9 +47,9 @@ LoadedScene load_scene(const std::string &path, unsigned width, unsigned height,
                           std::to_string(cam->height) + " pixels";
     if (rt_budget_reserve(budget, rt_framebuffer_bytes(cam->width, cam->height), fb_what.c_str(), msg,
                           sizeof msg) != RT_OK)
-        throw UserError(path + ": " + msg);
+        throw UserError(shown_path(path) + ": " + msg);
     out.grid.reset(rt_grid_new_budget(raw, cells[0], cells[1], cells[2], budget, msg, sizeof msg));
-    if (!out.grid && std::string(msg).rfind("memory budget", 0) == 0) throw UserError(path + ": " + msg);
+    if (!out.grid && std::string(msg).rfind("memory budget", 0) == 0) throw UserError(shown_path(path) + ": " + msg);
     if (!out.grid) throw UserError(std::string("--cells: ") + msg, 2);
     return out;
 }

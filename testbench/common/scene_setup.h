@@ -18,6 +18,9 @@ struct LoadedScene {
 // override (width/height 0 = keep the file's), reserves the frame buffer in `budget`
 // (may be null) and builds a grid with `cells` within what is left of it.
 // Throws UserError with "FILE:LINE: message" style text on failure.
+// A path as messages show it: control bytes escaped as \xNN.
+std::string shown_path(const std::string &path);
+
 LoadedScene load_scene(const std::string &path, unsigned width, unsigned height,
                        const std::array<int, 3> &cells, bool quiet, rt_budget *budget = nullptr);
 
