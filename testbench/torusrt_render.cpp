@@ -188,7 +188,7 @@ int run_frames(const RenderOptions &opt, RenderSetup &setup, std::chrono::steady
     return 0;
 }
 
-int run(const RenderOptions &opt)
+int run(RenderOptions &opt)
 {
     auto t0 = std::chrono::steady_clock::now();
     RenderSetup setup;

@@ -27,7 +27,7 @@ double parse_degrees(const std::string &text)
 
 void add_animation_options(CLI::App &app, AnimationOptions &opt)
 {
-    app.add_option("--frames", opt.frames, "frames of an animation (needs --orbit; 1 to " +
+    app.add_option("--frames", opt.frames_text, "frames of an animation (needs --orbit; 1 to " +
                                                std::to_string(RT_CAMERA_PATH_MAX_FRAMES) + ")");
     app.add_option("--orbit", opt.orbit,
                    "turn the eye about 'at' around 'up' by DEG degrees over the frames");
@@ -35,13 +35,18 @@ void add_animation_options(CLI::App &app, AnimationOptions &opt)
                    "camera path file: one 'from at up angle' line (10 numbers) per frame");
 }
 
-void check_animation_options(const AnimationOptions &opt)
+void check_animation_options(AnimationOptions &opt)
 {
     const long long max = RT_CAMERA_PATH_MAX_FRAMES;
-    if (opt.frames >= 0 && (opt.frames < 1 || opt.frames > max))
-        throw UserError("--frames " + std::to_string(opt.frames) + ": must be 1 to " +
-                            std::to_string(max),
-                        2);
+    opt.frames = -1;
+    if (!opt.frames_text.empty()) {
+        const std::string &t = opt.frames_text;
+        bool digits = t.size() <= 7 && t.find_first_not_of("0123456789") == std::string::npos;
+        long long n = digits ? std::stoll(t) : 0;
+        if (!digits || n < 1 || n > max)
+            throw UserError("--frames " + t + ": must be a whole number from 1 to " + std::to_string(max), 2);
+        opt.frames = n;
+    }
     if (!opt.orbit.empty() && !opt.camera_path.empty())
         throw UserError("--orbit and --camera-path: give one of them, not both", 2);
     if (!opt.orbit.empty()) {

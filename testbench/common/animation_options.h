@@ -16,18 +16,19 @@ struct CameraPathDeleter { void operator()(rt_camera_path *p) const { rt_camera_
 using CameraPathPtr = std::unique_ptr<rt_camera_path, CameraPathDeleter>;
 
 struct AnimationOptions {
-    long long frames = -1;   // -1: not given
+    std::string frames_text; // --frames as given; empty: not given
+    long long frames = -1;   // set by check_animation_options: the number, -1 if not given
     std::string orbit;       // total degrees; empty: not given
     std::string camera_path; // file; empty: not given
     // Any of the three given: the run is an animation and -o is a pattern.
-    bool animated() const { return frames >= 0 || !orbit.empty() || !camera_path.empty(); }
+    bool animated() const { return !frames_text.empty() || !orbit.empty() || !camera_path.empty(); }
 };
 
 void add_animation_options(CLI::App &app, AnimationOptions &opt);
 // Checks the combination before any file is read; throws UserError (exit 2) naming the option.
 // --frames N needs --orbit (and --orbit needs --frames); --camera-path gives the frame count
 // itself, and --frames beside it must agree.
-void check_animation_options(const AnimationOptions &opt);
+void check_animation_options(AnimationOptions &opt);
 // The frames' camera poses: the orbit from the scene's own camera, or the file (exit 1 with
 // FILE:LINE for a bad file, exit 2 if --frames disagrees with it).
 CameraPathPtr make_camera_path(const AnimationOptions &opt, const rt_scene *scene);
