@@ -20,7 +20,8 @@
  *
  * Camera path file: one frame per line, ten numbers
  *   from_x from_y from_z at_x at_y at_z up_x up_y up_z angle
- * `#` starts a comment to the end of the line; blank lines are allowed. Errors are
+ * `#` starts a comment to the end of the line; blank lines are allowed; "\n", "\r\n" and a
+ * lone "\r" end a line. Errors are
  * "FILE:LINE: message": wrong field count, a malformed or non-finite number, a magnitude above
  * 1e30, from == at, up zero or parallel to the view direction, angle outside (0, 180), a line
  * longer than RT_CAMERA_PATH_MAX_LINE bytes, more than RT_CAMERA_PATH_MAX_FRAMES frames, no

@@ -41,7 +41,7 @@ static rt_status fail(reader *r, rt_status status, const char *fmt, ...)
 }
 
 /* Reads the next line into buf (without its end); 0 at end of file, 1 with a line, or an
- * error status + 2. Control bytes other than tab and carriage return are binary data. */
+ * error status + 2. Control bytes other than tab are binary data. */
 static int read_line(reader *r, char *buf, rt_status *error)
 {
     size_t len = 0;
@@ -49,11 +49,16 @@ static int read_line(reader *r, char *buf, rt_status *error)
     while ((ch = getc(r->f)) != EOF) {
         any = 1;
         if (ch == '\n') break;
+        if (ch == '\r') { /* "\r\n" and a lone "\r" end a line too, as in NFF files */
+            int next = getc(r->f);
+            if (next != '\n' && next != EOF) ungetc(next, r->f);
+            break;
+        }
         if (len == RT_CAMERA_PATH_MAX_LINE) {
             *error = fail(r, RT_ERR_LIMIT, "line longer than %u bytes", RT_CAMERA_PATH_MAX_LINE);
             return 2;
         }
-        if ((ch < 0x20 && ch != '\t' && ch != '\r') || ch == 0x7f) {
+        if ((ch < 0x20 && ch != '\t') || ch == 0x7f) {
             *error = fail(r, RT_ERR_PARSE, "binary data (byte 0x%02x)", ch);
             return 2;
         }
@@ -92,8 +97,8 @@ static rt_status parse_line(reader *r, char *buf, rt_camera_pose *pose, int *has
     if (hash) *hash = '\0';
     double v[FIELDS];
     int n = 0;
-    for (char *save = NULL, *tok = strtok_r(buf, " \t\r", &save); tok;
-         tok = strtok_r(NULL, " \t\r", &save)) {
+    for (char *save = NULL, *tok = strtok_r(buf, " \t", &save); tok;
+         tok = strtok_r(NULL, " \t", &save)) {
         if (n == FIELDS)
             return fail(r, RT_ERR_PARSE, "more than %d numbers, expected %s", FIELDS, LAYOUT);
         rt_status st = parse_number(r, tok, n, &v[n]);

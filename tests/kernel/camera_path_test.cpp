@@ -167,6 +167,7 @@ TEST(CameraPathFile, ErrorsNameTheFileAndLine)
         {"angle180", "0 0 5 0 0 0 0 1 0 180\n", ":1: ", "(0, 180)", RT_ERR_PARSE},
         {"empty", "# nothing\n\n", ":2: ", "no frame", RT_ERR_PARSE},
         {"binary", "0 0 5 0 0 0 0 1 0 45\n\x01\n", ":2: ", "binary", RT_ERR_PARSE},
+        {"lone_cr", "0 0 5 0 0 0 0 1 0 45\r\r0 0 5 0 0 0 0 1 0\r", ":3: ", "9 numbers", RT_ERR_PARSE},
     };
     for (const Case &c : cases) {
         rt_status st;
