@@ -1,0 +1,193 @@
+/* camera_path_file.c - reading a camera path file: one `from at up angle` line per frame. */
+#include <errno.h>
+#include <fcntl.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "camera_path_internal.h"
+#include "rt_camera_path.h"
+
+#define FIELDS 10
+#define LAYOUT "from_x from_y from_z at_x at_y at_z up_x up_y up_z angle"
+#define MAX_MAGNITUDE 1e30 /* the NFF reader's limit on coordinates */
+
+typedef struct reader {
+    const char *file;
+    FILE *f;
+    size_t line;
+    char *msg;
+    size_t msg_len;
+} reader;
+
+static rt_status fail(reader *r, rt_status status, const char *fmt, ...)
+{
+    if (r->msg && r->msg_len) {
+        /* Line 0: the file as a whole is at fault (it cannot be opened). */
+        int n = r->line ? snprintf(r->msg, r->msg_len, "%s:%zu: ", r->file, r->line)
+                        : snprintf(r->msg, r->msg_len, "%s: ", r->file);
+        if (n >= 0 && (size_t)n < r->msg_len) {
+            va_list ap;
+            va_start(ap, fmt);
+            vsnprintf(r->msg + n, r->msg_len - (size_t)n, fmt, ap);
+            va_end(ap);
+        }
+    }
+    return status;
+}
+
+/* Reads the next line into buf (without its end); 0 at end of file, 1 with a line, or an
+ * error status + 2. Control bytes other than tab are binary data. */
+static int read_line(reader *r, char *buf, rt_status *error)
+{
+    size_t len = 0;
+    int ch, any = 0;
+    while ((ch = getc(r->f)) != EOF) {
+        any = 1;
+        if (ch == '\n') break;
+        if (ch == '\r') { /* "\r\n" and a lone "\r" end a line too, as in NFF files */
+            int next = getc(r->f);
+            if (next != '\n' && next != EOF) ungetc(next, r->f);
+            break;
+        }
+        if (len == RT_CAMERA_PATH_MAX_LINE) {
+            *error = fail(r, RT_ERR_LIMIT, "line longer than %u bytes", RT_CAMERA_PATH_MAX_LINE);
+            return 2;
+        }
+        if ((ch < 0x20 && ch != '\t') || ch == 0x7f) {
+            *error = fail(r, RT_ERR_PARSE, "binary data (byte 0x%02x)", ch);
+            return 2;
+        }
+        buf[len++] = (char)ch;
+    }
+    buf[len] = '\0';
+    if (ferror(r->f)) {
+        *error = fail(r, RT_ERR_IO, "cannot read: %s", strerror(errno));
+        return 2;
+    }
+    return any;
+}
+
+/* A strict decimal number: digits, sign, point and exponent only (no nan, inf or hex). */
+static rt_status parse_number(reader *r, const char *tok, int field, double *out)
+{
+    static const char *names[FIELDS] = {"from_x", "from_y", "from_z", "at_x", "at_y",
+                                        "at_z",   "up_x",   "up_y",   "up_z", "angle"};
+    char *end = NULL;
+    int digits = strspn(tok, "0123456789+-.eE") == strlen(tok) && strpbrk(tok, "0123456789");
+    errno = 0;
+    double v = digits ? strtod(tok, &end) : 0.0;
+    if (!digits || *end != '\0')
+        return fail(r, RT_ERR_PARSE, "%s '%.40s' is not a number", names[field], tok);
+    if (!isfinite(v) || fabs(v) > MAX_MAGNITUDE)
+        return fail(r, RT_ERR_PARSE, "%s '%.40s' is not finite or above 1e30 in magnitude",
+                    names[field], tok);
+    *out = v;
+    return RT_OK;
+}
+
+/* Parses one line; *has_pose is 0 for a blank or comment line. */
+static rt_status parse_line(reader *r, char *buf, rt_camera_pose *pose, int *has_pose)
+{
+    char *hash = strchr(buf, '#');
+    if (hash) *hash = '\0';
+    double v[FIELDS];
+    int n = 0;
+    for (char *save = NULL, *tok = strtok_r(buf, " \t", &save); tok;
+         tok = strtok_r(NULL, " \t", &save)) {
+        if (n == FIELDS)
+            return fail(r, RT_ERR_PARSE, "more than %d numbers, expected %s", FIELDS, LAYOUT);
+        rt_status st = parse_number(r, tok, n, &v[n]);
+        if (st != RT_OK) return st;
+        n++;
+    }
+    *has_pose = n > 0;
+    if (n == 0) return RT_OK;
+    if (n != FIELDS)
+        return fail(r, RT_ERR_PARSE, "%d numbers, expected %d: %s", n, FIELDS, LAYOUT);
+    rt_camera_pose p = {rt_vec(v[0], v[1], v[2]), rt_vec(v[3], v[4], v[5]),
+                        rt_vec(v[6], v[7], v[8]), v[9]};
+    char why[RT_MSG_LEN];
+    if (rt_camera_pose_check(&p, why, sizeof why) != RT_OK) return fail(r, RT_ERR_PARSE, "%s", why);
+    *pose = p;
+    return RT_OK;
+}
+
+/* Opens FILE for reading only if it is a regular file (a FIFO would block, a device never end). */
+static rt_status open_regular(reader *r)
+{
+    int fd = open(r->file, O_RDONLY | O_NONBLOCK);
+    struct stat info;
+    if (fd < 0) return fail(r, RT_ERR_IO, "cannot open: %s", strerror(errno));
+    if (fstat(fd, &info) != 0 || !S_ISREG(info.st_mode)) {
+        close(fd);
+        return fail(r, RT_ERR_IO, "not a regular file");
+    }
+    r->f = fdopen(fd, "rb");
+    if (!r->f) {
+        close(fd);
+        return fail(r, RT_ERR_IO, "cannot open: %s", strerror(errno));
+    }
+    return RT_OK;
+}
+
+static rt_status read_poses(reader *r, rt_camera_pose **poses, size_t *count)
+{
+    char *buf = malloc(RT_CAMERA_PATH_MAX_LINE + 1);
+    size_t capacity = 0;
+    rt_status st = buf ? RT_OK : fail(r, RT_ERR_NOMEM, "out of memory");
+    int got;
+    while (st == RT_OK && (r->line++, got = read_line(r, buf, &st)) == 1) {
+        rt_camera_pose pose;
+        int has_pose = 0;
+        st = parse_line(r, buf, &pose, &has_pose);
+        if (st != RT_OK || !has_pose) continue;
+        if (*count == RT_CAMERA_PATH_MAX_FRAMES) {
+            st = fail(r, RT_ERR_LIMIT, "more than %u frames", RT_CAMERA_PATH_MAX_FRAMES);
+            break;
+        }
+        if (*count == capacity) {
+            size_t grown = capacity ? capacity * 2 : 64;
+            rt_camera_pose *bigger = realloc(*poses, grown * sizeof *bigger);
+            if (!bigger) {
+                st = fail(r, RT_ERR_NOMEM, "out of memory");
+                break;
+            }
+            *poses = bigger;
+            capacity = grown;
+        }
+        (*poses)[(*count)++] = pose;
+    }
+    free(buf);
+    if (st == RT_OK && *count == 0) {
+        r->line = r->line > 1 ? r->line - 1 : 1;
+        st = fail(r, RT_ERR_PARSE, "no frame: the file holds no camera line");
+    }
+    return st;
+}
+
+rt_status rt_camera_path_load(const char *file, rt_camera_path **out, char *msg, size_t msg_len)
+{
+    *out = NULL;
+    reader r = {file, NULL, 0, msg, msg_len};
+    rt_status st = open_regular(&r);
+    if (st != RT_OK) return st;
+    rt_camera_pose *poses = NULL;
+    size_t count = 0;
+    st = read_poses(&r, &poses, &count);
+    fclose(r.f);
+    rt_camera_path *path = NULL;
+    if (st == RT_OK && camera_path_new(0, &path) != RT_OK) st = fail(&r, RT_ERR_NOMEM, "out of memory");
+    if (st != RT_OK) {
+        free(poses);
+        return st;
+    }
+    path->poses = poses;
+    path->count = count;
+    *out = path;
+    return RT_OK;
+}

@@ -1,0 +1,38 @@
+// animation_options.h - the frames of an animation on the command line: --frames, --orbit,
+// --camera-path, shared by the executables.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "rt_camera_path.h"
+#include "rt_scene.h"
+
+namespace torusrt {
+
+struct CameraPathDeleter { void operator()(rt_camera_path *p) const { rt_camera_path_free(p); } };
+using CameraPathPtr = std::unique_ptr<rt_camera_path, CameraPathDeleter>;
+
+struct AnimationOptions {
+    std::string frames_text; // --frames as given; empty: not given
+    long long frames = -1;   // set by check_animation_options: the number, -1 if not given
+    std::string orbit;       // total degrees; empty: not given
+    std::string camera_path; // file; empty: not given
+    // Any of the three given: the run is an animation and -o is a pattern.
+    bool animated() const { return !frames_text.empty() || !orbit.empty() || !camera_path.empty(); }
+};
+
+void add_animation_options(CLI::App &app, AnimationOptions &opt);
+// Checks the combination before any file is read; throws UserError (exit 2) naming the option.
+// --frames N needs --orbit (and --orbit needs --frames); --camera-path gives the frame count
+// itself, and --frames beside it must agree.
+void check_animation_options(AnimationOptions &opt);
+// The frames' camera poses: the orbit from the scene's own camera, or the file (exit 1 with
+// FILE:LINE for a bad file, exit 2 if --frames disagrees with it).
+CameraPathPtr make_camera_path(const AnimationOptions &opt, const rt_scene *scene);
+// {"from": [x, y, z], "at": [...], "up": [...], "angle": a}
+nlohmann::json camera_pose_json(const rt_camera_pose &pose);
+
+}  // namespace torusrt
