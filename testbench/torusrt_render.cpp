@@ -1,6 +1,7 @@
 // torusrt_render.cpp - the sequential reference renderer: the golden image for every model run.
 #include <CLI/CLI.hpp>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -15,6 +16,7 @@
 #include "rt_timing.h"
 #include "scene_setup.h"
 #include "stats_json.h"
+#include "timing_limits.h"
 #include "user_error.h"
 
 using namespace torusrt;
@@ -42,14 +44,20 @@ int run(const RenderOptions &opt)
     if (opt.max_depth < 0 || opt.max_depth > 1000)
         throw UserError("--max-depth " + std::to_string(opt.max_depth) + ": must be 0 to 1000", 2);
     double min_weight = parse_fraction("--min-weight", opt.min_weight);
-    check_output_folder("-o", opt.output_path);
-    if (!opt.stats_path.empty()) check_output_folder("--stats", opt.stats_path);
+    OutputSet outputs;
+    std::string png_path = outputs.add("-o", opt.output_path, opt.scene_path);
+    std::string stats_path = opt.stats_path.empty() ? "" : outputs.add("--stats", opt.stats_path, opt.scene_path);
 
     rt_timing timing;
     rt_timing_defaults(&timing);
     char msg[RT_MSG_LEN] = "";
     if (!opt.timing_path.empty() && rt_timing_load(opt.timing_path.c_str(), &timing, msg, sizeof msg) != RT_OK)
         throw UserError(msg);
+    std::string problem = timing_limit_problem(timing);
+    if (!problem.empty()) throw UserError(opt.timing_path + ": " + problem);
+    if (min_weight > 1 && !opt.quiet)
+        std::fprintf(stderr, "torusrt-render: warning: --min-weight %g is above 1: every secondary ray is dropped\n",
+                     min_weight);
 
     LoadedScene loaded = load_scene(opt.scene_path, size[0], size[1], cells, opt.quiet);
     const rt_camera *cam = rt_scene_camera(loaded.scene.get());
@@ -72,6 +80,7 @@ int run(const RenderOptions &opt)
     rt_framebuffer_to_rgb8(fb.get(), rgb.data());
     double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     double t1_s = rt_timing_step_us(&timing, &st.ops) * 1e-6;
+    if (!std::isfinite(t1_s)) throw UserError("T(1) is not a finite time: the timing values are too large");
     uint64_t rays = st.packets.created[RT_PACKET_RAY] + st.packets.created[RT_PACKET_SHADOW];
 
     nlohmann::json js;
@@ -94,15 +103,9 @@ int run(const RenderOptions &opt)
               {"wall_s", wall},
               {"rays_per_s", wall > 0 ? rays / wall : 0.0}};
     }
-    write_png_file(opt.output_path, cam->width, cam->height, rgb);
-    if (!opt.stats_path.empty()) {
-        try {
-            write_text_file(opt.stats_path, js.dump(2) + "\n");
-        } catch (...) {
-            remove_file(opt.output_path);
-            throw;
-        }
-    }
+    write_png_file(png_path, opt.output_path, cam->width, cam->height, rgb);
+    if (!opt.stats_path.empty()) write_text_file(stats_path, opt.stats_path, js.dump(2) + "\n");
+    outputs.commit();
     if (!opt.quiet)
         std::printf("%s: %ux%u, %zu objects, %llu packets, T(1) %.3f s (paper timing), wall %.3f s\n",
                     opt.scene_path.c_str(), cam->width, cam->height,
@@ -117,15 +120,15 @@ int main(int argc, char **argv)
     RenderOptions opt;
     CLI::App app{"torusrt-render: the sequential reference renderer (the golden image).\n"
                  "Runs the kernel's packet step over one work queue with one owner for every cell."};
-    app.add_option("scene", opt.scene_path, "scene file (NFF, with the 'am' extension)")->required();
-    app.add_option("-o,--output", opt.output_path, "PNG image to write")->required();
-    app.add_option("--cells", opt.cells, "grid cells: N or NXxNYxNZ (default 24)");
-    app.add_option("--size", opt.size, "image size WxH, overriding the scene's resolution");
-    app.add_option("--max-depth", opt.max_depth, "deepest shade-tree depth of a ray (default 8)");
-    app.add_option("--min-weight", opt.min_weight, "smallest ray weight, e.g. 1/512 (default)");
+    app.add_option("scene", opt.scene_path, "scene file (NFF, with the 'am' extension)")->required()->type_name("FILE");
+    app.add_option("-o,--output", opt.output_path, "PNG image to write")->required()->type_name("FILE");
+    app.add_option("--cells", opt.cells, "grid cells: N or NXxNYxNZ (default 24)")->type_name("DIMS");
+    app.add_option("--size", opt.size, "image size WxH, overriding the scene's resolution")->type_name("WxH");
+    app.add_option("--max-depth", opt.max_depth, "deepest shade-tree depth of a ray (default 8)")->type_name("N");
+    app.add_option("--min-weight", opt.min_weight, "smallest ray weight, e.g. 1/512 (default)")->type_name("W");
     app.add_flag("--brute-force", opt.brute_force, "test every object for every ray (the test oracle)");
-    app.add_option("--stats", opt.stats_path, "write statistics as JSON to this file");
-    app.add_option("--timing", opt.timing_path, "timing file overriding the paper's table (for t1_s)");
+    app.add_option("--stats", opt.stats_path, "write statistics as JSON to this file")->type_name("FILE");
+    app.add_option("--timing", opt.timing_path, "timing file overriding the paper's table (for t1_s)")->type_name("FILE");
     app.add_flag("-q,--quiet", opt.quiet, "print nothing but errors; no progress");
     return run_cli("torusrt-render", app, argc, argv, [&] { return run(opt); });
 }

@@ -2,6 +2,7 @@
 #include "cli_main.h"
 
 #include <cstdio>
+#include <string>
 
 #include "user_error.h"
 
@@ -9,11 +10,15 @@ namespace torusrt {
 
 int run_cli(const char *program, CLI::App &app, int argc, char **argv, const std::function<int()> &body)
 {
+    app.set_version_flag("--version", std::string(program) + " " + TORUSRT_VERSION);
+    app.footer("Exit status: 0 success, 1 bad input file or failed run, 2 bad command line, "
+               "3 deadlock (torusrt-sim: the network stalled with packets outstanding).");
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError &e) {
-        int code = app.exit(e);
-        return code == 0 ? 0 : 2;
+        if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+        std::fprintf(stderr, "%s: %s\nRun with --help for more information.\n", program, e.what());
+        return 2;
     }
     try {
         return body();
