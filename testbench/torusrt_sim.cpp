@@ -25,7 +25,9 @@ struct CommandLine {
     std::string output, stats, timing_file, ips = "1", map = "cyclic", topology = "torus", cells = "24", size;
     std::string min_weight = "1/512", style = "at", quantum = "0", data = "replicated", arbiter = "round-robin";
     std::string dispatch = "round-robin", trace_ips, link_us, packet_bytes, link_bytes_per_us, t1;
-    std::string trace_from, trace_to, time_limit;
+    std::string trace_from, trace_to, time_limit, scene, vcd;
+    int cluster = 1;
+    bool quiet = false;
     long long queue = 0;
     int max_depth = 8;
 };
@@ -132,24 +134,12 @@ SimConfig make_config(const std::string &scene, const CommandLine &cl, bool quie
     return c;
 }
 
-}  // namespace
-
-int sc_main(int argc, char **argv)
+void declare_options(CLI::App &app, CommandLine &cl)
 {
-    double wall_start = seconds_now();
-    sc_core::sc_report_handler::set_actions(sc_core::SC_FATAL, sc_core::SC_DISPLAY | sc_core::SC_THROW);
-    sc_core::sc_report_handler::set_actions(sc_core::SC_ERROR, sc_core::SC_DISPLAY | sc_core::SC_THROW);
-
-    CommandLine cl;
-    std::string scene, vcd;
-    int cluster = 1;
-    bool quiet = false;
-    CLI::App app{"torusrt-sim: a SystemC/TLM-2.0 model of the object-space-parallel ray-tracing\n"
-                 "multiprocessor (Kubota et al.): intersection processors on a torus exchange ray packets."};
-    app.add_option("scene", scene, "scene file (NFF)")->required()->type_name("FILE");
+    app.add_option("scene", cl.scene, "scene file (NFF)")->required()->type_name("FILE");
     app.add_option("-o,--output", cl.output, "PNG image to write")->required()->type_name("FILE");
     app.add_option("--stats", cl.stats, "write the statistics as JSON to this file")->type_name("FILE");
-    app.add_option("--vcd", vcd, "write a VCD trace (IP busy, queue depths, link and bus activity) and a GTKWave\n"
+    app.add_option("--vcd", cl.vcd, "write a VCD trace (IP busy, queue depths, link and bus activity) and a GTKWave\n"
                                "save file beside it (X.gtkw for X.vcd)")->type_name("FILE");
     app.add_option("--trace-from", cl.trace_from, "trace only from this simulated time (default 0)")->type_name("TIME");
     app.add_option("--trace-to", cl.trace_to, "trace only up to this simulated time (default: the end)")->type_name("TIME");
@@ -173,7 +163,7 @@ int sc_main(int argc, char **argv)
         ->type_name("at|lt");
     app.add_option("--quantum", cl.quantum, "loosely-timed global quantum, same syntax as --link-us, e.g. 500us, 10ms")
         ->type_name("TIME");
-    app.add_option("--cluster", cluster, "processors per torus node on a shared bus (default 1)")->type_name("N");
+    app.add_option("--cluster", cl.cluster, "processors per torus node on a shared bus (default 1)")->type_name("N");
     app.add_option("--data", cl.data, "object data in a cluster: replicated (default) or shared")->type_name("KIND");
     app.add_option("--arbiter", cl.arbiter, "cluster bus arbiter: round-robin (default) or fixed-priority")->type_name("KIND");
     app.add_option("--dispatch", cl.dispatch, "cluster packet dispatch: round-robin (default) or shortest-queue")
@@ -182,56 +172,72 @@ int sc_main(int argc, char **argv)
         ->type_name("SECONDS");
     app.add_option("--time-limit", cl.time_limit, "stop with an error (exit 1) when simulated time passes this\n"
                    "(default and maximum 1e7 s, SystemC's 64-bit picosecond time holds 1.8e7 s)")->type_name("TIME");
-    app.add_flag("-q,--quiet", quiet, "print nothing but errors; no progress");
-    return run_cli("torusrt-sim", app, argc, argv, [&]() -> int {
-        route_systemc_messages(quiet);
-        SimConfig config = make_config(scene, cl, quiet);
-        config.cluster = cluster;
-        config.vcd_path = vcd;
-        validate(config);
-        if (config.step.min_weight > 1 && !quiet)
-            std::fprintf(stderr, "torusrt-sim: warning: --min-weight %g is above 1: every secondary ray is dropped\n",
-                         config.step.min_weight);
-        OutputSet outputs;
-        std::string png = outputs.add("-o", cl.output, scene);
-        std::string stats = cl.stats.empty() ? "" : outputs.add("--stats", cl.stats, scene);
-        if (!vcd.empty()) {
-            config.vcd_write_path = outputs.add("--vcd", vcd, scene);
-            if (!is_special_file(vcd)) {  // no save file beside /dev/null
-                config.gtkw_path = save_file_path(vcd);
-                config.gtkw_write_path = outputs.add("--vcd (save file)", config.gtkw_path, scene);
-            }
-        }
+    app.add_flag("-q,--quiet", cl.quiet, "print nothing but errors; no progress");
+}
 
-        LoadedScene loaded = load_scene(scene, config.width, config.height, config.cells, quiet);
-        double t1 = config.t1_s;
-        std::string t1_source = "passed with --t1";
-        if (t1 < 0 && config.processor_count() > 1) {
-            t1 = one_processor_time(config, loaded.scene.get(), loaded.grid.get());
-            t1_source = "one-processor run";
+int run(const CommandLine &cl, double wall_start)
+{
+    route_systemc_messages(cl.quiet);
+    SimConfig config = make_config(cl.scene, cl, cl.quiet);
+    config.cluster = cl.cluster;
+    config.vcd_path = cl.vcd;
+    validate(config);
+    if (config.step.min_weight > 1 && !cl.quiet)
+        std::fprintf(stderr, "torusrt-sim: warning: --min-weight %g is above 1: every secondary ray is dropped\n",
+                     config.step.min_weight);
+    OutputSet outputs;
+    std::string png = outputs.add("-o", cl.output, cl.scene);
+    std::string stats = cl.stats.empty() ? "" : outputs.add("--stats", cl.stats, cl.scene);
+    if (!cl.vcd.empty()) {
+        config.vcd_write_path = outputs.add("--vcd", cl.vcd, cl.scene);
+        if (!is_special_file(cl.vcd)) {  // no save file beside /dev/null
+            config.gtkw_path = save_file_path(cl.vcd);
+            config.gtkw_write_path = outputs.add("--vcd (save file)", config.gtkw_path, cl.scene);
         }
-        ModelOutcome out = run_model(config, loaded.scene.get(), loaded.grid.get(), t1, t1_source, wall_start);
-        if (out.deadlock) {
-            std::fprintf(stderr,
-                         "torusrt-sim: deadlock: the network stalled at %.6f s simulated with packets still "
-                         "outstanding (queue capacity %u)\n%s",
-                         out.sim_time_s, config.queue_capacity, out.deadlock_details.c_str());
-            return 3;
-        }
-        const rt_camera *cam = rt_scene_camera(loaded.scene.get());
-        write_png_file(png, cl.output, cam->width, cam->height, out.rgb8);
-        if (!stats.empty()) write_text_file(stats, cl.stats, out.report.dump(2) + "\n");
-        outputs.commit();
-        if (!quiet) {
-            print_summary_stdout(out.report);
-            std::printf("  wrote        %s", cl.output.c_str());
-            if (!cl.stats.empty()) std::printf(", %s", cl.stats.c_str());
-            if (!vcd.empty()) std::printf(", %s", vcd.c_str());
-            if (!config.gtkw_path.empty()) std::printf(" (gtkwave %s)", config.gtkw_path.c_str());
-            std::printf("\n");
-        }
-        return 0;
-    });
+    }
+
+    LoadedScene loaded = load_scene(cl.scene, config.width, config.height, config.cells, cl.quiet);
+    double t1 = config.t1_s;
+    std::string t1_source = "passed with --t1";
+    if (t1 < 0 && config.processor_count() > 1) {
+        t1 = one_processor_time(config, loaded.scene.get(), loaded.grid.get());
+        t1_source = "one-processor run";
+    }
+    ModelOutcome out = run_model(config, loaded.scene.get(), loaded.grid.get(), t1, t1_source, wall_start);
+    if (out.deadlock) {
+        std::fprintf(stderr,
+                     "torusrt-sim: deadlock: the network stalled at %.6f s simulated with packets still "
+                     "outstanding (queue capacity %u)\n%s",
+                     out.sim_time_s, config.queue_capacity, out.deadlock_details.c_str());
+        return 3;
+    }
+    const rt_camera *cam = rt_scene_camera(loaded.scene.get());
+    write_png_file(png, cl.output, cam->width, cam->height, out.rgb8);
+    if (!stats.empty()) write_text_file(stats, cl.stats, out.report.dump(2) + "\n");
+    outputs.commit();
+    if (!cl.quiet) {
+        print_summary_stdout(out.report);
+        std::printf("  wrote        %s", cl.output.c_str());
+        if (!cl.stats.empty()) std::printf(", %s", cl.stats.c_str());
+        if (!cl.vcd.empty()) std::printf(", %s", cl.vcd.c_str());
+        if (!config.gtkw_path.empty()) std::printf(" (gtkwave %s)", config.gtkw_path.c_str());
+        std::printf("\n");
+    }
+    return 0;
+}
+
+}  // namespace
+
+int sc_main(int argc, char **argv)
+{
+    double wall_start = seconds_now();
+    sc_core::sc_report_handler::set_actions(sc_core::SC_FATAL, sc_core::SC_DISPLAY | sc_core::SC_THROW);
+    sc_core::sc_report_handler::set_actions(sc_core::SC_ERROR, sc_core::SC_DISPLAY | sc_core::SC_THROW);
+    CommandLine cl;
+    CLI::App app{"torusrt-sim: a SystemC/TLM-2.0 model of the object-space-parallel ray-tracing\n"
+                 "multiprocessor (Kubota et al.): intersection processors on a torus exchange ray packets."};
+    declare_options(app, cl);
+    return run_cli("torusrt-sim", app, argc, argv, [&] { return run(cl, wall_start); });
 }
 
 // Our own entry point: the SystemC banner is printed before sc_main runs, so it is switched off here.
