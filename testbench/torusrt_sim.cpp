@@ -237,7 +237,8 @@ int sc_main(int argc, char **argv)
     CLI::App app{"torusrt-sim: a SystemC/TLM-2.0 model of the object-space-parallel ray-tracing\n"
                  "multiprocessor (Kubota et al.): intersection processors on a torus exchange ray packets."};
     declare_options(app, cl);
-    return run_cli("torusrt-sim", app, argc, argv, [&] { return run(cl, wall_start); });
+    return run_cli("torusrt-sim", app, argc, argv, [&] { return run(cl, wall_start); },
+                   "  3 deadlock: the network stalled with packets outstanding\n");
 }
 
 // Our own entry point: the SystemC banner is printed before sc_main runs, so it is switched off here.

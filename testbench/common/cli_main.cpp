@@ -8,11 +8,12 @@
 
 namespace torusrt {
 
-int run_cli(const char *program, CLI::App &app, int argc, char **argv, const std::function<int()> &body)
+int run_cli(const char *program, CLI::App &app, int argc, char **argv, const std::function<int()> &body,
+            const char *extra_exit_statuses)
 {
     app.set_version_flag("--version", std::string(program) + " " + TORUSRT_VERSION);
-    app.footer("Exit status: 0 success, 1 bad input file or failed run, 2 bad command line, "
-               "3 deadlock (torusrt-sim: the network stalled with packets outstanding).");
+    app.footer(std::string("Exit status:\n  0 success\n  1 bad input file or failed run (a write error included)\n"
+                           "  2 bad command line\n") + extra_exit_statuses);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError &e) {

@@ -12,8 +12,10 @@ version=$(sed -n 's/^project(torusrt VERSION \([0-9.]*\).*/\1/p' "$SRC/CMakeList
 for exe in torusrt-sim torusrt-render; do
     "$BUILD/$exe" --help > "$TMP/help" 2>&1
     check "$exe --help exits 0" test $? -eq 0
-    for code in "0 success" "1 bad input" "2 bad command line" "3 deadlock"; do
-        check "$exe --help lists exit status '$code'" grep -q "$code" "$TMP/help"
+    codes=("0 success" "1 bad input" "2 bad command line")
+    [ $exe = torusrt-sim ] && codes+=("3 deadlock")
+    for code in "${codes[@]}"; do
+        check "$exe --help lists exit status '$code'" grep -q "^ *$code" "$TMP/help"
     done
     check "$exe --help shows no TEXT types" bash -c "! grep -q TEXT '$TMP/help'"
     check "$exe --version is '$exe $version'" test "$("$BUILD/$exe" --version)" = "$exe $version"
