@@ -42,6 +42,9 @@ unshare -m --propagation private bash -c '
     mkdir "$TMP/d"
     $SIM "$f" -o "$TMP/d/a.png" --stats "$TMP/d/a.json" --vcd "$TMP/devfull/full" 2>"$TMP/devfull.err"; echo "vcd_full $?"
     echo "vcd_full_listing $(ls -A "$TMP/d" | tr "\n" " ")"
+    mkdir "$TMP/d2"
+    $SIM "$f" -o "$TMP/devfull/full" --stats "$TMP/d2/a.json" --vcd "$TMP/d2/a.vcd" 2>/dev/null; echo "png_full $?"
+    echo "png_full_listing $(ls -A "$TMP/d2" | tr "\n" " ")"
     $RENDER "$f" -o "$TMP/devfull/full" 2>/dev/null; echo "render_full $?"
     test -c "$TMP/devfull/full"; echo "full_still_char $?"
     $SIM "$f" -o "$TMP/dev/null" --stats "$TMP/dev/null" --vcd "$TMP/dev/null"; echo "sim_dev $?"
@@ -57,6 +60,8 @@ check "namespace set up ($(head -c 200 "$TMP/ns.err"))" test -n "$(ns sim_dev)"
 check "--vcd on a full device exits 1" test "$(ns vcd_full)" = 1
 check "--vcd on a full device: message names it" grep -q 'devfull/full' "$TMP/devfull.err"
 check "--vcd on a full device: no PNG or JSON left ($(ns vcd_full_listing))" test -z "$(ns vcd_full_listing)"
+check "-o on a full device exits 1" test "$(ns png_full)" = 1
+check "-o on a full device: no VCD, save file or JSON left ($(ns png_full_listing))" test -z "$(ns png_full_listing)"
 check "render -o a full device exits 1" test "$(ns render_full)" = 1
 check "the full device stays a character device" test "$(ns full_still_char)" = 0
 check "sim to a device node exits 0" test "$(ns sim_dev)" = 0
