@@ -57,13 +57,3 @@ define_mode() {
 }
 
 scene_file() { echo "$REPO/scenes/paper-$1.nff"; }
-
-# csv_value CSV FILTER COLUMN: COLUMN of the first row with status ok that matches FILTER
-# ("col=value,col=value"); prints nothing if there is none.
-csv_value() {
-    awk -F, -v filter="$2" -v col="$3" '
-        NR == 1 { for (i = 1; i <= NF; i++) ix[$i] = i; nf = split(filter, f, ","); next }
-        { if ($ix["status"] != "ok") next
-          for (k = 1; k <= nf; k++) { split(f[k], kv, "="); if ($ix[kv[1]] != kv[2]) next }
-          print $ix[col]; exit }' "$1"
-}

@@ -10,7 +10,7 @@
 # Lines are independent: hand them to GNU parallel, ssh workers or a Slurm array as they are.
 # Phase 2 lists the costliest points first so that parallel's workers finish together.
 # --tsv prints fig, name, scene, mapping, n, shape, m, data, json, command (tab-separated)
-# instead: collect.sh reads that list to find missing points. --no-clusters leaves out
+# instead: the collection step (experiments/report collect) reads that list to find missing points. --no-clusters leaves out
 # figures 10-12.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"

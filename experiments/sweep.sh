@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# sweep.sh - the whole reproduction in one command: run every point, then collect the CSVs,
-# draw the plots and write the comparison with the paper.
+# sweep.sh - the whole reproduction in one command: run every point, then collect the CSVs (experiments/report),
+# draw the plots (experiments/plots/*.gp) and write the comparison with the paper (experiments/report).
 #
 #   experiments/sweep.sh [--quick] [--results DIR] [-j N] [--sshloginfile FILE]
 #                        [--build DIR] [--doc FILE] [--no-report] [--no-clusters]
@@ -21,7 +21,7 @@
 # The one-processor points (phase 1) run first, since every other point takes its T(1) from
 # them. Points already done are skipped, so an interrupted or partly failed sweep is resumed by
 # running the same command again. Failed points are listed with their command lines (from
-# RESULTS/joblog) and the exit status is then 1; collect.sh marks them in the CSVs.
+# RESULTS/joblog) and the exit status is then 1; the collection step marks them in the CSVs.
 set -uo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
 
@@ -107,9 +107,9 @@ fi
 status=0
 [ "$failed" -eq 0 ] && [ "$after" -eq "$total" ] || status=1
 if [ "$report" = 1 ]; then
-    "$EXP/collect.sh" "$RES" || status=1
-    "$EXP/plot.sh" "$RES" || status=1
-    "$EXP/report.sh" --doc "$doc" "$RES" || status=1
+    python3 "$EXP/report" collect "$RES" || status=1
+    python3 "$EXP/report" plots "$RES" || status=1
+    python3 "$EXP/report" reproduction --doc "$doc" "$RES" || status=1
     echo "sweep: CSVs and plots in $RES, report $doc"
 fi
 exit $status

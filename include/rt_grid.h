@@ -8,7 +8,7 @@
  *
  * The object space is the bounding box of all objects, padded by 1e-6 of its
  * diagonal on every side. Cell lists are built by the paper's recursive
- * factor subdivision (DESIGN section 4); one preprocessing unit is one test
+ * factor subdivision (docs/design.md section 4); one preprocessing unit is one test
  * of an object against one half-space of one plane. Lists hold object
  * indices in increasing order. A scene with no objects gives a grid that no
  * ray enters. rt_grid_new returns NULL (with a message) on bad dimensions

@@ -41,7 +41,7 @@ typedef struct rt_packet {
     uint8_t kind;     /* rt_packet_kind */
 } rt_packet;
 
-/* The primary ray of pixel (x, y) (DESIGN section 3 camera). Sets *enters
+/* The primary ray of pixel (x, y) (docs/design.md section 3 camera). Sets *enters
  * to 1 and fills *out when the ray meets the object space, to 0 otherwise
  * (the pixel then gets the background). Returns RT_ERR_INVALID if (x, y)
  * lies outside the image. */

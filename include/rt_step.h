@@ -11,7 +11,7 @@
  * testing each cell's objects. A ray hit is accepted in a cell only if it
  * lies within the cell's t-interval, so the nearest hit equals that of
  * testing every object (params.brute_force does exactly that, ignoring
- * the grid). On a hit the step shades (DESIGN section 3) and creates shadow,
+ * the grid). On a hit the step shades (docs/design.md section 3) and creates shadow,
  * reflected and transmitted packets. Secondary rays start off the surface
  * by RT_SURFACE_OFFSET x max(|P|, |origin|, t) along the geometric normal
  * (outside for reflection and shadows, inside for transmission). Returns

@@ -5,7 +5,7 @@
  * diagonal (1e-6 x max(1, largest |coordinate|) when all objects sit in one
  * point), and by at least one ulp, so that no axis has zero thickness.
  *
- * Cell lists follow the paper's recursive factor subdivision (DESIGN 4):
+ * Cell lists follow the paper's recursive factor subdivision (docs/design.md section 4):
  * each axis' cell count is factorised into primes in ascending order, the
  * shorter factor lists padded with 1s, so level l splits a sub-space by
  * factor[l] along x, y and z at once. Per axis the object's extent is

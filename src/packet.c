@@ -1,4 +1,4 @@
-/* packet.c - primary rays: the camera of DESIGN section 3. */
+/* packet.c - primary rays: the camera of docs/design.md section 3. */
 #include <math.h>
 
 #include "grid_internal.h"

@@ -1,4 +1,4 @@
-/* step.c - the packet step (DESIGN section 2): walk the cells one processor
+/* step.c - the packet step (docs/design.md section 2): walk the cells one processor
  * owns, find the nearest hit, shade it and make the next packets. */
 #include <math.h>
 #include <stdlib.h>
@@ -88,7 +88,7 @@ static int worth_a_ray(const rt_step_params *params, int depth, rt_vec3 weight)
            !rt_vec_is_zero(weight);
 }
 
-/* Shading at an accepted ray hit (DESIGN section 3). */
+/* Shading at an accepted ray hit (docs/design.md section 3). */
 static void shade(const rt_scene *scene, const rt_grid *grid, const rt_step_params *params,
                   const rt_packet *p, uint32_t obj, const rt_hit *hit, rt_step_result *out)
 {

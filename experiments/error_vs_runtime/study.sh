@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# study.sh - the error-against-run-time study of DESIGN.md section 8, end to end:
+# study.sh - the error-against-run-time study of docs/design.md section 8, end to end:
 #   1. quantum.sh  - LT at growing quanta against AT (both paper scenes, 144x144, 4x2x2 and 4x4x4)
 #   2. pruning.sh  - max-depth 0..8 and min-weight 1/512..1/8 against the full-depth image
-#   3. report.sh   - docs/img/error-*.png and docs/error-vs-runtime.md
+#   3. the report  - docs/img/error-*.png and docs/error-vs-runtime.md (python3 experiments/report
+#                    error-vs-runtime: experiments/report/, plots experiments/plots/error-*.gp)
 #
 # Usage: study.sh [--build DIR] [--results DIR] [--doc FILE] [--img-dir DIR] [--reps N]
 #                 [--only quantum|pruning|report] [--quick]
@@ -65,8 +66,8 @@ if [ -z "$ONLY" ] || [ "$ONLY" = pruning ]; then
   "$EVR_DIR/pruning.sh" --out "$RESULTS/pruning.csv" "${pargs[@]}"
 fi
 if [ -z "$ONLY" ] || [ "$ONLY" = report ]; then
-  "$EVR_DIR/report.sh" --quantum "$RESULTS/quantum.csv" --pruning "$RESULTS/pruning.csv" --doc "$DOC" \
-    --img-dir "$IMG" --command "$command_line"
+  python3 "$REPO/experiments/report" error-vs-runtime --quantum "$RESULTS/quantum.csv" \
+    --pruning "$RESULTS/pruning.csv" --doc "$DOC" --img-dir "$IMG" --command "$command_line"
 fi
 [ "$QUICK" = 1 ] && [ -f "$DOC" ] && [ "${QTMP-}" != "" ] && [[ "$DOC" == "$QTMP"* ]] &&
   echo "study: quick run only; its document was written to a temporary folder and removed" >&2

@@ -193,7 +193,7 @@ void box(scene *sc, vec3 c, vec3 h, vec3 ex, vec3 ey, vec3 ez)
 
 /* ---------------------------------------------------------------- framing */
 
-/* Camera basis exactly as the renderer builds it (DESIGN.md section 3). */
+/* Camera basis exactly as the renderer builds it (docs/design.md section 3). */
 static void camera_basis(const scene *sc, vec3 *w, vec3 *u, vec3 *v)
 {
     *w = vnorm(vsub(sc->at, sc->from));

@@ -1,4 +1,4 @@
-/* stiff_scenes.c - the small stiff and extreme scenes (DESIGN.md section 9): axis-aligned and
+/* stiff_scenes.c - the small stiff and extreme scenes (docs/design.md section 9): axis-aligned and
  * lattice-aligned rays, the eye or a light inside the object space, grazing hits, total
  * internal reflection, facing mirrors, empty and one-object spaces, extreme scales, every
  * primitive, a 1 x 1 image. */

@@ -67,6 +67,9 @@ OutputSet::~OutputSet()
 std::string OutputSet::add(const std::string &option, const std::string &path, const std::string &input)
 {
     check_output_folder(option, path);
+    struct stat st;
+    if (stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+        throw UserError(option + " '" + path + "': is a folder", 2);
     bool special = is_special_file(path);
     if (!special && !input.empty() && same_file(path, input))
         throw UserError(option + " '" + path + "': is the input file " + input, 2);

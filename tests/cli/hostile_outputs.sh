@@ -23,6 +23,10 @@ for exe in sim render; do
     "${cmd[@]}" "$TMP/scene.nff" -o "$TMP/x.png" --stats "./$(realpath --relative-to=. "$TMP/x.png")" 2>/dev/null
     check "$exe: -o and --stats naming one file exits 2" test $? -eq 2
 done
+mkdir "$TMP/x.gtkw"
+"${sim[@]}" "$f" -o "$TMP/x.png" --vcd "$TMP/x.vcd" 2>/dev/null
+check "sim: a folder where the save file goes exits 2" test $? -eq 2
+check "sim: ... and leaves no VCD" test ! -e "$TMP/x.vcd"
 check "the scene is unchanged" test "$(md5sum < "$TMP/scene.nff")" = "$before"
 check "no x.png left" test ! -e "$TMP/x.png"
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# stiff_scenes.sh - the stiff scenes of DESIGN section 9 through torusrt-render.
+# stiff_scenes.sh - the stiff scenes of docs/design.md section 9 through torusrt-render.
 #
 # Every stiff scene (written by scenes/gen_scenes.c) must exist, render with exit 0 to a PNG
 # of the scene's resolution, and conserve packets (--stats: created == consumed). Then:

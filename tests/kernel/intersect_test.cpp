@@ -426,7 +426,7 @@ TEST(IntersectPolygon, PentagramCentreIsOutsideByEvenOdd) {
 
 TEST(IntersectPolygon, SymmetricBowTieIsHit) {
     // A self-crossing polygon whose two lobes have equal area: its Newell vector is zero
-    // (the signed areas cancel), yet it covers an area of 2 and DESIGN section 3 says
+    // (the signed areas cancel), yet it covers an area of 2 and docs/design.md section 3 says
     // self-crossing polygons work and only zero-area polygons are never hit.
     std::vector<rt_vec3> bow = {rt_vec(0, 0, 0), rt_vec(2, 2, 0), rt_vec(2, 0, 0), rt_vec(0, 2, 0)};
     ScenePtr s = one_polygon(bow);

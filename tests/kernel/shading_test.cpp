@@ -1,4 +1,4 @@
-// shading_test.cpp - the packet step (rt_step) against DESIGN section 3, the frame
+// shading_test.cpp - the packet step (rt_step) against docs/design.md section 3, the frame
 // buffer's fixed-point arithmetic, and the reference renderer.
 //
 // Shading* and Step*: one-object (or two-object) scenes where every number can be worked

@@ -1,4 +1,4 @@
-// stiff_scene_test.cpp - the stiff scenes of DESIGN section 9, rendered in memory.
+// stiff_scene_test.cpp - the stiff scenes of docs/design.md section 9, rendered in memory.
 //
 // The scenes come from scenes/gen_scenes.c and are read from SOURCE_DIR/scenes/NAME.nff
 // (or from $TORUSRT_SCENE_DIR when that is set, e.g. a folder the generator just wrote).
@@ -253,7 +253,7 @@ TEST(RenderStiffLight, LitOnEverySideOfTheLight) {
     EXPECT_TRUE(L.x > space.lo.x && L.x < space.hi.x && L.y > space.lo.y && L.y < space.hi.y &&
                 L.z > space.lo.z && L.z < space.hi.z)
         << "the light should lie inside the object space";
-    // Where the light appears in the image (DESIGN section 3 camera).
+    // Where the light appears in the image (docs/design.md section 3 camera).
     const rt_camera *cam = rt_scene_camera(s.get());
     rt_vec3 w = rt_vec_normalize(rt_vec_sub(cam->at, cam->from));
     rt_vec3 u = rt_vec_normalize(rt_vec_cross(w, cam->up));

@@ -1,0 +1,113 @@
+"""The command line of the report package."""
+import argparse
+import os
+import subprocess
+import sys
+
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+def reproduction(args):
+    from . import reproduction as rep
+    from .verdict import HOLDS
+    res = os.path.abspath(args.results)
+    doc = args.doc
+    if not doc:
+        from .results import Results
+        full = Results(res).mode == "full"
+        doc = os.path.join(REPO, "docs", "reproduction.md") if full else os.path.join(res, "reproduction.md")
+    claim_list = rep.write(res, doc)
+    holding = sum(1 for c in claim_list if c.verdict == HOLDS)
+    print("report: %s (%d of %d claims hold)" % (doc, holding, len(claim_list)))
+    return 0
+
+
+def collect(args):
+    from . import collect as collectlib
+    res = os.path.abspath(args.results)
+    points, bad, differ = collectlib.collect(res)
+    print("collect: %d points, %d not ok, %d images differing from the 1-processor image -> %s/fig*.csv"
+          % (points, bad, differ, res))
+    return 0
+
+
+def plots(args):
+    from . import plots as plotlib
+    for png in plotlib.reproduction(os.path.abspath(args.results)):
+        print("plot: %s" % png)
+    return 0
+
+
+def error_vs_runtime(args):
+    from . import error_vs_runtime as evr
+    results = os.path.join(REPO, "experiments", "error_vs_runtime", "results")
+    quantum_csv = args.quantum or os.path.join(results, "quantum.csv")
+    pruning_csv = args.pruning or os.path.join(results, "pruning.csv")
+    doc = args.doc or os.path.join(REPO, "docs", "error-vs-runtime.md")
+    img = args.img_dir or os.path.join(REPO, "docs", "img")
+    evr.write(quantum_csv, pruning_csv, doc, img, args.command)
+    print("report: %s, plots in %s" % (doc, img))
+    return 0
+
+
+def sweep_plan(args):
+    from . import sweep
+    axes = [sweep.parse_axis(a) for a in args.axis]
+    if len({n for n, _ in axes}) != len(axes):
+        raise ValueError("each --axis option may be given once")
+    fixed = args.fixed[1:] if args.fixed[:1] == ["--"] else args.fixed
+    sweep.plan(os.path.abspath(args.out), args.sim, args.scene, axes, fixed)
+    return 0
+
+
+def sweep_collect(args):
+    from . import sweep
+    columns = [c for c in args.columns.split(",") if c] if args.columns else sweep.DEFAULT_COLUMNS
+    out = os.path.abspath(args.out)
+    failed = sweep.collect(out, columns, args.y)
+    sweep.report_failed(out, failed)
+    print("sweep: %s/sweep.csv%s" % (out, "" if failed else ", %s/sweep.png" % out))
+    return 1 if failed else 0
+
+
+def main(argv):
+    parser = argparse.ArgumentParser(prog="experiments/report", description=__doc__)
+    sub = parser.add_subparsers(dest="command", required=True)
+    p = sub.add_parser("reproduction", help="write the comparison with the paper from a sweep's CSVs")
+    p.add_argument("results", help="the sweep's results folder (fig5_6.csv, fig7.csv, fig8.csv, fig10_12.csv)")
+    p.add_argument("--doc", help="the page to write (default docs/reproduction.md for a full sweep, "
+                                 "RESULTS/reproduction.md otherwise); plots are copied to img/ beside it")
+    p.set_defaults(run=reproduction)
+    p = sub.add_parser("collect", help="the sweep's JSON reports (RESULTS/points.tsv) into fig5_6.csv, fig7.csv, "
+                                       "fig8.csv and fig10_12.csv")
+    p.add_argument("results")
+    p.set_defaults(run=collect)
+    p = sub.add_parser("plots", help="draw RESULTS/plots/fig*.png with experiments/plots/*.gp")
+    p.add_argument("results")
+    p.set_defaults(run=plots)
+    p = sub.add_parser("error-vs-runtime", help="write docs/error-vs-runtime.md and its plots from the study's CSVs")
+    p.add_argument("--quantum", help="quantum.csv (default experiments/error_vs_runtime/results/quantum.csv)")
+    p.add_argument("--pruning", help="pruning.csv (default experiments/error_vs_runtime/results/pruning.csv)")
+    p.add_argument("--doc", help="the page (default docs/error-vs-runtime.md)")
+    p.add_argument("--img-dir", help="where the plots go (default docs/img)")
+    p.add_argument("--command", default="experiments/error_vs_runtime/study.sh",
+                   help="the command line the page says produced it")
+    p.set_defaults(run=error_vs_runtime)
+    p = sub.add_parser("sweep-plan", help="(experiments/sweep) write OUT/points.tsv, print one command per point")
+    p.add_argument("--out", required=True)
+    p.add_argument("--sim", required=True)
+    p.add_argument("--scene", required=True)
+    p.add_argument("--axis", action="append", required=True)
+    p.add_argument("fixed", nargs=argparse.REMAINDER)
+    p.set_defaults(run=sweep_plan)
+    p = sub.add_parser("sweep-collect", help="(experiments/sweep) OUT/sweep.csv and OUT/sweep.png from the points")
+    p.add_argument("--out", required=True)
+    p.add_argument("--columns", default="")
+    p.add_argument("--y", default="sim_time_s")
+    p.set_defaults(run=sweep_collect)
+    args = parser.parse_args(argv)
+    try:
+        return args.run(args)
+    except (OSError, ValueError, KeyError, subprocess.CalledProcessError) as e:
+        print("experiments/report: %s" % e, file=sys.stderr)
+        return 1

@@ -1,0 +1,51 @@
+"""CSV tables read by column name."""
+import csv
+
+
+class Table:
+    """The rows of one CSV file, as dicts keyed by the header's column names."""
+
+    def __init__(self, rows, columns, path=""):
+        self.rows = rows
+        self.columns = columns
+        self.path = path
+
+    @classmethod
+    def load(cls, path):
+        with open(path, newline="") as f:
+            reader = csv.DictReader(f)
+            rows = list(reader)
+            return cls(rows, list(reader.fieldnames or []), path)
+
+    def where(self, ok_only=True, **match):
+        """Rows whose columns equal the given values (compared as text); only status ok rows
+        unless ok_only is False."""
+        out = []
+        for row in self.rows:
+            if ok_only and row.get("status") != "ok":
+                continue
+            if all(row.get(k) == str(v) for k, v in match.items()):
+                out.append(row)
+        return out
+
+    def text(self, column, **match):
+        """The column of the first ok row matching, as text; None if no row or empty."""
+        rows = self.where(**match)
+        if not rows or rows[0].get(column, "") == "":
+            return None
+        return rows[0][column]
+
+    def value(self, column, **match):
+        """The column of the first ok row matching, as a float; None if no row or empty."""
+        t = self.text(column, **match)
+        return None if t is None else float(t)
+
+    def distinct(self, column):
+        """The column's values in sorted order (every row, whatever its status)."""
+        return sorted({row[column] for row in self.rows})
+
+
+def num(row, column):
+    """A row's column as a float, None if empty."""
+    t = row.get(column, "")
+    return None if t == "" else float(t)

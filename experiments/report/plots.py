@@ -1,0 +1,118 @@
+"""Data files for the checked-in gnuplot scripts (experiments/plots/*.gp), and running them."""
+import os
+import subprocess
+
+from . import paper
+from .results import Results
+
+PLOT_DIR = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "plots")
+
+
+def write_dat(path, rows):
+    with open(path, "w") as f:
+        for row in rows:
+            f.write(" ".join(str(v) for v in row) + "\n")
+
+
+def series(table, columns, **match):
+    """The named columns of the ok rows matching, as text."""
+    return [[row[c] for c in columns] for row in table.where(**match)]
+
+
+def gnuplot(script, variables):
+    """Runs experiments/plots/SCRIPT with the variables (strings, or numbers) set."""
+    assigns = ["plotdir='%s'" % PLOT_DIR]
+    for name, value in variables.items():
+        assigns.append("%s=%s" % (name, value if isinstance(value, (int, float)) else "'%s'" % value))
+    subprocess.run(["gnuplot", "-e", "; ".join(assigns), os.path.join(PLOT_DIR, script)], check=True)
+
+
+def flat_data(r, dat):
+    """fig5-8 data files; returns the mappings present."""
+    maps = r.f56.distinct("mapping")
+    for s in r.scenes:
+        for m in maps:
+            write_dat(os.path.join(dat, "f56-%s-%s.dat" % (s, m)),
+                      series(r.f56, ["n", "sim_time_s", "efficiency_busy", "efficiency_t1", "t1_s"], scene=s, mapping=m))
+            write_dat(os.path.join(dat, "f7-%s-%s.dat" % (s, m)),
+                      series(r.f7, ["n", "total_bytes", "pixel_partitioned_bytes"], scene=s, mapping=m))
+        write_dat(os.path.join(dat, "f8-%s.dat" % s), series(r.f8, ["n", "units_parallel", "units_serial"], scene=s))
+        pp16 = r.f7.value("pixel_partitioned_bytes", scene=s, n=16)
+        lo, hi = paper.MEMORY_RATIO_AT_16
+        write_dat(os.path.join(dat, "f7-paper-%s.dat" % s),
+                  [[16, pp16 / ((lo + hi) / 2) / 1024, pp16 / hi / 1024, pp16 / lo / 1024]] if pp16 else [])
+    write_dat(os.path.join(dat, "f8-paper.dat"), sorted(paper.PREPROCESS_UNITS.items()))
+    write_dat(os.path.join(dat, "paper-floor.dat"),
+              [[1, 100 * paper.EFFICIENCY_FLOOR], [paper.EFFICIENCY_FLOOR_MAX_N, 100 * paper.EFFICIENCY_FLOOR]])
+    return maps
+
+
+def cluster_data(r, dat):
+    """fig10-12 data files; returns the data modes present."""
+    datas = r.f10.distinct("data")
+    m, pm = paper.MEMORY_M, paper.CLUSTER_M
+    for s in r.cscenes:
+        for d in datas:
+            write_dat(os.path.join(dat, "f10-%s-%s.dat" % (s, d)),
+                      series(r.f10, ["m", "sim_time_s", "efficiency_busy", "efficiency_t1", "total_bytes",
+                                     "pixel_partitioned_bytes", "t1_s", "processors"], scene=s, data=d))
+            t = paper.cluster_time(s, d)
+            write_dat(os.path.join(dat, "f10-paper-%s-%s.dat" % (s, d)), [[pm, t]] if t else [])
+        rep = r.f10.value("total_bytes", scene=s, data="replicated", m=m)
+        pp = r.f10.value("pixel_partitioned_bytes", scene=s, data="replicated", m=m)
+        write_dat(os.path.join(dat, "f12-paper-%s.dat" % s),
+                  [[m, rep * paper.SHARED_OVER_REPLICATED / 1024, pp / paper.SHARED_PIXEL_PARTITIONED / 1024]]
+                  if rep and pp else [])
+    floor = 100 * paper.CLUSTER_EFFICIENCY_FLOOR
+    write_dat(os.path.join(dat, "paper-shared-floor.dat"), [[1, floor], [paper.SHARED_EFFICIENCY_MAX_M, floor]])
+    write_dat(os.path.join(dat, "paper-replicated-floor.dat"), [[pm, floor]])
+    return datas
+
+
+def reproduction(res):
+    """Draws RESULTS/plots/fig5.png ... fig12.png (clusters only when the sweep has them);
+    returns the PNGs written."""
+    r = Results(res)
+    out = os.path.join(res, "plots")
+    dat = os.path.join(out, "data")
+    os.makedirs(dat, exist_ok=True)
+    for name in os.listdir(dat):
+        if name.endswith(".dat"):
+            os.remove(os.path.join(dat, name))
+    for f in (10, 11, 12):
+        if os.path.exists(os.path.join(out, "fig%d.png" % f)):
+            os.remove(os.path.join(out, "fig%d.png" % f))
+    lo, hi = paper.MEMORY_RATIO_AT_16
+    common = {"dat": dat, "scenes": " ".join(r.scenes)}
+    flat = dict(common, maps=" ".join(flat_data(r, dat)),
+                xmax=1.3 * max((int(row["n"]) for row in r.f56.rows), default=1))
+    titles = {
+        "fig5": {}, "fig6": {"paper_floor": "paper: > %.0f %% for n <= %d (load-balancing)" % (
+            100 * paper.EFFICIENCY_FLOOR, paper.EFFICIENCY_FLOOR_MAX_N)},
+        "fig7": {"paper_ratio": "paper at n = 16: 1/%d to 1/%d of pixel-partitioned" % (lo, hi)},
+        "fig8": {"paper_units": "paper, image 1: " + " / ".join(str(paper.PREPROCESS_UNITS[n])
+                                                               for n in sorted(paper.PREPROCESS_UNITS))},
+    }
+    written = []
+    for name, extra in titles.items():
+        png = os.path.join(out, name + ".png")
+        gnuplot(name + ".gp", dict(flat, out=png, **extra))
+        written.append(png)
+    if r.cscenes:
+        clusters = dict(common, scenes=" ".join(r.cscenes), datas=" ".join(cluster_data(r, dat)),
+                        xmax=1.3 * max((int(row["m"]) for row in r.f10.rows), default=1))
+        floor = 100 * paper.CLUSTER_EFFICIENCY_FLOOR
+        titles = {
+            "fig10": {"paper_%s_%s" % (s, d): "paper, %s, m = %d: %g s" % (d, paper.CLUSTER_M, paper.cluster_time(s, d))
+                      for s in r.cscenes for d in ("replicated", "shared") if paper.cluster_time(s, d)},
+            "fig11": {"paper_shared_floor": "paper: shared > %.0f %% up to m = %d" % (floor, paper.SHARED_EFFICIENCY_MAX_M),
+                      "paper_replicated_floor": "paper: replicated > %.0f %% at m = %d" % (floor, paper.CLUSTER_M)},
+            "fig12": {"paper_half": "paper, m = %d: shared < 1/2 of replicated (our replicated / 2)" % paper.MEMORY_M,
+                      "paper_twelfth": "paper, m = %d: shared < 1/%d of pixel-partitioned" % (
+                          paper.MEMORY_M, paper.SHARED_PIXEL_PARTITIONED)},
+        }
+        for name, extra in titles.items():
+            png = os.path.join(out, name + ".png")
+            gnuplot(name + ".gp", dict(clusters, out=png, **extra))
+            written.append(png)
+    return written

@@ -1,0 +1,97 @@
+"""A reproduction sweep's results folder: the four CSVs and the facts of the run."""
+import csv
+import glob
+import json
+import os
+
+from .csvdata import Table
+
+FIGURES = ("fig5_6", "fig7", "fig8", "fig10_12")
+FACTS_FILE = "run_facts.csv"
+
+
+class Facts:
+    """What the CSVs do not hold: image size, cells, hand-over cost, one-processor runs, the
+    joblog. Read from t1/*.json and joblog when the sweep's files are there (and then saved in
+    run_facts.csv), else from run_facts.csv."""
+
+    KEYS = ("image_size", "cells", "hop_us", "t1_runs", "joblog_points", "joblog_span_s")
+
+    def __init__(self, res):
+        path = os.path.join(res, FACTS_FILE)
+        saved = {}
+        if os.path.exists(path):
+            with open(path, newline="") as f:
+                saved = {row["key"]: row["value"] for row in csv.DictReader(f)}
+        found = self._from_sweep(res)
+        values = {k: found.get(k, saved.get(k, "")) for k in self.KEYS}
+        if found:
+            with open(path + ".tmp", "w", newline="") as f:
+                out = csv.writer(f, lineterminator="\n")
+                out.writerow(["key", "value"])
+                out.writerows((k, values[k]) for k in self.KEYS)
+            os.replace(path + ".tmp", path)
+        self.image_size = values["image_size"] or "?"
+        self.cells = int(values["cells"] or 13824)
+        self.hop_us = values["hop_us"] or "2180"
+        self.t1_runs = int(values["t1_runs"] or 0)
+        self.joblog_points = values["joblog_points"]
+        self.joblog_span_s = values["joblog_span_s"]
+
+    @staticmethod
+    def _from_sweep(res):
+        found = {}
+        t1 = sorted(glob.glob(os.path.join(res, "t1", "*.json")))
+        if t1:
+            with open(t1[0]) as f:
+                report = json.load(f)
+            found["image_size"] = "%dx%d" % (report["width"], report["height"])
+            cells = report["cells"]
+            found["cells"] = str(cells[0] * cells[1] * cells[2])
+            timing = report["config"]["timing"]
+            found["hop_us"] = "%g" % (timing["packet_creation"] + timing["packet_analysis"])
+            found["t1_runs"] = str(len(t1))
+        joblog = os.path.join(res, "joblog")
+        if os.path.exists(joblog) and os.path.getsize(joblog) > 0:
+            with open(joblog, newline="") as f:
+                rows = list(csv.DictReader(f, delimiter="\t"))
+            if rows:
+                starts = [float(row["Starttime"]) for row in rows]
+                ends = [float(row["Starttime"]) + float(row["JobRuntime"]) for row in rows]
+                found["joblog_points"] = str(len(rows))
+                found["joblog_span_s"] = "%.1f" % (max(ends) - min(starts))
+        return found
+
+
+class Results:
+    """The tables of one sweep and what the claims need to know about them."""
+
+    def __init__(self, res):
+        self.dir = res
+        for name in FIGURES:
+            path = os.path.join(res, name + ".csv")
+            if not os.path.exists(path) or os.path.getsize(path) == 0:
+                raise FileNotFoundError("%s missing (run the sweep's collect step first)" % path)
+        self.f56, self.f7, self.f8, self.f10 = (Table.load(os.path.join(res, n + ".csv")) for n in FIGURES)
+        self.facts = Facts(res)
+        self.runs = self._runs()
+        self.scenes = self.f56.distinct("scene")
+        self.cscenes = self.f10.distinct("scene")
+        self.nmax = max((int(row["n"]) for row in self.f56.where()), default=0)
+        mode_file = os.path.join(res, "mode")
+        if os.path.exists(mode_file):
+            with open(mode_file) as f:
+                self.mode = f.read().strip()
+        else:
+            self.mode = self.runs.get("mode", "unknown")
+
+    def _runs(self):
+        """The row of runs.tsv that computed the most points (the latest among equals)."""
+        path = os.path.join(self.dir, "runs.tsv")
+        best = {}
+        if os.path.exists(path):
+            with open(path, newline="") as f:
+                for row in csv.DictReader(f, delimiter="\t"):
+                    if not best or int(row["points_run"]) >= int(best["points_run"]):
+                        best = row
+        return best

@@ -1,0 +1,144 @@
+"""The generic sweep (experiments/sweep): the points of a cartesian product over torusrt-sim
+options, and after the runs one CSV row per point and a plot (experiments/plots/sweep.gp)."""
+import csv
+import itertools
+import json
+import os
+import re
+import shlex
+import sys
+
+from .plots import gnuplot, write_dat
+
+DEFAULT_COLUMNS = ["sim_time_s", "efficiency_t1", "efficiency_busy", "packets.created.total",
+                   "packets.forwarded", "links.utilisation.mean", "wall_s"]
+PLAN = "points.tsv"
+
+
+def parse_axis(text):
+    """'ips=1,2,4x2x2' -> ('ips', ['1', '2', '4x2x2'])."""
+    name, sep, values = text.partition("=")
+    name = name.lstrip("-")
+    items = [v for v in values.split(",") if v != ""]
+    if not sep or not re.fullmatch(r"[a-z0-9][a-z0-9-]*", name) or not items:
+        raise ValueError("--axis '%s': expected OPTION=v1,v2,... (an option of torusrt-sim without its dashes)" % text)
+    return name, items
+
+
+def point_name(names, values):
+    return "-".join("%s_%s" % (n, re.sub(r"[^A-Za-z0-9.]+", "_", v)) for n, v in zip(names, values))
+
+
+def plan(out, sim, scene, axes, fixed):
+    """Writes OUT/points.tsv (name and axis values per point) and prints one shell command line
+    per point; a point whose JSON exists is skipped by its command, so a re-run resumes."""
+    names = [n for n, _ in axes]
+    points = os.path.join(out, "points")
+    os.makedirs(points, exist_ok=True)
+    with open(os.path.join(out, PLAN), "w", newline="") as f:
+        table = csv.writer(f, delimiter="\t", lineterminator="\n")
+        table.writerow(["name"] + names)
+        for values in itertools.product(*(v for _, v in axes)):
+            name = point_name(names, values)
+            table.writerow([name] + list(values))
+            base = os.path.join(points, name)
+            args = [sim, scene, "-o", base + ".png", "--stats", base + ".json.tmp", "-q"] + list(fixed)
+            for n, v in zip(names, values):
+                args += ["--" + n, v]
+            run = " ".join(shlex.quote(a) for a in args)
+            print("[ -s {j} ] || {{ {run} >{log} 2>&1 && mv {t} {j}; }}".format(
+                j=shlex.quote(base + ".json"), t=shlex.quote(base + ".json.tmp"), run=run,
+                log=shlex.quote(base + ".log")))
+
+
+def flatten(report, prefix=""):
+    """Every scalar of a JSON object by dotted name (arrays left out)."""
+    out = {}
+    for key, value in report.items():
+        name = prefix + key
+        if isinstance(value, dict):
+            out.update(flatten(value, name + "."))
+        elif not isinstance(value, list):
+            out[name] = value
+    return out
+
+
+def text(value):
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    return "" if value is None else str(value)
+
+
+def read_points(out):
+    with open(os.path.join(out, PLAN), newline="") as f:
+        rows = list(csv.reader(f, delimiter="\t"))
+    return rows[0][1:], rows[1:]
+
+
+def collect(out, columns, y):
+    """Writes OUT/sweep.csv and OUT/sweep.png; returns the names of the points that failed."""
+    names, points = read_points(out)
+    flat, failed = [], []
+    for row in points:
+        path = os.path.join(out, "points", row[0] + ".json")
+        if os.path.exists(path) and os.path.getsize(path) > 0:
+            with open(path) as f:
+                flat.append(flatten(json.load(f)))
+        else:
+            flat.append(None)
+            failed.append(row[0])
+    if columns == ["all"]:
+        columns = sorted({k for f in flat if f for k in f})
+    present = [f for f in flat if f]
+    unknown = [c for c in columns + [y] if present and all(c not in f for f in present)]
+    if unknown:
+        raise ValueError("no such JSON field in the reports: %s (scalars by dotted name, e.g. links.utilisation.mean)"
+                         % ", ".join(unknown))
+    with open(os.path.join(out, "sweep.csv.tmp"), "w", newline="") as f:
+        table = csv.writer(f, lineterminator="\n")
+        table.writerow(names + ["status"] + columns)
+        for row, report in zip(points, flat):
+            status = "ok" if report else "failed"
+            table.writerow(row[1:] + [status] + [text((report or {}).get(c)) for c in columns])
+    os.replace(os.path.join(out, "sweep.csv.tmp"), os.path.join(out, "sweep.csv"))
+    if any(flat):
+        plot(out, names, points, flat, y)
+    return failed
+
+
+def numeric(values):
+    try:
+        [float(v) for v in values]
+        return True
+    except ValueError:
+        return False
+
+
+def plot(out, names, points, flat, y):
+    """OUT/sweep.png: the first axis on x, one line per combination of the other axes."""
+    dat = os.path.join(out, "plot-data")
+    os.makedirs(dat, exist_ok=True)
+    xs = list(dict.fromkeys(row[1] for row in points))
+    is_numeric = numeric(xs)
+    series = {}
+    for row, report in zip(points, flat):
+        if report and report.get(y) is not None:
+            series.setdefault(tuple(row[2:]), []).append((xs.index(row[1]), row[1], report[y]))
+    titles = []
+    for i, (combo, rows) in enumerate(sorted(series.items()), 1):
+        write_dat(os.path.join(dat, "series-%d.dat" % i), rows)
+        titles.append(",".join("%s=%s" % (n, v) for n, v in zip(names[1:], combo)) or y)
+    gnuplot("sweep.gp", {"dat": dat, "out": os.path.join(out, "sweep.png"), "nseries": len(titles),
+                         "titles": " ".join(t.replace(" ", "_") for t in titles), "numeric": int(is_numeric),
+                         "xname": names[0], "yname": y})
+
+
+def report_failed(out, failed):
+    for name in failed:
+        log = os.path.join(out, "points", name + ".log")
+        tail = ""
+        if os.path.exists(log):
+            with open(log) as f:
+                lines = f.read().strip().splitlines()
+            tail = lines[0] if lines else ""
+        print("sweep: FAILED point %s: %s (log %s)" % (name, tail, log), file=sys.stderr)

@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# experiments/sweep: a 2 x 2 sweep (two axes, small scene, 16x16) writes one CSV row per point with
+# the axis columns, the status and the chosen JSON fields, whose values are those of the points'
+# own JSON reports, and a PNG plot; a point that fails is listed and makes the exit status 1
+# while the other points still get their rows; a malformed --axis is a command-line error (2).
+source "$(dirname "$0")/common.bash" "$@"
+need_exe torusrt-sim
+for tool in parallel gnuplot python3 jq; do
+    command -v $tool >/dev/null || { fail "$tool not installed"; finish; exit 1; }
+done
+SWEEP=$SRC/experiments/sweep
+scene=$SRC/scenes/paper-image2.nff
+ispng() { [ "$(head -c 8 "$1" | od -An -tx1 | tr -d ' \n')" = 89504e470d0a1a0a ]; }
+# same A B: the two numbers are equal (as numbers: the CSV and jq may spell them differently).
+same() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a != "" && b != "" && a + 0 == b + 0) }'; }
+# col CSV ROW COLUMN: the value in data row ROW (1 = first) of the column named COLUMN.
+col() { awk -F, -v r="$2" -v c="$3" 'NR == 1 { for (i = 1; i <= NF; i++) ix[$i] = i; next } NR == r + 1 { print $ix[c] }' "$1"; }
+
+TORUSRT_BUILD=$BUILD "$SWEEP" "$scene" --axis ips=1,2x2 --axis map=block,cyclic --out "$TMP/s" -j 2 \
+    --columns sim_time_s,efficiency_busy,links.utilisation.mean,packets.created.total -- --size 16x16 --t1 1 \
+    >"$TMP/out" 2>"$TMP/err"
+rc=$?
+check "2 x 2 sweep exits 0 (got $rc: $(tail -n 2 "$TMP/err" | tr '\n' ' '))" test "$rc" -eq 0
+csv=$TMP/s/sweep.csv
+check "CSV header: axes, status, chosen fields" \
+    test "$(head -n 1 "$csv")" = "ips,map,status,sim_time_s,efficiency_busy,links.utilisation.mean,packets.created.total"
+check "CSV has 4 rows" test "$(awk 'NR > 1' "$csv" | wc -l)" -eq 4
+check "rows are the cartesian product, first axis slowest" \
+    test "$(awk -F, 'NR > 1 { printf "%s/%s ", $1, $2 }' "$csv")" = "1/block 1/cyclic 2x2/block 2x2/cyclic "
+check "every point ok" test "$(awk -F, 'NR > 1 && $3 != "ok"' "$csv" | wc -l)" -eq 0
+for row in 1 2 3 4; do
+    ips=$(col "$csv" $row ips) map=$(col "$csv" $row map)
+    json=$TMP/s/points/ips_$ips-map_$map.json
+    check "row $row: sim_time_s is the point's JSON value" \
+        same "$(col "$csv" $row sim_time_s)" "$(jq -r .sim_time_s "$json")"
+    check "row $row: a nested field by dotted name" \
+        same "$(col "$csv" $row links.utilisation.mean)" "$(jq -r .links.utilisation.mean "$json")"
+    check "row $row: the axis value reached the run" test "$(jq -r .config.mapping "$json")" = "$map"
+done
+check "one IP: no link traffic" same "$(col "$csv" 1 links.utilisation.mean)" 0
+check "2x2 cyclic is faster than one IP" \
+    awk -v a="$(col "$csv" 4 sim_time_s)" -v b="$(col "$csv" 1 sim_time_s)" 'BEGIN { exit !(a + 0 < b + 0) }'
+check "the plot is a PNG" ispng "$TMP/s/sweep.png"
+
+TORUSRT_BUILD=$BUILD "$SWEEP" "$scene" --axis map=block,nonsense --out "$TMP/f" -j 2 -- --size 16x16 --t1 1 \
+    >"$TMP/out" 2>"$TMP/err"
+rc=$?
+check "a failing point makes the sweep exit 1 (got $rc)" test "$rc" -eq 1
+check "the failed point is listed with its message" grep -q "FAILED point map_nonsense.*--map 'nonsense'" "$TMP/err"
+check "the failed point is a 'failed' row" test "$(col "$TMP/f/sweep.csv" 2 status)" = failed
+check "the other point is ok" test "$(col "$TMP/f/sweep.csv" 1 status)" = ok
+
+TORUSRT_BUILD=$BUILD "$SWEEP" "$scene" --axis ips --out "$TMP/b" >/dev/null 2>"$TMP/err"
+rc=$?
+check "malformed --axis: exit 2 (got $rc)" test "$rc" -eq 2
+check "malformed --axis: the message names it" grep -q -- "--axis 'ips'" "$TMP/err"
+finish
