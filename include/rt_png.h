@@ -13,6 +13,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include <stdio.h>
+
 #include "rt_status.h"
 
 #ifdef __cplusplus
@@ -21,6 +23,12 @@ extern "C" {
 
 rt_status rt_png_write(const char *path, uint32_t width, uint32_t height, const uint8_t *rgb8,
                        char *msg, size_t msg_len);
+
+/* Encodes an 8-bit RGB PNG into an open stream (flushed, not closed); `name` is used in
+ * messages. RT_ERR_IO when encoding or a write fails. For callers that choose the file
+ * themselves (a device, or a temporary they rename). */
+rt_status rt_png_write_stream(FILE *fp, const char *name, uint32_t width, uint32_t height,
+                              const uint8_t *rgb8, char *msg, size_t msg_len);
 
 /* Reads an 8-bit RGB PNG; *rgb8 is malloc'ed (caller frees). RT_ERR_IO or
  * RT_ERR_INVALID (not 8-bit RGB) on failure. */

@@ -67,8 +67,6 @@ nlohmann::json cluster_memory_json(const SimConfig &config, TorusSystem &top, co
                                    const rt_grid *grid, const int32_t *cell_owner, uint64_t pixel_partitioned);
 // Adds the `cluster.` and `bus.` sections to a report.
 void add_cluster_report(nlohmann::json &report, const SimConfig &config, TorusSystem &top);
-// Adds the cluster's bus owner and request lines to a VCD trace.
-void trace_cluster(sc_core::sc_trace_file *file, ClusterNode &cluster);
 // Lines naming the cluster's full queues and waiting requesters.
 std::string cluster_deadlock_lines(ClusterNode &cluster);
 

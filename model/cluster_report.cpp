@@ -125,19 +125,6 @@ void add_cluster_report(nlohmann::json &report, const SimConfig &config, TorusSy
         }
 }
 
-void trace_cluster(sc_core::sc_trace_file *file, ClusterNode &cluster)
-{
-    ClusterBus &bus = cluster.bus();
-    std::string base = bus.name();
-    sc_core::sc_trace(file, bus.owner_trace(), base + ".owner");
-    for (int r = 0; r < bus.requesters(); r++)
-        sc_core::sc_trace(file, bus.request_trace(r),
-                          base + ".request_" + (r < cluster.size() ? std::to_string(r) : std::string("cu")));
-    std::string d = cluster.dispatcher().name();
-    sc_core::sc_trace(file, cluster.dispatcher().inbox().depth_trace(), d + ".queue_depth");
-    sc_core::sc_trace(file, cluster.dispatcher().busy_trace(), d + ".busy");
-}
-
 std::string cluster_deadlock_lines(ClusterNode &cluster)
 {
     // Full processor queues are listed by deadlock_report with every other processor's.

@@ -1,6 +1,7 @@
 // model_run.cpp - elaboration, sc_start, stall detection and result collection.
 #include "model_run.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -32,6 +33,19 @@ void show_progress(void *ctx, uint64_t consumed, int64_t outstanding)
     p->update(consumed, consumed + static_cast<uint64_t>(outstanding > 0 ? outstanding : 0));
 }
 
+// A node that owns no cell never does work: worth a word, since it lowers the efficiency.
+void warn_idle_nodes(const SimConfig &config, const std::vector<int32_t> &owner)
+{
+    if (config.quiet) return;
+    std::vector<bool> owns(static_cast<size_t>(config.node_count()), false);
+    for (int32_t o : owner)
+        if (o >= 0 && o < config.node_count()) owns[static_cast<size_t>(o)] = true;
+    long idle = std::count(owns.begin(), owns.end(), false);
+    if (idle > 0)
+        std::fprintf(stderr, "torusrt-sim: warning: %ld of %d nodes own no cells and stay idle (%zu cells for %d nodes)\n",
+                     idle, config.node_count(), owner.size(), config.node_count());
+}
+
 }  // namespace
 
 ModelOutcome run_model(const SimConfig &config, const rt_scene *scene, const rt_grid *grid, double t1_s,
@@ -43,6 +57,7 @@ ModelOutcome run_model(const SimConfig &config, const rt_scene *scene, const rt_
     char msg[RT_MSG_LEN] = "";
     if (rt_mapping_fill(dims, config.ips.data(), config.mapping, config.block, owner.data(), msg, sizeof msg) != RT_OK)
         throw UserError(std::string("--map: ") + msg, 2);
+    warn_idle_nodes(config, owner);
     const rt_camera *cam = rt_scene_camera(scene);
     FramebufferPtr fb(rt_framebuffer_new(cam->width, cam->height));
     if (!fb) throw UserError("out of memory for the frame buffer");
@@ -56,20 +71,29 @@ ModelOutcome run_model(const SimConfig &config, const rt_scene *scene, const rt_
         tlm::tlm_global_quantum::instance().set(sc_core::sc_time(config.quantum_us, sc_core::SC_US));
     TorusSystem top("top", config, scene, grid, owner.data(), ledger, fb.get());
     std::unique_ptr<Tracer> tracer;
-    if (!config.vcd_path.empty()) tracer = std::make_unique<Tracer>(config.vcd_path, config, top);
+    if (!config.vcd_path.empty()) tracer = std::make_unique<Tracer>(config, top);
 
     double sim_start = now_s();
-    sc_core::sc_start();
+    // Stopping at the limit keeps SystemC's 64-bit time from wrapping: every single delay is
+    // bounded (check_timing_limits), so none can jump from below the limit past the maximum.
+    sc_core::sc_start(sc_core::sc_time(config.time_limit_s, sc_core::SC_SEC), sc_core::SC_EXIT_ON_STARVATION);
     double sim_wall = now_s() - sim_start;
     progress.finish();
 
-    ModelOutcome out;
     if (ledger.over_limit()) {
         rt_budget_packets_exceeded(&memory, ledger.outstanding_over_limit(), sizeof(rt_packet), msg,
                                    sizeof msg);
         throw UserError(msg); // the tracer's destructor removes the partial trace
     }
-    if (ledger.outstanding() != 0 || !top.host().done_injecting()) {
+    bool finished = ledger.outstanding() == 0 && top.host().done_injecting();
+    if ((!finished && sc_core::sc_pending_activity()) || ledger.image_time().to_seconds() > config.time_limit_s) {
+        char text[200];
+        std::snprintf(text, sizeof text, "the simulated time passed the limit of %g s (--time-limit; at most %g s, "
+                      "as SystemC's time holds about 1.8e7 s at 1 ps)", config.time_limit_s, kMaxSimTimeS);
+        throw UserError(text);
+    }
+    ModelOutcome out;
+    if (!finished) {
         out.deadlock = true;
         out.deadlock_details = deadlock_report(top);
         out.sim_time_s = sc_core::sc_time_stamp().to_seconds();
@@ -89,7 +113,7 @@ ModelOutcome run_model(const SimConfig &config, const rt_scene *scene, const rt_
     out.report = build_report(config, top, ledger, scene, grid, owner.data(), facts);
     out.rgb8.resize(static_cast<size_t>(cam->width) * cam->height * 3);
     rt_framebuffer_to_rgb8(fb.get(), out.rgb8.data());
-    if (tracer) tracer->commit();
+    if (tracer) tracer->finish();
     return out;
 }
 

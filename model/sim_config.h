@@ -13,6 +13,14 @@
 
 namespace torusrt {
 
+// A run stops with an error when simulated time passes this (SystemC's time is a 64-bit count
+// of picoseconds, about 1.8e7 s).
+constexpr double kMaxSimTimeS = 1e7;
+// The most nodes (and processors) that elaborate: each has its own SystemC threads and stacks;
+// 8192 processors exceed Linux's default 65530 memory maps per process and abort.
+constexpr int kMaxNodes = 4096;
+constexpr int kMaxProcessors = 4096;
+
 enum class Topology { torus, mesh };
 enum class TimingStyle { at, lt };
 enum class DataMode { replicated, shared };
@@ -37,9 +45,14 @@ struct SimConfig {
     ArbiterPolicy arbiter = ArbiterPolicy::round_robin;
     DispatchPolicy dispatch = DispatchPolicy::round_robin;
     std::string vcd_path;                   // VCD trace file ("" = no tracing)
+    std::string vcd_write_path;             // where it is written now (a temporary or vcd_path)
+    std::string gtkw_path, gtkw_write_path; // GTKWave save file beside it ("" = none)
+    double trace_from_us = 0;               // trace window start
+    double trace_to_us = -1;                // trace window end (< 0: the end of the run)
     std::vector<int> trace_ips;             // nodes to trace (empty = all)
     double t1_s = -1;                       // T(1) passed in (< 0: compute)
     rt_budget memory{};                     // what is left of --memory-budget for packets
+    double time_limit_s = kMaxSimTimeS;     // stop with an error past this simulated time
     bool quiet = false;
 
     int node_count() const { return ips[0] * ips[1] * ips[2]; }

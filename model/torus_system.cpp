@@ -40,7 +40,8 @@ TorusSystem::TorusSystem(sc_core::sc_module_name name, const SimConfig &config, 
         for (int dir = 0; dir < kDirections; dir++) {
             int to = m_routing.neighbour(n, dir);
             if (to < 0) continue;
-            std::string lname = "link_" + std::to_string(n) + "_" + direction_name(dir);
+            // Named by its ends, so a trace says where every link goes.
+            std::string lname = "link_" + std::to_string(n) + "_to_" + std::to_string(to) + "_" + direction_name(dir);
             auto link = std::make_unique<ToroidalLink>(lname.c_str(), config, n, to, dir);
             m_comm[n]->link_out.bind(link->in);
             m_comm[n]->set_link_port(dir, port++);

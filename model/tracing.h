@@ -1,27 +1,42 @@
 // tracing.h - the optional VCD trace: IP busy and queue depth, link activity and queue depth,
-// bus owner and request lines. Created only when --vcd is given; written to a temporary file
-// and renamed when the run succeeds.
+// bus owner and request lines, and a GTKWave save file that groups them per node.
+// Created only when --vcd is given; the trace goes through a VcdStream (every write checked,
+// optional time window) into the path the run's OutputSet handed out.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <systemc>
+#include <vector>
 
 #include "sim_config.h"
 #include "torus_system.h"
+#include "vcd_stream.h"
 
 namespace torusrt {
 
 class Tracer {
   public:
-    Tracer(const std::string &path, const SimConfig &config, TorusSystem &top);
-    ~Tracer();  // closes and removes the temporary file unless commit() was called
-    // Closes the trace and moves it to its final path.
-    void commit();
+    Tracer(const SimConfig &config, TorusSystem &top);
+    ~Tracer();  // closes the trace; the OutputSet removes what was not committed
+    // Closes the trace, waits for every byte to reach the file and writes the save file.
+    // Throws UserError on any write error.
+    void finish();
 
   private:
-    std::string m_path, m_tmp_base;
+    struct Group {
+        std::string name;
+        std::vector<std::pair<std::string, bool>> signals;  // GTKWave name, is a counter
+    };
+    void add(Group &g, bool &value, const std::string &name);
+    void add(Group &g, int &value, const std::string &name);
+    void trace_cluster(Group &g, ClusterNode &cluster);
+    std::string save_file_text() const;
+
+    const SimConfig &m_config;
+    std::unique_ptr<VcdStream> m_stream;
     sc_core::sc_trace_file *m_file = nullptr;
-    bool m_committed = false;
+    std::vector<Group> m_groups;
 };
 
 }  // namespace torusrt

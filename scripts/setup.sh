@@ -18,9 +18,21 @@ if [ "${#missing[@]}" -gt 0 ]; then
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -q "${missing[@]}"
 fi
 
-# Build output goes to build/build.log and is shown only when the build fails.
+# Build output goes to build/build.log and is shown only when the build fails; while it runs,
+# its progress (CMake's percentage) is printed every 15 seconds.
 mkdir -p build
-if ! { cmake -S . -B build -DCMAKE_BUILD_TYPE=Release && cmake --build build -j"$(nproc)"; } > build/build.log 2>&1; then
+echo "setup: building torusrt in build/ (minutes the first time; log: build/build.log)"
+{ cmake -S . -B build -DCMAKE_BUILD_TYPE=Release && cmake --build build -j"$(nproc)"; } > build/build.log 2>&1 &
+build_pid=$!
+seconds=0
+while kill -0 "$build_pid" 2>/dev/null; do
+  sleep 1
+  seconds=$((seconds + 1))
+  if [ $((seconds % 15)) -eq 0 ] && kill -0 "$build_pid" 2>/dev/null; then
+    echo "setup: building... $(grep -o '^\[ *[0-9]*%\]' build/build.log | tail -n 1) (${seconds} s)"
+  fi
+done
+if ! wait "$build_pid"; then
   cat build/build.log
   echo "setup: the build failed (log: build/build.log)" >&2
   exit 1

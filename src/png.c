@@ -105,6 +105,26 @@ rt_status rt_png_write(const char *path, uint32_t width, uint32_t height, const 
     return RT_OK;
 }
 
+rt_status rt_png_write_stream(FILE *fp, const char *name, uint32_t width, uint32_t height,
+                              const uint8_t *rgb8, char *msg, size_t msg_len)
+{
+    if (!fp || !rgb8 || width == 0 || height == 0 || width > PNG_UINT_31_MAX ||
+        height > PNG_UINT_31_MAX || (size_t)width > SIZE_MAX / 3u / (size_t)height) {
+        if (msg && msg_len)
+            snprintf(msg, msg_len, "%s: cannot write a %ux%u image", name ? name : "(no name)",
+                     (unsigned)width, (unsigned)height);
+        return RT_ERR_INVALID;
+    }
+    png_errors e = {""};
+    int ok = encode(fp, width, height, rgb8, &e);
+    if (ok && fflush(fp) == 0 && !ferror(fp)) return RT_OK;
+    if (msg && msg_len) {
+        if (!ok) snprintf(msg, msg_len, "%s: PNG write failed: %s", name ? name : "", e.text);
+        else snprintf(msg, msg_len, "%s: cannot write: %s", name ? name : "", strerror(errno));
+    }
+    return RT_ERR_IO;
+}
+
 /* Decodes an 8-bit RGB PNG (signature already read); e->text on failure. */
 static rt_status decode(FILE *fp, png_errors *e, uint32_t *width, uint32_t *height, uint8_t **out)
 {

@@ -1,6 +1,7 @@
 // torusrt_render.cpp - the sequential reference renderer: the golden image for every model run.
 #include <CLI/CLI.hpp>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -16,8 +17,8 @@
 #include "rt_render.h"
 #include "rt_timing.h"
 #include "scene_setup.h"
-#include "staged_outputs.h"
 #include "stats_json.h"
+#include "timing_limits.h"
 #include "user_error.h"
 
 using namespace torusrt;
@@ -74,6 +75,7 @@ FrameResult render_frame(RenderSetup &setup, const std::string &label, const Ren
     fr.rgb.resize(static_cast<size_t>(cam->width) * cam->height * 3);
     rt_framebuffer_to_rgb8(fb.get(), fr.rgb.data());
     fr.t1_s = rt_timing_step_us(&setup.timing, &fr.st.ops) * 1e-6;
+    if (!std::isfinite(fr.t1_s)) throw UserError("T(1) is not a finite time: the timing values are too large");
     return fr;
 }
 
@@ -113,20 +115,17 @@ double seconds_since(std::chrono::steady_clock::time_point t0)
 
 int run_single(const RenderOptions &opt, RenderSetup &setup, std::chrono::steady_clock::time_point t0)
 {
+    OutputSet outputs;
+    std::string png_path = outputs.add("-o", opt.output_path, opt.scene_path);
+    std::string stats_path = opt.stats_path.empty() ? "" : outputs.add("--stats", opt.stats_path, opt.scene_path);
     FrameResult fr = render_frame(setup, "torusrt-render", opt);
     const rt_camera *cam = rt_scene_camera(setup.loaded.scene.get());
     double wall = seconds_since(t0);
     nlohmann::json js;
     if (!opt.stats_path.empty()) js = stats_json(opt, setup, fr.st, fr.t1_s, wall);
-    write_png_file(opt.output_path, cam->width, cam->height, fr.rgb);
-    if (!opt.stats_path.empty()) {
-        try {
-            write_text_file(opt.stats_path, js.dump(2) + "\n");
-        } catch (...) {
-            remove_file(opt.output_path);
-            throw;
-        }
-    }
+    write_png_file(png_path, opt.output_path, cam->width, cam->height, fr.rgb);
+    if (!opt.stats_path.empty()) write_text_file(stats_path, opt.stats_path, js.dump(2) + "\n");
+    outputs.commit();
     if (!opt.quiet)
         std::printf("%s: %ux%u, %zu objects, %llu packets, T(1) %.3f s (paper timing), wall %.3f s\n",
                     opt.scene_path.c_str(), cam->width, cam->height,
@@ -142,8 +141,11 @@ int run_frames(const RenderOptions &opt, RenderSetup &setup, std::chrono::steady
     rt_scene *scene = setup.loaded.scene.get();
     CameraPathPtr path = make_camera_path(opt.anim, scene);
     size_t n = rt_camera_path_count(path.get());
-    for (size_t k = 0; k < n; k++) check_output_folder("-o", frame_file_name(opt.output_path, k));
-    StagedOutputs staged;
+    OutputSet outputs;
+    std::vector<std::string> frame_paths;
+    for (size_t k = 0; k < n; k++)
+        frame_paths.push_back(outputs.add("-o", frame_file_name(opt.output_path, k), opt.scene_path));
+    std::string stats_path = opt.stats_path.empty() ? "" : outputs.add("--stats", opt.stats_path, opt.scene_path);
     rt_render_stats total{};
     double t1_total = 0.0;
     nlohmann::json frames = nlohmann::json::array();
@@ -156,7 +158,7 @@ int run_frames(const RenderOptions &opt, RenderSetup &setup, std::chrono::steady
         FrameResult fr = render_frame(setup, label, opt);
         const rt_camera *cam = rt_scene_camera(scene);
         std::string file = frame_file_name(opt.output_path, k);
-        staged.add_png(file, cam->width, cam->height, fr.rgb);
+        write_png_file(frame_paths[k], file, cam->width, cam->height, fr.rgb);
         rt_ops_add(&total.ops, &fr.st.ops);
         for (int kind = 0; kind < RT_PACKET_KINDS; kind++) {
             total.packets.created[kind] += fr.st.packets.created[kind];
@@ -177,9 +179,9 @@ int run_frames(const RenderOptions &opt, RenderSetup &setup, std::chrono::steady
         js["camera_source"] = opt.anim.orbit.empty() ? "camera-path" : "orbit";
         js["output_pattern"] = opt.output_path;
         js["frames"] = frames;
-        staged.add_text(opt.stats_path, js.dump(2) + "\n");
+        write_text_file(stats_path, opt.stats_path, js.dump(2) + "\n");
     }
-    staged.commit();
+    outputs.commit();
     if (!opt.quiet)
         std::printf("%s: %zu frames of %ux%u, %zu objects, %llu packets, "
                     "T(1) %.3f s in all (paper timing), wall %.3f s\n",
@@ -201,14 +203,17 @@ int run(RenderOptions &opt)
     setup.min_weight = parse_fraction("--min-weight", opt.min_weight);
     check_animation_options(opt.anim);
     if (opt.anim.animated()) check_frame_pattern("-o", opt.output_path);
-    else check_output_folder("-o", opt.output_path);
-    if (!opt.stats_path.empty()) check_output_folder("--stats", opt.stats_path);
 
     rt_timing_defaults(&setup.timing);
     char msg[RT_MSG_LEN] = "";
     if (!opt.timing_path.empty() &&
         rt_timing_load(opt.timing_path.c_str(), &setup.timing, msg, sizeof msg) != RT_OK)
         throw UserError(msg);
+    std::string problem = timing_limit_problem(setup.timing);
+    if (!problem.empty()) throw UserError(opt.timing_path + ": " + problem);
+    if (setup.min_weight > 1 && !opt.quiet)
+        std::fprintf(stderr, "torusrt-render: warning: --min-weight %g is above 1: every secondary ray is dropped\n",
+                     setup.min_weight);
 
     setup.budget = rt_budget_make(parse_memory_size("--memory-budget", opt.memory_budget));
     setup.loaded = load_scene(opt.scene_path, size[0], size[1], setup.cells, opt.quiet, &setup.budget);
@@ -227,19 +232,20 @@ int main(int argc, char **argv)
     RenderOptions opt;
     CLI::App app{"torusrt-render: the sequential reference renderer (the golden image).\n"
                  "Runs the kernel's packet step over one work queue with one owner for every cell."};
-    app.add_option("scene", opt.scene_path, "scene file (NFF, with the 'am' extension)")->required();
+    app.add_option("scene", opt.scene_path, "scene file (NFF, with the 'am' extension)")->required()->type_name("FILE");
     app.add_option("-o,--output", opt.output_path,
                    "PNG image to write; with --frames/--camera-path a pattern like out_%04d.png")
-        ->required();
-    app.add_option("--cells", opt.cells, "grid cells: N or NXxNYxNZ (default 24)");
-    app.add_option("--size", opt.size, "image size WxH, overriding the scene's resolution");
-    app.add_option("--max-depth", opt.max_depth, "deepest shade-tree depth of a ray (default 8)");
-    app.add_option("--min-weight", opt.min_weight, "smallest ray weight, e.g. 1/512 (default)");
+        ->required()
+        ->type_name("FILE");
+    app.add_option("--cells", opt.cells, "grid cells: N or NXxNYxNZ (default 24)")->type_name("DIMS");
+    app.add_option("--size", opt.size, "image size WxH, overriding the scene's resolution")->type_name("WxH");
+    app.add_option("--max-depth", opt.max_depth, "deepest shade-tree depth of a ray (default 8)")->type_name("N");
+    app.add_option("--min-weight", opt.min_weight, "smallest ray weight, e.g. 1/512 (default)")->type_name("W");
     app.add_option("--memory-budget", opt.memory_budget,
-                   "memory the run may use for cell lists, frame buffer and packets, e.g. 512M or 4G; 0 = no limit (default 4G)");
+                   "memory the run may use for cell lists, frame buffer and packets, e.g. 512M or 4G; 0 = no limit (default 4G)")->type_name("SIZE");
     app.add_flag("--brute-force", opt.brute_force, "test every object for every ray (the test oracle)");
-    app.add_option("--stats", opt.stats_path, "write statistics as JSON to this file");
-    app.add_option("--timing", opt.timing_path, "timing file overriding the paper's table (for t1_s)");
+    app.add_option("--stats", opt.stats_path, "write statistics as JSON to this file")->type_name("FILE");
+    app.add_option("--timing", opt.timing_path, "timing file overriding the paper's table (for t1_s)")->type_name("FILE");
     add_animation_options(app, opt.anim);
     app.add_flag("-q,--quiet", opt.quiet, "print nothing but errors; no progress");
     return run_cli("torusrt-render", app, argc, argv, [&] { return run(opt); });

@@ -13,6 +13,8 @@
 #include "output_files.h"
 #include "scene_setup.h"
 #include "sim_config.h"
+#include "systemc_messages.h"
+#include "timing_limits.h"
 #include "user_error.h"
 
 using namespace torusrt;
@@ -24,6 +26,9 @@ struct CommandLine {
     std::string min_weight = "1/512", style = "at", quantum = "0", data = "replicated", arbiter = "round-robin";
     std::string dispatch = "round-robin", trace_ips, link_us, packet_bytes, link_bytes_per_us, t1;
     std::string memory_budget = "4G";
+    std::string trace_from, trace_to, time_limit, scene, vcd;
+    int cluster = 1;
+    bool quiet = false;
     long long queue = 0;
     int max_depth = 8;
 };
@@ -67,6 +72,14 @@ std::vector<int> parse_list(const std::string &option, const std::string &text)
     return out;
 }
 
+// X.vcd -> X.gtkw; any other name gets ".gtkw" appended.
+std::string save_file_path(const std::string &vcd)
+{
+    const std::string ext = ".vcd";
+    bool has_ext = vcd.size() > ext.size() && vcd.compare(vcd.size() - ext.size(), ext.size(), ext) == 0;
+    return (has_ext ? vcd.substr(0, vcd.size() - ext.size()) : vcd) + ".gtkw";
+}
+
 SimConfig make_config(const std::string &scene, const CommandLine &cl, bool quiet)
 {
     SimConfig c;
@@ -78,7 +91,7 @@ SimConfig make_config(const std::string &scene, const CommandLine &cl, bool quie
         c.width = s[0];
         c.height = s[1];
     }
-    c.ips = parse_dims_1_to_3("--ips", cl.ips, 1, 4096);
+    c.ips = parse_dims_1_to_3("--ips", cl.ips, 1, kMaxNodes);
     c.mapping = parse_mapping(cl.map, c.block);
     c.topology = parse_choice("--topology", cl.topology, "torus", Topology::torus, "mesh", Topology::mesh);
     if (cl.queue < 0 || cl.queue > 100000000) throw UserError("--queue: must be 0 (unbounded) to 100000000", 2);
@@ -87,14 +100,18 @@ SimConfig make_config(const std::string &scene, const CommandLine &cl, bool quie
     char msg[RT_MSG_LEN] = "";
     if (!cl.timing_file.empty() && rt_timing_load(cl.timing_file.c_str(), &c.timing, msg, sizeof msg) != RT_OK)
         throw UserError(msg);
-    auto set = [&](const char *key, const std::string &opt, const std::string &text) {
+    std::string problem = timing_limit_problem(c.timing);
+    if (!problem.empty()) throw UserError(cl.timing_file + ": " + problem);
+    auto set = [&](const char *key, const std::string &opt, const std::string &text, bool is_time) {
         if (text.empty()) return;
-        double v = parse_non_negative(opt, text);
+        double v = is_time ? parse_time_us(opt, text) : parse_non_negative(opt, text);
         if (rt_timing_set(&c.timing, key, v, msg, sizeof msg) != RT_OK) throw UserError(opt + ": " + msg, 2);
+        std::string why = timing_limit_problem(c.timing);
+        if (!why.empty()) throw UserError(opt + " '" + text + "': " + why, 2);
     };
-    set("link", "--link-us", cl.link_us);
-    set("packet_bytes", "--packet-bytes", cl.packet_bytes);
-    set("link_bytes_per_us", "--link-bytes-per-us", cl.link_bytes_per_us);
+    set("link", "--link-us", cl.link_us, true);
+    set("packet_bytes", "--packet-bytes", cl.packet_bytes, false);
+    set("link_bytes_per_us", "--link-bytes-per-us", cl.link_bytes_per_us, false);
     c.step = rt_step_params_default();
     c.step.max_depth = cl.max_depth;
     c.step.min_weight = parse_fraction("--min-weight", cl.min_weight);
@@ -108,9 +125,109 @@ SimConfig make_config(const std::string &scene, const CommandLine &cl, bool quie
     if (!cl.trace_ips.empty()) c.trace_ips = parse_list("--trace-ips", cl.trace_ips);
     if (!cl.t1.empty()) {
         c.t1_s = parse_non_negative("--t1", cl.t1);
-        if (!(c.t1_s > 0)) throw UserError("--t1: must be a positive number of seconds", 2);
+        if (!(c.t1_s > 0) || c.t1_s > kMaxSimTimeS)
+            throw UserError("--t1 '" + cl.t1 + "': must be a positive number of seconds, at most " +
+                                std::to_string(static_cast<long>(kMaxSimTimeS)), 2);
     }
+    if (!cl.time_limit.empty()) c.time_limit_s = parse_time_us("--time-limit", cl.time_limit) * 1e-6;
+    if (!cl.trace_from.empty()) c.trace_from_us = parse_time_us("--trace-from", cl.trace_from);
+    if (!cl.trace_to.empty()) c.trace_to_us = parse_time_us("--trace-to", cl.trace_to);
     return c;
+}
+
+void declare_options(CLI::App &app, CommandLine &cl)
+{
+    app.add_option("scene", cl.scene, "scene file (NFF)")->required()->type_name("FILE");
+    app.add_option("-o,--output", cl.output, "PNG image to write")->required()->type_name("FILE");
+    app.add_option("--stats", cl.stats, "write the statistics as JSON to this file")->type_name("FILE");
+    app.add_option("--vcd", cl.vcd, "write a VCD trace (IP busy, queue depths, link and bus activity) and a GTKWave\n"
+                               "save file beside it (X.gtkw for X.vcd)")->type_name("FILE");
+    app.add_option("--trace-from", cl.trace_from, "trace only from this simulated time (default 0)")->type_name("TIME");
+    app.add_option("--trace-to", cl.trace_to, "trace only up to this simulated time (default: the end)")->type_name("TIME");
+    app.add_option("--trace-ips", cl.trace_ips, "trace only these nodes, e.g. 0,1,5 (default all)")->type_name("N,N,...");
+    app.add_option("--ips", cl.ips, "torus nodes: P, PXxPY or PXxPYxPZ (default 1, at most 4096)")->type_name("DIMS");
+    app.add_option("--map", cl.map, "cell mapping: block, cyclic (default) or block-cyclic:B")->type_name("KIND");
+    app.add_option("--topology", cl.topology, "torus (default, rings) or mesh (no wrap-around)")->type_name("KIND");
+    app.add_option("--cells", cl.cells, "grid cells: N or NXxNYxNZ (default 24)")->type_name("DIMS");
+    app.add_option("--size", cl.size, "image size WxH, overriding the scene's resolution")->type_name("WxH");
+    app.add_option("--queue", cl.queue, "capacity of every packet queue, 0 = unbounded (default)")->type_name("N");
+    app.add_option("--timing", cl.timing_file, "timing file overriding the paper's table")->type_name("FILE");
+    app.add_option("--link-us", cl.link_us, "time per packet on a link: microseconds, or with a unit ns, us, ms, s\n"
+                                         "(default 50)")->type_name("TIME");
+    app.add_option("--packet-bytes", cl.packet_bytes, "packet size on the wire in bytes (default 28)")->type_name("BYTES");
+    app.add_option("--link-bytes-per-us", cl.link_bytes_per_us,
+                   "link bandwidth; when > 0 a packet takes packet-bytes / this (default 0: use --link-us)")
+        ->type_name("RATE");
+    app.add_option("--max-depth", cl.max_depth, "deepest shade-tree depth of a ray (default 8)")->type_name("N");
+    app.add_option("--min-weight", cl.min_weight, "smallest ray weight, e.g. 1/512 (default)")->type_name("W");
+    app.add_option("--style", cl.style, "timing style: at (approximately timed, default) or lt (loosely timed)")
+        ->type_name("at|lt");
+    app.add_option("--quantum", cl.quantum, "loosely-timed global quantum, same syntax as --link-us, e.g. 500us, 10ms")
+        ->type_name("TIME");
+    app.add_option("--cluster", cl.cluster, "processors per torus node on a shared bus (default 1)")->type_name("N");
+    app.add_option("--data", cl.data, "object data in a cluster: replicated (default) or shared")->type_name("KIND");
+    app.add_option("--arbiter", cl.arbiter, "cluster bus arbiter: round-robin (default) or fixed-priority")->type_name("KIND");
+    app.add_option("--dispatch", cl.dispatch, "cluster packet dispatch: round-robin (default) or shortest-queue")
+        ->type_name("KIND");
+    app.add_option("--t1", cl.t1, "T(1) in seconds for efficiency_t1 (default: run the model with one processor)")
+        ->type_name("SECONDS");
+    app.add_option("--time-limit", cl.time_limit, "stop with an error (exit 1) when simulated time passes this\n"
+                   "(default and maximum 1e7 s, SystemC's 64-bit picosecond time holds 1.8e7 s)")->type_name("TIME");
+    app.add_option("--memory-budget", cl.memory_budget, "memory the run may use for cell lists, frame buffer and\n"
+                   "packets, e.g. 512M or 4G; 0 = no limit (default 4G)")->type_name("SIZE");
+    app.add_flag("-q,--quiet", cl.quiet, "print nothing but errors; no progress");
+}
+
+int run(const CommandLine &cl, double wall_start)
+{
+    route_systemc_messages(cl.quiet);
+    SimConfig config = make_config(cl.scene, cl, cl.quiet);
+    config.cluster = cl.cluster;
+    config.vcd_path = cl.vcd;
+    validate(config);
+    if (config.step.min_weight > 1 && !cl.quiet)
+        std::fprintf(stderr, "torusrt-sim: warning: --min-weight %g is above 1: every secondary ray is dropped\n",
+                     config.step.min_weight);
+    OutputSet outputs;
+    std::string png = outputs.add("-o", cl.output, cl.scene);
+    std::string stats = cl.stats.empty() ? "" : outputs.add("--stats", cl.stats, cl.scene);
+    if (!cl.vcd.empty()) {
+        config.vcd_write_path = outputs.add("--vcd", cl.vcd, cl.scene);
+        if (!is_special_file(cl.vcd)) {  // no save file beside /dev/null
+            config.gtkw_path = save_file_path(cl.vcd);
+            config.gtkw_write_path = outputs.add("--vcd (save file)", config.gtkw_path, cl.scene);
+        }
+    }
+
+    config.memory = rt_budget_make(parse_memory_size("--memory-budget", cl.memory_budget));
+    LoadedScene loaded = load_scene(cl.scene, config.width, config.height, config.cells, cl.quiet, &config.memory);
+    double t1 = config.t1_s;
+    std::string t1_source = "passed with --t1";
+    if (t1 < 0 && config.processor_count() > 1) {
+        t1 = one_processor_time(config, loaded.scene.get(), loaded.grid.get());
+        t1_source = "one-processor run";
+    }
+    ModelOutcome out = run_model(config, loaded.scene.get(), loaded.grid.get(), t1, t1_source, wall_start);
+    if (out.deadlock) {
+        std::fprintf(stderr,
+                     "torusrt-sim: deadlock: the network stalled at %.6f s simulated with packets still "
+                     "outstanding (queue capacity %u)\n%s",
+                     out.sim_time_s, config.queue_capacity, out.deadlock_details.c_str());
+        return 3;
+    }
+    const rt_camera *cam = rt_scene_camera(loaded.scene.get());
+    write_png_file(png, cl.output, cam->width, cam->height, out.rgb8);
+    if (!stats.empty()) write_text_file(stats, cl.stats, out.report.dump(2) + "\n");
+    outputs.commit();
+    if (!cl.quiet) {
+        print_summary_stdout(out.report);
+        std::printf("  wrote        %s", cl.output.c_str());
+        if (!cl.stats.empty()) std::printf(", %s", cl.stats.c_str());
+        if (!cl.vcd.empty()) std::printf(", %s", cl.vcd.c_str());
+        if (!config.gtkw_path.empty()) std::printf(" (gtkwave %s)", config.gtkw_path.c_str());
+        std::printf("\n");
+    }
+    return 0;
 }
 
 }  // namespace
@@ -120,80 +237,12 @@ int sc_main(int argc, char **argv)
     double wall_start = seconds_now();
     sc_core::sc_report_handler::set_actions(sc_core::SC_FATAL, sc_core::SC_DISPLAY | sc_core::SC_THROW);
     sc_core::sc_report_handler::set_actions(sc_core::SC_ERROR, sc_core::SC_DISPLAY | sc_core::SC_THROW);
-
     CommandLine cl;
-    std::string scene, vcd;
-    int cluster = 1;
-    bool quiet = false;
     CLI::App app{"torusrt-sim: a SystemC/TLM-2.0 model of the object-space-parallel ray-tracing\n"
                  "multiprocessor (Kubota et al.): intersection processors on a torus exchange ray packets."};
-    app.add_option("scene", scene, "scene file (NFF)")->required();
-    app.add_option("-o,--output", cl.output, "PNG image to write")->required();
-    app.add_option("--stats", cl.stats, "write the statistics as JSON to this file");
-    app.add_option("--vcd", vcd, "write a VCD trace (IP busy, queue depths, link and bus activity)");
-    app.add_option("--trace-ips", cl.trace_ips, "trace only these nodes, e.g. 0,1,5 (default all)");
-    app.add_option("--ips", cl.ips, "torus nodes: P, PXxPY or PXxPYxPZ (default 1)");
-    app.add_option("--map", cl.map, "cell mapping: block, cyclic (default) or block-cyclic:B");
-    app.add_option("--topology", cl.topology, "torus (default, rings) or mesh (no wrap-around)");
-    app.add_option("--cells", cl.cells, "grid cells: N or NXxNYxNZ (default 24)");
-    app.add_option("--size", cl.size, "image size WxH, overriding the scene's resolution");
-    app.add_option("--queue", cl.queue, "capacity of every packet queue, 0 = unbounded (default)");
-    app.add_option("--timing", cl.timing_file, "timing file overriding the paper's table");
-    app.add_option("--link-us", cl.link_us, "microseconds per packet on a link (default 50)");
-    app.add_option("--packet-bytes", cl.packet_bytes, "packet size on the wire in bytes (default 28)");
-    app.add_option("--link-bytes-per-us", cl.link_bytes_per_us,
-                   "link bandwidth; when > 0 a packet takes packet-bytes / this (default 0: use --link-us)");
-    app.add_option("--max-depth", cl.max_depth, "deepest shade-tree depth of a ray (default 8)");
-    app.add_option("--min-weight", cl.min_weight, "smallest ray weight, e.g. 1/512 (default)");
-    app.add_option("--style", cl.style, "timing style: at (approximately timed, default) or lt (loosely timed)");
-    app.add_option("--quantum", cl.quantum, "loosely-timed global quantum with a unit, e.g. 500us, 10ms");
-    app.add_option("--cluster", cluster, "processors per torus node on a shared bus (default 1)");
-    app.add_option("--data", cl.data, "object data in a cluster: replicated (default) or shared");
-    app.add_option("--arbiter", cl.arbiter, "cluster bus arbiter: round-robin (default) or fixed-priority");
-    app.add_option("--dispatch", cl.dispatch, "cluster packet dispatch: round-robin (default) or shortest-queue");
-    app.add_option("--t1", cl.t1, "T(1) in seconds for efficiency_t1 (default: run the model with one processor)");
-    app.add_option("--memory-budget", cl.memory_budget,
-                   "memory the run may use for cell lists, frame buffer and packets, e.g. 512M or 4G; 0 = no limit (default 4G)");
-    app.add_flag("-q,--quiet", quiet, "print nothing but errors; no progress");
-    return run_cli("torusrt-sim", app, argc, argv, [&]() -> int {
-        SimConfig config = make_config(scene, cl, quiet);
-        config.cluster = cluster;
-        config.vcd_path = vcd;
-        validate(config);
-        check_output_folder("-o", cl.output);
-        if (!cl.stats.empty()) check_output_folder("--stats", cl.stats);
-        if (!vcd.empty()) check_output_folder("--vcd", vcd);
-
-        config.memory = rt_budget_make(parse_memory_size("--memory-budget", cl.memory_budget));
-        LoadedScene loaded = load_scene(scene, config.width, config.height, config.cells, quiet, &config.memory);
-        double t1 = config.t1_s;
-        std::string t1_source = "passed with --t1";
-        if (t1 < 0 && config.processor_count() > 1) {
-            t1 = one_processor_time(config, loaded.scene.get(), loaded.grid.get());
-            t1_source = "one-processor run";
-        }
-        ModelOutcome out = run_model(config, loaded.scene.get(), loaded.grid.get(), t1, t1_source, wall_start);
-        if (out.deadlock) {
-            std::fprintf(stderr,
-                         "torusrt-sim: deadlock: the network stalled at %.6f s simulated with packets still "
-                         "outstanding (queue capacity %u)\n%s",
-                         out.sim_time_s, config.queue_capacity, out.deadlock_details.c_str());
-            return 3;
-        }
-        const rt_camera *cam = rt_scene_camera(loaded.scene.get());
-        write_png_file(cl.output, cam->width, cam->height, out.rgb8);
-        if (!cl.stats.empty()) {
-            try {
-                write_text_file(cl.stats, out.report.dump(2) + "\n");
-            } catch (...) {
-                remove_file(cl.output);
-                if (!vcd.empty()) remove_file(vcd);
-                throw;
-            }
-        }
-        if (!quiet) print_summary_stdout(out.report);
-        return 0;
-    });
+    declare_options(app, cl);
+    return run_cli("torusrt-sim", app, argc, argv, [&] { return run(cl, wall_start); },
+                   "  3 deadlock: the network stalled with packets outstanding\n");
 }
 
 // Our own entry point: the SystemC banner is printed before sc_main runs, so it is switched off here.

@@ -28,11 +28,14 @@ double parse_degrees(const std::string &text)
 void add_animation_options(CLI::App &app, AnimationOptions &opt)
 {
     app.add_option("--frames", opt.frames_text, "frames of an animation (needs --orbit; 1 to " +
-                                               std::to_string(RT_CAMERA_PATH_MAX_FRAMES) + ")");
+                                               std::to_string(RT_CAMERA_PATH_MAX_FRAMES) + ")")
+        ->type_name("N");
     app.add_option("--orbit", opt.orbit,
-                   "turn the eye about 'at' around 'up' by DEG degrees over the frames");
+                   "turn the eye about 'at' around 'up' by DEG degrees over the frames")
+        ->type_name("DEG");
     app.add_option("--camera-path", opt.camera_path,
-                   "camera path file: one 'from at up angle' line (10 numbers) per frame");
+                   "camera path file: one 'from at up angle' line (10 numbers) per frame")
+        ->type_name("FILE");
 }
 
 void check_animation_options(AnimationOptions &opt)

@@ -2,18 +2,24 @@
 #include "cli_main.h"
 
 #include <cstdio>
+#include <string>
 
 #include "user_error.h"
 
 namespace torusrt {
 
-int run_cli(const char *program, CLI::App &app, int argc, char **argv, const std::function<int()> &body)
+int run_cli(const char *program, CLI::App &app, int argc, char **argv, const std::function<int()> &body,
+            const char *extra_exit_statuses)
 {
+    app.set_version_flag("--version", std::string(program) + " " + TORUSRT_VERSION);
+    app.footer(std::string("Exit status:\n  0 success\n  1 bad input file or failed run (a write error included)\n"
+                           "  2 bad command line\n") + extra_exit_statuses);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError &e) {
-        int code = app.exit(e);
-        return code == 0 ? 0 : 2;
+        if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+        std::fprintf(stderr, "%s: %s\nRun with --help for more information.\n", program, e.what());
+        return 2;
     }
     try {
         return body();

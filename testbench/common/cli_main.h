@@ -7,6 +7,8 @@
 
 namespace torusrt {
 
-int run_cli(const char *program, CLI::App &app, int argc, char **argv, const std::function<int()> &body);
+// Adds --version and the exit statuses (0, 1, 2, then `extra_exit_statuses` lines) to the help.
+int run_cli(const char *program, CLI::App &app, int argc, char **argv, const std::function<int()> &body,
+            const char *extra_exit_statuses = "");
 
 }  // namespace torusrt

@@ -103,19 +103,21 @@ double parse_time_us(const std::string &option, const std::string &text)
 {
     static const struct { const char *suffix; double us; } units[] = {
         {"ns", 1e-3}, {"us", 1.0}, {"ms", 1e3}, {"s", 1e6}};
+    std::string num = text;
+    double scale = 1.0;  // a bare number is microseconds
     for (const auto &u : units) {
         std::string suf = u.suffix;
         if (text.size() > suf.size() && text.compare(text.size() - suf.size(), suf.size(), suf) == 0) {
-            std::string num = text.substr(0, text.size() - suf.size());
-            double v;
-            if (!parse_double(num, v)) bad(option, text, "expected a time like 500us or 10ms");
-            if (v < 0) bad(option, text, "must not be negative");
-            return v * u.us;
+            num = text.substr(0, text.size() - suf.size());
+            scale = u.us;
+            break;
         }
     }
     double v;
-    if (parse_double(text, v) && v == 0.0) return 0.0;
-    bad(option, text, "expected a time with a unit: ns, us, ms or s (e.g. 500us)");
+    if (!parse_double(num, v)) bad(option, text, "expected a time: microseconds, or with a unit ns, us, ms or s (e.g. 500us)");
+    if (v < 0) bad(option, text, "must not be negative");
+    if (!std::isfinite(v * scale)) bad(option, text, "too large");
+    return v * scale;
 }
 
 double parse_fraction(const std::string &option, const std::string &text)

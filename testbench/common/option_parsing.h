@@ -17,7 +17,7 @@ std::array<int, 3> parse_dims_1_to_3(const std::string &option, const std::strin
 std::array<unsigned, 2> parse_size(const std::string &option, const std::string &text);
 // A non-negative finite number.
 double parse_non_negative(const std::string &option, const std::string &text);
-// A time with a unit: "500us", "10ms", "1s", "250ns", "0" -> microseconds.
+// A time in microseconds: "500" (a bare number is microseconds), "500us", "10ms", "1s", "250ns".
 double parse_time_us(const std::string &option, const std::string &text);
 // A weight: "0.002", "1/512".
 double parse_fraction(const std::string &option, const std::string &text);

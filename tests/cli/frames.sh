@@ -114,15 +114,14 @@ for pattern in f.png f_%d_%d.png f_%s.png f_%5d.png f_%i.png f_%-3d.png f_%00d.p
     rejected 2 "-o '$TMP/out/$pattern'" -o "$TMP/out/$pattern" --frames 2 --orbit 90
 done
 
-# A file that cannot be committed (the statistics' name is a folder) undoes the frames already
-# renamed: no frame is left.
+# An output named like an existing folder is refused before any frame is rendered: no frame is left.
 rm -rf "$TMP/out" && mkdir -p "$TMP/out/stats.json"
 "${run_limited[@]}" "$render" "$scene" -q "${size[@]}" -o "$out" --orbit 90 --frames 3 \
     --stats "$TMP/out/stats.json" >/dev/null 2>"$TMP/err" </dev/null
 rc=$?
-check "failed commit exits 1 (got $rc)" [ "$rc" -eq 1 ]
-check "failed commit names the file" grep -qF "$TMP/out/stats.json" "$TMP/err"
-check "failed commit leaves no frame: $(ls "$TMP/out" | tr '\n' ' ')" [ "$(ls -A "$TMP/out")" = stats.json ]
+check "a folder as --stats exits 2 (got $rc)" [ "$rc" -eq 2 ]
+check "a folder as --stats is named" grep -qF "$TMP/out/stats.json" "$TMP/err"
+check "a folder as --stats leaves no frame: $(ls "$TMP/out" | tr '\n' ' ')" [ "$(ls -A "$TMP/out")" = stats.json ]
 
 # Camera path file errors: FILE:LINE: and exit 1, no output.
 bad() {

@@ -27,7 +27,7 @@ bad "--packet-bytes" --packet-bytes -1
 bad "--cells" --cells 0
 bad "--cells" --cells 2x2
 bad "--size" --size 0x10
-bad "--quantum" --style lt --quantum 5
+bad "--quantum" --style lt --quantum 5parsecs
 bad "--quantum" --quantum 5ms
 bad "--style" --style fast
 bad "--cluster" --cluster 0

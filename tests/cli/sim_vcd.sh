@@ -7,7 +7,7 @@ f="$SRC/scenes/paper-image2.nff"
 check "vcd written" test -s "$TMP/a.vcd"
 check "vcd2fst converts it" vcd2fst "$TMP/a.vcd" "$TMP/a.fst"
 check "fst written" test -s "$TMP/a.fst"
-for sig in "ip_0 \$end" "busy" "queue_depth" "link_0_xp"; do
+for sig in "ip_0 \$end" "busy" "queue_depth" "link_0_to_1_xp"; do
   check "vcd has $sig" grep -q "$sig" "$TMP/a.vcd"
 done
 check "value changes recorded" grep -q '^#[1-9]' "$TMP/a.vcd"

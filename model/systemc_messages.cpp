@@ -1,0 +1,32 @@
+// systemc_messages.cpp - a report handler that prints on stderr instead of stdout.
+#include "systemc_messages.h"
+
+#include <cstdio>
+#include <systemc>
+
+namespace torusrt {
+
+namespace {
+
+bool g_quiet = false;
+
+void to_stderr(const sc_core::sc_report &report, const sc_core::sc_actions &actions)
+{
+    if (actions & sc_core::SC_DISPLAY) {
+        bool minor = report.get_severity() < sc_core::SC_ERROR;
+        if (!(g_quiet && minor))
+            std::fprintf(stderr, "%s\n", sc_core::sc_report_compose_message(report).c_str());
+    }
+    // Everything but the display (throwing, stopping, aborting) stays SystemC's own.
+    sc_core::sc_report_handler::default_handler(report, actions & ~sc_core::SC_DISPLAY);
+}
+
+}  // namespace
+
+void route_systemc_messages(bool quiet)
+{
+    g_quiet = quiet;
+    sc_core::sc_report_handler::set_handler(to_stderr);
+}
+
+}  // namespace torusrt

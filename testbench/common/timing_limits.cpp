@@ -1,0 +1,30 @@
+// timing_limits.cpp - bounds on the timing table.
+#include "timing_limits.h"
+
+#include <cstdio>
+
+namespace torusrt {
+
+std::string timing_limit_problem(const rt_timing &t)
+{
+    char buf[200];
+    for (size_t i = 0; i < rt_timing_key_count(); i++) {
+        double v = rt_timing_get(&t, i);
+        if (v > kMaxTimingUs) {
+            std::snprintf(buf, sizeof buf, "'%s' is %g; every timing value must be at most %g", rt_timing_key_name(i),
+                          v, kMaxTimingUs);
+            return buf;
+        }
+    }
+    // Rates and widths divide: bound the times they produce.
+    double link = rt_timing_link_packet_us(&t), bus = rt_timing_bus_transfer_us(&t, 65536);
+    if (link > kMaxTimingUs || bus > kMaxTimingUs) {
+        std::snprintf(buf, sizeof buf, "a %s transfer takes %g us; it must take at most %g us",
+                      link > kMaxTimingUs ? "packet's link" : "64 KiB bus", link > kMaxTimingUs ? link : bus,
+                      kMaxTimingUs);
+        return buf;
+    }
+    return "";
+}
+
+}  // namespace torusrt

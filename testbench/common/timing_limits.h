@@ -1,0 +1,18 @@
+// timing_limits.h - the largest timing values a run accepts, so that no single delay and no
+// image time can overflow (SystemC's time is a 64-bit count of picoseconds, about 1.8e7 s).
+#pragma once
+
+#include <string>
+
+#include "rt_timing.h"
+
+namespace torusrt {
+
+// The most any one operation, link transfer or bus transfer may take, in microseconds (1 s).
+constexpr double kMaxTimingUs = 1e6;
+
+// "" if every value of `timing` is within the limits, else a message naming the first key
+// that is not (the packet size is bounded by kMaxTimingUs bytes too).
+std::string timing_limit_problem(const rt_timing &timing);
+
+}  // namespace torusrt
