@@ -28,6 +28,7 @@ struct SimConfig {
     Topology topology = Topology::torus;    // rings in every dimension, or a mesh
     unsigned queue_capacity = 0;            // packets per queue, 0 = unbounded
     rt_timing timing{};                     // operation and transfer times
+    std::string timing_profile;             // which profile (and file) the timing came from
     rt_step_params step{};                  // shade-tree limits
     TimingStyle style = TimingStyle::at;    // approximately- or loosely-timed
     double quantum_us = 0;                  // loosely-timed global quantum

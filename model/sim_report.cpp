@@ -129,6 +129,7 @@ nlohmann::json build_report(const SimConfig &config, TorusSystem &top, const Pac
           {"dispatch", dispatch_name(config.dispatch)},
           {"max_depth", config.step.max_depth},
           {"min_weight", config.step.min_weight},
+          {"timing_profile", config.timing_profile},
           {"timing", timing_json(config.timing)}}},
         {"sim_time_s", T},
         {"t1_s", facts.t1_s},
@@ -178,6 +179,9 @@ void print_summary(const nlohmann::json &r, std::FILE *out)
                  r["t1_s"].get<double>(), r["t1_source"].get<std::string>().c_str());
     std::fprintf(out, "  efficiency   %.1f %% (T(1)/(n T(n)))   %.1f %% (busy/(n T(n)))   n = %d\n",
                  100 * r["efficiency_t1"].get<double>(), 100 * r["efficiency_busy"].get<double>(), r["ips"].get<int>());
+    std::fprintf(out, "  timing       profile %s (hand-over send %g us, receive %g us)\n",
+                 c["timing_profile"].get<std::string>().c_str(), c["timing"]["handover_send"].get<double>(),
+                 c["timing"]["handover_receive"].get<double>());
     const auto &b = r["load"]["busy_s"];
     std::fprintf(out, "  load/IP      busy min %.4f  mean %.4f  max %.4f s\n", b["min"].get<double>(),
                  b["mean"].get<double>(), b["max"].get<double>());

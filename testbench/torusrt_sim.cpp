@@ -13,6 +13,7 @@
 #include "output_files.h"
 #include "scene_setup.h"
 #include "sim_config.h"
+#include "timing_choice.h"
 #include "user_error.h"
 
 using namespace torusrt;
@@ -25,6 +26,8 @@ struct CommandLine {
     std::string dispatch = "round-robin", trace_ips, link_us, packet_bytes, link_bytes_per_us, t1;
     long long queue = 0;
     int max_depth = 8;
+    // Timing profiles and mappings (their own block).
+    std::string timing_profile;
 };
 
 double seconds_now()
@@ -82,10 +85,8 @@ SimConfig make_config(const std::string &scene, const CommandLine &cl, bool quie
     c.topology = parse_choice("--topology", cl.topology, "torus", Topology::torus, "mesh", Topology::mesh);
     if (cl.queue < 0 || cl.queue > 100000000) throw UserError("--queue: must be 0 (unbounded) to 100000000", 2);
     c.queue_capacity = static_cast<unsigned>(cl.queue);
-    rt_timing_defaults(&c.timing);
+    c.timing_profile = choose_timing(cl.timing_profile, cl.timing_file, &c.timing);
     char msg[RT_MSG_LEN] = "";
-    if (!cl.timing_file.empty() && rt_timing_load(cl.timing_file.c_str(), &c.timing, msg, sizeof msg) != RT_OK)
-        throw UserError(msg);
     auto set = [&](const char *key, const std::string &opt, const std::string &text) {
         if (text.empty()) return;
         double v = parse_non_negative(opt, text);
@@ -152,6 +153,10 @@ int sc_main(int argc, char **argv)
     app.add_option("--dispatch", cl.dispatch, "cluster packet dispatch: round-robin (default) or shortest-queue");
     app.add_option("--t1", cl.t1, "T(1) in seconds for efficiency_t1 (default: run the model with one processor)");
     app.add_flag("-q,--quiet", quiet, "print nothing but errors; no progress");
+    // Timing profiles and mappings.
+    app.add_option("--timing-profile", cl.timing_profile,
+                   std::string("timing profile: calibrated or literal (default ") + rt_timing_default_profile() +
+                       "); --timing FILE overrides single keys on top");
     return run_cli("torusrt-sim", app, argc, argv, [&]() -> int {
         SimConfig config = make_config(scene, cl, quiet);
         config.cluster = cluster;

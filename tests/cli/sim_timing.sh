@@ -8,10 +8,10 @@ for scene in paper-image2 scale-1 facing-mirrors tir light-inside; do
   [ -f "$f" ] || { fail "missing scene $f"; continue; }
   size=(--size 40x40)
   "$BUILD/torusrt-render" "$f" -o "$TMP/r.png" --stats "$TMP/r.json" -q "${size[@]}" || { fail "$scene render"; continue; }
-  "$BUILD/torusrt-sim" "$f" -o "$TMP/s.png" --stats "$TMP/s.json" -q "${size[@]}" --ips 1 || { fail "$scene sim"; continue; }
+  "$BUILD/torusrt-sim" "$f" -o "$TMP/s.png" --stats "$TMP/s.json" -q "${size[@]}" --ips 1 --timing-profile literal || { fail "$scene sim"; continue; }
   expected=$(jq '.ops | .tests_missed*1300 + .tests_hit*1750 + .dda_steps*340 + .shadings*4600
                  + .reflection_vectors*680 + .refraction_vectors*1100 + .packets_analysed*580
-                 + .packets_created*1600' "$TMP/r.json")
+                 + .packets_created*1600 + .handovers_sent*1600 + .handovers_received*580' "$TMP/r.json")
   got=$(jq '.sim_time_s * 1e6' "$TMP/s.json")
   check "$scene: one-IP time $got us equals sum of ops x table $expected us" \
     awk -v a="$got" -v b="$expected" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(d <= 1e-6 * b + 1e-6) }'
