@@ -39,10 +39,13 @@ ModelOutcome run_model(const SimConfig &config, const rt_scene *scene, const rt_
 {
     int dims[3];
     rt_grid_dims(grid, dims);
-    std::vector<int32_t> owner(rt_grid_cell_count(grid));
-    char msg[RT_MSG_LEN] = "";
-    if (rt_mapping_fill(dims, config.ips.data(), config.mapping, config.block, owner.data(), msg, sizeof msg) != RT_OK)
-        throw UserError(std::string("--map: ") + msg, 2);
+    std::vector<int32_t> owner = config.owner_table;
+    if (owner.empty()) {
+        owner.resize(rt_grid_cell_count(grid));
+        char msg[RT_MSG_LEN] = "";
+        if (rt_mapping_fill(dims, config.ips.data(), config.mapping, config.block, owner.data(), msg, sizeof msg) != RT_OK)
+            throw UserError(std::string("--map: ") + msg, 2);
+    }
     const rt_camera *cam = rt_scene_camera(scene);
     FramebufferPtr fb(rt_framebuffer_new(cam->width, cam->height));
     if (!fb) throw UserError("out of memory for the frame buffer");
@@ -93,6 +96,8 @@ double one_processor_time(const SimConfig &config, const rt_scene *scene, const 
     SimConfig one = config;
     one.ips = {1, 1, 1};
     one.cluster = 1;
+    one.mapping = RT_MAP_BLOCK; // one node owns every cell, whatever the mapping
+    one.owner_table.clear();
     one.vcd_path.clear();
     one.trace_ips.clear();
     one.quiet = true;

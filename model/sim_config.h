@@ -39,6 +39,11 @@ struct SimConfig {
     std::string vcd_path;                   // VCD trace file ("" = no tracing)
     std::vector<int> trace_ips;             // nodes to trace (empty = all)
     double t1_s = -1;                       // T(1) passed in (< 0: compute)
+    // Mapping inputs and the table a run uses (filled by prepare_mapping before the run).
+    std::string map_file;                   // --map-file: explicit cell -> node table
+    std::string write_map;                  // --write-map: where to write the table used
+    std::array<unsigned, 2> pilot_size{0, 0}; // --pilot-size for --map cost (0 = the image's)
+    std::vector<int32_t> owner_table;       // node of every cell (empty: rt_mapping_fill)
     bool quiet = false;
 
     int node_count() const { return ips[0] * ips[1] * ips[2]; }

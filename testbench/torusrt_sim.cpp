@@ -14,6 +14,7 @@
 #include "scene_setup.h"
 #include "sim_config.h"
 #include "timing_choice.h"
+#include "mapping_setup.h"
 #include "user_error.h"
 
 using namespace torusrt;
@@ -39,12 +40,13 @@ rt_map_kind parse_mapping(const std::string &text, int &block)
 {
     if (text == "block") return RT_MAP_BLOCK;
     if (text == "cyclic") return RT_MAP_CYCLIC;
+    if (text == "cost") return RT_MAP_COST;
     const std::string prefix = "block-cyclic:";
     if (text.compare(0, prefix.size(), prefix) == 0) {
         block = parse_dims_1_to_3("--map block-cyclic:B", text.substr(prefix.size()), 1, 1 << 20)[0];
         return RT_MAP_BLOCK_CYCLIC;
     }
-    throw UserError("--map '" + text + "': expected block, cyclic or block-cyclic:B", 2);
+    throw UserError("--map '" + text + "': expected block, cyclic, block-cyclic:B or cost", 2);
 }
 
 template <typename E>
@@ -122,6 +124,7 @@ int sc_main(int argc, char **argv)
     sc_core::sc_report_handler::set_actions(sc_core::SC_ERROR, sc_core::SC_DISPLAY | sc_core::SC_THROW);
 
     CommandLine cl;
+    MappingOptions mapping_options;
     std::string scene, vcd;
     int cluster = 1;
     bool quiet = false;
@@ -157,16 +160,23 @@ int sc_main(int argc, char **argv)
     app.add_option("--timing-profile", cl.timing_profile,
                    std::string("timing profile: calibrated or literal (default ") + rt_timing_default_profile() +
                        "); --timing FILE overrides single keys on top");
+    app.add_option("--map-file", mapping_options.map_file, "explicit cell -> node table (torusrt-map 1 format)");
+    app.add_option("--write-map", mapping_options.write_map, "write the cell -> node table this run used");
+    app.add_option("--pilot-size", mapping_options.pilot_size, "image size WxH of the --map cost pilot run");
     return run_cli("torusrt-sim", app, argc, argv, [&]() -> int {
         SimConfig config = make_config(scene, cl, quiet);
         config.cluster = cluster;
         config.vcd_path = vcd;
+        mapping_options.map_given = app.count("--map") > 0;
+        apply_mapping_options(config, mapping_options);
         validate(config);
         check_output_folder("-o", cl.output);
         if (!cl.stats.empty()) check_output_folder("--stats", cl.stats);
         if (!vcd.empty()) check_output_folder("--vcd", vcd);
+        if (!config.write_map.empty()) check_output_folder("--write-map", config.write_map);
 
         LoadedScene loaded = load_scene(scene, config.width, config.height, config.cells, quiet);
+        nlohmann::json mapping_facts = prepare_mapping(config, loaded.scene.get(), loaded.grid.get());
         double t1 = config.t1_s;
         std::string t1_source = "passed with --t1";
         if (t1 < 0 && config.processor_count() > 1) {
@@ -182,15 +192,16 @@ int sc_main(int argc, char **argv)
             return 3;
         }
         const rt_camera *cam = rt_scene_camera(loaded.scene.get());
+        out.report["mapping"] = mapping_facts;
         write_png_file(cl.output, cam->width, cam->height, out.rgb8);
-        if (!cl.stats.empty()) {
-            try {
-                write_text_file(cl.stats, out.report.dump(2) + "\n");
-            } catch (...) {
-                remove_file(cl.output);
-                if (!vcd.empty()) remove_file(vcd);
-                throw;
-            }
+        try {
+            write_mapping(config, loaded.grid.get());
+            if (!cl.stats.empty()) write_text_file(cl.stats, out.report.dump(2) + "\n");
+        } catch (...) {
+            remove_file(cl.output);
+            if (!config.write_map.empty()) remove_file(config.write_map);
+            if (!vcd.empty()) remove_file(vcd);
+            throw;
         }
         if (!quiet) print_summary_stdout(out.report);
         return 0;

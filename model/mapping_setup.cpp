@@ -1,0 +1,75 @@
+// mapping_setup.cpp - one place that turns the mapping options into the owner table.
+#include "mapping_setup.h"
+
+#include <algorithm>
+#include <vector>
+
+#include "cost_mapping.h"
+#include "option_parsing.h"
+#include "rt_map_file.h"
+#include "rt_mapping.h"
+#include "user_error.h"
+
+namespace torusrt {
+
+void apply_mapping_options(SimConfig &config, const MappingOptions &o)
+{
+    if (!o.map_file.empty()) {
+        if (o.map_given) throw UserError("--map-file: give either --map or --map-file, not both", 2);
+        config.mapping = RT_MAP_FILE;
+        config.map_file = o.map_file;
+    }
+    config.write_map = o.write_map;
+    if (!o.pilot_size.empty()) {
+        if (config.mapping != RT_MAP_COST) throw UserError("--pilot-size: only with --map cost", 2);
+        config.pilot_size = parse_size("--pilot-size", o.pilot_size);
+    }
+}
+
+namespace {
+
+nlohmann::json cells_per_node(const std::vector<int32_t> &owner, int nodes)
+{
+    std::vector<long> count(nodes, 0);
+    for (int32_t o : owner) count[o]++;
+    auto mm = std::minmax_element(count.begin(), count.end());
+    return {{"min", *mm.first}, {"max", *mm.second}};
+}
+
+}  // namespace
+
+nlohmann::json prepare_mapping(SimConfig &config, const rt_scene *scene, const rt_grid *grid)
+{
+    int dims[3];
+    rt_grid_dims(grid, dims);
+    int nodes = config.node_count();
+    std::vector<int32_t> owner(rt_grid_cell_count(grid));
+    char msg[RT_MSG_LEN] = "";
+    nlohmann::json j = {{"kind", mapping_name(config.mapping)}};
+    if (config.mapping == RT_MAP_FILE) {
+        if (rt_map_file_read(config.map_file.c_str(), dims, nodes, owner.data(), msg, sizeof msg) != RT_OK)
+            throw UserError(std::string("--map-file: ") + msg, 2);
+        j["file"] = config.map_file;
+    } else if (config.mapping == RT_MAP_COST) {
+        j.update(cost_mapping(config, scene, grid, owner));
+    } else if (rt_mapping_fill(dims, config.ips.data(), config.mapping, config.block, owner.data(), msg,
+                               sizeof msg) != RT_OK) {
+        throw UserError(std::string("--map: ") + msg, 2);
+    }
+    j["cells_per_node"] = cells_per_node(owner, nodes);
+    config.owner_table = std::move(owner);
+    return j;
+}
+
+void write_mapping(const SimConfig &config, const rt_grid *grid)
+{
+    if (config.write_map.empty()) return;
+    int dims[3];
+    rt_grid_dims(grid, dims);
+    char msg[RT_MSG_LEN] = "";
+    if (rt_map_file_write(config.write_map.c_str(), dims, config.node_count(), config.owner_table.data(), msg,
+                          sizeof msg) != RT_OK)
+        throw UserError(std::string("--write-map: ") + msg);
+}
+
+}  // namespace torusrt
