@@ -38,7 +38,7 @@ nlohmann::json cells_per_node(const std::vector<int32_t> &owner, int nodes)
 
 }  // namespace
 
-nlohmann::json prepare_mapping(SimConfig &config, const rt_scene *scene, const rt_grid *grid)
+nlohmann::json prepare_mapping(SimConfig &config, rt_scene *scene, const rt_grid *grid)
 {
     int dims[3];
     rt_grid_dims(grid, dims);

@@ -23,7 +23,7 @@ void apply_mapping_options(SimConfig &config, const MappingOptions &options);
 // Fills config.owner_table for the loaded scene and returns what the report says about it
 // (JSON `mapping`: kind, cells per node, pilot and mapper costs for `cost`).
 // Throws UserError naming the file and line (exit 2) for a bad --map-file.
-nlohmann::json prepare_mapping(SimConfig &config, const rt_scene *scene, const rt_grid *grid);
+nlohmann::json prepare_mapping(SimConfig &config, rt_scene *scene, const rt_grid *grid);
 
 // Writes config.owner_table to config.write_map if asked (UserError on failure).
 void write_mapping(const SimConfig &config, const rt_grid *grid);

@@ -205,6 +205,11 @@ void print_summary(const nlohmann::json &r, std::FILE *out)
     std::fprintf(out, "  preprocess   %llu units serial, %llu units on %d processors\n",
                  r["preprocess"]["units_serial"].get<unsigned long long>(),
                  r["preprocess"]["units_parallel"].get<unsigned long long>(), r["ips"].get<int>());
+    if (r.contains("mapping") && r["mapping"].contains("pilot_wall_s")) {
+        const auto &m = r["mapping"];
+        std::fprintf(out, "  mapping      cost: pilot %.3f s modelled (%.3f s wall), Scotch %.3f s wall; not in the image time\n",
+                     m["pilot_modelled_s"].get<double>(), m["pilot_wall_s"].get<double>(), m["mapper_wall_s"].get<double>());
+    }
     std::fprintf(out, "  wall         %.3f s (%.3f s simulating), %.0f events/s, %.0f packet hops/s\n",
                  r["wall_s"].get<double>(), r["sim_wall_s"].get<double>(), r["events_per_s"].get<double>(),
                  r["packet_hops_per_s"].get<double>());
