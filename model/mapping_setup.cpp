@@ -6,6 +6,8 @@
 
 #include "cost_mapping.h"
 #include "option_parsing.h"
+#include "rt_cost_map.h"
+#include "rt_load_image.h"
 #include "rt_map_file.h"
 #include "rt_mapping.h"
 #include "user_error.h"
@@ -70,6 +72,19 @@ void write_mapping(const SimConfig &config, const rt_grid *grid)
     if (rt_map_file_write(config.write_map.c_str(), dims, config.node_count(), config.owner_table.data(), msg,
                           sizeof msg) != RT_OK)
         throw UserError(std::string("--write-map: ") + msg);
+}
+
+void write_load_map(const SimConfig &config, rt_scene *scene, const rt_grid *grid, const std::string &path)
+{
+    if (path.empty()) return;
+    rt_cost_pilot pilot;
+    char msg[RT_MSG_LEN] = "";
+    if (rt_cost_pilot_run(scene, grid, &config.step, &config.timing, &pilot, msg, sizeof msg) != RT_OK)
+        throw UserError(std::string("--load-map: pilot run: ") + msg);
+    rt_status st = rt_load_map_write(path.c_str(), pilot.dims, pilot.work_us, config.owner_table.data(),
+                                     config.node_count(), msg, sizeof msg);
+    rt_cost_pilot_release(&pilot);
+    if (st != RT_OK) throw UserError(std::string("--load-map: ") + msg);
 }
 
 }  // namespace torusrt

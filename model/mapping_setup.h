@@ -13,7 +13,7 @@ namespace torusrt {
 
 // The mapping options as typed (their own block on the command line).
 struct MappingOptions {
-    std::string map_file, write_map, pilot_size;
+    std::string map_file, write_map, pilot_size, load_map;
     bool map_given = false; // --map was on the command line
 };
 
@@ -27,5 +27,9 @@ nlohmann::json prepare_mapping(SimConfig &config, rt_scene *scene, const rt_grid
 
 // Writes config.owner_table to config.write_map if asked (UserError on failure).
 void write_mapping(const SimConfig &config, const rt_grid *grid);
+
+// --load-map: a pilot run's per-cell work beside config.owner_table, as a PNG
+// (UserError on failure). Does nothing for an empty path.
+void write_load_map(const SimConfig &config, rt_scene *scene, const rt_grid *grid, const std::string &path);
 
 }  // namespace torusrt

@@ -16,6 +16,7 @@
 #include "scene_setup.h"
 #include "stats_json.h"
 #include "timing_choice.h"
+#include "cost_image.h"
 #include "user_error.h"
 
 using namespace torusrt;
@@ -23,7 +24,7 @@ using namespace torusrt;
 namespace {
 
 struct RenderOptions {
-    std::string scene_path, output_path, stats_path, timing_path, timing_profile;
+    std::string scene_path, output_path, stats_path, timing_path, timing_profile, cost_image;
     std::string cells = "24", size, min_weight = "1/512";
     int max_depth = 8;
     bool brute_force = false, quiet = false;
@@ -44,6 +45,7 @@ int run(const RenderOptions &opt)
         throw UserError("--max-depth " + std::to_string(opt.max_depth) + ": must be 0 to 1000", 2);
     double min_weight = parse_fraction("--min-weight", opt.min_weight);
     check_output_folder("-o", opt.output_path);
+    if (!opt.cost_image.empty()) check_output_folder("--cost-image", opt.cost_image);
     if (!opt.stats_path.empty()) check_output_folder("--stats", opt.stats_path);
 
     rt_timing timing;
@@ -62,6 +64,8 @@ int run(const RenderOptions &opt)
     Progress progress("torusrt-render", opt.quiet);
     ro.progress = on_progress;
     ro.progress_ctx = &progress;
+    CostImage cost(opt.cost_image, cam->width, cam->height, &timing);
+    cost.attach(&ro);
     rt_render_stats st;
     if (rt_render(loaded.scene.get(), loaded.grid.get(), &ro, fb.get(), &st, msg, sizeof msg) != RT_OK)
         throw UserError(opt.scene_path + ": " + msg);
@@ -90,18 +94,19 @@ int run(const RenderOptions &opt)
               {"preprocess", preprocess_json(loaded.grid.get(), 0)},
               {"t1_s", t1_s},
               {"timing_profile", profile},
+              {"cost_image", cost.json()},
               {"packet_bytes_in_memory", sizeof(rt_packet)},
               {"wall_s", wall},
               {"rays_per_s", wall > 0 ? rays / wall : 0.0}};
     }
     write_png_file(opt.output_path, cam->width, cam->height, rgb);
-    if (!opt.stats_path.empty()) {
-        try {
-            write_text_file(opt.stats_path, js.dump(2) + "\n");
-        } catch (...) {
-            remove_file(opt.output_path);
-            throw;
-        }
+    try {
+        cost.write();
+        if (!opt.stats_path.empty()) write_text_file(opt.stats_path, js.dump(2) + "\n");
+    } catch (...) {
+        remove_file(opt.output_path);
+        if (!opt.cost_image.empty()) remove_file(opt.cost_image);
+        throw;
     }
     if (!opt.quiet)
         std::printf("%s: %ux%u, %zu objects, %llu packets, T(1) %.3f s (%s timing), wall %.3f s\n",
@@ -130,5 +135,6 @@ int main(int argc, char **argv)
     // Timing profiles and load pictures.
     app.add_option("--timing-profile", opt.timing_profile,
                    std::string("timing profile: calibrated or literal (default ") + rt_timing_default_profile() + ")");
+    app.add_option("--cost-image", opt.cost_image, "write each pixel's modelled microseconds as a heat-map PNG");
     return run_cli("torusrt-render", app, argc, argv, [&] { return run(opt); });
 }

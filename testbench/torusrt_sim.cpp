@@ -163,6 +163,7 @@ int sc_main(int argc, char **argv)
     app.add_option("--map-file", mapping_options.map_file, "explicit cell -> node table (torusrt-map 1 format)");
     app.add_option("--write-map", mapping_options.write_map, "write the cell -> node table this run used");
     app.add_option("--pilot-size", mapping_options.pilot_size, "image size WxH of the --map cost pilot run");
+    app.add_option("--load-map", mapping_options.load_map, "write the cells' work and owners as a PNG");
     return run_cli("torusrt-sim", app, argc, argv, [&]() -> int {
         SimConfig config = make_config(scene, cl, quiet);
         config.cluster = cluster;
@@ -174,6 +175,7 @@ int sc_main(int argc, char **argv)
         if (!cl.stats.empty()) check_output_folder("--stats", cl.stats);
         if (!vcd.empty()) check_output_folder("--vcd", vcd);
         if (!config.write_map.empty()) check_output_folder("--write-map", config.write_map);
+        if (!mapping_options.load_map.empty()) check_output_folder("--load-map", mapping_options.load_map);
 
         LoadedScene loaded = load_scene(scene, config.width, config.height, config.cells, quiet);
         nlohmann::json mapping_facts = prepare_mapping(config, loaded.scene.get(), loaded.grid.get());
@@ -196,10 +198,12 @@ int sc_main(int argc, char **argv)
         write_png_file(cl.output, cam->width, cam->height, out.rgb8);
         try {
             write_mapping(config, loaded.grid.get());
+            write_load_map(config, loaded.scene.get(), loaded.grid.get(), mapping_options.load_map);
             if (!cl.stats.empty()) write_text_file(cl.stats, out.report.dump(2) + "\n");
         } catch (...) {
             remove_file(cl.output);
             if (!config.write_map.empty()) remove_file(config.write_map);
+            if (!mapping_options.load_map.empty()) remove_file(mapping_options.load_map);
             if (!vcd.empty()) remove_file(vcd);
             throw;
         }
