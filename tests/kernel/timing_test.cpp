@@ -63,6 +63,8 @@ TEST(Timing, Defaults)
     EXPECT_EQ(t.bus_cycle_us, 0.5);
     EXPECT_EQ(t.bus_arbitration_us, 0.25);
     EXPECT_EQ(t.memory_access_us, 0.5);
+    EXPECT_EQ(t.handover_send_us, 0) << "the calibrated profile";
+    EXPECT_EQ(t.handover_receive_us, 0);
 }
 
 TEST(Timing, KeysNameEveryField)
@@ -215,7 +217,11 @@ TEST(Timing, ProfilesDifferOnlyInTheHandOver)
         std::string k = rt_timing_key_name(i);
         if (k.rfind("handover_", 0) == 0) continue;
         EXPECT_EQ(rt_timing_get(&lit, i), rt_timing_get(&cal, i)) << k;
+        EXPECT_EQ(rt_timing_get(&def, i), rt_timing_get(&cal, i)) << k;
     }
+    EXPECT_EQ(def.handover_send_us, cal.handover_send_us) << "the default is the calibrated profile";
+    EXPECT_EQ(def.handover_receive_us, cal.handover_receive_us);
+    EXPECT_STREQ(rt_timing_default_profile(), "calibrated");
     EXPECT_EQ(rt_timing_profile("nonesuch", &lit, msg, sizeof msg), RT_ERR_INVALID);
     EXPECT_NE(std::string(msg).find("nonesuch"), std::string::npos) << msg;
 }
