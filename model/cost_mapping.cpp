@@ -1,6 +1,7 @@
 // cost_mapping.cpp - the pilot and the Scotch mapping behind --map cost.
 #include "cost_mapping.h"
 
+#include <algorithm>
 #include <chrono>
 
 #include "rt_cost_map.h"
@@ -45,7 +46,8 @@ nlohmann::json cost_mapping(const SimConfig &config, rt_scene *scene, const rt_g
     rt_status st = rt_cost_map(&pilot, config.ips.data(), config.topology == Topology::torus, edge_us, owner.data(),
                                &facts, msg, sizeof msg);
     double t2 = seconds_now();
-    double pilot_us = pilot.total_us;
+    double pilot_us = pilot.total_us, max_cell_us = 0;
+    for (size_t c = 0; c < pilot.cells; c++) max_cell_us = std::max(max_cell_us, pilot.work_us[c]);
     uint64_t faces = pilot.ops.handovers_sent;
     rt_cost_pilot_release(&pilot);
     if (st != RT_OK) throw UserError(std::string("--map cost: ") + msg);
@@ -55,6 +57,7 @@ nlohmann::json cost_mapping(const SimConfig &config, rt_scene *scene, const rt_g
     return {{"pilot_size", {pw, ph}},
             {"pilot_modelled_s", pilot_us * 1e-6},
             {"pilot_face_crossings", faces},
+            {"pilot_max_cell_work_s", max_cell_us * 1e-6},
             {"pilot_wall_s", t1 - t0},
             {"mapper", "scotch"},
             {"mapper_wall_s", t2 - t1},

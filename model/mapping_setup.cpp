@@ -6,6 +6,7 @@
 
 #include "cost_mapping.h"
 #include "option_parsing.h"
+#include "output_files.h"
 #include "rt_cost_map.h"
 #include "rt_load_image.h"
 #include "rt_map_file.h"
@@ -14,14 +15,27 @@
 
 namespace torusrt {
 
-void apply_mapping_options(SimConfig &config, const MappingOptions &o)
+void add_mapping_options(CLI::App &app, std::string &timing_profile, MappingOptions &o)
+{
+    app.add_option("--timing-profile", timing_profile,
+                   std::string("timing profile: calibrated or literal (default ") + rt_timing_default_profile() +
+                       "); --timing FILE overrides single keys on top");
+    app.add_option("--map-file", o.map_file, "explicit cell -> node table (torusrt-map 1 format)");
+    app.add_option("--write-map", o.write_map, "write the cell -> node table this run used");
+    app.add_option("--pilot-size", o.pilot_size, "image size WxH of the --map cost pilot run");
+    app.add_option("--load-map", o.load_map, "write the cells' work and owners as a PNG");
+}
+
+void apply_mapping_options(SimConfig &config, const MappingOptions &o, bool map_given)
 {
     if (!o.map_file.empty()) {
-        if (o.map_given) throw UserError("--map-file: give either --map or --map-file, not both", 2);
+        if (map_given) throw UserError("--map-file: give either --map or --map-file, not both", 2);
         config.mapping = RT_MAP_FILE;
         config.map_file = o.map_file;
     }
     config.write_map = o.write_map;
+    if (!o.write_map.empty()) check_output_folder("--write-map", o.write_map);
+    if (!o.load_map.empty()) check_output_folder("--load-map", o.load_map);
     if (!o.pilot_size.empty()) {
         if (config.mapping != RT_MAP_COST) throw UserError("--pilot-size: only with --map cost", 2);
         config.pilot_size = parse_size("--pilot-size", o.pilot_size);
@@ -63,6 +77,8 @@ nlohmann::json prepare_mapping(SimConfig &config, rt_scene *scene, const rt_grid
     return j;
 }
 
+namespace {
+
 void write_mapping(const SimConfig &config, const rt_grid *grid)
 {
     if (config.write_map.empty()) return;
@@ -85,6 +101,20 @@ void write_load_map(const SimConfig &config, rt_scene *scene, const rt_grid *gri
                                      config.node_count(), msg, sizeof msg);
     rt_cost_pilot_release(&pilot);
     if (st != RT_OK) throw UserError(std::string("--load-map: ") + msg);
+}
+
+}  // namespace
+
+void write_mapping_outputs(const SimConfig &config, rt_scene *scene, const rt_grid *grid, const MappingOptions &o)
+{
+    write_mapping(config, grid);
+    write_load_map(config, scene, grid, o.load_map);
+}
+
+void remove_mapping_outputs(const MappingOptions &o)
+{
+    if (!o.write_map.empty()) remove_file(o.write_map);
+    if (!o.load_map.empty()) remove_file(o.load_map);
 }
 
 }  // namespace torusrt

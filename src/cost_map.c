@@ -126,7 +126,7 @@ static rt_status map_onto(SCOTCH_Graph *graph, const int nodes[3], int torus, SC
     if (r != 0) st = scotch_fail(msg, msg_len, torus ? "SCOTCH_archTorus3" : "SCOTCH_archMesh3");
     SCOTCH_stratInit(&strat);
     SCOTCH_Num parts = (SCOTCH_Num)nodes[0] * nodes[1] * nodes[2];
-    if (st == RT_OK && SCOTCH_stratGraphMapBuild(&strat, SCOTCH_STRATQUALITY, parts, 0.03) != 0)
+    if (st == RT_OK && SCOTCH_stratGraphMapBuild(&strat, SCOTCH_STRATQUALITY | SCOTCH_STRATBALANCE, parts, 0.03) != 0)
         st = scotch_fail(msg, msg_len, "SCOTCH_stratGraphMapBuild");
     if (st == RT_OK && SCOTCH_graphMap(graph, &arch, &strat, parttab) != 0)
         st = scotch_fail(msg, msg_len, "SCOTCH_graphMap");

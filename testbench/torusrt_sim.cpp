@@ -156,27 +156,16 @@ int sc_main(int argc, char **argv)
     app.add_option("--dispatch", cl.dispatch, "cluster packet dispatch: round-robin (default) or shortest-queue");
     app.add_option("--t1", cl.t1, "T(1) in seconds for efficiency_t1 (default: run the model with one processor)");
     app.add_flag("-q,--quiet", quiet, "print nothing but errors; no progress");
-    // Timing profiles and mappings.
-    app.add_option("--timing-profile", cl.timing_profile,
-                   std::string("timing profile: calibrated or literal (default ") + rt_timing_default_profile() +
-                       "); --timing FILE overrides single keys on top");
-    app.add_option("--map-file", mapping_options.map_file, "explicit cell -> node table (torusrt-map 1 format)");
-    app.add_option("--write-map", mapping_options.write_map, "write the cell -> node table this run used");
-    app.add_option("--pilot-size", mapping_options.pilot_size, "image size WxH of the --map cost pilot run");
-    app.add_option("--load-map", mapping_options.load_map, "write the cells' work and owners as a PNG");
+    add_mapping_options(app, cl.timing_profile, mapping_options); // profiles and mappings
     return run_cli("torusrt-sim", app, argc, argv, [&]() -> int {
         SimConfig config = make_config(scene, cl, quiet);
         config.cluster = cluster;
         config.vcd_path = vcd;
-        mapping_options.map_given = app.count("--map") > 0;
-        apply_mapping_options(config, mapping_options);
+        apply_mapping_options(config, mapping_options, app.count("--map") > 0);
         validate(config);
         check_output_folder("-o", cl.output);
         if (!cl.stats.empty()) check_output_folder("--stats", cl.stats);
         if (!vcd.empty()) check_output_folder("--vcd", vcd);
-        if (!config.write_map.empty()) check_output_folder("--write-map", config.write_map);
-        if (!mapping_options.load_map.empty()) check_output_folder("--load-map", mapping_options.load_map);
-
         LoadedScene loaded = load_scene(scene, config.width, config.height, config.cells, quiet);
         nlohmann::json mapping_facts = prepare_mapping(config, loaded.scene.get(), loaded.grid.get());
         double t1 = config.t1_s;
@@ -197,13 +186,11 @@ int sc_main(int argc, char **argv)
         out.report["mapping"] = mapping_facts;
         write_png_file(cl.output, cam->width, cam->height, out.rgb8);
         try {
-            write_mapping(config, loaded.grid.get());
-            write_load_map(config, loaded.scene.get(), loaded.grid.get(), mapping_options.load_map);
+            write_mapping_outputs(config, loaded.scene.get(), loaded.grid.get(), mapping_options);
             if (!cl.stats.empty()) write_text_file(cl.stats, out.report.dump(2) + "\n");
         } catch (...) {
             remove_file(cl.output);
-            if (!config.write_map.empty()) remove_file(config.write_map);
-            if (!mapping_options.load_map.empty()) remove_file(mapping_options.load_map);
+            remove_mapping_outputs(mapping_options);
             if (!vcd.empty()) remove_file(vcd);
             throw;
         }
