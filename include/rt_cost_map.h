@@ -67,6 +67,13 @@ typedef struct rt_cost_map_facts {
 rt_status rt_cost_map(const rt_cost_pilot *pilot, const int nodes[3], int torus, double edge_us,
                       int32_t *owner, rt_cost_map_facts *facts, char *msg, size_t msg_len);
 
+/* The same mapped onto a machine `fold` times larger along every axis of more than one node,
+ * each of its terminals then folded onto node (x mod PX, y mod PY, z mod PZ): every node gets
+ * fold^d balanced pieces spread over the grid (work interleaved in time, as cyclic does), each
+ * piece's neighbours on neighbouring nodes. fold 1 is rt_cost_map; 1..64. */
+rt_status rt_cost_map_folded(const rt_cost_pilot *pilot, const int nodes[3], int torus, double edge_us, int fold,
+                             int32_t *owner, rt_cost_map_facts *facts, char *msg, size_t msg_len);
+
 #ifdef __cplusplus
 }
 #endif

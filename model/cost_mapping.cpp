@@ -43,8 +43,8 @@ nlohmann::json cost_mapping(const SimConfig &config, rt_scene *scene, const rt_g
     rt_cost_map_facts facts;
     char msg[RT_MSG_LEN] = "";
     double edge_us = rt_cost_edge_us(&config.timing);
-    rt_status st = rt_cost_map(&pilot, config.ips.data(), config.topology == Topology::torus, edge_us, owner.data(),
-                               &facts, msg, sizeof msg);
+    rt_status st = rt_cost_map_folded(&pilot, config.ips.data(), config.topology == Topology::torus, edge_us,
+                                      config.block, owner.data(), &facts, msg, sizeof msg);
     double t2 = seconds_now();
     double pilot_us = pilot.total_us, max_cell_us = 0;
     for (size_t c = 0; c < pilot.cells; c++) max_cell_us = std::max(max_cell_us, pilot.work_us[c]);
@@ -60,6 +60,7 @@ nlohmann::json cost_mapping(const SimConfig &config, rt_scene *scene, const rt_g
             {"pilot_max_cell_work_s", max_cell_us * 1e-6},
             {"pilot_wall_s", t1 - t0},
             {"mapper", "scotch"},
+            {"fold", config.block},
             {"mapper_wall_s", t2 - t1},
             {"edge_us_per_packet", edge_us},
             {"predicted_max_node_work_s", facts.max_node_work_us * 1e-6},

@@ -200,7 +200,21 @@ static void map_facts(const rt_cost_pilot *p, const int nodes[3], int torus, con
 rt_status rt_cost_map(const rt_cost_pilot *p, const int nodes[3], int torus, double edge_us, int32_t *owner,
                       rt_cost_map_facts *facts, char *msg, size_t msg_len)
 {
-    if (nodes[0] < 1 || nodes[1] < 1 || nodes[2] < 1 || !p->work_us || !(edge_us >= 0)) {
+    return rt_cost_map_folded(p, nodes, torus, edge_us, 1, owner, facts, msg, msg_len);
+}
+
+/* Node of a terminal of the folded (fold x nodes) machine: each coordinate modulo the nodes'. */
+static int32_t fold_node(SCOTCH_Num t, const int v[3], const int n[3])
+{
+    int x = (int)(t % v[0]), y = (int)(t / v[0] % v[1]), z = (int)(t / ((SCOTCH_Num)v[0] * v[1]));
+    return (int32_t)(x % n[0] + n[0] * (y % n[1] + n[1] * (z % n[2])));
+}
+
+rt_status rt_cost_map_folded(const rt_cost_pilot *p, const int nodes[3], int torus, double edge_us, int fold,
+                             int32_t *owner, rt_cost_map_facts *facts, char *msg, size_t msg_len)
+{
+    if (nodes[0] < 1 || nodes[1] < 1 || nodes[2] < 1 || !p->work_us || !(edge_us >= 0) || fold < 1 ||
+        fold > 64) {
         if (msg && msg_len) snprintf(msg, msg_len, "cost mapping: bad arguments");
         return RT_ERR_INVALID;
     }
@@ -217,8 +231,10 @@ rt_status rt_cost_map(const rt_cost_pilot *p, const int nodes[3], int torus, dou
         st = build_graph(p, edge_us, &g);
         if (st == RT_OK && !part) st = RT_ERR_NOMEM;
         if (st == RT_ERR_NOMEM && msg && msg_len) snprintf(msg, msg_len, "cost mapping: out of memory");
-        if (st == RT_OK) st = scotch_map(&g, nodes, torus, part, msg, msg_len);
-        for (size_t c = 0; st == RT_OK && c < p->cells; c++) owner[c] = (int32_t)part[c];
+        int v[3];
+        for (int k = 0; k < 3; k++) v[k] = nodes[k] > 1 ? nodes[k] * fold : 1;
+        if (st == RT_OK) st = scotch_map(&g, v, torus, part, msg, msg_len);
+        for (size_t c = 0; st == RT_OK && c < p->cells; c++) owner[c] = fold_node(part[c], v, nodes);
         free(part);
         graph_free(&g);
     }

@@ -41,12 +41,16 @@ rt_map_kind parse_mapping(const std::string &text, int &block)
     if (text == "block") return RT_MAP_BLOCK;
     if (text == "cyclic") return RT_MAP_CYCLIC;
     if (text == "cost") return RT_MAP_COST;
+    if (text.compare(0, 5, "cost:") == 0) {
+        block = parse_dims_1_to_3("--map cost:K", text.substr(5), 1, 64)[0];
+        return RT_MAP_COST;
+    }
     const std::string prefix = "block-cyclic:";
     if (text.compare(0, prefix.size(), prefix) == 0) {
         block = parse_dims_1_to_3("--map block-cyclic:B", text.substr(prefix.size()), 1, 1 << 20)[0];
         return RT_MAP_BLOCK_CYCLIC;
     }
-    throw UserError("--map '" + text + "': expected block, cyclic, block-cyclic:B or cost", 2);
+    throw UserError("--map '" + text + "': expected block, cyclic, block-cyclic:B, cost or cost:K", 2);
 }
 
 template <typename E>

@@ -32,6 +32,15 @@ for i in 1 2; do
 done
 check "same mapping twice" cmp -s "$TMP/d1.map" "$TMP/d2.map"
 check "same time twice" test "$(json "$TMP/d1.json" .sim_time_s)" = "$(json "$TMP/d2.json" .sim_time_s)"
+# Folded: Scotch maps onto a machine twice as large per axis, folded back onto the nodes.
+"$S" "$f" -o "$TMP/k.png" --stats "$TMP/k.json" -q --size 48x48 --ips 2x2x2 --map cost:2 --write-map "$TMP/k.map" \
+  || fail "cost:2"
+check "cost:2: reference image" cmp -s "$TMP/ref.png" "$TMP/k.png"
+check "cost:2: fold reported" test "$(json "$TMP/k.json" .mapping.fold)" = 2
+check "cost:2: every node owns cells" jq_true '.mapping.cells_per_node.min > 0' "$TMP/k.json"
+check "cost:2: a different table" bash -c "! cmp -s '$TMP/k.map' '$TMP/d1.map'"
+"$S" "$f" -o "$TMP/k0.png" -q --size 48x48 --ips 2 --map cost:0 2>/dev/null
+check "cost:0: exit 2" test $? -eq 2
 # A smaller pilot still maps every cell and renders the full image.
 "$S" "$f" -o "$TMP/p.png" --stats "$TMP/p.json" -q --size 48x48 --ips 4x2x2 --map cost --pilot-size 16x16 \
   || fail "small pilot"

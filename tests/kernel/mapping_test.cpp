@@ -309,6 +309,20 @@ TEST(CostMap, PilotWorkSumsToTheRenderersTimeAndTrafficToItsHandOvers)
         ASSERT_EQ(rt_cost_map(&pilot, nodes, torus, rt_cost_edge_us(&t), again.data(), nullptr, msg, sizeof msg), RT_OK);
         EXPECT_EQ(owner, again) << "reproducible";
     }
+    {   // Folded: fold 1 is the plain mapping; fold 2 still uses only real nodes, every one.
+        int nodes[3] = {2, 2, 1};
+        std::vector<int32_t> plain(pilot.cells), one(pilot.cells), two(pilot.cells);
+        double e = rt_cost_edge_us(&t);
+        ASSERT_EQ(rt_cost_map(&pilot, nodes, 1, e, plain.data(), nullptr, msg, sizeof msg), RT_OK) << msg;
+        ASSERT_EQ(rt_cost_map_folded(&pilot, nodes, 1, e, 1, one.data(), nullptr, msg, sizeof msg), RT_OK) << msg;
+        ASSERT_EQ(rt_cost_map_folded(&pilot, nodes, 1, e, 2, two.data(), nullptr, msg, sizeof msg), RT_OK) << msg;
+        EXPECT_EQ(plain, one);
+        std::set<int32_t> used(two.begin(), two.end());
+        EXPECT_EQ(used.size(), 4u);
+        EXPECT_GE(*used.begin(), 0);
+        EXPECT_LE(*used.rbegin(), 3);
+        EXPECT_EQ(rt_cost_map_folded(&pilot, nodes, 1, e, 0, two.data(), nullptr, msg, sizeof msg), RT_ERR_INVALID);
+    }
     int bad[3] = {0, 1, 1};
     std::vector<int32_t> owner(pilot.cells);
     EXPECT_EQ(rt_cost_map(&pilot, bad, 1, 1.0, owner.data(), nullptr, msg, sizeof msg), RT_ERR_INVALID);
