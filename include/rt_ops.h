@@ -23,9 +23,11 @@ typedef struct rt_op_counts {
     uint64_t shadings;           /* luminance computations, one per accepted ray hit */
     uint64_t reflection_vectors; /* reflection directions computed */
     uint64_t refraction_vectors; /* transmission directions computed */
-    uint64_t packets_analysed;   /* packets taken up (one per step) */
-    uint64_t packets_created;    /* packets made, including a forwarded one */
+    uint64_t packets_analysed;   /* new packets taken up: primaries and packets made at a hit */
+    uint64_t packets_created;    /* new packets made at a hit */
     uint64_t fb_writes;          /* frame-buffer contributions */
+    uint64_t handovers_sent;     /* packets handed on to the next cell's owner */
+    uint64_t handovers_received; /* packets taken up after another IP handed them over */
 } rt_op_counts;
 
 static inline void rt_ops_add(rt_op_counts *sum, const rt_op_counts *add)
@@ -39,6 +41,8 @@ static inline void rt_ops_add(rt_op_counts *sum, const rt_op_counts *add)
     sum->packets_analysed += add->packets_analysed;
     sum->packets_created += add->packets_created;
     sum->fb_writes += add->fb_writes;
+    sum->handovers_sent += add->handovers_sent;
+    sum->handovers_received += add->handovers_received;
 }
 
 #ifdef __cplusplus

@@ -39,6 +39,7 @@ typedef struct rt_packet {
     uint32_t x, y;    /* pixel, x from the left, y from the top */
     uint16_t depth;   /* shade-tree depth, 0 for primaries */
     uint8_t kind;     /* rt_packet_kind */
+    uint8_t handed_over; /* 1: handed on by another IP's step, not yet taken up */
 } rt_packet;
 
 /* The primary ray of pixel (x, y) (docs/design.md section 3 camera). Sets *enters

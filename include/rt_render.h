@@ -44,6 +44,14 @@ typedef struct rt_render_options {
     /* Memory budget for the work queue (NULL: none): the queue grows only while its
      * packets fit in what is left; past that rt_render fails with RT_ERR_LIMIT. */
     rt_budget *budget;
+    /* NULL (default): one owner for every cell. Else each step runs as the owner of the
+     * packet's cell and a handed-over packet is stepped again at once by the next owner,
+     * so the step order (and the image) stays that of one owner. */
+    const int32_t *cell_owner;
+    /* Called after every step with the cell the packet was in (NULL: not called); the
+     * load pilot and the cost image attribute each step's ops through it. */
+    void (*on_step)(void *ctx, uint32_t cell, const rt_packet *packet, const rt_step_result *result);
+    void *on_step_ctx;
 } rt_render_options;
 
 typedef struct rt_render_stats {

@@ -31,8 +31,8 @@ typedef struct rt_timing {
     double shading_us;         /* luminance computation at a hit (4600) */
     double reflection_us;      /* reflection vector (680) */
     double refraction_us;      /* transmission vector (1100) */
-    double packet_analysis_us; /* taking up a packet (580) */
-    double packet_creation_us; /* making a packet, forwarded ones included (1600) */
+    double packet_analysis_us; /* taking up a new packet: a primary or one made at a hit (580) */
+    double packet_creation_us; /* making a new packet at a hit (1600) */
     double fb_write_us;        /* one frame-buffer contribution (0) */
     double link_us;            /* one packet over a link (50); see link_bytes_per_us */
     double link_bytes_per_us;  /* > 0: link time = packet_bytes / this, overriding link_us (0) */
@@ -42,9 +42,19 @@ typedef struct rt_timing {
     double bus_cycle_us;       /* cluster bus cycle (0.5) */
     double bus_arbitration_us; /* arbitration before each bus transfer (0.25) */
     double memory_access_us;   /* 2-port memory access latency from the bus side (0.5) */
+    double handover_send_us;   /* sending IP: hand a packet on to the next cell's owner */
+    double handover_receive_us; /* receiving IP: take up a packet another IP handed over */
 } rt_timing;
 
 void rt_timing_defaults(rt_timing *timing);
+
+/* A named profile (the files in timing/): "literal" (a hand-over costs a packet
+ * creation plus an analysis) or "calibrated" (the hand-over cost the calibration
+ * study supports; the defaults). RT_ERR_INVALID naming an unknown profile. */
+rt_status rt_timing_profile(const char *name, rt_timing *timing, char *msg, size_t msg_len);
+
+/* The name of the built-in profile the defaults are. */
+const char *rt_timing_default_profile(void);
 
 /* Sets one key (name as in the file). RT_ERR_INVALID for an unknown key or a
  * negative / non-finite value (widths and packet size must be > 0). */

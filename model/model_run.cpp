@@ -53,10 +53,13 @@ ModelOutcome run_model(const SimConfig &config, const rt_scene *scene, const rt_
 {
     int dims[3];
     rt_grid_dims(grid, dims);
-    std::vector<int32_t> owner(rt_grid_cell_count(grid));
+    std::vector<int32_t> owner = config.owner_table;
     char msg[RT_MSG_LEN] = "";
-    if (rt_mapping_fill(dims, config.ips.data(), config.mapping, config.block, owner.data(), msg, sizeof msg) != RT_OK)
-        throw UserError(std::string("--map: ") + msg, 2);
+    if (owner.empty()) {
+        owner.resize(rt_grid_cell_count(grid));
+        if (rt_mapping_fill(dims, config.ips.data(), config.mapping, config.block, owner.data(), msg, sizeof msg) != RT_OK)
+            throw UserError(std::string("--map: ") + msg, 2);
+    }
     warn_idle_nodes(config, owner);
     const rt_camera *cam = rt_scene_camera(scene);
     FramebufferPtr fb(rt_framebuffer_new(cam->width, cam->height));
@@ -124,6 +127,8 @@ double one_processor_time(const SimConfig &config, const rt_scene *scene, const 
     SimConfig one = config;
     one.ips = {1, 1, 1};
     one.cluster = 1;
+    one.mapping = RT_MAP_BLOCK; // one node owns every cell, whatever the mapping
+    one.owner_table.clear();
     one.vcd_path.clear();
     one.trace_ips.clear();
     one.quiet = true;

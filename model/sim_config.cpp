@@ -38,7 +38,14 @@ void validate(const SimConfig &c)
 
 const char *mapping_name(rt_map_kind k)
 {
-    return k == RT_MAP_BLOCK ? "block" : k == RT_MAP_CYCLIC ? "cyclic" : "block-cyclic";
+    switch (k) {
+    case RT_MAP_BLOCK: return "block";
+    case RT_MAP_CYCLIC: return "cyclic";
+    case RT_MAP_BLOCK_CYCLIC: return "block-cyclic";
+    case RT_MAP_FILE: return "file";
+    case RT_MAP_COST: return "cost";
+    }
+    return "unknown";
 }
 const char *topology_name(Topology t) { return t == Topology::torus ? "torus" : "mesh"; }
 const char *style_name(TimingStyle s) { return s == TimingStyle::at ? "at" : "lt"; }

@@ -37,6 +37,7 @@ struct SimConfig {
     Topology topology = Topology::torus;    // rings in every dimension, or a mesh
     unsigned queue_capacity = 0;            // packets per queue, 0 = unbounded
     rt_timing timing{};                     // operation and transfer times
+    std::string timing_profile;             // which profile (and file) the timing came from
     rt_step_params step{};                  // shade-tree limits
     TimingStyle style = TimingStyle::at;    // approximately- or loosely-timed
     double quantum_us = 0;                  // loosely-timed global quantum
@@ -53,6 +54,11 @@ struct SimConfig {
     double t1_s = -1;                       // T(1) passed in (< 0: compute)
     rt_budget memory{};                     // what is left of --memory-budget for packets
     double time_limit_s = kMaxSimTimeS;     // stop with an error past this simulated time
+    // Mapping inputs and the table a run uses (filled by prepare_mapping before the run).
+    std::string map_file;                   // --map-file: explicit cell -> node table
+    std::string write_map;                  // --write-map: where to write the table used
+    std::array<unsigned, 2> pilot_size{0, 0}; // --pilot-size for --map cost (0 = the image's)
+    std::vector<int32_t> owner_table;       // node of every cell (empty: rt_mapping_fill)
     bool quiet = false;
 
     int node_count() const { return ips[0] * ips[1] * ips[2]; }

@@ -59,6 +59,33 @@ static rt_packet queue_pop(queue *q)
     return p;
 }
 
+/* One packet's steps: one, or with owners one per owner it passes through. */
+static rt_status step_packet(const rt_scene *scene, const rt_grid *grid, const rt_render_options *options,
+                             rt_packet *cur, rt_step_result *r, queue *q, rt_framebuffer *fb,
+                             rt_render_stats *stats)
+{
+    for (;;) {
+        uint32_t cell = options->step.brute_force ? 0 : rt_packet_cell(grid, cur);
+        int32_t me = options->cell_owner && !options->step.brute_force ? options->cell_owner[cell] : 0;
+        rt_status status = rt_step(scene, grid, options->cell_owner, me, &options->step, cur, r);
+        if (status) return status;
+        rt_ops_add(&stats->ops, &r->ops);
+        if (options->on_step) options->on_step(options->on_step_ctx, cell, cur, r);
+        for (size_t i = 0; i < r->contrib_count; i++)
+            rt_framebuffer_add(fb, r->contrib[i].x, r->contrib[i].y, r->contrib[i].rgb);
+        for (size_t i = 0; i < r->created_count; i++) {
+            stats->packets.created[r->created[i].kind]++;
+            rt_status pushed = push_status(queue_push(q, &r->created[i], options->budget));
+            if (pushed != RT_OK) return pushed;
+        }
+        if (r->fate != RT_FATE_FORWARDED) {
+            stats->packets.consumed[cur->kind]++;
+            return RT_OK;
+        }
+        stats->packets.forwarded++;
+    }
+}
+
 rt_status rt_render(const rt_scene *scene, const rt_grid *grid, const rt_render_options *options,
                     rt_framebuffer *fb, rt_render_stats *stats, char *msg, size_t msg_len)
 {
@@ -93,18 +120,7 @@ rt_status rt_render(const rt_scene *scene, const rt_grid *grid, const rt_render_
             while (q.count && status == RT_OK) {
                 if (q.count > stats->queue_high_water) stats->queue_high_water = q.count;
                 rt_packet cur = queue_pop(&q);
-                status = rt_step(scene, grid, NULL, 0, &options->step, &cur, &r);
-                if (status) break;
-                rt_ops_add(&stats->ops, &r.ops);
-                for (size_t i = 0; i < r.contrib_count; i++)
-                    rt_framebuffer_add(fb, r.contrib[i].x, r.contrib[i].y, r.contrib[i].rgb);
-                for (size_t i = 0; i < r.created_count; i++) {
-                    stats->packets.created[r.created[i].kind]++;
-                    if (status == RT_OK)
-                        status = push_status(queue_push(&q, &r.created[i], options->budget));
-                }
-                if (r.fate == RT_FATE_FORWARDED) stats->packets.forwarded++;
-                else stats->packets.consumed[cur.kind]++;
+                status = step_packet(scene, grid, options, &cur, &r, &q, fb, stats);
             }
             done++;
             if (options->progress && (done % 1024 == 0 || done == total))

@@ -241,6 +241,15 @@ static void step_brute_force(const rt_scene *scene, const rt_grid *grid, const r
     }
 }
 
+/* The next cell belongs to another owner: the packet goes on, marked as handed over. */
+static void hand_over(rt_packet *p, uint32_t cell, rt_step_result *out)
+{
+    p->handed_over = 1;
+    out->fate = RT_FATE_FORWARDED;
+    out->next_cell = cell;
+    out->ops.handovers_sent++;
+}
+
 rt_status rt_step(const rt_scene *scene, const rt_grid *grid, const int32_t *cell_owner,
                   int32_t my_id, const rt_step_params *params, rt_packet *p, rt_step_result *out)
 {
@@ -252,7 +261,10 @@ rt_status rt_step(const rt_scene *scene, const rt_grid *grid, const int32_t *cel
     memset(&out->ops, 0, sizeof out->ops);
     out->contrib_count = 0;
     out->created_count = 0;
-    out->ops.packets_analysed = 1;
+    /* A packet another IP handed over costs a hand-over receive, a new one an analysis. */
+    if (p->handed_over) out->ops.handovers_received = 1;
+    else out->ops.packets_analysed = 1;
+    p->handed_over = 0;
 
     if (params->brute_force) {
         step_brute_force(scene, grid, params, p, out);
@@ -263,9 +275,7 @@ rt_status rt_step(const rt_scene *scene, const rt_grid *grid, const int32_t *cel
 
     uint32_t cell = rt_grid_index(grid->dims, p->dda.cell);
     if (cell_owner && cell_owner[cell] != my_id) { /* not ours: pass it on untouched */
-        out->fate = RT_FATE_FORWARDED;
-        out->next_cell = cell;
-        out->ops.packets_created++;
+        hand_over(p, cell, out);
         return RT_OK;
     }
     for (;;) {
@@ -300,9 +310,7 @@ rt_status rt_step(const rt_scene *scene, const rt_grid *grid, const int32_t *cel
         }
         cell = rt_grid_index(grid->dims, p->dda.cell);
         if (cell_owner && cell_owner[cell] != my_id) {
-            out->fate = RT_FATE_FORWARDED;
-            out->next_cell = cell;
-            out->ops.packets_created++;
+            hand_over(p, cell, out);
             return RT_OK;
         }
     }

@@ -18,6 +18,8 @@
 #include "rt_timing.h"
 #include "scene_setup.h"
 #include "stats_json.h"
+#include "cost_image.h"
+#include "timing_choice.h"
 #include "timing_limits.h"
 #include "user_error.h"
 
@@ -26,7 +28,7 @@ using namespace torusrt;
 namespace {
 
 struct RenderOptions {
-    std::string scene_path, output_path, stats_path, timing_path;
+    std::string scene_path, output_path, stats_path, timing_path, timing_profile, cost_image;
     std::string cells = "24", size, min_weight = "1/512", memory_budget = "4G";
     int max_depth = 8;
     bool brute_force = false, quiet = false;
@@ -50,12 +52,14 @@ struct RenderSetup {
     std::array<int, 3> cells;
     double min_weight;
     rt_timing timing;
+    std::string profile; // the timing profile's name (or the timing file's)
     rt_budget budget; // outlives every frame: ro.budget points at it
     LoadedScene loaded;
     rt_render_options ro;
 };
 
-FrameResult render_frame(RenderSetup &setup, const std::string &label, const RenderOptions &opt)
+FrameResult render_frame(RenderSetup &setup, const std::string &label, const RenderOptions &opt,
+                         CostImage *cost = nullptr)
 {
     const rt_camera *cam = rt_scene_camera(setup.loaded.scene.get());
     FramebufferPtr fb(rt_framebuffer_new(cam->width, cam->height));
@@ -66,6 +70,7 @@ FrameResult render_frame(RenderSetup &setup, const std::string &label, const Ren
     rt_render_options ro = setup.ro;
     ro.progress = on_progress;
     ro.progress_ctx = &progress;
+    if (cost) cost->attach(&ro);
     FrameResult fr;
     char msg[RT_MSG_LEN] = "";
     if (rt_render(setup.loaded.scene.get(), setup.loaded.grid.get(), &ro, fb.get(), &fr.st, msg,
@@ -103,6 +108,7 @@ nlohmann::json stats_json(const RenderOptions &opt, const RenderSetup &setup, co
             {"queue_high_water", st.queue_high_water},
             {"preprocess", preprocess_json(setup.loaded.grid.get(), 0)},
             {"t1_s", t1_s},
+            {"timing_profile", setup.profile},
             {"packet_bytes_in_memory", sizeof(rt_packet)},
             {"wall_s", wall},
             {"rays_per_s", wall > 0 ? rays_of(st) / wall : 0.0}};
@@ -118,20 +124,26 @@ int run_single(const RenderOptions &opt, RenderSetup &setup, std::chrono::steady
     OutputSet outputs;
     std::string png_path = outputs.add("-o", opt.output_path, opt.scene_path);
     std::string stats_path = opt.stats_path.empty() ? "" : outputs.add("--stats", opt.stats_path, opt.scene_path);
-    FrameResult fr = render_frame(setup, "torusrt-render", opt);
+    std::string cost_path = opt.cost_image.empty() ? "" : outputs.add("--cost-image", opt.cost_image, opt.scene_path);
     const rt_camera *cam = rt_scene_camera(setup.loaded.scene.get());
+    CostImage cost(opt.cost_image, cam->width, cam->height, &setup.timing);
+    FrameResult fr = render_frame(setup, "torusrt-render", opt, &cost);
     double wall = seconds_since(t0);
     nlohmann::json js;
-    if (!opt.stats_path.empty()) js = stats_json(opt, setup, fr.st, fr.t1_s, wall);
+    if (!opt.stats_path.empty()) {
+        js = stats_json(opt, setup, fr.st, fr.t1_s, wall);
+        js["cost_image"] = cost.json();
+    }
     write_png_file(png_path, opt.output_path, cam->width, cam->height, fr.rgb);
+    if (!cost_path.empty()) cost.write(cost_path);
     if (!opt.stats_path.empty()) write_text_file(stats_path, opt.stats_path, js.dump(2) + "\n");
     outputs.commit();
     if (!opt.quiet)
-        std::printf("%s: %ux%u, %zu objects, %llu packets, T(1) %.3f s (paper timing), wall %.3f s\n",
+        std::printf("%s: %ux%u, %zu objects, %llu packets, T(1) %.3f s (%s timing), wall %.3f s\n",
                     opt.scene_path.c_str(), cam->width, cam->height,
                     rt_scene_object_count(setup.loaded.scene.get()),
                     static_cast<unsigned long long>(rays_of(fr.st)),
-                    fr.t1_s, wall);
+                    fr.t1_s, setup.profile.c_str(), wall);
     return 0;
 }
 
@@ -184,10 +196,10 @@ int run_frames(const RenderOptions &opt, RenderSetup &setup, std::chrono::steady
     outputs.commit();
     if (!opt.quiet)
         std::printf("%s: %zu frames of %ux%u, %zu objects, %llu packets, "
-                    "T(1) %.3f s in all (paper timing), wall %.3f s\n",
+                    "T(1) %.3f s in all (%s timing), wall %.3f s\n",
                     opt.scene_path.c_str(), n, rt_scene_camera(scene)->width, rt_scene_camera(scene)->height,
                     rt_scene_object_count(scene), static_cast<unsigned long long>(rays_of(total)),
-                    t1_total, wall);
+                    t1_total, setup.profile.c_str(), wall);
     return 0;
 }
 
@@ -204,13 +216,12 @@ int run(RenderOptions &opt)
     check_animation_options(opt.anim);
     if (opt.anim.animated()) check_frame_pattern("-o", opt.output_path);
 
-    rt_timing_defaults(&setup.timing);
-    char msg[RT_MSG_LEN] = "";
-    if (!opt.timing_path.empty() &&
-        rt_timing_load(opt.timing_path.c_str(), &setup.timing, msg, sizeof msg) != RT_OK)
-        throw UserError(msg);
+    if (opt.anim.animated() && !opt.cost_image.empty())
+        throw UserError("--cost-image: not available for an animation (one image per run)", 2);
+
+    setup.profile = choose_timing(opt.timing_profile, opt.timing_path, &setup.timing);
     std::string problem = timing_limit_problem(setup.timing);
-    if (!problem.empty()) throw UserError(opt.timing_path + ": " + problem);
+    if (!problem.empty()) throw UserError((opt.timing_path.empty() ? setup.profile : opt.timing_path) + ": " + problem);
     if (setup.min_weight > 1 && !opt.quiet)
         std::fprintf(stderr, "torusrt-render: warning: --min-weight %g is above 1: every secondary ray is dropped\n",
                      setup.min_weight);
@@ -247,6 +258,12 @@ int main(int argc, char **argv)
     app.add_option("--stats", opt.stats_path, "write statistics as JSON to this file")->type_name("FILE");
     app.add_option("--timing", opt.timing_path, "timing file overriding the paper's table (for t1_s)")->type_name("FILE");
     add_animation_options(app, opt.anim);
+    // Timing profiles and load pictures.
+    app.add_option("--timing-profile", opt.timing_profile,
+                   std::string("timing profile: calibrated or literal (default ") + rt_timing_default_profile() + ")")
+        ->type_name("NAME");
+    app.add_option("--cost-image", opt.cost_image, "write each pixel's modelled microseconds as a heat-map PNG")
+        ->type_name("FILE");
     app.add_flag("-q,--quiet", opt.quiet, "print nothing but errors; no progress");
     return run_cli("torusrt-render", app, argc, argv, [&] { return run(opt); });
 }

@@ -13,7 +13,9 @@
 #include "output_files.h"
 #include "scene_setup.h"
 #include "sim_config.h"
+#include "mapping_setup.h"
 #include "systemc_messages.h"
+#include "timing_choice.h"
 #include "timing_limits.h"
 #include "user_error.h"
 
@@ -31,6 +33,10 @@ struct CommandLine {
     bool quiet = false;
     long long queue = 0;
     int max_depth = 8;
+    // Timing profiles and mappings (their own block).
+    std::string timing_profile;
+    MappingOptions mapping;
+    bool map_given = false; // --map was on the command line
 };
 
 double seconds_now()
@@ -42,12 +48,17 @@ rt_map_kind parse_mapping(const std::string &text, int &block)
 {
     if (text == "block") return RT_MAP_BLOCK;
     if (text == "cyclic") return RT_MAP_CYCLIC;
+    if (text == "cost") return RT_MAP_COST;
+    if (text.compare(0, 5, "cost:") == 0) {
+        block = parse_dims_1_to_3("--map cost:K", text.substr(5), 1, 64)[0];
+        return RT_MAP_COST;
+    }
     const std::string prefix = "block-cyclic:";
     if (text.compare(0, prefix.size(), prefix) == 0) {
         block = parse_dims_1_to_3("--map block-cyclic:B", text.substr(prefix.size()), 1, 1 << 20)[0];
         return RT_MAP_BLOCK_CYCLIC;
     }
-    throw UserError("--map '" + text + "': expected block, cyclic or block-cyclic:B", 2);
+    throw UserError("--map '" + text + "': expected block, cyclic, block-cyclic:B, cost or cost:K", 2);
 }
 
 template <typename E>
@@ -96,12 +107,10 @@ SimConfig make_config(const std::string &scene, const CommandLine &cl, bool quie
     c.topology = parse_choice("--topology", cl.topology, "torus", Topology::torus, "mesh", Topology::mesh);
     if (cl.queue < 0 || cl.queue > 100000000) throw UserError("--queue: must be 0 (unbounded) to 100000000", 2);
     c.queue_capacity = static_cast<unsigned>(cl.queue);
-    rt_timing_defaults(&c.timing);
+    c.timing_profile = choose_timing(cl.timing_profile, cl.timing_file, &c.timing);
     char msg[RT_MSG_LEN] = "";
-    if (!cl.timing_file.empty() && rt_timing_load(cl.timing_file.c_str(), &c.timing, msg, sizeof msg) != RT_OK)
-        throw UserError(msg);
     std::string problem = timing_limit_problem(c.timing);
-    if (!problem.empty()) throw UserError(cl.timing_file + ": " + problem);
+    if (!problem.empty()) throw UserError((cl.timing_file.empty() ? c.timing_profile : cl.timing_file) + ": " + problem);
     auto set = [&](const char *key, const std::string &opt, const std::string &text, bool is_time) {
         if (text.empty()) return;
         double v = is_time ? parse_time_us(opt, text) : parse_non_negative(opt, text);
@@ -146,7 +155,7 @@ void declare_options(CLI::App &app, CommandLine &cl)
     app.add_option("--trace-to", cl.trace_to, "trace only up to this simulated time (default: the end)")->type_name("TIME");
     app.add_option("--trace-ips", cl.trace_ips, "trace only these nodes, e.g. 0,1,5 (default all)")->type_name("N,N,...");
     app.add_option("--ips", cl.ips, "torus nodes: P, PXxPY or PXxPYxPZ (default 1, at most 4096)")->type_name("DIMS");
-    app.add_option("--map", cl.map, "cell mapping: block, cyclic (default) or block-cyclic:B")->type_name("KIND");
+    app.add_option("--map", cl.map, "cell mapping: block, cyclic (default), block-cyclic:B, cost or cost:K")->type_name("KIND");
     app.add_option("--topology", cl.topology, "torus (default, rings) or mesh (no wrap-around)")->type_name("KIND");
     app.add_option("--cells", cl.cells, "grid cells: N or NXxNYxNZ (default 24)")->type_name("DIMS");
     app.add_option("--size", cl.size, "image size WxH, overriding the scene's resolution")->type_name("WxH");
@@ -176,6 +185,7 @@ void declare_options(CLI::App &app, CommandLine &cl)
     app.add_option("--memory-budget", cl.memory_budget, "memory the run may use for cell lists, frame buffer and\n"
                    "packets, e.g. 512M or 4G; 0 = no limit (default 4G)")->type_name("SIZE");
     app.add_flag("-q,--quiet", cl.quiet, "print nothing but errors; no progress");
+    add_mapping_options(app, cl.timing_profile, cl.mapping); // profiles and mappings
 }
 
 int run(const CommandLine &cl, double wall_start)
@@ -184,6 +194,7 @@ int run(const CommandLine &cl, double wall_start)
     SimConfig config = make_config(cl.scene, cl, cl.quiet);
     config.cluster = cl.cluster;
     config.vcd_path = cl.vcd;
+    apply_mapping_options(config, cl.mapping, cl.map_given);
     validate(config);
     if (config.step.min_weight > 1 && !cl.quiet)
         std::fprintf(stderr, "torusrt-sim: warning: --min-weight %g is above 1: every secondary ray is dropped\n",
@@ -198,9 +209,12 @@ int run(const CommandLine &cl, double wall_start)
             config.gtkw_write_path = outputs.add("--vcd (save file)", config.gtkw_path, cl.scene);
         }
     }
+    std::string map_out = cl.mapping.write_map.empty() ? "" : outputs.add("--write-map", cl.mapping.write_map, cl.scene);
+    std::string load_map = cl.mapping.load_map.empty() ? "" : outputs.add("--load-map", cl.mapping.load_map, cl.scene);
 
     config.memory = rt_budget_make(parse_memory_size("--memory-budget", cl.memory_budget));
     LoadedScene loaded = load_scene(cl.scene, config.width, config.height, config.cells, cl.quiet, &config.memory);
+    nlohmann::json mapping_facts = prepare_mapping(config, loaded.scene.get(), loaded.grid.get());
     double t1 = config.t1_s;
     std::string t1_source = "passed with --t1";
     if (t1 < 0 && config.processor_count() > 1) {
@@ -216,6 +230,8 @@ int run(const CommandLine &cl, double wall_start)
         return 3;
     }
     const rt_camera *cam = rt_scene_camera(loaded.scene.get());
+    out.report["mapping"] = mapping_facts;
+    write_mapping_outputs(config, loaded.scene.get(), loaded.grid.get(), map_out, load_map);
     write_png_file(png, cl.output, cam->width, cam->height, out.rgb8);
     if (!stats.empty()) write_text_file(stats, cl.stats, out.report.dump(2) + "\n");
     outputs.commit();
@@ -241,7 +257,11 @@ int sc_main(int argc, char **argv)
     CLI::App app{"torusrt-sim: a SystemC/TLM-2.0 model of the object-space-parallel ray-tracing\n"
                  "multiprocessor (Kubota et al.): intersection processors on a torus exchange ray packets."};
     declare_options(app, cl);
-    return run_cli("torusrt-sim", app, argc, argv, [&] { return run(cl, wall_start); },
+    return run_cli("torusrt-sim", app, argc, argv,
+                   [&] {
+                       cl.map_given = app.count("--map") > 0;
+                       return run(cl, wall_start);
+                   },
                    "  3 deadlock: the network stalled with packets outstanding\n");
 }
 

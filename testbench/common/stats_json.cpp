@@ -12,7 +12,8 @@ nlohmann::json ops_json(const rt_op_counts &o)
             {"reflection_vectors", o.reflection_vectors},
             {"refraction_vectors", o.refraction_vectors},
             {"packets_analysed", o.packets_analysed}, {"packets_created", o.packets_created},
-            {"fb_writes", o.fb_writes}};
+            {"fb_writes", o.fb_writes},             {"handovers_sent", o.handovers_sent},
+            {"handovers_received", o.handovers_received}};
 }
 
 nlohmann::json packets_json(const rt_packet_totals &t)

@@ -240,3 +240,91 @@ TEST(Memory, WholeSceneBoundsEveryOwner)
         EXPECT_EQ(lists, whole.list_bytes); // every cell owned exactly once
     }
 }
+
+// The cost pilot and the Scotch mapping (rt_cost_map.h).
+#include "rt_cost_map.h"
+#include "rt_render.h"
+#include "rt_nff.h"
+
+namespace {
+
+struct PilotScene {
+    rt_scene *scene = nullptr;
+    rt_grid *grid = nullptr;
+    ~PilotScene()
+    {
+        rt_grid_free(grid);
+        rt_scene_free(scene);
+    }
+};
+
+}  // namespace
+
+TEST(CostMap, PilotWorkSumsToTheRenderersTimeAndTrafficToItsHandOvers)
+{
+    PilotScene s;
+    char msg[RT_MSG_LEN] = "";
+    std::string path = std::string(TORUSRT_SOURCE_DIR) + "/scenes/paper-image2.nff";
+    ASSERT_EQ(rt_nff_load(path.c_str(), &s.scene, msg, sizeof msg, nullptr, nullptr), RT_OK) << msg;
+    ASSERT_EQ(rt_scene_set_resolution(s.scene, 32, 32), RT_OK);
+    s.grid = rt_grid_new(s.scene, 6, 5, 4, msg, sizeof msg);
+    ASSERT_NE(s.grid, nullptr) << msg;
+    rt_timing t;
+    rt_timing_defaults(&t);
+    rt_step_params prm = rt_step_params_default();
+    rt_cost_pilot pilot;
+    ASSERT_EQ(rt_cost_pilot_run(s.scene, s.grid, &prm, &t, &pilot, msg, sizeof msg), RT_OK) << msg;
+    // The reference renderer's T(1) from its op counts.
+    rt_framebuffer *fb = rt_framebuffer_new(32, 32);
+    rt_render_options o = rt_render_options_default();
+    rt_render_stats st;
+    ASSERT_EQ(rt_render(s.scene, s.grid, &o, fb, &st, msg, sizeof msg), RT_OK) << msg;
+    rt_framebuffer_free(fb);
+    EXPECT_EQ(pilot.total_us, rt_timing_step_us(&t, &st.ops)) << "integer-valued table: exact";
+    uint64_t faces = 0;
+    for (size_t i = 0; i < pilot.cells * RT_CELL_FACES; i++) faces += pilot.traffic[i];
+    EXPECT_EQ(faces, pilot.ops.handovers_sent) << "every hand-over crosses one face";
+    EXPECT_EQ(pilot.ops.handovers_sent, pilot.ops.handovers_received);
+    EXPECT_GT(faces, 0u);
+    // No packet leaves through the grid's outer faces into nothing.
+    for (size_t c = 0; c < pilot.cells; c++) {
+        int x = (int)(c % 6);
+        EXPECT_EQ(x == 0 ? pilot.traffic[c * RT_CELL_FACES + 0] : 0u, 0u) << "cell " << c;
+    }
+    for (int torus = 0; torus <= 1; torus++) {
+        int nodes[3] = {3, 2, 1};
+        std::vector<int32_t> owner(pilot.cells, -1), again(pilot.cells, -2);
+        rt_cost_map_facts f;
+        ASSERT_EQ(rt_cost_map(&pilot, nodes, torus, rt_cost_edge_us(&t), owner.data(), &f, msg, sizeof msg), RT_OK)
+            << msg;
+        std::vector<int> used(6, 0);
+        for (int32_t n : owner) {
+            ASSERT_GE(n, 0);
+            ASSERT_LT(n, 6);
+            used[n]++;
+        }
+        for (int n = 0; n < 6; n++) EXPECT_GT(used[n], 0) << "node " << n << " got no cell";
+        EXPECT_GE(f.max_node_work_us, f.mean_node_work_us);
+        EXPECT_GE(f.cut_hops, f.cut_packets);
+        ASSERT_EQ(rt_cost_map(&pilot, nodes, torus, rt_cost_edge_us(&t), again.data(), nullptr, msg, sizeof msg), RT_OK);
+        EXPECT_EQ(owner, again) << "reproducible";
+    }
+    {   // Folded: fold 1 is the plain mapping; fold 2 still uses only real nodes, every one.
+        int nodes[3] = {2, 2, 1};
+        std::vector<int32_t> plain(pilot.cells), one(pilot.cells), two(pilot.cells);
+        double e = rt_cost_edge_us(&t);
+        ASSERT_EQ(rt_cost_map(&pilot, nodes, 1, e, plain.data(), nullptr, msg, sizeof msg), RT_OK) << msg;
+        ASSERT_EQ(rt_cost_map_folded(&pilot, nodes, 1, e, 1, one.data(), nullptr, msg, sizeof msg), RT_OK) << msg;
+        ASSERT_EQ(rt_cost_map_folded(&pilot, nodes, 1, e, 2, two.data(), nullptr, msg, sizeof msg), RT_OK) << msg;
+        EXPECT_EQ(plain, one);
+        std::set<int32_t> used(two.begin(), two.end());
+        EXPECT_EQ(used.size(), 4u);
+        EXPECT_GE(*used.begin(), 0);
+        EXPECT_LE(*used.rbegin(), 3);
+        EXPECT_EQ(rt_cost_map_folded(&pilot, nodes, 1, e, 0, two.data(), nullptr, msg, sizeof msg), RT_ERR_INVALID);
+    }
+    int bad[3] = {0, 1, 1};
+    std::vector<int32_t> owner(pilot.cells);
+    EXPECT_EQ(rt_cost_map(&pilot, bad, 1, 1.0, owner.data(), nullptr, msg, sizeof msg), RT_ERR_INVALID);
+    rt_cost_pilot_release(&pilot);
+}

@@ -715,7 +715,10 @@ TEST(StepForward, NextCellWithAnotherOwner) {
     EXPECT_TRUE(a.contrib.empty());
     EXPECT_TRUE(a.created.empty());
     EXPECT_EQ(a.ops.packets_analysed, 1u);
-    EXPECT_EQ(a.ops.packets_created, 1u) << "a forward counts as a packet made";
+    EXPECT_EQ(a.ops.packets_created, 0u) << "a forward is a hand-over, not a packet made";
+    EXPECT_EQ(a.ops.handovers_sent, 1u);
+    EXPECT_EQ(a.ops.handovers_received, 0u);
+    EXPECT_EQ(a.after.handed_over, 1u);
     EXPECT_EQ(a.ops.tests_missed, 1u) << "A tested in cell 0";
     EXPECT_EQ(a.ops.tests_hit, 0u);
     EXPECT_EQ(a.ops.dda_steps, 1u);
@@ -724,7 +727,9 @@ TEST(StepForward, NextCellWithAnotherOwner) {
     StepOut again = run_step(s.get(), g.get(), prm, a.after, owner, 0);
     EXPECT_EQ(again.fate, RT_FATE_FORWARDED);
     EXPECT_EQ(again.next_cell, 1u);
-    EXPECT_EQ(again.ops.packets_created, 1u);
+    EXPECT_EQ(again.ops.handovers_received, 1u);
+    EXPECT_EQ(again.ops.handovers_sent, 1u);
+    EXPECT_EQ(again.ops.packets_analysed + again.ops.packets_created, 0u);
     EXPECT_EQ(again.ops.tests_missed + again.ops.tests_hit + again.ops.dda_steps, 0u);
     EXPECT_EQ(std::memcmp(&again.after.dda, &a.after.dda, sizeof a.after.dda), 0);
     // Processor 1 finishes it.
@@ -736,7 +741,11 @@ TEST(StepForward, NextCellWithAnotherOwner) {
     EXPECT_EQ(b.ops.shadings, 1u);
     EXPECT_EQ(b.ops.dda_steps, 1u) << "the shadow packet's start cell";
     EXPECT_EQ(b.ops.packets_created, 1u);
+    EXPECT_EQ(b.ops.handovers_received, 1u) << "taken up after a hand-over";
+    EXPECT_EQ(b.ops.packets_analysed, 0u);
+    EXPECT_EQ(b.ops.handovers_sent, 0u);
     ASSERT_EQ(b.created.size(), 1u);
+    EXPECT_EQ(b.created[0].handed_over, 0u) << "a new packet is not a hand-over";
     EXPECT_EQ(b.created[0].kind, RT_PACKET_SHADOW);
     EXPECT_EQ(rt_packet_cell(g.get(), &b.created[0]), 1u);
     // The whole path with no owners gives the same hit as brute force.

@@ -63,13 +63,15 @@ TEST(Timing, Defaults)
     EXPECT_EQ(t.bus_cycle_us, 0.5);
     EXPECT_EQ(t.bus_arbitration_us, 0.25);
     EXPECT_EQ(t.memory_access_us, 0.5);
+    EXPECT_EQ(t.handover_send_us, 0) << "the calibrated profile";
+    EXPECT_EQ(t.handover_receive_us, 0);
 }
 
 TEST(Timing, KeysNameEveryField)
 {
     rt_timing t;
     rt_timing_defaults(&t);
-    ASSERT_EQ(rt_timing_key_count(), 17u);
+    ASSERT_EQ(rt_timing_key_count(), 19u);
     EXPECT_STREQ(rt_timing_key_name(0), "test_miss");
     EXPECT_EQ(rt_timing_get(&t, 0), 1300);
     bool seen_link = false, seen_width = false;
@@ -86,8 +88,8 @@ TEST(Timing, KeysNameEveryField)
     }
     EXPECT_TRUE(seen_link);
     EXPECT_TRUE(seen_width);
-    EXPECT_EQ(rt_timing_key_name(17), nullptr);
-    EXPECT_TRUE(std::isnan(rt_timing_get(&t, 17)));
+    EXPECT_EQ(rt_timing_key_name(19), nullptr);
+    EXPECT_TRUE(std::isnan(rt_timing_get(&t, 19)));
 }
 
 TEST(Timing, SetRejectsBadValues)
@@ -178,14 +180,50 @@ TEST(Timing, StepCostIsTheHandSum)
 {
     rt_timing t;
     rt_timing_defaults(&t);
-    rt_op_counts ops = {1, 2, 3, 4, 5, 6, 7, 8, 9};
+    rt_op_counts ops = {1, 2, 3, 4, 5, 6, 7, 8, 9, 0, 0};
     // 1*1300 + 2*1750 + 3*340 + 4*4600 + 5*680 + 6*1100 + 7*580 + 8*1600 + 9*0
     // = 1300 + 3500 + 1020 + 18400 + 3400 + 6600 + 4060 + 12800 = 51080
     EXPECT_EQ(rt_timing_step_us(&t, &ops), 51080.0);
     t.fb_write_us = 10;
     EXPECT_EQ(rt_timing_step_us(&t, &ops), 51170.0);
-    rt_op_counts none = {0, 0, 0, 0, 0, 0, 0, 0, 0};
+    rt_op_counts none = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
     EXPECT_EQ(rt_timing_step_us(&t, &none), 0.0);
+}
+
+TEST(Timing, HandOversHaveTheirOwnKeys)
+{
+    rt_timing t;
+    rt_timing_defaults(&t);
+    ASSERT_EQ(rt_timing_set(&t, "handover_send", 100, nullptr, 0), RT_OK);
+    ASSERT_EQ(rt_timing_set(&t, "handover_receive", 7, nullptr, 0), RT_OK);
+    rt_op_counts ops{};
+    ops.handovers_sent = 3;
+    ops.handovers_received = 2;
+    EXPECT_EQ(rt_timing_step_us(&t, &ops), 3 * 100.0 + 2 * 7.0);
+    ops.packets_created = 1; // a new packet stays at packet_creation
+    EXPECT_EQ(rt_timing_step_us(&t, &ops), 314.0 + t.packet_creation_us);
+}
+
+TEST(Timing, ProfilesDifferOnlyInTheHandOver)
+{
+    rt_timing lit, cal, def;
+    char msg[RT_MSG_LEN] = "";
+    rt_timing_defaults(&def);
+    ASSERT_EQ(rt_timing_profile("literal", &lit, msg, sizeof msg), RT_OK) << msg;
+    ASSERT_EQ(rt_timing_profile("calibrated", &cal, msg, sizeof msg), RT_OK) << msg;
+    EXPECT_EQ(lit.handover_send_us, lit.packet_creation_us) << "literal: a hand-over is a creation";
+    EXPECT_EQ(lit.handover_receive_us, lit.packet_analysis_us) << "... and an analysis";
+    for (size_t i = 0; i < rt_timing_key_count(); i++) {
+        std::string k = rt_timing_key_name(i);
+        if (k.rfind("handover_", 0) == 0) continue;
+        EXPECT_EQ(rt_timing_get(&lit, i), rt_timing_get(&cal, i)) << k;
+        EXPECT_EQ(rt_timing_get(&def, i), rt_timing_get(&cal, i)) << k;
+    }
+    EXPECT_EQ(def.handover_send_us, cal.handover_send_us) << "the default is the calibrated profile";
+    EXPECT_EQ(def.handover_receive_us, cal.handover_receive_us);
+    EXPECT_STREQ(rt_timing_default_profile(), "calibrated");
+    EXPECT_EQ(rt_timing_profile("nonesuch", &lit, msg, sizeof msg), RT_ERR_INVALID);
+    EXPECT_NE(std::string(msg).find("nonesuch"), std::string::npos) << msg;
 }
 
 TEST(Timing, LinkAndBusTimes)

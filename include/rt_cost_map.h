@@ -1,0 +1,80 @@
+/* rt_cost_map.h - measured load and a cost-driven mapping of cells onto a torus or mesh.
+ *
+ * Usage:
+ *   rt_cost_pilot pilot;
+ *   rt_cost_pilot_run(scene, grid, &params, &timing, &pilot, msg, sizeof msg);
+ *   rt_cost_map(&pilot, nodes, 1, rt_cost_edge_us(&timing), owner, &facts, msg, sizeof msg);
+ *   rt_cost_pilot_release(&pilot);
+ *
+ * The pilot is the reference renderer with every cell its own owner: each step
+ * then covers one cell, so its ops (times the timing table, hand-overs
+ * excluded) are that cell's work, and each hand-over is a packet crossing the
+ * face between two neighbouring cells. The image is that of the renderer.
+ *
+ * The mapper builds the cell graph (vertex weight = work, edge weight = the
+ * packets crossing the face both ways times the cost of one hand-over, both
+ * scaled to integers with empty cells and quiet faces weighing 1) and maps it
+ * with Scotch (SCOTCH_graphMap) onto a PX x PY x PZ torus or mesh of nodes,
+ * balancing work while keeping traffic few hops long. Scotch's random
+ * generator is reset to a fixed seed first, so the mapping is reproducible.
+ * Failures return RT_ERR_INVALID / RT_ERR_NOMEM / RT_ERR_LIMIT with a
+ * message naming the Scotch call that failed.
+ */
+#ifndef RT_COST_MAP_H
+#define RT_COST_MAP_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "rt_grid.h"
+#include "rt_ops.h"
+#include "rt_scene.h"
+#include "rt_status.h"
+#include "rt_step.h"
+#include "rt_timing.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Faces of a cell, in this order: -x, +x, -y, +y, -z, +z. */
+#define RT_CELL_FACES 6
+
+typedef struct rt_cost_pilot {
+    int dims[3];        /* grid cells per axis */
+    size_t cells;
+    double *work_us;    /* per cell: modelled microseconds, hand-overs excluded */
+    uint64_t *traffic;  /* per cell and face: packets leaving the cell through it */
+    double total_us;    /* sum of work_us: T(1) of the pilot image without hand-overs */
+    rt_op_counts ops;   /* everything the pilot did, hand-overs between cells included */
+} rt_cost_pilot;
+
+rt_status rt_cost_pilot_run(const rt_scene *scene, const rt_grid *grid, const rt_step_params *params,
+                            const rt_timing *timing, rt_cost_pilot *out, char *msg, size_t msg_len);
+void rt_cost_pilot_release(rt_cost_pilot *pilot);
+
+/* Microseconds one packet handed across a face costs: send + receive + link. */
+double rt_cost_edge_us(const rt_timing *timing);
+
+typedef struct rt_cost_map_facts {
+    double max_node_work_us;  /* the busiest node's work under the mapping */
+    double mean_node_work_us; /* total work / nodes */
+    double cut_packets;       /* packets crossing between different nodes */
+    double cut_hops;          /* those packets times the hops between their nodes */
+} rt_cost_map_facts;
+
+/* Fills owner[cell] with node ids px + PX * (py + PY * pz). facts may be NULL. */
+rt_status rt_cost_map(const rt_cost_pilot *pilot, const int nodes[3], int torus, double edge_us,
+                      int32_t *owner, rt_cost_map_facts *facts, char *msg, size_t msg_len);
+
+/* The same mapped onto a machine `fold` times larger along every axis of more than one node,
+ * each of its terminals then folded onto node (x mod PX, y mod PY, z mod PZ): every node gets
+ * fold^d balanced pieces spread over the grid (work interleaved in time, as cyclic does), each
+ * piece's neighbours on neighbouring nodes. fold 1 is rt_cost_map; 1..64. */
+rt_status rt_cost_map_folded(const rt_cost_pilot *pilot, const int nodes[3], int torus, double edge_us, int fold,
+                             int32_t *owner, rt_cost_map_facts *facts, char *msg, size_t msg_len);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

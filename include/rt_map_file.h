@@ -1,0 +1,38 @@
+/* rt_map_file.h - explicit cell-to-node mappings as text files.
+ *
+ * Usage:
+ *   rt_map_file_read("my.map", dims, nodes, owner, msg, sizeof msg);
+ *   rt_map_file_write("used.map", dims, nodes, owner, msg, sizeof msg);
+ *
+ * Format: a header `torusrt-map 1 NX NY NZ NODES` (format version 1, the grid's
+ * cells per axis, the number of nodes), then one node id (0..NODES-1) per cell
+ * in x-fastest order (cell x + NX * (y + NY * z)), separated by any white
+ * space and line breaks. `#` starts a comment to the end of the line.
+ * Reading checks the header against the run's grid and node count, every id's
+ * range, and the cell count; failures return RT_ERR_IO (cannot open) or
+ * RT_ERR_PARSE with "FILE:LINE: message", and leave owner[] unspecified.
+ */
+#ifndef RT_MAP_FILE_H
+#define RT_MAP_FILE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "rt_status.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* owner must hold dims[0] * dims[1] * dims[2] entries. */
+rt_status rt_map_file_read(const char *path, const int dims[3], int nodes, int32_t *owner, char *msg,
+                           size_t msg_len);
+
+/* Writes the table; RT_ERR_IO naming the file if it cannot be written. */
+rt_status rt_map_file_write(const char *path, const int dims[3], int nodes, const int32_t *owner,
+                            char *msg, size_t msg_len);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,72 @@
+// cost_mapping.cpp - the pilot and the Scotch mapping behind --map cost.
+#include "cost_mapping.h"
+
+#include <algorithm>
+#include <chrono>
+
+#include "rt_cost_map.h"
+#include "user_error.h"
+
+namespace torusrt {
+
+namespace {
+
+double seconds_now()
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+// Runs the pilot at the pilot size (the scene's resolution is restored afterwards).
+rt_cost_pilot run_pilot(const SimConfig &config, rt_scene *scene, const rt_grid *grid)
+{
+    const rt_camera *cam = rt_scene_camera(scene);
+    unsigned w = cam->width, h = cam->height;
+    bool resize = config.pilot_size[0] > 0;
+    if (resize && rt_scene_set_resolution(scene, config.pilot_size[0], config.pilot_size[1]) != RT_OK)
+        throw UserError("--pilot-size: not a valid image size", 2);
+    rt_cost_pilot pilot;
+    char msg[RT_MSG_LEN] = "";
+    rt_status st = rt_cost_pilot_run(scene, grid, &config.step, &config.timing, &pilot, msg, sizeof msg);
+    if (resize) rt_scene_set_resolution(scene, w, h);
+    if (st != RT_OK) throw UserError(std::string("--map cost: pilot run: ") + msg);
+    return pilot;
+}
+
+}  // namespace
+
+nlohmann::json cost_mapping(const SimConfig &config, rt_scene *scene, const rt_grid *grid,
+                            std::vector<int32_t> &owner)
+{
+    double t0 = seconds_now();
+    rt_cost_pilot pilot = run_pilot(config, scene, grid);
+    double t1 = seconds_now();
+    rt_cost_map_facts facts;
+    char msg[RT_MSG_LEN] = "";
+    double edge_us = rt_cost_edge_us(&config.timing);
+    rt_status st = rt_cost_map_folded(&pilot, config.ips.data(), config.topology == Topology::torus, edge_us,
+                                      config.block, owner.data(), &facts, msg, sizeof msg);
+    double t2 = seconds_now();
+    double pilot_us = pilot.total_us, max_cell_us = 0;
+    for (size_t c = 0; c < pilot.cells; c++) max_cell_us = std::max(max_cell_us, pilot.work_us[c]);
+    uint64_t faces = pilot.ops.handovers_sent;
+    rt_cost_pilot_release(&pilot);
+    if (st != RT_OK) throw UserError(std::string("--map cost: ") + msg);
+    const rt_camera *cam = rt_scene_camera(scene);
+    unsigned pw = config.pilot_size[0] ? config.pilot_size[0] : cam->width;
+    unsigned ph = config.pilot_size[0] ? config.pilot_size[1] : cam->height;
+    return {{"pilot_size", {pw, ph}},
+            {"pilot_modelled_s", pilot_us * 1e-6},
+            {"pilot_face_crossings", faces},
+            {"pilot_max_cell_work_s", max_cell_us * 1e-6},
+            {"pilot_wall_s", t1 - t0},
+            {"mapper", "scotch"},
+            {"fold", config.block},
+            {"mapper_wall_s", t2 - t1},
+            {"edge_us_per_packet", edge_us},
+            {"predicted_max_node_work_s", facts.max_node_work_us * 1e-6},
+            {"predicted_mean_node_work_s", facts.mean_node_work_us * 1e-6},
+            {"predicted_cut_packets", facts.cut_packets},
+            {"predicted_cut_hops", facts.cut_hops}};
+}
+
+}  // namespace torusrt

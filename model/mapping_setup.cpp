@@ -1,0 +1,116 @@
+// mapping_setup.cpp - one place that turns the mapping options into the owner table.
+#include "mapping_setup.h"
+
+#include <algorithm>
+#include <vector>
+
+#include "cost_mapping.h"
+#include "option_parsing.h"
+#include "output_files.h"
+#include "rt_cost_map.h"
+#include "rt_load_image.h"
+#include "rt_map_file.h"
+#include "rt_mapping.h"
+#include "user_error.h"
+
+namespace torusrt {
+
+void add_mapping_options(CLI::App &app, std::string &timing_profile, MappingOptions &o)
+{
+    app.add_option("--timing-profile", timing_profile,
+                   std::string("timing profile: calibrated or literal (default ") + rt_timing_default_profile() +
+                       "); --timing FILE overrides single keys on top")
+        ->type_name("NAME");
+    app.add_option("--map-file", o.map_file, "explicit cell -> node table (torusrt-map 1 format)")->type_name("FILE");
+    app.add_option("--write-map", o.write_map, "write the cell -> node table this run used")->type_name("FILE");
+    app.add_option("--pilot-size", o.pilot_size, "image size WxH of the --map cost pilot run")->type_name("WxH");
+    app.add_option("--load-map", o.load_map, "write the cells' work and owners as a PNG")->type_name("FILE");
+}
+
+void apply_mapping_options(SimConfig &config, const MappingOptions &o, bool map_given)
+{
+    if (!o.map_file.empty()) {
+        if (map_given) throw UserError("--map-file: give either --map or --map-file, not both", 2);
+        config.mapping = RT_MAP_FILE;
+        config.map_file = o.map_file;
+    }
+    config.write_map = o.write_map;
+    if (!o.write_map.empty()) check_output_folder("--write-map", o.write_map);
+    if (!o.load_map.empty()) check_output_folder("--load-map", o.load_map);
+    if (!o.pilot_size.empty()) {
+        if (config.mapping != RT_MAP_COST) throw UserError("--pilot-size: only with --map cost", 2);
+        config.pilot_size = parse_size("--pilot-size", o.pilot_size);
+    }
+}
+
+namespace {
+
+nlohmann::json cells_per_node(const std::vector<int32_t> &owner, int nodes)
+{
+    std::vector<long> count(nodes, 0);
+    for (int32_t o : owner) count[o]++;
+    auto mm = std::minmax_element(count.begin(), count.end());
+    return {{"min", *mm.first}, {"max", *mm.second}};
+}
+
+}  // namespace
+
+nlohmann::json prepare_mapping(SimConfig &config, rt_scene *scene, const rt_grid *grid)
+{
+    int dims[3];
+    rt_grid_dims(grid, dims);
+    int nodes = config.node_count();
+    std::vector<int32_t> owner(rt_grid_cell_count(grid));
+    char msg[RT_MSG_LEN] = "";
+    nlohmann::json j = {{"kind", mapping_name(config.mapping)}};
+    if (config.mapping == RT_MAP_FILE) {
+        if (rt_map_file_read(config.map_file.c_str(), dims, nodes, owner.data(), msg, sizeof msg) != RT_OK)
+            throw UserError(std::string("--map-file: ") + msg, 2);
+        j["file"] = config.map_file;
+    } else if (config.mapping == RT_MAP_COST) {
+        j.update(cost_mapping(config, scene, grid, owner));
+    } else if (rt_mapping_fill(dims, config.ips.data(), config.mapping, config.block, owner.data(), msg,
+                               sizeof msg) != RT_OK) {
+        throw UserError(std::string("--map: ") + msg, 2);
+    }
+    j["cells_per_node"] = cells_per_node(owner, nodes);
+    config.owner_table = std::move(owner);
+    return j;
+}
+
+namespace {
+
+void write_mapping(const SimConfig &config, const rt_grid *grid, const std::string &path)
+{
+    if (path.empty()) return;
+    int dims[3];
+    rt_grid_dims(grid, dims);
+    char msg[RT_MSG_LEN] = "";
+    if (rt_map_file_write(path.c_str(), dims, config.node_count(), config.owner_table.data(), msg,
+                          sizeof msg) != RT_OK)
+        throw UserError(std::string("--write-map: ") + msg);
+}
+
+void write_load_map(const SimConfig &config, rt_scene *scene, const rt_grid *grid, const std::string &path)
+{
+    if (path.empty()) return;
+    rt_cost_pilot pilot;
+    char msg[RT_MSG_LEN] = "";
+    if (rt_cost_pilot_run(scene, grid, &config.step, &config.timing, &pilot, msg, sizeof msg) != RT_OK)
+        throw UserError(std::string("--load-map: pilot run: ") + msg);
+    rt_status st = rt_load_map_write(path.c_str(), pilot.dims, pilot.work_us, config.owner_table.data(),
+                                     config.node_count(), msg, sizeof msg);
+    rt_cost_pilot_release(&pilot);
+    if (st != RT_OK) throw UserError(std::string("--load-map: ") + msg);
+}
+
+}  // namespace
+
+void write_mapping_outputs(const SimConfig &config, rt_scene *scene, const rt_grid *grid,
+                           const std::string &write_map_path, const std::string &load_map_path)
+{
+    write_mapping(config, grid, write_map_path);
+    write_load_map(config, scene, grid, load_map_path);
+}
+
+}  // namespace torusrt

@@ -1,0 +1,38 @@
+// mapping_setup.h - the cell -> node table a run uses, decided before the run:
+// a regular mapping, an explicit --map-file, or --map cost (pilot run + Scotch).
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "rt_grid.h"
+#include "rt_scene.h"
+#include "sim_config.h"
+
+namespace torusrt {
+
+// The mapping options as typed (their own block on the command line).
+struct MappingOptions {
+    std::string map_file, write_map, pilot_size, load_map;
+};
+
+// Registers --timing-profile, --map-file, --write-map, --pilot-size and --load-map.
+void add_mapping_options(CLI::App &app, std::string &timing_profile, MappingOptions &options);
+
+// Checks the options against --map (and the output folders) and stores them in `config`
+// (UserError, exit 2).
+void apply_mapping_options(SimConfig &config, const MappingOptions &options, bool map_given);
+
+// Fills config.owner_table for the loaded scene and returns what the report says about it
+// (JSON `mapping`: kind, cells per node, pilot and mapper costs for `cost`).
+// Throws UserError naming the file and line (exit 2) for a bad --map-file.
+nlohmann::json prepare_mapping(SimConfig &config, rt_scene *scene, const rt_grid *grid);
+
+// Writes the files asked for to the paths given (empty: not asked; UserError on failure):
+// --write-map (config.owner_table) and --load-map (a pilot run's per-cell work beside the
+// owners, as a PNG). The paths are the run's output set's, committed with its other outputs.
+void write_mapping_outputs(const SimConfig &config, rt_scene *scene, const rt_grid *grid,
+                           const std::string &write_map_path, const std::string &load_map_path);
+
+}  // namespace torusrt

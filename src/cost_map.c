@@ -1,0 +1,243 @@
+/* cost_map.c - the weighted cell graph and its Scotch mapping onto the node torus or mesh. */
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <scotch.h>
+
+#include "rt_cost_map.h"
+
+/* Integer weights: the largest weight and the largest weight total Scotch gets. */
+#define WEIGHT_MAX (1 << 20)
+#define TOTAL_MAX (1 << 30)
+
+typedef struct cell_graph {
+    SCOTCH_Num *verttab, *velotab, *edgetab, *edlotab;
+    SCOTCH_Num vertnbr, edgenbr;
+} cell_graph;
+
+static void graph_free(cell_graph *g)
+{
+    free(g->verttab);
+    free(g->velotab);
+    free(g->edgetab);
+    free(g->edlotab);
+}
+
+/* Neighbour of cell c through face f, -1 at the grid's boundary. */
+static long neighbour(const int d[3], long c, int f)
+{
+    long x = c % d[0], y = c / d[0] % d[1], z = c / ((long)d[0] * d[1]);
+    long p[3] = {x, y, z};
+    p[f / 2] += (f % 2) ? 1 : -1;
+    if (p[f / 2] < 0 || p[f / 2] >= d[f / 2]) return -1;
+    return p[0] + d[0] * (p[1] + (long)d[1] * p[2]);
+}
+
+/* Packets across the face f of c, both ways. */
+static double face_packets(const rt_cost_pilot *p, long c, int f, long nb)
+{
+    return (double)p->traffic[c * RT_CELL_FACES + f] + (double)p->traffic[nb * RT_CELL_FACES + (f ^ 1)];
+}
+
+static SCOTCH_Num scaled(double v, double scale)
+{
+    double w = floor(v * scale + 0.5);
+    return w < 1 ? 1 : (SCOTCH_Num)w;
+}
+
+/* Builds the CSR graph with one common scale for work and traffic (both microseconds). */
+static rt_status build_graph(const rt_cost_pilot *p, double edge_us, cell_graph *g)
+{
+    memset(g, 0, sizeof *g);
+    g->vertnbr = (SCOTCH_Num)p->cells;
+    double wmax = 0, wsum = 0, emax = 0, esum = 0;
+    for (long c = 0; c < (long)p->cells; c++) {
+        wmax = fmax(wmax, p->work_us[c]);
+        wsum += p->work_us[c];
+        for (int f = 0; f < RT_CELL_FACES; f++) {
+            long nb = neighbour(p->dims, c, f);
+            if (nb < 0) continue;
+            double e = face_packets(p, c, f, nb) * edge_us;
+            emax = fmax(emax, e);
+            esum += e;
+            g->edgenbr++;
+        }
+    }
+    double big = fmax(wmax, emax), total = fmax(wsum, esum);
+    double scale = big > 0 ? fmin(WEIGHT_MAX / big, (TOTAL_MAX - 2.0 * (double)g->edgenbr - 2.0 * (double)p->cells) / total) : 1;
+    g->verttab = malloc(((size_t)g->vertnbr + 1) * sizeof *g->verttab);
+    g->velotab = malloc((size_t)g->vertnbr * sizeof *g->velotab);
+    g->edgetab = malloc(((size_t)g->edgenbr + 1) * sizeof *g->edgetab);
+    g->edlotab = malloc(((size_t)g->edgenbr + 1) * sizeof *g->edlotab);
+    if (!g->verttab || !g->velotab || !g->edgetab || !g->edlotab) return RT_ERR_NOMEM;
+    SCOTCH_Num e = 0;
+    for (long c = 0; c < (long)p->cells; c++) {
+        g->verttab[c] = e;
+        g->velotab[c] = scaled(p->work_us[c], scale);
+        for (int f = 0; f < RT_CELL_FACES; f++) {
+            long nb = neighbour(p->dims, c, f);
+            if (nb < 0) continue;
+            g->edgetab[e] = (SCOTCH_Num)nb;
+            g->edlotab[e++] = scaled(face_packets(p, c, f, nb) * edge_us, scale);
+        }
+    }
+    g->verttab[g->vertnbr] = e;
+    return RT_OK;
+}
+
+static rt_status scotch_fail(char *msg, size_t msg_len, const char *call)
+{
+    if (msg && msg_len) snprintf(msg, msg_len, "Scotch: %s failed (see its message above)", call);
+    return RT_ERR_INVALID;
+}
+
+/* A single-threaded, deterministic Scotch context with a fixed seed bound to `graph`. */
+static rt_status bind_context(SCOTCH_Context *ctx, SCOTCH_Graph *graph, SCOTCH_Graph *bound, char *msg,
+                              size_t msg_len)
+{
+    if (SCOTCH_contextInit(ctx) != 0) return scotch_fail(msg, msg_len, "SCOTCH_contextInit");
+    if (SCOTCH_contextOptionSetNum(ctx, SCOTCH_OPTIONNUMDETERMINISTIC, 1) != 0 ||
+        SCOTCH_contextOptionSetNum(ctx, SCOTCH_OPTIONNUMRANDOMFIXEDSEED, 1) != 0)
+        return scotch_fail(msg, msg_len, "SCOTCH_contextOptionSetNum");
+    SCOTCH_contextRandomSeed(ctx, 1);
+    SCOTCH_contextRandomReset(ctx);
+    if (SCOTCH_contextThreadSpawn(ctx, 1, NULL) != 0) return scotch_fail(msg, msg_len, "SCOTCH_contextThreadSpawn");
+    if (SCOTCH_graphInit(bound) != 0) return scotch_fail(msg, msg_len, "SCOTCH_graphInit");
+    if (SCOTCH_contextBindGraph(ctx, graph, bound) != 0) {
+        SCOTCH_graphExit(bound);
+        return scotch_fail(msg, msg_len, "SCOTCH_contextBindGraph");
+    }
+    return RT_OK;
+}
+
+/* Maps the bound graph onto the node torus or mesh. */
+static rt_status map_onto(SCOTCH_Graph *graph, const int nodes[3], int torus, SCOTCH_Num *parttab, char *msg,
+                          size_t msg_len)
+{
+    SCOTCH_Arch arch;
+    SCOTCH_Strat strat;
+    rt_status st = RT_OK;
+    SCOTCH_archInit(&arch);
+    int r = torus ? SCOTCH_archTorus3(&arch, nodes[0], nodes[1], nodes[2])
+                  : SCOTCH_archMesh3(&arch, nodes[0], nodes[1], nodes[2]);
+    if (r != 0) st = scotch_fail(msg, msg_len, torus ? "SCOTCH_archTorus3" : "SCOTCH_archMesh3");
+    SCOTCH_stratInit(&strat);
+    SCOTCH_Num parts = (SCOTCH_Num)nodes[0] * nodes[1] * nodes[2];
+    if (st == RT_OK && SCOTCH_stratGraphMapBuild(&strat, SCOTCH_STRATQUALITY | SCOTCH_STRATBALANCE, parts, 0.03) != 0)
+        st = scotch_fail(msg, msg_len, "SCOTCH_stratGraphMapBuild");
+    if (st == RT_OK && SCOTCH_graphMap(graph, &arch, &strat, parttab) != 0)
+        st = scotch_fail(msg, msg_len, "SCOTCH_graphMap");
+    SCOTCH_stratExit(&strat);
+    SCOTCH_archExit(&arch);
+    return st;
+}
+
+/* Runs Scotch on the graph; parttab gets a terminal per cell (x fastest, as our node ids). */
+static rt_status scotch_map(cell_graph *g, const int nodes[3], int torus, SCOTCH_Num *parttab, char *msg,
+                            size_t msg_len)
+{
+    SCOTCH_Graph graph, bound;
+    SCOTCH_Context ctx;
+    SCOTCH_randomSeed(1); /* the global generator too, for any path that uses it */
+    SCOTCH_randomReset();
+    if (SCOTCH_graphInit(&graph) != 0) return scotch_fail(msg, msg_len, "SCOTCH_graphInit");
+    rt_status st = RT_OK;
+    if (SCOTCH_graphBuild(&graph, 0, g->vertnbr, g->verttab, NULL, g->velotab, NULL, g->edgenbr, g->edgetab,
+                          g->edlotab) != 0)
+        st = scotch_fail(msg, msg_len, "SCOTCH_graphBuild");
+    else if (SCOTCH_graphCheck(&graph) != 0)
+        st = scotch_fail(msg, msg_len, "SCOTCH_graphCheck");
+    if (st == RT_OK) {
+        st = bind_context(&ctx, &graph, &bound, msg, msg_len);
+        if (st == RT_OK) {
+            st = map_onto(&bound, nodes, torus, parttab, msg, msg_len);
+            SCOTCH_graphExit(&bound);
+        }
+        SCOTCH_contextExit(&ctx);
+    }
+    SCOTCH_graphExit(&graph);
+    return st;
+}
+
+/* Hops between two nodes on the torus or mesh. */
+static int hops(const int n[3], int torus, int a, int b)
+{
+    int h = 0;
+    for (int k = 0; k < 3; k++) {
+        int d = abs(a % n[k] - b % n[k]);
+        h += torus && n[k] - d < d ? n[k] - d : d;
+        a /= n[k];
+        b /= n[k];
+    }
+    return h;
+}
+
+static void map_facts(const rt_cost_pilot *p, const int nodes[3], int torus, const int32_t *owner,
+                      rt_cost_map_facts *facts)
+{
+    int n = nodes[0] * nodes[1] * nodes[2];
+    double *work = calloc((size_t)n, sizeof *work);
+    memset(facts, 0, sizeof *facts);
+    if (!work) return;
+    for (long c = 0; c < (long)p->cells; c++) {
+        work[owner[c]] += p->work_us[c];
+        for (int f = 1; f < RT_CELL_FACES; f += 2) { /* each face once */
+            long nb = neighbour(p->dims, c, f);
+            if (nb < 0 || owner[nb] == owner[c]) continue;
+            double k = face_packets(p, c, f, nb);
+            facts->cut_packets += k;
+            facts->cut_hops += k * hops(nodes, torus, owner[c], owner[nb]);
+        }
+    }
+    for (int i = 0; i < n; i++) facts->max_node_work_us = fmax(facts->max_node_work_us, work[i]);
+    facts->mean_node_work_us = p->total_us / n;
+    free(work);
+}
+
+rt_status rt_cost_map(const rt_cost_pilot *p, const int nodes[3], int torus, double edge_us, int32_t *owner,
+                      rt_cost_map_facts *facts, char *msg, size_t msg_len)
+{
+    return rt_cost_map_folded(p, nodes, torus, edge_us, 1, owner, facts, msg, msg_len);
+}
+
+/* Node of a terminal of the folded (fold x nodes) machine: each coordinate modulo the nodes'. */
+static int32_t fold_node(SCOTCH_Num t, const int v[3], const int n[3])
+{
+    int x = (int)(t % v[0]), y = (int)(t / v[0] % v[1]), z = (int)(t / ((SCOTCH_Num)v[0] * v[1]));
+    return (int32_t)(x % n[0] + n[0] * (y % n[1] + n[1] * (z % n[2])));
+}
+
+rt_status rt_cost_map_folded(const rt_cost_pilot *p, const int nodes[3], int torus, double edge_us, int fold,
+                             int32_t *owner, rt_cost_map_facts *facts, char *msg, size_t msg_len)
+{
+    if (nodes[0] < 1 || nodes[1] < 1 || nodes[2] < 1 || !p->work_us || !(edge_us >= 0) || fold < 1 ||
+        fold > 64) {
+        if (msg && msg_len) snprintf(msg, msg_len, "cost mapping: bad arguments");
+        return RT_ERR_INVALID;
+    }
+    if (p->cells > (size_t)(TOTAL_MAX / 8)) {
+        if (msg && msg_len) snprintf(msg, msg_len, "cost mapping: %zu cells is too many for Scotch's weights", p->cells);
+        return RT_ERR_LIMIT;
+    }
+    rt_status st = RT_OK;
+    if ((long)nodes[0] * nodes[1] * nodes[2] == 1) {
+        for (size_t c = 0; c < p->cells; c++) owner[c] = 0;
+    } else {
+        cell_graph g;
+        SCOTCH_Num *part = malloc(p->cells * sizeof *part);
+        st = build_graph(p, edge_us, &g);
+        if (st == RT_OK && !part) st = RT_ERR_NOMEM;
+        if (st == RT_ERR_NOMEM && msg && msg_len) snprintf(msg, msg_len, "cost mapping: out of memory");
+        int v[3];
+        for (int k = 0; k < 3; k++) v[k] = nodes[k] > 1 ? nodes[k] * fold : 1;
+        if (st == RT_OK) st = scotch_map(&g, v, torus, part, msg, msg_len);
+        for (size_t c = 0; st == RT_OK && c < p->cells; c++) owner[c] = fold_node(part[c], v, nodes);
+        free(part);
+        graph_free(&g);
+    }
+    if (st == RT_OK && facts) map_facts(p, nodes, torus, owner, facts);
+    return st;
+}

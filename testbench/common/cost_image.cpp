@@ -1,0 +1,49 @@
+// cost_image.cpp - per-pixel modelled cost: every step's cost goes to its packet's pixel, so
+// the pixels sum to the run's op-count total.
+#include "cost_image.h"
+
+#include <algorithm>
+
+#include "rt_load_image.h"
+#include "user_error.h"
+
+namespace torusrt {
+
+CostImage::CostImage(const std::string &path, unsigned width, unsigned height, const rt_timing *timing)
+    : m_path(path), m_width(width), m_height(height), m_timing(timing)
+{
+    if (!m_path.empty()) m_us.assign(static_cast<size_t>(width) * height, 0.0);
+}
+
+void CostImage::on_step(void *ctx, uint32_t, const rt_packet *p, const rt_step_result *r)
+{
+    auto *self = static_cast<CostImage *>(ctx);
+    self->m_us[static_cast<size_t>(p->y) * self->m_width + p->x] += rt_timing_step_us(self->m_timing, &r->ops);
+}
+
+void CostImage::attach(rt_render_options *o)
+{
+    if (m_path.empty()) return;
+    o->on_step = &CostImage::on_step;
+    o->on_step_ctx = this;
+}
+
+void CostImage::write(const std::string &write_path) const
+{
+    if (m_path.empty()) return;
+    char msg[RT_MSG_LEN] = "";
+    if (rt_cost_image_write(write_path.c_str(), m_width, m_height, m_us.data(), msg, sizeof msg) != RT_OK)
+        throw UserError(std::string("--cost-image: ") + msg);
+}
+
+nlohmann::json CostImage::json() const
+{
+    if (m_path.empty()) return nullptr;
+    double total = 0;
+    for (double v : m_us) total += v;
+    return {{"file", m_path},
+            {"total_us", total},
+            {"max_pixel_us", m_us.empty() ? 0.0 : *std::max_element(m_us.begin(), m_us.end())}};
+}
+
+}  // namespace torusrt
