@@ -4,7 +4,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(cmake g++ make pkg-config libsystemc-dev libpng-dev nlohmann-json3-dev libcli11-dev
-          libgtest-dev gtkwave gnuplot-nox parallel jq)
+          libgtest-dev gtkwave gnuplot-nox parallel jq time)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
