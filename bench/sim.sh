@@ -1,22 +1,32 @@
 #!/usr/bin/env bash
-# Benchmark (not a test): the simulator on both paper scenes at 1, 16 and 64 IPs (cyclic mapping):
-# wall time, events/s, packet-hops/s, and the ratio of its wall time to torusrt-render's on the
-# same scene. Usage: bash bench/sim.sh [BUILD_DIR]
+# Benchmark (not a test): the simulator's cost per packet hop. paper-image1 at 144x144 on 24^3
+# cells with 16, 64 and 512 IPs (the same work at every size), and the 512-IP run on 64^3 cells at
+# 1024x1024; cyclic mapping. Per row: simulated image time, wall time of the simulation, packet
+# hops (link crossings), microseconds of wall time per hop, hops per second, the ratio of the
+# simulation's wall time to torusrt-render's on the same scene, grid and size, and the peak
+# resident memory and the CPU time (user + system) of the whole torusrt-sim process
+# (/usr/bin/time -v; on a shared machine the CPU time is the steadier figure).
+# Usage: bash bench/sim.sh [BUILD_DIR]   (BENCH_BIG=0 skips the 1024x1024 run)
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$here/build}
+scene=$here/scenes/paper-image1.nff
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
-printf '%-14s %5s %10s %10s %14s %16s %14s\n' scene ips sim_time_s wall_s events_per_s packet_hops_per_s vs_render
-for scene in paper-image1 paper-image2; do
-  "$build/torusrt-render" "$here/scenes/$scene.nff" -o "$tmp/r.png" --stats "$tmp/r.json" -q
-  rw=$(jq .wall_s "$tmp/r.json")
-  t1=""
-  for ips in 1x1x1 4x2x2 4x4x4; do
-    t1flag=(); [ -n "$t1" ] && t1flag=(--t1 "$t1")
-    "$build/torusrt-sim" "$here/scenes/$scene.nff" -o "$tmp/s.png" --stats "$tmp/s.json" -q --ips "$ips" "${t1flag[@]}"
-    [ -z "$t1" ] && t1=$(jq .sim_time_s "$tmp/s.json")
-    jq -r --arg s "$scene" --argjson rw "$rw" \
-      '[$s, .ips, .sim_time_s, .sim_wall_s, .events_per_s, .packet_hops_per_s, (.sim_wall_s / $rw)] | @tsv' "$tmp/s.json" |
-      awk -F'\t' '{ printf "%-14s %5d %10.3f %10.3f %14.0f %16.0f %13.1fx\n", $1, $2, $3, $4, $5, $6, $7 }'
-  done
+printf '%-10s %5s %6s %10s %9s %8s %10s %11s %11s %10s %8s\n' \
+  size cells ips sim_time_s wall_s cpu_s hops us_per_hop hops_per_s vs_render peak_MB
+configs=("144x144 24 4x2x2" "144x144 24 4x4x4" "144x144 24 8x8x8")
+[ "${BENCH_BIG:-1}" = 0 ] || configs+=("1024x1024 64 8x8x8")
+for c in "${configs[@]}"; do
+  read -r size cells ips <<<"$c"
+  "$build/torusrt-render" "$scene" --size "$size" --cells "$cells" -o "$tmp/r.png" --stats "$tmp/r.json" -q
+  /usr/bin/time -v -o "$tmp/time.txt" "$build/torusrt-sim" "$scene" --size "$size" --cells "$cells" --ips "$ips" \
+    --t1 1 -o "$tmp/s.png" --stats "$tmp/s.json" -q
+  rss_kb=$(awk -F': ' '/Maximum resident set size/ { print $2 }' "$tmp/time.txt")
+  cpu_s=$(awk -F': ' '/User time|System time/ { s += $2 } END { print s }' "$tmp/time.txt")
+  jq -r --arg size "$size" --arg cells "$cells" --argjson rw "$(jq .wall_s "$tmp/r.json")" --argjson rss "$rss_kb" \
+    --argjson cpu "$cpu_s" \
+    '[$size, $cells, .ips, .sim_time_s, .sim_wall_s, $cpu, .links.packets, (.sim_wall_s / .links.packets * 1e6),
+      .packet_hops_per_s, (.sim_wall_s / $rw), ($rss / 1024)] | @tsv' "$tmp/s.json" |
+    awk -F'\t' '{ printf "%-10s %5s %6d %10.5f %9.3f %8.2f %10d %11.3f %11.0f %9.1fx %8.1f\n",
+                  $1, $2, $3, $4, $5, $6, $7, $8, $9, $10, $11 }'
 done

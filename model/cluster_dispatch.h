@@ -43,6 +43,8 @@ class ClusterDispatcher : public sc_core::sc_module, public PacketSinkIf {
                       std::vector<IntersectionProcessor *> processors);
 
     void accept(const TimedPacket &p) override { m_inbox.push_blocking(p); }
+    bool can_accept(const TimedPacket &p) const override { return m_inbox.has_room(p); }
+    void on_space(const TimedPacket &, sc_core::sc_event &e) override { m_inbox.space().on_release(e); }
 
     PacketQueue &inbox() { return m_inbox; }
     uint64_t dispatched(int k) const { return m_dispatched[k]; }

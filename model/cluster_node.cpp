@@ -49,6 +49,8 @@ ClusterNode::ClusterNode(sc_core::sc_module_name name, const SimConfig &config, 
 ClusterNode::~ClusterNode() = default;
 
 void ClusterNode::accept(const TimedPacket &p) { m_dispatcher->accept(p); }
+bool ClusterNode::can_accept(const TimedPacket &p) const { return m_dispatcher->can_accept(p); }
+void ClusterNode::on_space(const TimedPacket &p, sc_core::sc_event &e) { m_dispatcher->on_space(p, e); }
 
 std::vector<IntersectionProcessor *> ClusterNode::processors() const
 {

@@ -39,6 +39,8 @@ class ClusterNode : public sc_core::sc_module, public PacketSinkIf {
     ~ClusterNode() override;
 
     void accept(const TimedPacket &p) override;
+    bool can_accept(const TimedPacket &p) const override;
+    void on_space(const TimedPacket &p, sc_core::sc_event &e) override;
     std::vector<IntersectionProcessor *> processors() const;
 
     int node() const { return m_node; }

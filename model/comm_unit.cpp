@@ -1,4 +1,5 @@
-// comm_unit.cpp - routing by the owner of the packet's current cell.
+// comm_unit.cpp - routing by the owner of the packet's current cell, delivery from the arrival
+// queue, and holding packets while the next buffer is full.
 #include "comm_unit.h"
 
 #include "rt_step.h"
@@ -7,41 +8,129 @@
 namespace torusrt {
 
 CommUnit::CommUnit(sc_core::sc_module_name name, int node, const Routing &routing, const rt_grid *grid,
-                   const int32_t *cell_owner)
+                   const int32_t *cell_owner, const sc_core::sc_time &lookahead)
     : sc_module(name), link_in("link_in"), in("in"), local("local"), link_out("link_out"), m_node(node),
-      m_routing(routing), m_grid(grid), m_owner(cell_owner)
+      m_routing(routing), m_grid(grid), m_owner(cell_owner), m_lookahead(lookahead)
 {
     m_port_of_dir.fill(-1);
     in.bind(*this);
     link_in.register_b_transport(this, &CommUnit::b_transport);
+    SC_HAS_PROCESS(CommUnit);
+    SC_METHOD(deliver);
+    sensitive << m_due << m_run;
+    dont_initialize();
+    SC_METHOD(retry);
+    sensitive << m_retry;
+    dont_initialize();
 }
 
-void CommUnit::route(const TimedPacket &p)
+void CommUnit::end_of_elaboration()
+{
+    m_processor_source = static_cast<int>(link_in.size());
+    m_held.resize(link_in.size() + 1);
+}
+
+PacketSinkIf &CommUnit::next_hop(const TimedPacket &p, bool &is_local)
 {
     int owner = m_owner[rt_packet_cell(m_grid, &p.packet)];
-    if (owner == m_node) {
-        m_local++;
-        local->accept(p);
-        return;
-    }
+    is_local = owner == m_node;
+    if (is_local) return *local.operator->();
     int dir = m_routing.next_direction(m_node, owner);
     int port = dir >= 0 ? m_port_of_dir[dir] : -1;
     if (port < 0) SC_REPORT_FATAL(name(), "no link toward the packet's owner");
-    m_transit++;
-    link_out[port]->accept(p);
+    return *link_out[port];
 }
 
-void CommUnit::b_transport(int, tlm::tlm_generic_payload &trans, sc_core::sc_time &delay)
+void CommUnit::accept(const TimedPacket &p)
+{
+    if (p.from_host) { // a primary at its entry node: straight to the processor side
+        bool is_local = false;
+        next_hop(p, is_local).accept(p);
+        m_local++;
+        return;
+    }
+    // Called in the processor side's thread: it waits while one of its packets is held.
+    while (!m_held[processor_source()].empty()) sc_core::wait(m_processor_room);
+    enqueue(p, p.stamp, processor_source(), nullptr);
+}
+
+void CommUnit::enqueue(const TimedPacket &p, const sc_core::sc_time &stamp, int source, BufferSpace *credit)
+{
+    sc_core::sc_time now = sc_core::sc_time_stamp();
+    sc_core::sc_time when = stamp > now + m_lookahead ? stamp - m_lookahead : now;
+    m_arrivals.push(when, source, p, stamp, credit);
+    wake_at(when);
+}
+
+void CommUnit::b_transport(int id, tlm::tlm_generic_payload &trans, sc_core::sc_time &delay)
 {
     auto *ext = trans.get_extension<PacketExtension>();
     if (!ext) {
         trans.set_response_status(tlm::TLM_GENERIC_ERROR_RESPONSE);
         return;
     }
-    TimedPacket p = ext->item;
-    p.stamp = sc_core::sc_time_stamp() + delay; // arrival in the sender's local time
-    route(p);
+    // Arrival in the sender's local time.
+    enqueue(ext->item, sc_core::sc_time_stamp() + delay, id, ext->credit);
     trans.set_response_status(tlm::TLM_OK_RESPONSE);
+}
+
+void CommUnit::wake_at(const sc_core::sc_time &when)
+{
+    sc_core::sc_time now = sc_core::sc_time_stamp();
+    // Due now: deliver one delta on. Later: a timed notification (an earlier one pending is
+    // kept; deliver() re-arms for the rest).
+    if (when <= now) m_run.notify(sc_core::SC_ZERO_TIME);
+    else m_due.notify(when - now);
+}
+
+bool CommUnit::forward(uint32_t handle)
+{
+    ArrivalQueue::Arrival &a = m_arrivals.at(handle);
+    sc_core::sc_time now = sc_core::sc_time_stamp();
+    if (a.item.stamp < now) a.item.stamp = now; // held packets move on no earlier than now
+    bool is_local = false;
+    PacketSinkIf &next = next_hop(a.item, is_local);
+    if (!next.can_accept(a.item)) {
+        next.on_space(a.item, m_retry);
+        return false;
+    }
+    (is_local ? m_local : m_transit)++;
+    BufferSpace *credit = a.credit;
+    next.accept(a.item);
+    m_arrivals.release(handle);
+    if (credit) credit->release();
+    return true;
+}
+
+void CommUnit::deliver()
+{
+    sc_core::sc_time now = sc_core::sc_time_stamp();
+    while (!m_arrivals.empty() && m_arrivals.next_time() <= now) {
+        if (m_arrivals.next_is_new()) { // sent in this delta: next delta (already notified)
+            m_run.notify(sc_core::SC_ZERO_TIME);
+            return;
+        }
+        uint32_t h = m_arrivals.pop();
+        auto &held = m_held[m_arrivals.at(h).source];
+        if (!held.empty() || !forward(h)) held.push_back(h);
+    }
+    if (!m_arrivals.empty()) m_due.notify(m_arrivals.next_time() - now);
+}
+
+void CommUnit::retry()
+{
+    for (size_t s = 0; s < m_held.size(); s++) {
+        auto &held = m_held[s];
+        while (!held.empty() && forward(held.front())) held.pop_front();
+        if (static_cast<int>(s) == processor_source() && held.empty()) m_processor_room.notify(sc_core::SC_ZERO_TIME);
+    }
+}
+
+size_t CommUnit::held() const
+{
+    size_t n = 0;
+    for (const auto &h : m_held) n += h.size();
+    return n;
 }
 
 }  // namespace torusrt

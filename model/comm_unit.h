@@ -1,13 +1,33 @@
 // comm_unit.h - a node's communication unit: takes packets from its IP (or cluster), from the
 // host and from incoming links (TLM-2.0 b_transport), and routes each to the local processor
 // side or to the outgoing link of the first hop toward the owner of the packet's cell.
+//
+// Timing path: packets from the links and from the processor side enter the arrival queue (a
+// payload event queue) at their annotated time; one SC_METHOD delivers every arrival due, in the
+// arrival queue's fixed order (time, source, sequence), but never one pushed in the same delta
+// cycle: that one waits for the next delta, so whether its sender ran before or after the
+// delivery method does not matter. Sources: incoming link ports 0..L-1, then the processor side
+// (L). Host primaries go straight to the local processor side (they never wait).
+//
+// Loosely timed (temporal decoupling with quantum Q): an arrival is handled as soon as it lies
+// no more than Q ahead of simulation time, keeping its annotated time as its stamp; the next
+// link books it in the order it is handled, which is where the style's timing error comes from.
+// Q = 0 is the approximately-timed path exactly.
+//
+// Room: a packet whose next buffer is full is held here, in a FIFO per source, and later packets
+// from that source queue behind it; the next buffer's release wakes the retry method. A held
+// packet keeps its link slot (credit) until it moves on. The processor side waits (in its
+// thread) at its next hand-over while one of its packets is held.
 #pragma once
 
 #include <array>
+#include <deque>
 #include <systemc>
 #include <tlm>
 #include <tlm_utils/multi_passthrough_target_socket.h>
+#include <vector>
 
+#include "arrival_queue.h"
 #include "packet_sink_if.h"
 #include "rt_grid.h"
 #include "routing.h"
@@ -25,25 +45,39 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf {
     sc_core::sc_port<PacketSinkIf, kDirections, sc_core::SC_ZERO_OR_MORE_BOUND> link_out; // outgoing links
 
     CommUnit(sc_core::sc_module_name name, int node, const Routing &routing, const rt_grid *grid,
-             const int32_t *cell_owner);
+             const int32_t *cell_owner, const sc_core::sc_time &lookahead = sc_core::SC_ZERO_TIME);
 
-    void accept(const TimedPacket &p) override { route(p); }
+    void accept(const TimedPacket &p) override;
     // Records which link_out port index serves direction `dir` (call at elaboration).
     void set_link_port(int dir, int port_index) { m_port_of_dir[dir] = port_index; }
 
     uint64_t routed_local() const { return m_local; }
     uint64_t routed_transit() const { return m_transit; }
+    // Packets held for room further on (for the deadlock report).
+    size_t held() const;
 
   private:
-    void route(const TimedPacket &p);
+    PacketSinkIf &next_hop(const TimedPacket &p, bool &local);
+    bool forward(uint32_t handle);
     void b_transport(int id, tlm::tlm_generic_payload &trans, sc_core::sc_time &delay);
+    void enqueue(const TimedPacket &p, const sc_core::sc_time &stamp, int source, BufferSpace *credit);
+    void wake_at(const sc_core::sc_time &when);
+    void deliver();
+    void retry();
+    int processor_source() const { return m_processor_source; }
+    void end_of_elaboration() override;
 
     int m_node;
     const Routing &m_routing;
     const rt_grid *m_grid;
     const int32_t *m_owner;
     std::array<int, kDirections> m_port_of_dir;
+    int m_processor_source = 0; // = the number of incoming links, known after elaboration
     uint64_t m_local = 0, m_transit = 0;
+    sc_core::sc_time m_lookahead; // the quantum when loosely timed, else 0
+    ArrivalQueue m_arrivals;
+    std::vector<std::deque<uint32_t>> m_held; // per source, arrival handles
+    sc_core::sc_event m_due, m_run, m_retry, m_processor_room;
 };
 
 }  // namespace torusrt

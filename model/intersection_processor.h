@@ -37,6 +37,8 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf {
     ~IntersectionProcessor() override;
 
     void accept(const TimedPacket &p) override { m_queue.push_blocking(p); }
+    bool can_accept(const TimedPacket &p) const override { return m_queue.has_room(p); }
+    void on_space(const TimedPacket &, sc_core::sc_event &e) override { m_queue.space().on_release(e); }
 
     // Statistics, read after the run.
     const rt_op_counts &ops() const { return m_ops; }

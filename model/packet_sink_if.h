@@ -1,5 +1,7 @@
 // packet_sink_if.h - where a module hands a packet on: an IP's input queue, a link, a
-// communication unit. accept() may wait (in the caller's thread) while the receiver is full.
+// communication unit. accept() may wait (in the caller's thread) while the receiver is full; a
+// caller that must not wait (an SC_METHOD) asks can_accept() first and, if there is no room,
+// registers an event with on_space() to be notified when room is released.
 #pragma once
 
 #include <systemc>
@@ -11,6 +13,8 @@ namespace torusrt {
 class PacketSinkIf : public virtual sc_core::sc_interface {
   public:
     virtual void accept(const TimedPacket &p) = 0;
+    virtual bool can_accept(const TimedPacket &) const { return true; }
+    virtual void on_space(const TimedPacket &, sc_core::sc_event &) {}
 };
 
 }  // namespace torusrt

@@ -5,6 +5,7 @@
 #include <systemc>
 #include <tlm>
 
+#include "buffer_space.h"
 #include "rt_packet.h"
 
 namespace torusrt {
@@ -17,14 +18,17 @@ struct TimedPacket {
 };
 
 // Packets cross links and the cluster bus as a generic payload (command WRITE, data = the packet's
-// bytes on the wire) with this extension holding the packet itself.
+// bytes on the wire) with this extension holding the packet itself and the slot it occupies in
+// the sender's buffer, which the receiver gives back once it has taken the packet on.
 class PacketExtension : public tlm::tlm_extension<PacketExtension> {
   public:
     TimedPacket item;
+    BufferSpace *credit = nullptr;
     tlm::tlm_extension_base *clone() const override { return new PacketExtension(*this); }
     void copy_from(const tlm::tlm_extension_base &other) override
     {
         item = static_cast<const PacketExtension &>(other).item;
+        credit = static_cast<const PacketExtension &>(other).credit;
     }
 };
 

@@ -1,4 +1,4 @@
-// toroidal_link.cpp - serialises packets over one link direction.
+// toroidal_link.cpp - busy-until serialisation of one link direction.
 #include "toroidal_link.h"
 
 namespace torusrt {
@@ -7,42 +7,68 @@ ToroidalLink::ToroidalLink(sc_core::sc_module_name name, const SimConfig &config
     : sc_module(name), socket("socket"), in("in"),
       m_packet_time(rt_timing_link_packet_us(&config.timing), sc_core::SC_US),
       m_packet_bytes(config.timing.packet_bytes), m_from(from), m_to(to), m_dir(dir),
-      m_queue(std::string(basename()) + ".queue", config.queue_capacity),
-      m_time(config.style == TimingStyle::lt)
+      m_space(config.queue_capacity)
 {
     in.bind(*this);
     m_ext = new PacketExtension;
     m_trans.set_extension(m_ext);
     SC_HAS_PROCESS(ToroidalLink);
-    SC_THREAD(run);
+    SC_METHOD(drive_busy_trace);
+    sensitive << m_trace_changed;
+    dont_initialize();
 }
 
-void ToroidalLink::run()
+void ToroidalLink::accept(const TimedPacket &p)
 {
-    for (;;) {
-        if (m_queue.empty()) m_time.sync();
-        m_ext->item = m_queue.pop_blocking();
-        m_time.advance_to(m_ext->item.stamp); // cannot start before the packet was sent
-        m_busy_flag = true;
-        m_time.advance(m_packet_time);
-        m_busy_flag = false;
-        m_busy += m_packet_time;
-        m_packets++;
-        m_bytes += m_packet_bytes;
-        // The delay argument carries this process's local-time offset (loosely timed).
-        sc_core::sc_time delay = m_time.now() - sc_core::sc_time_stamp();
-        m_ext->item.stamp = m_time.now();
-        m_trans.set_command(tlm::TLM_WRITE_COMMAND);
-        m_trans.set_address(static_cast<uint64_t>(m_to));
-        // Data = the packet as held in memory; its size on the wire is a timing parameter.
-        m_trans.set_data_ptr(reinterpret_cast<unsigned char *>(&m_ext->item.packet));
-        m_trans.set_data_length(sizeof(rt_packet));
-        m_trans.set_streaming_width(sizeof(rt_packet));
-        m_trans.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
-        sc_core::sc_time sent = m_time.now();
-        socket->b_transport(m_trans, delay);
-        m_time.settle(sent); // the receiver may have held the packet while its queue was full
+    m_space.take_blocking();
+    TimedPacket q = p;
+    // A thread that waited for room sends no earlier than now.
+    if (q.stamp < sc_core::sc_time_stamp()) q.stamp = sc_core::sc_time_stamp();
+    send(q);
+}
+
+void ToroidalLink::send(const TimedPacket &p)
+{
+    sc_core::sc_time start = p.stamp > m_free_at ? p.stamp : m_free_at; // cannot start before it was sent
+    m_free_at = start + m_packet_time;
+    m_busy += m_packet_time;
+    m_packets++;
+    m_bytes += m_packet_bytes;
+    if (m_tracing) {
+        m_crossings.emplace_back(start, m_free_at);
+        m_trace_changed.notify(sc_core::SC_ZERO_TIME);
     }
+    m_ext->item = p;
+    m_ext->item.stamp = m_free_at;
+    m_ext->credit = &m_space;
+    m_trans.set_command(tlm::TLM_WRITE_COMMAND);
+    m_trans.set_address(static_cast<uint64_t>(m_to));
+    // Data = the packet as held in memory; its size on the wire is a timing parameter.
+    m_trans.set_data_ptr(reinterpret_cast<unsigned char *>(&m_ext->item.packet));
+    m_trans.set_data_length(sizeof(rt_packet));
+    m_trans.set_streaming_width(sizeof(rt_packet));
+    m_trans.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
+    // Annotated delay: queueing behind earlier packets plus serialisation.
+    sc_core::sc_time delay = m_free_at - sc_core::sc_time_stamp();
+    socket->b_transport(m_trans, delay);
+    if (m_trans.is_response_error()) SC_REPORT_FATAL(name(), "the receiving communication unit refused a packet");
+}
+
+bool &ToroidalLink::busy_trace()
+{
+    m_tracing = true;
+    return m_busy_flag;
+}
+
+void ToroidalLink::drive_busy_trace()
+{
+    sc_core::sc_time now = sc_core::sc_time_stamp();
+    while (!m_crossings.empty() && m_crossings.front().second <= now) m_crossings.pop_front();
+    // Crossings are back to back or separated by idle time; the flag follows the front one.
+    m_busy_flag = !m_crossings.empty() && m_crossings.front().first <= now;
+    if (m_crossings.empty()) return;
+    const sc_core::sc_time &next = m_busy_flag ? m_crossings.front().second : m_crossings.front().first;
+    m_trace_changed.notify(next - now);
 }
 
 }  // namespace torusrt

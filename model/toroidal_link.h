@@ -1,16 +1,24 @@
-// toroidal_link.h - one direction of one link between neighbouring nodes. Packets wait in its
-// output queue and cross one at a time (serialisation time per packet); the receiving
-// communication unit gets each as a TLM-2.0 b_transport.
+// toroidal_link.h - one direction of one link between neighbouring nodes, without a process of
+// its own. A packet handed to the link starts crossing when both it and the link are ready
+// (busy-until) and takes the serialisation time; the link forwards it at once to the receiving
+// communication unit as a TLM-2.0 b_transport whose delay is annotated with the queueing and the
+// serialisation, and the receiver delivers it at that time from its arrival queue.
+//
+// Room: with --queue N the link holds at most N packets, counted from the moment the sender
+// hands one over until the receiver has taken it on (waiting, on the wire, or held at the
+// receiver for room further on). The transaction carries the slot (the credit); the receiver
+// releases it.
 #pragma once
 
+#include <deque>
 #include <systemc>
 #include <tlm>
 #include <tlm_utils/simple_initiator_socket.h>
+#include <utility>
 
-#include "packet_queue.h"
+#include "buffer_space.h"
 #include "packet_sink_if.h"
 #include "sim_config.h"
-#include "time_keeper.h"
 
 namespace torusrt {
 
@@ -21,7 +29,10 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
 
     ToroidalLink(sc_core::sc_module_name name, const SimConfig &config, int from, int to, int dir);
 
-    void accept(const TimedPacket &p) override { m_queue.push_blocking(p); }
+    // Waits (in a thread) for room, then sends. A method caller checks can_accept() first.
+    void accept(const TimedPacket &p) override;
+    bool can_accept(const TimedPacket &) const override { return m_space.available(); }
+    void on_space(const TimedPacket &, sc_core::sc_event &e) override { m_space.on_release(e); }
 
     int from() const { return m_from; }
     int to() const { return m_to; }
@@ -29,23 +40,28 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
     uint64_t packets() const { return m_packets; }
     double bytes() const { return m_bytes; }
     const sc_core::sc_time &busy_time() const { return m_busy; }
-    PacketQueue &queue() { return m_queue; }
-    bool &busy_trace() { return m_busy_flag; }
+    BufferSpace &queue() { return m_space; }
+    // Traced busy line; asking for it turns on the (otherwise idle) process that drives it.
+    bool &busy_trace();
 
   private:
-    void run();
+    void send(const TimedPacket &p);
+    void drive_busy_trace();
 
     sc_core::sc_time m_packet_time; // serialisation time of one packet
     double m_packet_bytes;
     int m_from, m_to, m_dir;
-    PacketQueue m_queue;
-    TimeKeeper m_time;
+    BufferSpace m_space;
+    sc_core::sc_time m_free_at = sc_core::SC_ZERO_TIME; // busy until
     uint64_t m_packets = 0;
     double m_bytes = 0;
     sc_core::sc_time m_busy = sc_core::SC_ZERO_TIME;
-    bool m_busy_flag = false;
     tlm::tlm_generic_payload m_trans;
     PacketExtension *m_ext; // owned by m_trans
+    // Busy trace (only when traced): crossings not yet over, and the event that re-evaluates.
+    bool m_tracing = false, m_busy_flag = false;
+    std::deque<std::pair<sc_core::sc_time, sc_core::sc_time>> m_crossings;
+    sc_core::sc_event m_trace_changed;
 };
 
 }  // namespace torusrt

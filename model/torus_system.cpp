@@ -13,18 +13,21 @@ TorusSystem::TorusSystem(sc_core::sc_module_name name, const SimConfig &config, 
     : sc_module(name), m_routing(config.ips, config.topology == Topology::torus)
 {
     int nodes = config.node_count();
+    sc_core::sc_time lookahead = config.style == TimingStyle::lt ? sc_core::sc_time(config.quantum_us, sc_core::SC_US)
+                                                                 : sc_core::SC_ZERO_TIME;
     m_fb = std::make_unique<FrameBuffer>("fb", fb);
     m_host = std::make_unique<Host>("host", config, scene, grid, cell_owner, ledger);
     m_host->fb_socket.bind(m_fb->socket);
     for (int n = 0; n < nodes; n++) {
-        m_comm.push_back(std::make_unique<CommUnit>(("cu_" + std::to_string(n)).c_str(), n, m_routing, grid, cell_owner));
-        m_host->inject.bind(m_comm[n]->in);
+        m_comm.push_back(std::make_unique<CommUnit>(("cu_" + std::to_string(n)).c_str(), n, m_routing, grid, cell_owner,
+                                                    lookahead));
         if (config.cluster == 1) {
             auto ip = std::make_unique<IntersectionProcessor>(("ip_" + std::to_string(n)).c_str(), config, scene,
                                                               grid, cell_owner, n, n, ledger);
             ip->out.bind(m_comm[n]->in);
             ip->fb_socket.bind(m_fb->socket);
             m_comm[n]->local.bind(ip->in);
+            ip->queue().attach(&m_host->primaries(), n);
             m_ips.push_back(std::move(ip));
         } else {
             auto cl = std::make_unique<ClusterNode>(("cluster_" + std::to_string(n)).c_str(), config, scene, grid,
@@ -32,6 +35,7 @@ TorusSystem::TorusSystem(sc_core::sc_module_name name, const SimConfig &config, 
             cl->to_comm_unit.bind(m_comm[n]->in);
             for (auto *p : cl->processors()) p->fb_socket.bind(m_fb->socket);
             m_comm[n]->local.bind(cl->from_comm_unit);
+            cl->dispatcher().inbox().attach(&m_host->primaries(), n);
             m_clusters.push_back(std::move(cl));
         }
     }

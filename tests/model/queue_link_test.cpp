@@ -1,11 +1,13 @@
 // queue_link_test.cpp - a toroidal link serialises packets at its packet time and delivers them as
-// TLM-2.0 transactions in order; a bounded queue blocks its writer while full.
+// TLM-2.0 transactions in order, annotated with their arrival time; a bounded link blocks its
+// writer until the receiver returns a slot; a bounded queue blocks its writer while full.
 #include <systemc>
 #include <tlm>
 #include <tlm_utils/simple_target_socket.h>
 #include <vector>
 
 #include "harness.h"
+#include "packet_queue.h"
 #include "rt_timing.h"
 #include "sim_config.h"
 #include "toroidal_link.h"
@@ -13,20 +15,36 @@
 using harness::check;
 using namespace torusrt;
 
+// Records each packet's annotated arrival and returns its link slot at that time.
 struct Receiver : sc_core::sc_module {
     tlm_utils::simple_target_socket<Receiver> socket;
     std::vector<sc_core::sc_time> arrivals;
     std::vector<uint32_t> xs;
+    std::vector<BufferSpace *> credits;
+    size_t released = 0;
+    sc_core::sc_event due;
     explicit Receiver(sc_core::sc_module_name n) : sc_module(n), socket("socket")
     {
         socket.register_b_transport(this, &Receiver::b_transport);
+        SC_HAS_PROCESS(Receiver);
+        SC_METHOD(release);
+        sensitive << due;
+        dont_initialize();
     }
     void b_transport(tlm::tlm_generic_payload &t, sc_core::sc_time &delay)
     {
         auto *ext = t.get_extension<PacketExtension>();
         arrivals.push_back(sc_core::sc_time_stamp() + delay);
         xs.push_back(ext ? ext->item.packet.x : 9999);
+        credits.push_back(ext ? ext->credit : nullptr);
+        due.notify(arrivals[released] - sc_core::sc_time_stamp());
         t.set_response_status(tlm::TLM_OK_RESPONSE);
+    }
+    void release()
+    {
+        while (released < arrivals.size() && arrivals[released] <= sc_core::sc_time_stamp())
+            if (BufferSpace *c = credits[released++]) c->release();
+        if (released < arrivals.size()) due.notify(arrivals[released] - sc_core::sc_time_stamp());
     }
 };
 
@@ -95,7 +113,8 @@ int sc_main(int, char **)
     check(link.busy_time() == sc_core::sc_time(250, sc_core::SC_US), "link busy 250 us");
     // With capacity 2 the sender must have been held back: its last push happens after t = 0.
     check(tx.pushed.size() == 5 && tx.pushed.back() > sc_core::SC_ZERO_TIME, "bounded queue blocks the writer");
-    check(link.queue().high_water() <= 2, "queue never exceeds its capacity");
+    check(link.queue().high_water() == 2, "the link holds up to its capacity, never more");
+    check(rx.released == 5 && link.queue().used() == 0, "every slot returned at arrival");
     check(filler.host_pushed == 5, "host packets never wait for room (they live in host memory)");
     check(filler.network_pushed == 2, "network packets stop at the capacity");
     check(filler.queue.blocked_writers() == 1 && filler.queue.full(), "the writer is left waiting on a full queue");

@@ -1,0 +1,72 @@
+// buffer_space.h - the room in one bounded buffer, counted in packets: the "space available"
+// notion of flow control. A writer takes a slot before it hands a packet over and the reader
+// gives it back once the packet has left the buffer (a credit returned). A thread that finds no
+// room waits on released(); an SC_METHOD registers an event with on_release() and is notified
+// once, at the next release. Capacity 0 = unbounded (room always available).
+#pragma once
+
+#include <cstddef>
+#include <systemc>
+#include <vector>
+
+namespace torusrt {
+
+class BufferSpace {
+  public:
+    explicit BufferSpace(unsigned capacity) : m_capacity(capacity) {}
+
+    bool available() const { return !m_capacity || m_used < m_capacity; }
+    bool full() const { return !available(); }
+    void take()
+    {
+        m_used++;
+        m_depth = static_cast<int>(m_used);
+        if (m_used > m_high_water) m_high_water = m_used;
+    }
+    void release()
+    {
+        m_used--;
+        m_depth = static_cast<int>(m_used);
+        if (!m_capacity) return;
+        m_released.notify(sc_core::SC_ZERO_TIME);
+        for (sc_core::sc_event *e : m_waiters) e->notify(sc_core::SC_ZERO_TIME);
+        m_waiters.clear();
+    }
+    // Takes a slot, waiting (in the calling thread) while there is none.
+    void take_blocking()
+    {
+        while (!available()) {
+            m_blocked_writers++;
+            sc_core::wait(m_released);
+            m_blocked_writers--;
+        }
+        take();
+    }
+    // `e` is notified at the next release (an SC_METHOD writer retries then).
+    void on_release(sc_core::sc_event &e)
+    {
+        for (sc_core::sc_event *w : m_waiters)
+            if (w == &e) return;
+        m_waiters.push_back(&e);
+    }
+    const sc_core::sc_event &released() const { return m_released; }
+
+    size_t used() const { return m_used; }
+    size_t size() const { return m_used; }
+    // Traced occupancy (a plain int that sc_trace can watch).
+    int &depth_trace() { return m_depth; }
+    size_t high_water() const { return m_high_water; }
+    unsigned capacity() const { return m_capacity; }
+    // Writers (threads and methods) waiting for room, for the deadlock report.
+    unsigned blocked_writers() const { return m_blocked_writers + static_cast<unsigned>(m_waiters.size()); }
+
+  private:
+    unsigned m_capacity;
+    size_t m_used = 0, m_high_water = 0;
+    unsigned m_blocked_writers = 0;
+    int m_depth = 0;
+    sc_core::sc_event m_released;
+    std::vector<sc_core::sc_event *> m_waiters;
+};
+
+}  // namespace torusrt

@@ -1,0 +1,45 @@
+// primary_source.cpp - entry nodes of the primary rays, and their packets made on demand.
+#include "primary_source.h"
+
+#include "rt_packet.h"
+#include "rt_step.h"
+
+namespace torusrt {
+
+PrimarySource::PrimarySource(const rt_scene *scene, const rt_grid *grid, const int32_t *owner, int nodes,
+                             const sc_core::sc_time &inject)
+    : m_scene(scene), m_grid(grid), m_inject(inject), m_pixels(nodes), m_next(nodes, 0)
+{
+    const rt_camera *cam = rt_scene_camera(scene);
+    m_width = cam->width;
+    uint32_t pixel = 0;
+    for (uint32_t y = 0; y < cam->height; y++)
+        for (uint32_t x = 0; x < cam->width; x++, pixel++) {
+            rt_packet p;
+            int enters = 0;
+            rt_primary_packet(scene, grid, x, y, &p, &enters);
+            if (!enters) {
+                m_missed.push_back(pixel);
+                continue;
+            }
+            m_pixels[owner[rt_packet_cell(grid, &p)]].push_back(pixel);
+            m_entering++;
+        }
+}
+
+TimedPacket PrimarySource::take(int node)
+{
+    uint32_t pixel = m_pixels[node][m_next[node]++];
+    TimedPacket t{};
+    int enters = 0;
+    rt_primary_packet(m_scene, m_grid, pixel % m_width, pixel / m_width, &t.packet, &enters);
+    t.stamp = inject_time(pixel);
+    t.from_host = true;
+    if (!pending(node)) { // the node's list is spent: give its memory back
+        std::vector<uint32_t>().swap(m_pixels[node]);
+        m_next[node] = 0;
+    }
+    return t;
+}
+
+}  // namespace torusrt
