@@ -9,12 +9,12 @@
 # Image size: the scene's full 144x144 (each run takes 1-3 s); at 48x48 the handful of packets
 # per processor makes scheduling luck (which processor gets which packet) larger than the few
 # microseconds a remote object read costs, and shared runs can come out faster by chance.
-# With round-robin dispatch that luck also shows at 144x144 (shared 0.2 % faster at m = 2 and
-# 1 % at m = 64), so the shared-vs-replicated time comparison uses the load-aware shortest-queue
-# dispatch; the busy-time comparison, which does not depend on scheduling, uses both. Even
-# shortest-queue leaves a trace of luck at m = 64 (1,024 processors for 20,736 pixels: shared
-# 0.3 % faster under the fixed simultaneous-event order), so there shared may be at most 0.5 %
-# faster; below m = 64 it must be strictly slower.
+# With round-robin dispatch that luck also shows at 144x144 (under the calibrated default
+# shared is 1.0 %, 0.6 % and 2.5 % faster at m = 4, 8 and 16), so the shared-vs-replicated time
+# comparison uses the load-aware shortest-queue dispatch; the busy-time comparison, which does
+# not depend on scheduling, uses both. Shortest-queue can still leave a trace of luck at m = 64
+# (1,024 processors for 20,736 pixels; an earlier timing made shared 0.3 % faster there), so
+# there shared may be at most 0.5 % faster; below m = 64 it must be strictly slower.
 #
 # Usage (CTest runs it so): bash tests/cli/cluster_scaling.sh BUILD_DIR SOURCE_DIR
 set -u
