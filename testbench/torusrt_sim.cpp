@@ -178,7 +178,7 @@ void declare_options(CLI::App &app, CommandLine &cl)
     app.add_option("--arbiter", cl.arbiter, "cluster bus arbiter: round-robin (default) or fixed-priority")->type_name("KIND");
     app.add_option("--dispatch", cl.dispatch, "cluster packet dispatch: round-robin (default) or shortest-queue")
         ->type_name("KIND");
-    app.add_option("--t1", cl.t1, "T(1) in seconds for efficiency_t1 (default: run the model with one processor)")
+    app.add_option("--t1", cl.t1, "T(1) in seconds for the efficiency T(1)/(n T(n)) (default: run the model with one processor)")
         ->type_name("SECONDS");
     app.add_option("--time-limit", cl.time_limit, "stop with an error (exit 1) when simulated time passes this\n"
                    "(default and maximum 1e7 s, SystemC's 64-bit picosecond time holds 1.8e7 s)")->type_name("TIME");
