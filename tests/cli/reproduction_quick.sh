@@ -60,6 +60,7 @@ rows() { awk 'NR > 1' "$1" | wc -l; }
 not() { awk -F, -v c="$2" -v want="$3" 'NR == 1 { for (i = 1; i <= NF; i++) ix[$i] = i; next } $ix[c] != want' "$1" | wc -l; }
 gt() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a != "" && b != "" && a + 0 > b + 0) }'; }
 ge() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a != "" && b != "" && a + 0 >= b + 0) }'; }
+expect10=$((have_clusters ? 6 : 0))
 for P in calibrated literal; do
     check "$P: fig5_6.csv has 18 rows" test "$(rows "$RES/$P/fig5_6.csv")" -eq 18
     check "$P: fig7.csv has 18 rows" test "$(rows "$RES/$P/fig7.csv")" -eq 18
