@@ -28,6 +28,9 @@ declare -A MAPARG=([block]=block [cyclic]=cyclic [bc2]=block-cyclic:2 [bc3]=bloc
 # The cluster study: 16 clusters on a 4x2x2 torus, load-balancing mapping at the cluster level.
 CLUSTER_SHAPE=4x2x2
 CLUSTER_NODES=16
+# The timing profiles swept (torusrt-sim --timing-profile), the default first: each has its own
+# results folder RESULTS/PROFILE with the same points, CSVs and plots.
+PROFILES=(calibrated literal)
 
 # Sweep definition per mode: image size, scenes, IP counts, mappings, processors per cluster.
 # define_mode full|quick

@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
 # points.sh - print the reproduction's points, one command line per point.
 #
-#   experiments/points.sh [--build DIR] [--phase 1|2|all] [--tsv] [--no-clusters] full|quick RESULTS_DIR
+#   experiments/points.sh [--build DIR] [--phase 1|2|all] [--tsv] [--no-clusters]
+#                         [--profile calibrated|literal] full|quick RESULTS_DIR
 #
+# Every point runs under the timing profile given (--timing-profile; default calibrated): the
+# sweep lists each profile into its own RESULTS_DIR (experiments/results/PROFILE).
 # Phase 1 is the one-processor run of each scene (RESULTS/t1/<scene>.json); every phase-2
 # point reads its T(1) from there (--t1-from), so phase 1 must finish first. Each command runs
 # experiments/run_point.sh, which writes RESULTS/<fig>/<point>.json (and .png) through a temporary
@@ -15,20 +18,22 @@
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
 
-phase=all tsv=0 build=$BUILD clusters=1
+phase=all tsv=0 build=$BUILD clusters=1 profile=calibrated
 while [ $# -gt 0 ]; do
     case $1 in
         --build) build=$2; shift 2 ;;
         --phase) phase=$2; shift 2 ;;
         --tsv) tsv=1; shift ;;
         --no-clusters) clusters=0; shift ;;
+        --profile) profile=$2; shift 2 ;;
         -h|--help) sed -n '2,/^set -e/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
         -*) die "unknown option '$1'" ;;
         *) break ;;
     esac
 done
-[ $# -eq 2 ] || die "usage: points.sh [--build DIR] [--phase 1|2|all] [--tsv] [--no-clusters] full|quick RESULTS_DIR"
+[ $# -eq 2 ] || die "usage: points.sh [--build DIR] [--phase 1|2|all] [--tsv] [--no-clusters] [--profile P] full|quick RESULTS_DIR"
 case $phase in 1|2|all) ;; *) die "--phase must be 1, 2 or all" ;; esac
+case " ${PROFILES[*]} " in *" $profile "*) ;; *) die "--profile must be one of: ${PROFILES[*]}" ;; esac
 define_mode "$1"
 [ "$clusters" = 1 ] || CLUSTER_SCENES=()
 set_build "$build"
@@ -42,7 +47,7 @@ emit() {
     local json=$RES/$fig/$name.json cmd
     cmd=$(printf '%q ' "$EXP/run_point.sh" "$json")
     [ -n "$t1" ] && cmd+=$(printf '%q ' --t1-from "$t1")
-    cmd+=$(printf '%q ' -- "$SIM" "$(scene_file "$scene")" --size "$SIZE" "$@")
+    cmd+=$(printf '%q ' -- "$SIM" "$(scene_file "$scene")" --size "$SIZE" --timing-profile "$profile" "$@")
     cmd=${cmd% }
     if [ "$tsv" = 1 ]; then
         printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$fig" "$name" "$scene" "$map" "$n" "$shape" "$m" "$data" "$json" "$cmd"

@@ -18,7 +18,9 @@
 #   --no-report          run the points only
 #   --no-clusters        leave out figures 10-12 (for builds without the cluster model)
 #
-# The one-processor points (phase 1) run first, since every other point takes its T(1) from
+# Every point runs under each timing profile (experiments/lib.sh PROFILES: calibrated, the
+# default, and literal); RES/PROFILE holds that profile's JSONs, CSVs and plots, RES the point
+# lists, joblogs and runs.tsv. The one-processor points (phase 1) run first, since every other point takes its T(1) from
 # them. Points already done are skipped, so an interrupted or partly failed sweep is resumed by
 # running the same command again. Failed points are listed with their command lines (from
 # RESULTS/joblog) and the exit status is then 1; the collection step marks them in the CSVs.
@@ -54,10 +56,19 @@ if [ -z "$doc" ]; then
     if [ "$mode" = full ]; then doc=$REPO/docs/reproduction.md; else doc=$RES/reproduction.md; fi
 fi
 
-"$EXP/points.sh" "${popt[@]}" --build "$BUILD" --tsv "$MODE" "$RES" >"$RES/points.tsv" || die "points.sh failed"
+# One results folder per timing profile (RES/PROFILE), listed together so that one parallel
+# run per phase covers both.
+: >"$RES/points.phase1"
+: >"$RES/points.phase2"
+for p in "${PROFILES[@]}"; do
+    mkdir -p "$RES/$p"
+    "$EXP/points.sh" "${popt[@]}" --build "$BUILD" --profile "$p" --tsv "$MODE" "$RES/$p" >"$RES/$p/points.tsv" || die "points.sh failed"
+    echo "$MODE" >"$RES/$p/mode"
+    "$EXP/points.sh" "${popt[@]}" --build "$BUILD" --profile "$p" --phase 1 "$MODE" "$RES/$p" >>"$RES/points.phase1"
+    "$EXP/points.sh" "${popt[@]}" --build "$BUILD" --profile "$p" --phase 2 "$MODE" "$RES/$p" >>"$RES/points.phase2"
+done
 echo "$MODE" >"$RES/mode"
-"$EXP/points.sh" "${popt[@]}" --build "$BUILD" --phase 1 "$MODE" "$RES" >"$RES/points.phase1"
-"$EXP/points.sh" "${popt[@]}" --build "$BUILD" --phase 2 "$MODE" "$RES" >"$RES/points.phase2"
+for p in "${PROFILES[@]}"; do cat "$RES/$p/points.tsv"; done >"$RES/points.tsv"
 total=$(wc -l <"$RES/points.tsv")
 before=0
 while IFS=$'\t' read -r _ _ _ _ _ _ _ _ json _; do
@@ -107,7 +118,9 @@ fi
 status=0
 [ "$failed" -eq 0 ] && [ "$after" -eq "$total" ] || status=1
 if [ "$report" = 1 ]; then
-    python3 "$EXP/report" collect "$RES" || status=1
+    for p in "${PROFILES[@]}"; do
+        python3 "$EXP/report" collect "$RES/$p" || status=1
+    done
     python3 "$EXP/report" plots "$RES" || status=1
     python3 "$EXP/report" reproduction --doc "$doc" "$RES" || status=1
     echo "sweep: CSVs and plots in $RES, report $doc"

@@ -13,12 +13,12 @@ def reproduction(args):
     res = os.path.abspath(args.results)
     doc = args.doc
     if not doc:
-        from .results import Results
-        full = Results(res).mode == "full"
+        mode_file = os.path.join(res, "mode")
+        full = os.path.exists(mode_file) and open(mode_file).read().strip() == "full"
         doc = os.path.join(REPO, "docs", "reproduction.md") if full else os.path.join(res, "reproduction.md")
-    claim_list = rep.write(res, doc)
-    holding = sum(1 for c in claim_list if c.verdict == HOLDS)
-    print("report: %s (%d of %d claims hold)" % (doc, holding, len(claim_list)))
+    by_profile = rep.write(res, doc)
+    print("report: %s (%s)" % (doc, "; ".join(
+        "%s: %d of %d claims hold" % (p, sum(1 for c in cl if c.verdict == HOLDS), len(cl)) for p, cl in by_profile)))
     return 0
 
 

@@ -14,8 +14,8 @@ POINT_COLUMNS = ["fig", "name", "scene", "mapping", "n", "torus", "m", "data", "
 
 # JSON fields of a point by name: (our name, path, ...alternatives).
 FIELDS = {
-    "sim_time_s": ["sim_time_s"], "t1_s": ["t1_s"], "efficiency_t1": ["efficiency_t1"],
-    "efficiency_busy": ["efficiency_busy"],
+    "sim_time_s": ["sim_time_s"], "t1_s": ["t1_s"], "efficiency": ["efficiency", "efficiency_t1"],
+    "load_balance": ["load_balance", "efficiency_busy"], "timing_profile": ["config.timing_profile"],
     "max_per_ip_bytes": ["memory.max_per_ip_bytes", "memory.max_per_processor_bytes"],
     "total_bytes": ["memory.total_bytes"], "pixel_partitioned_bytes": ["memory.pixel_partitioned_bytes"],
     "whole_scene_bytes": ["memory.whole_scene_bytes"], "ratio_to_pixel_partitioned": ["memory.ratio_to_pixel_partitioned"],
@@ -31,14 +31,14 @@ FIELDS = {
 }
 
 CSVS = {
-    "fig5_6": ["scene", "mapping", "n", "torus", "status", "sim_time_s", "t1_s", "speedup", "efficiency_t1",
-               "efficiency_busy", "busy_max_s", "busy_mean_s", "packets_created", "packets_forwarded",
+    "fig5_6": ["scene", "mapping", "n", "torus", "timing_profile", "status", "sim_time_s", "t1_s", "speedup", "efficiency",
+               "load_balance", "busy_max_s", "busy_mean_s", "packets_created", "packets_forwarded",
                "packets_conserved", "link_packets", "link_util_mean", "image_identical", "wall_s"],
     "fig7": ["scene", "mapping", "n", "status", "max_per_ip_bytes", "total_bytes", "pixel_partitioned_bytes",
              "whole_scene_bytes", "ratio_to_pixel_partitioned", "pixel_partitioned_over_total"],
     "fig8": ["scene", "n", "status", "units_serial", "units_parallel", "speedup", "paper_units", "paper_speedup"],
-    "fig10_12": ["scene", "data", "m", "processors", "torus", "status", "sim_time_s", "t1_s", "speedup",
-                 "efficiency_t1", "efficiency_busy", "max_per_processor_bytes", "total_bytes",
+    "fig10_12": ["scene", "data", "m", "processors", "torus", "timing_profile", "status", "sim_time_s", "t1_s", "speedup",
+                 "efficiency", "load_balance", "max_per_processor_bytes", "total_bytes",
                  "pixel_partitioned_bytes", "ratio_to_pixel_partitioned", "bus_util_mean", "bus_util_max",
                  "bus_wait_mean_us", "bus_object_reads", "image_identical", "wall_s", "paper_time_s",
                  "cell_list_bytes_per_processor", "bus_object_bytes", "bus_packet_transfers", "bus_cycle_us",

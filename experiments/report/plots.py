@@ -3,7 +3,7 @@ import os
 import subprocess
 
 from . import paper
-from .results import Results
+from .results import profile_results
 
 PLOT_DIR = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "plots")
 
@@ -27,13 +27,18 @@ def gnuplot(script, variables):
     subprocess.run(["gnuplot", "-e", "; ".join(assigns), os.path.join(PLOT_DIR, script)], check=True)
 
 
-def flat_data(r, dat):
-    """fig5-8 data files; returns the mappings present."""
+def flat_data(all_r, dat):
+    """fig5-8 data files (f56-*.dat of the default profile, f56literal-*.dat and so on of the
+    others; memory and preprocessing do not depend on the timing); returns the mappings present."""
+    r = all_r[0]
     maps = r.f56.distinct("mapping")
+    for x in all_r:
+        for s in x.scenes:
+            for m in maps:
+                write_dat(os.path.join(dat, "f56%s-%s-%s.dat" % (tag(x, r), s, m)),
+                          series(x.f56, ["n", "sim_time_s", "load_balance", "efficiency", "t1_s"], scene=s, mapping=m))
     for s in r.scenes:
         for m in maps:
-            write_dat(os.path.join(dat, "f56-%s-%s.dat" % (s, m)),
-                      series(r.f56, ["n", "sim_time_s", "efficiency_busy", "efficiency_t1", "t1_s"], scene=s, mapping=m))
             write_dat(os.path.join(dat, "f7-%s-%s.dat" % (s, m)),
                       series(r.f7, ["n", "total_bytes", "pixel_partitioned_bytes"], scene=s, mapping=m))
         write_dat(os.path.join(dat, "f8-%s.dat" % s), series(r.f8, ["n", "units_parallel", "units_serial"], scene=s))
@@ -47,15 +52,24 @@ def flat_data(r, dat):
     return maps
 
 
-def cluster_data(r, dat):
-    """fig10-12 data files; returns the data modes present."""
+def tag(x, default):
+    """The data files' profile tag: '' for the default profile, else its name."""
+    return "" if x is default else x.profile
+
+
+def cluster_data(all_r, dat):
+    """fig10-12 data files (f10literal-*.dat for the literal profile); returns the data modes present."""
+    r = all_r[0]
     datas = r.f10.distinct("data")
     m, pm = paper.MEMORY_M, paper.CLUSTER_M
+    for x in all_r:
+        for s in x.cscenes:
+            for d in datas:
+                write_dat(os.path.join(dat, "f10%s-%s-%s.dat" % (tag(x, r), s, d)),
+                          series(x.f10, ["m", "sim_time_s", "load_balance", "efficiency", "total_bytes",
+                                         "pixel_partitioned_bytes", "t1_s", "processors"], scene=s, data=d))
     for s in r.cscenes:
         for d in datas:
-            write_dat(os.path.join(dat, "f10-%s-%s.dat" % (s, d)),
-                      series(r.f10, ["m", "sim_time_s", "efficiency_busy", "efficiency_t1", "total_bytes",
-                                     "pixel_partitioned_bytes", "t1_s", "processors"], scene=s, data=d))
             t = paper.cluster_time(s, d)
             write_dat(os.path.join(dat, "f10-paper-%s-%s.dat" % (s, d)), [[pm, t]] if t else [])
         rep = r.f10.value("total_bytes", scene=s, data="replicated", m=m)
@@ -70,9 +84,10 @@ def cluster_data(r, dat):
 
 
 def reproduction(res):
-    """Draws RESULTS/plots/fig5.png ... fig12.png (clusters only when the sweep has them);
+    """Draws RESULTS/plots/fig5.png ... fig12.png from the profile folders RESULTS/PROFILE (clusters only when the sweep has them);
     returns the PNGs written."""
-    r = Results(res)
+    all_r = profile_results(res)
+    r = all_r[0]
     out = os.path.join(res, "plots")
     dat = os.path.join(out, "data")
     os.makedirs(dat, exist_ok=True)
@@ -84,7 +99,7 @@ def reproduction(res):
             os.remove(os.path.join(out, "fig%d.png" % f))
     lo, hi = paper.MEMORY_RATIO_AT_16
     common = {"dat": dat, "scenes": " ".join(r.scenes)}
-    flat = dict(common, maps=" ".join(flat_data(r, dat)),
+    flat = dict(common, maps=" ".join(flat_data(all_r, dat)),
                 xmax=1.3 * max((int(row["n"]) for row in r.f56.rows), default=1))
     titles = {
         "fig5": {}, "fig6": {"paper_floor": "paper: > %.0f %% for n <= %d (load-balancing)" % (
@@ -99,7 +114,7 @@ def reproduction(res):
         gnuplot(name + ".gp", dict(flat, out=png, **extra))
         written.append(png)
     if r.cscenes:
-        clusters = dict(common, scenes=" ".join(r.cscenes), datas=" ".join(cluster_data(r, dat)),
+        clusters = dict(common, scenes=" ".join(r.cscenes), datas=" ".join(cluster_data(all_r, dat)),
                         xmax=1.3 * max((int(row["m"]) for row in r.f10.rows), default=1))
         floor = 100 * paper.CLUSTER_EFFICIENCY_FLOOR
         titles = {

@@ -22,8 +22,8 @@ def fig56_table(r, scene):
     cell = {}
     for row in rows:
         cell[row["mapping"], int(row["n"])] = (
-            "%.3g s, %.0f %% / %.0f %%" % (num(row, "sim_time_s"), 100 * num(row, "efficiency_busy"),
-                                          100 * num(row, "efficiency_t1"))
+            "%.3g s, %.0f %% / %.0f %%" % (num(row, "sim_time_s"), 100 * num(row, "efficiency"),
+                                          100 * num(row, "load_balance"))
             if row["status"] == "ok" else row["status"])
     lines = ["| n |" + "".join(" %s |" % name for _, name in maps), "| ---: |" + " --- |" * len(maps)]
     for n in sorted({int(row["n"]) for row in rows}):
@@ -70,15 +70,15 @@ def fig8_table(r):
 
 
 def fig10_table(r):
-    lines = ["| scene | m | processors | replicated: time, efficiency busy / T(1), memory | shared: time, "
-             "efficiency busy / T(1), memory, bus use | paper |", "| --- | ---: | ---: | --- | --- | --- |"]
+    lines = ["| scene | m | processors | replicated: time, efficiency / load balance, memory | shared: time, "
+             "efficiency / load balance, memory, bus use | paper |", "| --- | ---: | ---: | --- | --- | --- |"]
     cell, procs, paper_note = {}, {}, {}
     for row in r.f10.rows:
         key = (row["scene"], int(row["m"]))
         procs[key] = row["processors"]
         if row["status"] == "ok":
             text = "%.3g s, %.0f %% / %.0f %%, %.0f KiB" % (
-                num(row, "sim_time_s"), 100 * num(row, "efficiency_busy"), 100 * num(row, "efficiency_t1"),
+                num(row, "sim_time_s"), 100 * num(row, "efficiency"), 100 * num(row, "load_balance"),
                 num(row, "total_bytes") / 1024)
             if row["data"] == "shared" and row["bus_util_mean"] != "":
                 text += ", bus %.0f %%" % (100 * num(row, "bus_util_mean"))
@@ -106,18 +106,18 @@ def efficiency_note(r):
     """How much work forwarding adds at 16 IPs, per scene (for the two definitions)."""
     note = ""
     for s in r.scenes:
-        t = r.f56.value("efficiency_t1", scene=s, mapping="cyclic", n=16)
+        t = r.f56.value("efficiency", scene=s, mapping="cyclic", n=16)
         if t is None:
             continue
         busy = r.f56.value("busy_mean_s", scene=s, mapping="cyclic", n=16)
         t_one = r.f56.value("t1_s", scene=s, mapping="cyclic", n=16)
         best = None
         for row in r.f56.where(scene=s, n=16):
-            if best is None or num(row, "efficiency_t1") > num(best, "efficiency_t1"):
+            if best is None or num(row, "efficiency") > num(best, "efficiency"):
                 best = row
-        note += (" %s: the cyclic mapping's 16 IPs do %.1f x T(1) of work, and reach %s by T(1); the best "
-                 "mapping at 16 IPs by T(1) reaches %.1f %% (%s)." % (
-                     claimlib.label(s), 16 * busy / t_one, claimlib.pct(t), 100 * num(best, "efficiency_t1"),
+        note += (" %s, %s: the cyclic mapping's 16 IPs do %.1f x T(1) of work, and reach %s; the best "
+                 "mapping at 16 IPs reaches %.1f %% (%s)." % (r.profile,
+                     claimlib.label(s), 16 * busy / t_one, claimlib.pct(t), 100 * num(best, "efficiency"),
                      best["mapping"]))
     return note
 
@@ -139,7 +139,7 @@ def run_facts(r):
     }
 
 
-def copy_plots(r, img_dir):
+def copy_plots(res, img_dir):
     """Copies RESULTS/plots/figN.png to IMG/reproduction-figN.png; returns the numbers copied."""
     os.makedirs(img_dir, exist_ok=True)
     drawn = set()
@@ -147,7 +147,7 @@ def copy_plots(r, img_dir):
         target = os.path.join(img_dir, "reproduction-fig%d.png" % f)
         if os.path.exists(target):
             os.remove(target)
-        source = os.path.join(r.dir, "plots", "fig%d.png" % f)
+        source = os.path.join(res, "plots", "fig%d.png" % f)
         if os.path.exists(source) and os.path.getsize(source) > 0:
             shutil.copyfile(source, target)
             drawn.add(f)
@@ -160,24 +160,32 @@ def embed(drawn, img_rel, f, title):
     return "*(%s: not drawn, no data in this sweep)*" % title
 
 
-def claims_table(claim_list):
-    lines = ["| # | claim (paper section) | paper | ours | verdict | notes |",
-             "| ---: | --- | --- | --- | --- | --- |"]
-    for i, c in enumerate(claim_list, 1):
-        lines.append("| %d | %s | %s | %s | **%s** | %s |" % (i, c.text, c.paper, c.ours, c.verdict, c.notes))
+def claims_table(by_profile):
+    """One row per claim: the default profile's figure and verdict, then each other profile's."""
+    (first, claims), others = by_profile[0], by_profile[1:]
+    head = "| # | claim (paper section) | paper | ours, %s | verdict, %s |" % (first, first)
+    head += "".join(" ours, %s | verdict, %s |" % (p, p) for p, _ in others) + " notes (%s) |" % first
+    lines = [head, "| ---: | --- | --- |" + " --- | --- |" * len(by_profile) + " --- |"]
+    for i, c in enumerate(claims):
+        row = "| %d | %s | %s | %s | **%s** |" % (i + 1, c.text, c.paper, c.ours, c.verdict)
+        row += "".join(" %s | **%s** |" % (cl[i].ours, cl[i].verdict) for _, cl in others)
+        lines.append(row + " %s |" % c.notes)
     return "\n".join(lines)
 
 
-def run_table(r, rel):
+def run_table(all_r, rel):
     """The 'The run' table: how the sweep was made and how long it took."""
+    r = all_r[0]
     facts, run, na = run_facts(r), r.runs, claimlib.or_na
-    data_links = " ".join("[%s.csv](%s)" % (n, rel(os.path.join(r.dir, n + ".csv")))
-                          for n in ("fig5_6", "fig7", "fig8", "fig10_12"))
+    data_links = "; ".join("%s: " % x.profile + " ".join("[%s.csv](%s)" % (n, rel(os.path.join(x.dir, n + ".csv")))
+                                                         for n in ("fig5_6", "fig7", "fig8", "fig10_12")) for x in all_r)
     return [
         "| | |",
         "| --- | --- |",
         "| mode | %s (image size %s) |" % (run.get("mode", r.mode), r.facts.image_size),
-        "| points | %d in the figures (%d not ok) + %d one-processor runs; %s computed by the timed run |" % (
+        "| timing profiles | %s, each with every point |" % ", ".join(
+            "%s (hand-over %s us)" % (x.profile, x.facts.hop_us) for x in all_r),
+        "| points | %d in the figures (%d not ok) + %d one-processor runs per profile; %s computed by the timed run |" % (
             facts["points"], facts["bad"], r.facts.t1_runs, run.get("points_run", "?")),
         "| wall time of the points | **%s s** on %s with -j %s, %s cores (%s); CPU time %s s; load average at the end %s |" % (
             na(run.get("wall_s")), run.get("hosts", "?"), run.get("jobs", "?"), run.get("cores", "?"),
@@ -192,14 +200,16 @@ def run_table(r, rel):
     ]
 
 
-def figure_sections(r, img):
+def figure_sections(all_r, img):
     """Figures 5 to 12: the embedded plots and their tables (the heading of figure 5 excepted)."""
-    out = []
-    for s in r.scenes:
-        out += ["", "**%s**" % claimlib.label(s), "", fig56_table(r, s)]
+    r, out = all_r[0], []
+    for x in all_r:
+        for s in x.scenes:
+            out += ["", "**%s, %s profile**" % (claimlib.label(s), x.profile), "", fig56_table(x, s)]
     out += ["", "### Figure 6: efficiency against IP count", "", img(6, "Figure 6"), "",
-            "Solid lines: busy-time efficiency; dashed: T(1)/(n T(n)). The black bar is the paper's",
-            "\"above 85 % with 16 IPs or fewer\" for the load-balancing mapping. Numbers: the tables above.",
+            "Efficiency T(1) / (n T(n)); solid lines: calibrated profile, dashed: literal. The black bar is",
+            "the paper's \"above 85 % with 16 IPs or fewer\" for the load-balancing mapping. Numbers, with",
+            "the load balance: the tables above.",
             "", "### Figure 7: data memory against IP count", "", img(7, "Figure 7"), "",
             "Data memory requirement = largest per-IP data x n (the paper's definition); in brackets the",
             "fraction of the pixel-partitioned system's (whole scene x n). The circle with bar marks the",
@@ -210,15 +220,19 @@ def figure_sections(r, img):
             "runs (the preprocessing does not depend on the mapping).", "", fig8_table(r), "",
             "### Figures 10-12: 16 clusters of m processors", "", img(10, "Figure 10"), "", img(11, "Figure 11"),
             "", img(12, "Figure 12"), "",
-            "Image time, efficiency (busy / T(1)), data memory of all processors, and for shared data the",
-            "mean bus utilisation. m = 64 is the paper's 1024-processor system.", "", fig10_table(r)]
+            "Image time, efficiency / load balance, data memory of all processors, and for shared data the",
+            "mean bus utilisation. m = 64 is the paper's 1024-processor system. In the plots of figures 10",
+            "and 11, solid lines are the calibrated profile and dashed the literal one."]
+    for x in all_r:
+        out += ["", "**%s profile**" % x.profile, "", fig10_table(x)]
     return out
 
 
-def document(r, doc_dir, drawn):
-    """The whole Markdown page."""
+def document(res, all_r, doc_dir, drawn):
+    """The whole Markdown page; all_r: the Results of each profile, the default first."""
+    r = all_r[0]
     rel = lambda p: os.path.relpath(p, doc_dir)
-    claim_list = claimlib.evaluate(r)
+    by_profile = [(x.profile, claimlib.evaluate(x)) for x in all_r]
     run, quick = r.runs, r.mode == "quick"
     na = claimlib.or_na
     run_cmd = "experiments/sweep.sh --quick" if quick else "experiments/sweep.sh"
@@ -238,7 +252,7 @@ def document(r, doc_dir, drawn):
         "# Reproduction of the paper's results",
         "",
         "<!-- Generated by experiments/report (python3 experiments/report reproduction) from %s/*.csv; "
-        "do not edit by hand. -->" % rel(r.dir),
+        "do not edit by hand. -->" % rel(os.path.join(res, "*")),
         "",
         "This page compares every number in the prose of Kubota et al. (sections 6-8 of",
         "[docs/paper.md](paper.md)) with torusrt's model, run over the paper's axes. It is generated:",
@@ -247,26 +261,33 @@ def document(r, doc_dir, drawn):
         "`experiments/plots/*.gp` draw the plots from data files written by `experiments/report`, and",
         "`experiments/report` writes this page, judging each claim in `experiments/report/claims.py`.",
         "How to run it on one machine, over ssh or as a Slurm job array: `experiments/README.md`.",
+        "",
+        "Every point runs under both timing profiles of `torusrt-sim --timing-profile`: **calibrated**,",
+        "the default (the hand-over of a packet to another IP costs %s us), and **literal**, the" % r.facts.hop_us,
+        "paper's operation table read literally (a hand-over is a packet creation and an analysis, %s us)."
+        % (all_r[-1].facts.hop_us if len(all_r) > 1 else "?"),
+        "Claims are judged under the calibrated profile; the literal profile's figure and verdict stand",
+        "beside them. Efficiency is T(1) / (n T(n)) throughout; busy time / (n T(n)) is shown as",
+        "*load balance*.",
         quick_note,
         "",
         "## The run",
         "",
-    ] + run_table(r, rel) + [
+    ] + run_table(all_r, rel) + [
         "",
         timing_note,
         "",
         WHAT_IS_COMPARED.format(creation=paper.TIMING_US["packet_creation"],
                                 analysis=paper.TIMING_US["packet_analysis"], handover=paper.HANDOVER_US),
-        "  missed intersection test. With the cyclic mapping nearly every cell crossing changes IP." + efficiency_note(r),
-        "",
-        "The paper's \"above 85 % with the load-balancing mapping\" is only reachable by the busy reading,",
-        "which is why we use it for the claims; both are in the plots (solid and dashed) and the CSVs.",
+        "  missed intersection test, in the literal profile; nothing in the calibrated one. With the cyclic",
+        "  mapping nearly every cell crossing changes IP." + "".join(efficiency_note(x) for x in all_r),
         "",
         "## Claims",
         "",
-        summary([c.verdict for c in claim_list]),
+    ] + ["- **%s**%s: %s" % (p, " (default)" if i == 0 else "", summary([c.verdict for c in cl]))
+         for i, (p, cl) in enumerate(by_profile)] + [
         "",
-        claims_table(claim_list),
+        claims_table(by_profile),
         "",
         "## Figures",
         "",
@@ -274,18 +295,19 @@ def document(r, doc_dir, drawn):
         "",
         img(5, "Figure 5"),
         "",
-        "The paper gives no times for the flat torus. Each cell: image time, efficiency busy / T(1).",
+        "The paper gives no times for the flat torus. Solid lines: calibrated profile; dashed: literal.",
+        "Each cell: image time, efficiency / load balance.",
     ]
-    out += figure_sections(r, img)
+    out += figure_sections(all_r, img)
     out += ["", "## Points that did not run", ""]
-    missing = problems(r)
+    missing = [line for x in all_r for line in problems(x)]
     if missing:
         out += ["These points are in the CSVs with empty figures. *failed*: torusrt-sim exited non-zero (its",
                 "messages are in the point's .log beside the JSON, and sweep.sh listed the command lines);",
                 "*missing*: never run. Re-running the sweep retries exactly these.", ""] + missing
     else:
         out.append("None: every point of the sweep produced its report.")
-    return "\n".join(out) + "\n", claim_list
+    return "\n".join(out) + "\n", by_profile
 
 
 WHAT_IS_COMPARED = """## What is compared, and what differs from the paper
@@ -309,26 +331,27 @@ WHAT_IS_COMPARED = """## What is compared, and what differs from the paper
   goes the same way but the value is outside the paper's range. The rule for each row is in
   its last column.
 
-### Efficiency: two definitions
+### Efficiency and load balance
 
 The paper defines system efficiency as *ideal processing time / actual processing time*. The
-model reports both readings:
+model reports two figures:
 
-- **busy** = sum over processors of busy time / (n T(n)): the ideal time is the work the
-  parallel machine actually did, spread evenly. This measures load balance, and is what we
-  take as the paper's system efficiency.
-- **T(1)** = T(1) / (n T(n)): against the one-processor time. The difference is the work
-  parallelism adds: every time a ray crosses into a cell another IP owns, the packet is created
-  ({creation} us) and analysed again ({analysis} us), i.e. {handover} us, more than six DDA steps and more than a"""
+- **efficiency** = T(1) / (n T(n)): against the one-processor time. This is the paper's
+  system efficiency and the one every claim is judged by.
+- **load balance** = sum over processors of busy time / (n T(n)): the work the parallel
+  machine actually did, spread evenly. The two differ by the work parallelism adds: every time
+  a ray crosses into a cell another IP owns, the packet is handed over: created ({creation} us)
+  and analysed again ({analysis} us), i.e. {handover} us, more than six DDA steps and more than a"""
 
 
 def write(res, doc):
-    """Writes the page for the results folder `res` to `doc` (atomically); returns the claims."""
-    from .results import Results
-    r = Results(res)
+    """Writes the page for the results folder `res` (one folder per profile inside) to `doc`
+    (atomically); returns (profile, claims) per profile."""
+    from .results import profile_results
+    all_r = profile_results(res)
     doc_dir = os.path.dirname(os.path.abspath(doc))
-    drawn = copy_plots(r, os.path.join(doc_dir, "img"))
-    text, claim_list = document(r, doc_dir, drawn)
+    drawn = copy_plots(res, os.path.join(doc_dir, "img"))
+    text, claim_list = document(res, all_r, doc_dir, drawn)
     with open(doc + ".tmp", "w") as f:
         f.write(text)
     os.replace(doc + ".tmp", doc)

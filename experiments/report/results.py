@@ -8,6 +8,23 @@ from .csvdata import Table
 
 FIGURES = ("fig5_6", "fig7", "fig8", "fig10_12")
 FACTS_FILE = "run_facts.csv"
+# The timing profiles a sweep runs (experiments/lib.sh PROFILES), the default first: each has
+# its results folder RESULTS/PROFILE.
+PROFILES = ("calibrated", "literal")
+
+
+def profile_results(res):
+    """Results of each profile folder of the sweep's results folder present, default first."""
+    found = [Results(os.path.join(res, p)) for p in PROFILES if os.path.isdir(os.path.join(res, p))]
+    if not found:
+        raise FileNotFoundError("%s has none of the profile folders %s" % (res, ", ".join(PROFILES)))
+    return found
+
+
+def _own_or_parent(res, name):
+    """RES/NAME, else the sweep's RES/../NAME (a profile's folder inside the results folder)."""
+    own = os.path.join(res, name)
+    return own if os.path.exists(own) else os.path.join(os.path.dirname(res), name)
 
 
 class Facts:
@@ -49,9 +66,11 @@ class Facts:
             cells = report["cells"]
             found["cells"] = str(cells[0] * cells[1] * cells[2])
             timing = report["config"]["timing"]
-            found["hop_us"] = "%g" % (timing["packet_creation"] + timing["packet_analysis"])
+            hand_over = ("handover_send", "handover_receive") if "handover_send" in timing else (
+                "packet_creation", "packet_analysis")
+            found["hop_us"] = "%g" % sum(timing[k] for k in hand_over)
             found["t1_runs"] = str(len(t1))
-        joblog = os.path.join(res, "joblog")
+        joblog = _own_or_parent(res, "joblog")
         if os.path.exists(joblog) and os.path.getsize(joblog) > 0:
             with open(joblog, newline="") as f:
                 rows = list(csv.DictReader(f, delimiter="\t"))
@@ -68,6 +87,7 @@ class Results:
 
     def __init__(self, res):
         self.dir = res
+        self.profile = os.path.basename(res)
         for name in FIGURES:
             path = os.path.join(res, name + ".csv")
             if not os.path.exists(path) or os.path.getsize(path) == 0:
@@ -87,7 +107,7 @@ class Results:
 
     def _runs(self):
         """The row of runs.tsv that computed the most points (the latest among equals)."""
-        path = os.path.join(self.dir, "runs.tsv")
+        path = _own_or_parent(self.dir, "runs.tsv")
         best = {}
         if os.path.exists(path):
             with open(path, newline="") as f:

@@ -3,9 +3,11 @@
 # runs every point through GNU parallel, reports a failing point (non-zero exit, its command line,
 # a "failed" row in the CSV) instead of dropping it, re-runs only what is not done, and
 # collect/plot/report produce the CSVs, PNG plots and the Markdown report. On the quick data the
-# directions of the paper's claims hold: cyclic efficiency_busy >= block at 16 IPs, memory at 16
+# directions of the paper's claims hold: cyclic load_balance >= block at 16 IPs, memory at 16
 # IPs below pixel-partitioned, preprocessing units fall with P, replicated time falls with m,
 # shared memory below replicated at the largest m. Every image equals the one-processor image.
+# Both timing profiles are swept, each into RESULTS/PROFILE; their one-IP times are equal (one IP
+# hands nothing over).
 # Run: bash reproduction_quick.sh BUILD_DIR SOURCE_DIR
 source "$(dirname "$0")/common.bash" "$@"
 EXP=$SRC/experiments
@@ -36,9 +38,11 @@ TORUSRT_BUILD=$TMP/fakebuild bash "$EXP/sweep.sh" --quick "${clusters[@]}" --res
 rc=$?
 check "sweep with a failing point exits non-zero (got $rc)" test "$rc" -ne 0
 check "the failed point's command line is reported" grep -q 'exit 7 .*--map block-cyclic:2' "$TMP/sweep1.err"
-check "the failed point is a 'failed' row of fig5_6.csv" \
-    test "$(awk -F, '$2 == "bc2" && $3 == 16 && $5 == "failed"' "$RES/fig5_6.csv" | wc -l)" -eq 2
-check "the failed point's messages are kept" grep -q 'injected failure' "$RES/fig5_6/image1-bc2-n16.log"
+for P in calibrated literal; do
+    check "$P: the failed point is a 'failed' row of fig5_6.csv" \
+        test "$(awk -F, '$2 == "bc2" && $3 == 16 && $6 == "failed"' "$RES/$P/fig5_6.csv" | wc -l)" -eq 2
+    check "$P: the failed point's messages are kept" grep -q 'injected failure' "$RES/$P/fig5_6/image1-bc2-n16.log"
+done
 check "the report lists the failed points" grep -q 'bc2 mapping, n = 16: \*\*failed\*\*' "$RES/reproduction.md"
 
 # 2. Re-run with the real simulator: only the two failed points are computed.
@@ -47,25 +51,37 @@ TORUSRT_BUILD=$BUILD bash "$EXP/sweep.sh" --quick "${clusters[@]}" --results "$R
 rc=$?
 echo "quick sweep re-run: $(( $(date +%s) - start )) s"
 check "re-run exits 0 (got $rc; $(tail -n 3 "$TMP/sweep2.err" | tr '\n' ' '))" test "$rc" -eq 0
-check "re-run computes only the 2 missing points" test "$(tail -n 1 "$RES/runs.tsv" | cut -f7)" = 2
+check "re-run computes only the 4 missing points" test "$(tail -n 1 "$RES/runs.tsv" | cut -f7)" = 4
 check "no failed points left" test ! -s "$RES/failed.tsv"
 
 # 3. The CSVs: every expected row, all ok, identical images.
 rows() { awk 'NR > 1' "$1" | wc -l; }
 # not CSV COLUMN VALUE: the number of rows whose COLUMN (by header name) is not VALUE.
 not() { awk -F, -v c="$2" -v want="$3" 'NR == 1 { for (i = 1; i <= NF; i++) ix[$i] = i; next } $ix[c] != want' "$1" | wc -l; }
-check "fig5_6.csv has 18 rows" test "$(rows "$RES/fig5_6.csv")" -eq 18
-check "fig7.csv has 18 rows" test "$(rows "$RES/fig7.csv")" -eq 18
-check "fig8.csv has 6 rows" test "$(rows "$RES/fig8.csv")" -eq 6
+gt() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a != "" && b != "" && a + 0 > b + 0) }'; }
+ge() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a != "" && b != "" && a + 0 >= b + 0) }'; }
 expect10=$((have_clusters ? 6 : 0))
-check "fig10_12.csv has $expect10 rows" test "$(rows "$RES/fig10_12.csv")" -eq $expect10
-check "fig5_6.csv header" grep -q '^scene,mapping,n,torus,status,sim_time_s,t1_s,speedup,efficiency_t1,efficiency_busy,' "$RES/fig5_6.csv"
-check "every fig5_6 point ok" test "$(not "$RES/fig5_6.csv" status ok)" -eq 0
-check "every fig10_12 point ok" test "$(not "$RES/fig10_12.csv" status ok)" -eq 0
-check "every flat-torus image equals the one-processor image" test "$(not "$RES/fig5_6.csv" image_identical yes)" -eq 0
-check "every cluster image equals the one-processor image" test "$(not "$RES/fig10_12.csv" image_identical yes)" -eq 0
-check "efficiency is 1 at n = 1" \
-    test "$(awk -F, 'NR > 1 && $3 == 1 && ($9 != 1 || $10 != 1)' "$RES/fig5_6.csv" | wc -l)" -eq 0
+for P in calibrated literal; do
+    check "$P: fig5_6.csv has 18 rows" test "$(rows "$RES/$P/fig5_6.csv")" -eq 18
+    check "$P: fig7.csv has 18 rows" test "$(rows "$RES/$P/fig7.csv")" -eq 18
+    check "$P: fig8.csv has 6 rows" test "$(rows "$RES/$P/fig8.csv")" -eq 6
+    check "$P: fig10_12.csv has $expect10 rows" test "$(rows "$RES/$P/fig10_12.csv")" -eq $expect10
+    check "$P: fig5_6.csv header" grep -q '^scene,mapping,n,torus,timing_profile,status,sim_time_s,t1_s,speedup,efficiency,load_balance,' "$RES/$P/fig5_6.csv"
+    check "$P: every point ran under its profile" test "$(not "$RES/$P/fig5_6.csv" timing_profile $P)" -eq 0
+    check "$P: every fig5_6 point ok" test "$(not "$RES/$P/fig5_6.csv" status ok)" -eq 0
+    check "$P: every fig10_12 point ok" test "$(not "$RES/$P/fig10_12.csv" status ok)" -eq 0
+    check "$P: every flat-torus image equals the one-processor image" test "$(not "$RES/$P/fig5_6.csv" image_identical yes)" -eq 0
+    check "$P: every cluster image equals the one-processor image" test "$(not "$RES/$P/fig10_12.csv" image_identical yes)" -eq 0
+    check "$P: efficiency and load balance are 1 at n = 1" \
+        test "$(awk -F, 'NR > 1 && $3 == 1 && ($10 != 1 || $11 != 1)' "$RES/$P/fig5_6.csv" | wc -l)" -eq 0
+done
+for s in image1 image2; do
+    a=$(jq -r .sim_time_s "$RES/calibrated/t1/$s.json") b=$(jq -r .sim_time_s "$RES/literal/t1/$s.json")
+    check "$s: one-IP time the same under both profiles ($a, $b)" test "$a" = "$b"
+done
+a=$(awk -F, '$1 == "image1" && $2 == "cyclic" && $3 == 16 { print $7 }' "$RES/calibrated/fig5_6.csv")
+b=$(awk -F, '$1 == "image1" && $2 == "cyclic" && $3 == 16 { print $7 }' "$RES/literal/fig5_6.csv")
+check "image1 cyclic 16 IPs: the literal hand-over is slower ($b s) than the calibrated ($a s)" gt "$b" "$a"
 
 # 4. Plots and report.
 ispng() { [ "$(head -c 8 "$1" | od -An -tx1 | tr -d ' \n')" = 89504e470d0a1a0a ]; }
@@ -76,19 +92,18 @@ for f in "${figs[@]}"; do
     check "report embeds fig$f" grep -q "(img/reproduction-fig$f.png)" "$RES/reproduction.md"
     check "embedded fig$f exists" ispng "$RES/img/reproduction-fig$f.png"
 done
-check "report has the claims table" grep -q '^| # | claim (paper section) | paper | ours | verdict | notes |' "$RES/reproduction.md"
+check "report has the claims table" grep -q '^| # | claim (paper section) | paper | ours, calibrated | verdict, calibrated | ours, literal | verdict, literal | notes (calibrated) |' "$RES/reproduction.md"
 check "report has a row per claim" test "$(grep -c '^| [0-9][0-9]* | ' "$RES/reproduction.md")" -ge 17
 check "report gives the wall time" grep -q 'wall time of the points | \*\*[0-9.]* s\*\*' "$RES/reproduction.md"
 
-# 5. Directions of the paper's claims on the quick data.
+# 5. Directions of the paper's claims on the quick data (default profile).
+RES=$RES/calibrated
 v() { awk -F, -v f="$2" -v c="$3" 'NR == 1 { for (i = 1; i <= NF; i++) ix[$i] = i; n = split(f, a, ","); next }
         { for (k = 1; k <= n; k++) { split(a[k], kv, "="); if ($ix[kv[1]] != kv[2]) next } print $ix[c]; exit }' "$1"; }
-gt() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a != "" && b != "" && a + 0 > b + 0) }'; }
-ge() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a != "" && b != "" && a + 0 >= b + 0) }'; }
 for s in image1 image2; do
-    c=$(v "$RES/fig5_6.csv" "scene=$s,mapping=cyclic,n=16" efficiency_busy)
-    b=$(v "$RES/fig5_6.csv" "scene=$s,mapping=block,n=16" efficiency_busy)
-    check "$s: cyclic efficiency_busy ($c) >= block ($b) at 16 IPs" ge "$c" "$b"
+    c=$(v "$RES/fig5_6.csv" "scene=$s,mapping=cyclic,n=16" load_balance)
+    b=$(v "$RES/fig5_6.csv" "scene=$s,mapping=block,n=16" load_balance)
+    check "$s: cyclic load_balance ($c) >= block ($b) at 16 IPs" ge "$c" "$b"
     for map in block cyclic; do
         t=$(v "$RES/fig7.csv" "scene=$s,mapping=$map,n=16" total_bytes)
         p=$(v "$RES/fig7.csv" "scene=$s,mapping=$map,n=16" pixel_partitioned_bytes)
