@@ -73,8 +73,9 @@ CameraPathPtr make_camera_path(const AnimationOptions &opt, const rt_scene *scen
             throw UserError(std::string("--orbit: ") + msg);
         return CameraPathPtr(raw);
     }
+    // A camera path, like a --map-file, is part of the command line: a bad one is exit 2.
     if (rt_camera_path_load(opt.camera_path.c_str(), &raw, msg, sizeof msg) != RT_OK)
-        throw UserError(msg);
+        throw UserError(msg, 2);
     CameraPathPtr path(raw);
     size_t count = rt_camera_path_count(raw);
     if (opt.frames >= 0 && static_cast<size_t>(opt.frames) != count)

@@ -123,11 +123,11 @@ check "a folder as --stats exits 2 (got $rc)" [ "$rc" -eq 2 ]
 check "a folder as --stats is named" grep -qF "$TMP/out/stats.json" "$TMP/err"
 check "a folder as --stats leaves no frame: $(ls "$TMP/out" | tr '\n' ' ')" [ "$(ls -A "$TMP/out")" = stats.json ]
 
-# Camera path file errors: FILE:LINE: and exit 1, no output.
+# Camera path file errors: FILE:LINE: and exit 2, no output.
 bad() {
     local name=$1 line=$2
     printf "$3" >"$TMP/$name.txt"
-    rejected 1 "$TMP/$name.txt:$line: " -o "$out" --camera-path "$TMP/$name.txt" --stats "$TMP/out/s.json"
+    rejected 2 "$TMP/$name.txt:$line: " -o "$out" --camera-path "$TMP/$name.txt" --stats "$TMP/out/s.json"
 }
 good='0 0 30 0 0 0 0 1 0 28.5\n'
 bad fields 2 "$good""0 0 30 0 0 0 0 1 28.5\n"
@@ -142,12 +142,12 @@ bad angle 1 "0 0 30 0 0 0 0 1 0 180\n"
 bad angle0 2 "$good""0 0 30 0 0 0 0 1 0 -5\n"
 bad empty 2 "# nothing\n\n"
 bad long 2 "$good$(printf '%5000s' '')\n"
-# Not a regular file, and a missing file: named, exit 1, no output.
-rejected 1 "$TMP: not a regular file" -o "$out" --camera-path "$TMP"
-rejected 1 "$TMP/missing.txt: cannot open" -o "$out" --camera-path "$TMP/missing.txt"
+# Not a regular file, and a missing file: named, exit 2, no output.
+rejected 2 "$TMP: not a regular file" -o "$out" --camera-path "$TMP"
+rejected 2 "$TMP/missing.txt: cannot open" -o "$out" --camera-path "$TMP/missing.txt"
 if command -v mkfifo >/dev/null; then
     mkfifo "$TMP/fifo"
-    rejected 1 "not a regular file" -o "$out" --camera-path "$TMP/fifo"
+    rejected 2 "not a regular file" -o "$out" --camera-path "$TMP/fifo"
 fi
 
 finish
