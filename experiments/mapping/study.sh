@@ -32,7 +32,7 @@ export -f point
 export build root work
 for sc in "${scenes[@]}"; do for p in calibrated literal; do
   for m in block cyclic block-cyclic:2 block-cyclic:3 cost; do
-    for s in 2 2x2x2 4x4x4 8x8x8; do echo "$sc $p $m $s"; done
+    for s in 2 2x2 2x2x2 4x2x2 4x4x2 4x4x4 8x4x4 8x8x4 8x8x8; do echo "$sc $p $m $s"; done
   done
 done; done > "$work/points"
 echo "mapping study: $(wc -l < "$work/points") runs on $jobs jobs" >&2
