@@ -132,13 +132,15 @@ int sc_main(int, char *[])
     cu.set_link_port(direction(0, true), 0);
     cu.set_link_port(direction(0, false), 1);
 
-    // Declared (and bound) port 1 first, so the kernel is likely to run it first too.
+    // Port 1 sends first (1 us), port 0 later (2 us), all arriving at 5 us: delivery must still
+    // put port 0's packet first.
     LinkSender port0("port0"), port1("port1");
     port0.socket.bind(cu.link_in); // source 0
     port1.socket.bind(cu.link_in); // source 1
-    port1.at = port0.at = us(1);
+    port1.at = us(1);
+    port0.at = us(2);
     port1.sends = {{11, us(4)}, {12, us(4)}, {13, us(2)}}; // 13 arrives first, at 3 us
-    port0.sends = {{10, us(4)}};
+    port0.sends = {{10, us(3)}};
     CreditProbe probe("probe");
     probe.senders = {&port0, &port1};
 
