@@ -1,0 +1,174 @@
+// comm_unit_test.cpp - a communication unit on node 0 of a 4-node ring routes each packet by the
+// owner of its cell: its own cells to the local side, others to the link of the first hop
+// (dimension order, the shorter way, + on a tie); packets from its links are delivered at their
+// annotated arrival time, simultaneous ones in source-port order and then in send order, and
+// each link slot (credit) is given back at delivery; host primaries go straight to the local
+// side; processor-side packets leave at their stamp.
+#include <systemc>
+#include <tlm>
+#include <tlm_utils/simple_initiator_socket.h>
+#include <vector>
+
+#include "comm_unit.h"
+#include "harness.h"
+#include "rt_scene.h"
+
+using harness::check;
+using sc_core::sc_time;
+using namespace torusrt;
+
+static sc_time us(double v) { return sc_time(v, sc_core::SC_US); }
+
+// A packet in cell (cell, 0, 0), tagged by its x pixel.
+static TimedPacket packet_in(int cell, uint32_t tag, sc_time stamp = sc_core::SC_ZERO_TIME, bool host = false)
+{
+    TimedPacket p{};
+    p.packet.dda.cell[0] = cell;
+    p.packet.x = tag;
+    p.stamp = stamp;
+    p.from_host = host;
+    return p;
+}
+
+struct RecordingSink : PacketSinkIf {
+    std::vector<sc_time> times;
+    std::vector<uint32_t> tags;
+    void accept(const TimedPacket &p) override
+    {
+        times.push_back(sc_core::sc_time_stamp());
+        tags.push_back(p.packet.x);
+    }
+};
+
+// An incoming link: sends (tag, delay) pairs at time `at` as b_transport calls with a credit.
+struct LinkSender : sc_core::sc_module {
+    tlm_utils::simple_initiator_socket<LinkSender> socket;
+    struct Send {
+        uint32_t tag;
+        sc_time delay;
+    };
+    std::vector<Send> sends;
+    sc_time at;
+    BufferSpace credit{8};
+    explicit LinkSender(sc_core::sc_module_name n) : sc_module(n), socket("socket")
+    {
+        SC_HAS_PROCESS(LinkSender);
+        SC_THREAD(run);
+    }
+    void run()
+    {
+        sc_core::wait(at);
+        for (const Send &s : sends) {
+            tlm::tlm_generic_payload t;
+            PacketExtension ext;
+            ext.item = packet_in(0, s.tag);
+            ext.credit = &credit;
+            credit.take();
+            t.set_command(tlm::TLM_WRITE_COMMAND);
+            t.set_extension(&ext);
+            sc_time d = s.delay;
+            socket->b_transport(t, d);
+            t.clear_extension(&ext);
+        }
+    }
+};
+
+// The processor side and the host: hands packets to the unit's `in` at given times.
+struct ProcessorSide : sc_core::sc_module {
+    sc_core::sc_port<PacketSinkIf> out;
+    struct Push {
+        sc_time at;
+        TimedPacket p;
+    };
+    std::vector<Push> pushes;
+    explicit ProcessorSide(sc_core::sc_module_name n) : sc_module(n), out("out")
+    {
+        SC_HAS_PROCESS(ProcessorSide);
+        SC_THREAD(run);
+    }
+    void run()
+    {
+        for (const Push &p : pushes) {
+            if (p.at > sc_core::sc_time_stamp()) sc_core::wait(p.at - sc_core::sc_time_stamp());
+            out->accept(p.p);
+        }
+    }
+};
+
+// Samples the link senders' credits in use at 4 us (before delivery) and 6 us (after).
+struct CreditProbe : sc_core::sc_module {
+    std::vector<LinkSender *> senders;
+    size_t at4 = 99, at6 = 99;
+    explicit CreditProbe(sc_core::sc_module_name n) : sc_module(n)
+    {
+        SC_HAS_PROCESS(CreditProbe);
+        SC_THREAD(run);
+    }
+    void run()
+    {
+        sc_core::wait(us(4));
+        at4 = senders[0]->credit.used() + senders[1]->credit.used();
+        sc_core::wait(us(2));
+        at6 = senders[0]->credit.used() + senders[1]->credit.used();
+    }
+};
+
+int sc_main(int, char *[])
+{
+    char msg[256];
+    rt_scene *scene = rt_scene_new();
+    rt_scene_set_view(scene, rt_vec(0, 0, 5), rt_vec(0, 0, 0), rt_vec(0, 1, 0), 45.0, 4, 4);
+    rt_scene_add_sphere(scene, rt_vec(0, 0, 0), 1.0);
+    rt_scene_finish(scene, msg, sizeof msg);
+    rt_grid *grid = rt_grid_new(scene, 4, 1, 1, msg, sizeof msg);
+    const int32_t owner[4] = {0, 1, 2, 3}; // cell i belongs to node i
+
+    Routing routing({4, 1, 1}, true);
+    CommUnit cu("cu", 0, routing, grid, owner);
+    RecordingSink local, plus, minus;
+    cu.local.bind(local);
+    cu.link_out.bind(plus);  // port 0
+    cu.link_out.bind(minus); // port 1
+    cu.set_link_port(direction(0, true), 0);
+    cu.set_link_port(direction(0, false), 1);
+
+    // Port 1 sends first (1 us), port 0 later (2 us), all arriving at 5 us: delivery must still
+    // put port 0's packet first.
+    LinkSender port0("port0"), port1("port1");
+    port0.socket.bind(cu.link_in); // source 0
+    port1.socket.bind(cu.link_in); // source 1
+    port1.at = us(1);
+    port0.at = us(2);
+    port1.sends = {{11, us(4)}, {12, us(4)}, {13, us(2)}}; // 13 arrives first, at 3 us
+    port0.sends = {{10, us(3)}};
+    CreditProbe probe("probe");
+    probe.senders = {&port0, &port1};
+
+    ProcessorSide proc("proc");
+    proc.out.bind(cu.in);
+    proc.pushes = {
+        {us(20), packet_in(0, 20, us(20))}, // own cell: local
+        {us(20), packet_in(1, 21, us(20))}, // node 1: + link
+        {us(20), packet_in(3, 23, us(20))}, // node 3: - link
+        {us(20), packet_in(2, 22, us(20))}, // node 2, two hops either way: + on the tie
+        {us(30), packet_in(0, 30, us(35), true)}, // host primary stamped later: no wait
+        {us(40), packet_in(1, 40, us(47))},       // stamped ahead: leaves at its stamp
+    };
+    sc_core::sc_start();
+
+    check((local.tags == std::vector<uint32_t>{13, 10, 11, 12, 20, 30}),
+          "local order: 13 (3 us), then 10 (port 0), 11, 12 (port 1, send order) at 5 us, then 20, host 30");
+    check((local.times == std::vector<sc_time>{us(3), us(5), us(5), us(5), us(20), us(30)}),
+          "local times: link arrivals at their annotated time, host primary at once");
+    check((plus.tags == std::vector<uint32_t>{21, 22, 40}), "+x link gets the packets for nodes 1 and 2");
+    check((plus.times == std::vector<sc_time>{us(20), us(20), us(47)}), "+x link times: 20, 20 and the stamp 47 us");
+    check((minus.tags == std::vector<uint32_t>{23}) && minus.times == std::vector<sc_time>{us(20)},
+          "-x link gets the packet for node 3 at 20 us");
+    check(cu.routed_local() == 6 && cu.routed_transit() == 4, "6 routed locally, 4 in transit");
+    check(probe.at4 == 3 && probe.at6 == 0, "link slots held until delivery (3 at 4 us), all back at 6 us");
+    check(cu.held() == 0, "nothing held");
+    int rc = harness::finish();
+    rt_grid_free(grid);
+    rt_scene_free(scene);
+    return rc;
+}
