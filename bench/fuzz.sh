@@ -19,9 +19,9 @@ mkdir -p "$build/corpus" "$build/findings"
 echo "fuzz.sh: building $build/nff_fuzz with $cc" >&2
 "$cc" -std=c11 -D_POSIX_C_SOURCE=200809L -O1 -g -fno-omit-frame-pointer \
     -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined \
-    -I"$here/include" -I"$here/src" $(pkg-config --cflags libpng) \
+    -I"$here/include" -I"$here/src" -I/usr/include/scotch $(pkg-config --cflags libpng) \
     "$here"/src/*.c "$here/tests/fuzz/nff_fuzz.c" \
-    $(pkg-config --libs libpng) -lm -o "$build/nff_fuzz"
+    $(pkg-config --libs libpng) -lscotch -lscotcherr -lm -o "$build/nff_fuzz"
 
 log="$build/fuzz.log"
 before=$(find "$build/findings" -type f | wc -l)
