@@ -22,9 +22,11 @@ void add_mapping_options(CLI::App &app, std::string &timing_profile, MappingOpti
                        "); --timing FILE overrides single keys on top")
         ->type_name("NAME");
     app.add_option("--map-file", o.map_file, "explicit cell -> node table (torusrt-map 1 format)")->type_name("FILE");
-    app.add_option("--write-map", o.write_map, "write the cell -> node table this run used")->type_name("FILE");
+    app.add_option("--write-map", o.write_map, "write the cell -> node table this run used")->type_name("FILE")
+        ->configurable(false);  // an output: not from a --config file
     app.add_option("--pilot-size", o.pilot_size, "image size WxH of the --map cost pilot run")->type_name("WxH");
-    app.add_option("--load-map", o.load_map, "write the cells' work and owners as a PNG")->type_name("FILE");
+    app.add_option("--load-map", o.load_map, "write the cells' work and owners as a PNG")->type_name("FILE")
+        ->configurable(false);
 }
 
 void apply_mapping_options(SimConfig &config, const MappingOptions &o, bool map_given)

@@ -36,7 +36,8 @@ struct CommandLine {
     // Timing profiles and mappings (their own block).
     std::string timing_profile;
     MappingOptions mapping;
-    bool map_given = false; // --map was on the command line
+    bool map_given = false; // --map was on the command line or in the --config file
+    bool dump_config = false;
 };
 
 double seconds_now()
@@ -146,11 +147,19 @@ SimConfig make_config(const std::string &scene, const CommandLine &cl, bool quie
 
 void declare_options(CLI::App &app, CommandLine &cl)
 {
-    app.add_option("scene", cl.scene, "scene file (NFF)")->required()->type_name("FILE");
-    app.add_option("-o,--output", cl.output, "PNG image to write")->required()->type_name("FILE");
-    app.add_option("--stats", cl.stats, "write the statistics as JSON to this file")->type_name("FILE");
+    // The scene and the outputs are not configurable: a machine file names no files to write.
+    // scene and -o are checked in run(), so that --dump-config can go without them.
+    app.add_option("scene", cl.scene, "scene file (NFF)")->type_name("FILE")->configurable(false);
+    app.add_option("-o,--output", cl.output, "PNG image to write")->type_name("FILE")->configurable(false);
+    app.add_option("--stats", cl.stats, "write the statistics as JSON to this file")->type_name("FILE")
+        ->configurable(false);
     app.add_option("--vcd", cl.vcd, "write a VCD trace (IP busy, queue depths, link and bus activity) and a GTKWave\n"
-                               "save file beside it (X.gtkw for X.vcd)")->type_name("FILE");
+                               "save file beside it (X.gtkw for X.vcd)")->type_name("FILE")->configurable(false);
+    app.allow_config_extras(CLI::config_extras_mode::error);  // an unknown key is an error
+    app.set_config("--config", "", "read options from this TOML/INI file (as --dump-config writes it);\n"
+                                   "options on the command line take precedence")->type_name("FILE");
+    app.add_flag("--dump-config", cl.dump_config, "print the effective options as TOML and exit without running")
+        ->configurable(false);
     app.add_option("--trace-from", cl.trace_from, "trace only from this simulated time (default 0)")->type_name("TIME");
     app.add_option("--trace-to", cl.trace_to, "trace only up to this simulated time (default: the end)")->type_name("TIME");
     app.add_option("--trace-ips", cl.trace_ips, "trace only these nodes, e.g. 0,1,5 (default all)")->type_name("N,N,...");
@@ -188,14 +197,37 @@ void declare_options(CLI::App &app, CommandLine &cl)
     add_mapping_options(app, cl.timing_profile, cl.mapping); // profiles and mappings
 }
 
-int run(const CommandLine &cl, double wall_start)
+// The options turned into a checked configuration (UserError on a bad value).
+SimConfig checked_config(const CommandLine &cl)
 {
-    route_systemc_messages(cl.quiet);
     SimConfig config = make_config(cl.scene, cl, cl.quiet);
     config.cluster = cl.cluster;
     config.vcd_path = cl.vcd;
     apply_mapping_options(config, cl.mapping, cl.map_given);
     validate(config);
+    return config;
+}
+
+// --dump-config: the options from the command line and --config, and the defaults of the rest,
+// checked as a run would check them, as TOML on stdout.
+int dump_config(CLI::App &app, const CommandLine &cl)
+{
+    route_systemc_messages(cl.quiet);
+    checked_config(cl);
+    // --map-file replaces --map: its default must not come back as a conflicting --map.
+    if (!cl.mapping.map_file.empty() && !cl.map_given) app.get_option("--map")->configurable(false);
+    for (CLI::Option *opt : app.get_options())  // an option not given still holds its default
+        if (opt->count() == 0) opt->capture_default_str();
+    std::fputs(app.config_to_str(true, false).c_str(), stdout);
+    return 0;
+}
+
+int run(const CommandLine &cl, double wall_start)
+{
+    if (cl.scene.empty()) throw UserError("scene is required", 2);
+    if (cl.output.empty()) throw UserError("--output is required", 2);
+    route_systemc_messages(cl.quiet);
+    SimConfig config = checked_config(cl);
     if (config.step.min_weight > 1 && !cl.quiet)
         std::fprintf(stderr, "torusrt-sim: warning: --min-weight %g is above 1: every secondary ray is dropped\n",
                      config.step.min_weight);
@@ -260,7 +292,7 @@ int sc_main(int argc, char **argv)
     return run_cli("torusrt-sim", app, argc, argv,
                    [&] {
                        cl.map_given = app.count("--map") > 0;
-                       return run(cl, wall_start);
+                       return cl.dump_config ? dump_config(app, cl) : run(cl, wall_start);
                    },
                    "  3 deadlock: the network stalled with packets outstanding\n");
 }

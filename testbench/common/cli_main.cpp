@@ -18,7 +18,11 @@ int run_cli(const char *program, CLI::App &app, int argc, char **argv, const std
         app.parse(argc, argv);
     } catch (const CLI::ParseError &e) {
         if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
-        std::fprintf(stderr, "%s: %s\nRun with --help for more information.\n", program, e.what());
+        std::string what = e.what();
+        const CLI::Option *config = app.get_config_ptr();  // name the --config file its errors come from
+        if (dynamic_cast<const CLI::ConfigError *>(&e) && config != nullptr && config->count() > 0)
+            what = config->as<std::string>() + ": " + what;
+        std::fprintf(stderr, "%s: %s\nRun with --help for more information.\n", program, what.c_str());
         return 2;
     }
     try {
