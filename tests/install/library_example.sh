@@ -9,7 +9,7 @@ src=$2
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 export SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=DISABLE
-scene=$src/scenes/one-cell.nff
+scene=$src/scenes/paper-image1.nff
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
 cmake --install "$build" --prefix "$tmp/prefix" > "$tmp/install.log"
@@ -35,6 +35,9 @@ c++ -std=c++17 -O1 -o "$tmp/two_by_two_pc" "$src/testbench/examples/two_by_two.c
 
 "$build/torusrt-sim" "$scene" --ips 2x2 --size 16x16 -q -o "$tmp/sim.png" --stats "$tmp/sim.json"
 want=$(jq -r '.sim_time_s' "$tmp/sim.json")
+# The scene must tell machine shapes apart, or matching times would prove nothing.
+"$build/torusrt-sim" "$scene" --ips 2x1 --size 16x16 -q -o "$tmp/other.png" --stats "$tmp/other.json"
+jq -e --argjson t "$want" '.sim_time_s != $t' "$tmp/other.json" > /dev/null || fail "2x1 and 2x2 give the same time"
 for exe in "$tmp/ex/two_by_two" "$tmp/two_by_two_pc"; do
     "$exe" "$scene" 16 16 > "$tmp/out.txt" || fail "$exe exited with $?"
     grep -qx 'packets conserved' "$tmp/out.txt" || fail "$exe: no conservation line"
