@@ -14,9 +14,11 @@
 #include "cluster_bus.h"
 #include "cluster_dispatch.h"
 #include "harness.h"
+#include "packet_injector.h"
 #include "rt_packet.h"
 
 using harness::check;
+using harness::Injector;
 using sc_core::sc_time;
 using namespace torusrt;
 
@@ -34,20 +36,6 @@ struct FrameBufferStub : sc_core::sc_module {
         socket.register_b_transport(this, &FrameBufferStub::b_transport);
     }
     void b_transport(tlm::tlm_generic_payload &t, sc_time &) { t.set_response_status(tlm::TLM_OK_RESPONSE); }
-};
-
-struct Injector : sc_core::sc_module {
-    sc_core::sc_port<PacketSinkIf> out;
-    std::vector<TimedPacket> packets;
-    explicit Injector(sc_core::sc_module_name n) : sc_module(n), out("out")
-    {
-        SC_HAS_PROCESS(Injector);
-        SC_THREAD(run);
-    }
-    void run()
-    {
-        for (const TimedPacket &p : packets) out->accept(p);
-    }
 };
 
 // m processors, each with its own ledger (its last consumption time = its last packet's arrival,

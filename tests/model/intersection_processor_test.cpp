@@ -8,10 +8,12 @@
 #include <vector>
 
 #include "harness.h"
+#include "packet_injector.h"
 #include "intersection_processor.h"
 #include "rt_packet.h"
 
 using harness::check;
+using harness::Injector;
 using sc_core::sc_time;
 using namespace torusrt;
 
@@ -44,20 +46,6 @@ struct FrameBufferStub : sc_core::sc_module {
         times.push_back(sc_core::sc_time_stamp() + delay);
         counts.push_back(t.get_data_length() / sizeof(rt_contribution));
         t.set_response_status(tlm::TLM_OK_RESPONSE);
-    }
-};
-
-struct Injector : sc_core::sc_module {
-    sc_core::sc_port<PacketSinkIf> out;
-    std::vector<TimedPacket> packets;
-    explicit Injector(sc_core::sc_module_name n) : sc_module(n), out("out")
-    {
-        SC_HAS_PROCESS(Injector);
-        SC_THREAD(run);
-    }
-    void run()
-    {
-        for (const TimedPacket &p : packets) out->accept(p);
     }
 };
 
