@@ -70,6 +70,16 @@ def sweep_collect(args):
     return 1 if failed else 0
 
 
+def compare(args):
+    from . import compare as comparelib
+    columns = [c for c in args.columns.split(",") if c] if args.columns else None
+    rows, diffs = comparelib.compare(os.path.abspath(args.old), os.path.abspath(args.new), columns)
+    for line in diffs:
+        print(line)
+    print("compare: %d points of %s, %d differences in %s" % (rows, args.old, len(diffs), args.new))
+    return 1 if diffs else 0
+
+
 def main(argv):
     parser = argparse.ArgumentParser(prog="experiments/report", description=__doc__)
     sub = parser.add_subparsers(dest="command", required=True)
@@ -105,6 +115,12 @@ def main(argv):
     p.add_argument("--columns", default="")
     p.add_argument("--y", default="sim_time_s")
     p.set_defaults(run=sweep_collect)
+    p = sub.add_parser("compare", help="the same points of two sweeps must report the same values "
+                                       "(every column but wall_s); exit 1 on any difference")
+    p.add_argument("old", help="a results folder (fig*.csv, in profile subfolders or not)")
+    p.add_argument("new", help="the results folder to hold against it")
+    p.add_argument("--columns", default="", help="compare only these columns (comma-separated)")
+    p.set_defaults(run=compare)
     args = parser.parse_args(argv)
     try:
         return args.run(args)

@@ -1,0 +1,65 @@
+"""Two sweeps' CSVs side by side: the same points (matched by the columns before `status`) must
+have the same measured values. Used to show that a change of the code left every simulated time
+and every image as it was."""
+import os
+
+from .csvdata import Table
+
+# Wall-clock figures differ from run to run; everything else a point reports is simulated.
+NOT_COMPARED = ("wall_s",)
+
+
+def key_columns(table):
+    """The columns naming a point: every column before `status` (the sweep's axes)."""
+    if "status" not in table.columns:
+        raise ValueError("%s: no status column" % table.path)
+    return table.columns[:table.columns.index("status")]
+
+
+def compare_tables(old, new, columns=None):
+    """Differences between two tables of the same figure, as text lines (empty: identical)."""
+    keys = key_columns(old)
+    if key_columns(new) != keys:
+        return ["%s: point columns differ from %s" % (new.path, old.path)]
+    wanted = columns or [c for c in old.columns if c not in keys and c not in NOT_COMPARED]
+    index = {tuple(r[k] for k in keys): r for r in new.rows}
+    out = []
+    for row in old.rows:
+        point = tuple(row[k] for k in keys)
+        other = index.pop(point, None)
+        name = ",".join("%s=%s" % kv for kv in zip(keys, point))
+        if other is None:
+            out.append("%s: %s missing in the new sweep" % (os.path.basename(old.path), name))
+            continue
+        for c in wanted:
+            if c in row and row.get(c) != other.get(c):
+                out.append("%s: %s: %s %s -> %s" % (os.path.basename(old.path), name, c, row.get(c),
+                                                     other.get(c)))
+    for point in index:
+        out.append("%s: %s only in the new sweep" % (os.path.basename(new.path), ",".join(point)))
+    return out
+
+
+def figure_csvs(results):
+    """(relative path, absolute path) of every figure CSV under a results folder."""
+    found = []
+    for root, _dirs, files in os.walk(results):
+        for f in sorted(files):
+            if f.startswith("fig") and f.endswith(".csv"):
+                path = os.path.join(root, f)
+                found.append((os.path.relpath(path, results), path))
+    return sorted(found)
+
+
+def compare(old_dir, new_dir, columns=None):
+    """(rows compared, difference lines) over every figure CSV of `old_dir`."""
+    rows, diffs = 0, []
+    for rel, path in figure_csvs(old_dir):
+        other = os.path.join(new_dir, rel)
+        if not os.path.exists(other):
+            diffs.append("%s: not in %s" % (rel, new_dir))
+            continue
+        old = Table.load(path)
+        rows += len(old.rows)
+        diffs += compare_tables(old, Table.load(other), columns)
+    return rows, diffs

@@ -1,0 +1,80 @@
+"""The sweep comparison (experiments/report compare.py) on the checked-in reproduction CSVs: a
+sweep equals itself, and a changed simulated time, a changed image verdict or a missing point is
+found, while a changed wall time is not."""
+import csv
+import os
+import shutil
+import sys
+import tempfile
+import unittest
+
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+sys.path.insert(0, os.path.join(REPO, "experiments"))
+
+from report import compare  # noqa: E402
+
+RESULTS = os.path.join(REPO, "experiments", "results")
+FIG = os.path.join("calibrated", "fig5_6.csv")
+
+
+def edit(path, change):
+    """Rewrites a CSV with `change(rows)` applied to its rows (dicts)."""
+    with open(path, newline="") as f:
+        reader = csv.DictReader(f)
+        columns, rows = reader.fieldnames, list(reader)
+    rows = change(rows)
+    with open(path, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=columns, lineterminator="\n")
+        w.writeheader()
+        w.writerows(rows)
+
+
+class Compare(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.new = os.path.join(self.tmp.name, "results")
+        shutil.copytree(RESULTS, self.new)
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def test_identical(self):
+        rows, diffs = compare.compare(RESULTS, self.new)
+        self.assertGreater(rows, 100)
+        self.assertEqual(diffs, [])
+
+    def test_sim_time_change_found(self):
+        def change(rows):
+            rows[3]["sim_time_s"] = str(float(rows[3]["sim_time_s"]) * (1 + 1e-12))
+            return rows
+        edit(os.path.join(self.new, FIG), change)
+        _, diffs = compare.compare(RESULTS, self.new)
+        self.assertEqual(len(diffs), 1)
+        self.assertIn("sim_time_s", diffs[0])
+
+    def test_image_change_found(self):
+        def change(rows):
+            rows[0]["image_identical"] = "no"
+            return rows
+        edit(os.path.join(self.new, FIG), change)
+        _, diffs = compare.compare(RESULTS, self.new)
+        self.assertEqual(len(diffs), 1)
+        self.assertIn("image_identical", diffs[0])
+
+    def test_missing_point_found(self):
+        edit(os.path.join(self.new, FIG), lambda rows: rows[1:])
+        _, diffs = compare.compare(RESULTS, self.new)
+        self.assertEqual(len(diffs), 1)
+        self.assertIn("missing", diffs[0])
+
+    def test_wall_time_ignored(self):
+        def change(rows):
+            for r in rows:
+                r["wall_s"] = "99"
+            return rows
+        edit(os.path.join(self.new, FIG), change)
+        self.assertEqual(compare.compare(RESULTS, self.new)[1], [])
+
+
+if __name__ == "__main__":
+    unittest.main()
