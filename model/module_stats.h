@@ -62,7 +62,7 @@ struct BusStats {
 
 struct DispatcherStats {
     std::vector<uint64_t> dispatched;  // per processor of the node
-    uint64_t inbox_high_water = 0;     // host primaries included
+    uint64_t inbox_high_water = 0;     // network packets (primaries come from the host on demand)
 };
 
 struct BusPortStats {
