@@ -3,6 +3,9 @@
 // gives it back once the packet has left the buffer (a credit returned). A thread that finds no
 // room waits on released(); an SC_METHOD registers an event with on_release() and is notified
 // once, at the next release. Capacity 0 = unbounded (room always available).
+// Stall time: the simulated time during which at least one writer waits for room, from the
+// moment the first writer starts waiting until the next release (a writer that still finds no
+// room starts a new interval).
 #pragma once
 
 #include <cstddef>
@@ -28,6 +31,7 @@ class BufferSpace {
         m_used--;
         m_depth = static_cast<int>(m_used);
         if (!m_capacity) return;
+        end_stall();
         m_released.notify(sc_core::SC_ZERO_TIME);
         for (sc_core::sc_event *e : m_waiters) e->notify(sc_core::SC_ZERO_TIME);
         m_waiters.clear();
@@ -37,6 +41,7 @@ class BufferSpace {
     {
         while (!available()) {
             m_blocked_writers++;
+            begin_stall();
             sc_core::wait(m_released);
             m_blocked_writers--;
         }
@@ -45,6 +50,7 @@ class BufferSpace {
     // `e` is notified at the next release (an SC_METHOD writer retries then).
     void on_release(sc_core::sc_event &e)
     {
+        begin_stall();
         for (sc_core::sc_event *w : m_waiters)
             if (w == &e) return;
         m_waiters.push_back(&e);
@@ -59,12 +65,32 @@ class BufferSpace {
     unsigned capacity() const { return m_capacity; }
     // Writers (threads and methods) waiting for room, for the deadlock report.
     unsigned blocked_writers() const { return m_blocked_writers + static_cast<unsigned>(m_waiters.size()); }
+    // Simulated time writers have waited for room so far (an interval still open counts up to now).
+    sc_core::sc_time stalled_time() const
+    {
+        return m_stalling ? m_stalled + (sc_core::sc_time_stamp() - m_stall_since) : m_stalled;
+    }
 
   private:
+    void begin_stall()
+    {
+        if (m_stalling) return;
+        m_stalling = true;
+        m_stall_since = sc_core::sc_time_stamp();
+    }
+    void end_stall()
+    {
+        if (!m_stalling) return;
+        m_stalled += sc_core::sc_time_stamp() - m_stall_since;
+        m_stalling = false;
+    }
+
     unsigned m_capacity;
     size_t m_used = 0, m_high_water = 0;
     unsigned m_blocked_writers = 0;
     int m_depth = 0;
+    bool m_stalling = false;  // a writer waits for room since m_stall_since
+    sc_core::sc_time m_stall_since = sc_core::SC_ZERO_TIME, m_stalled = sc_core::SC_ZERO_TIME;
     sc_core::sc_event m_released;
     std::vector<sc_core::sc_event *> m_waiters;
 };

@@ -39,6 +39,29 @@ int ClusterBus::waiting() const
     return n;
 }
 
+namespace {
+
+GrantWait grant_wait(const ClusterBus::GrantStats &g)
+{
+    return {g.grants, g.wait_sum.value(), g.wait_max.value()};
+}
+
+}  // namespace
+
+BusStats ClusterBus::stats() const
+{
+    BusStats s;
+    s.busy_s = m_busy.to_seconds();
+    s.packet_transfers = m_packet_transfers;
+    s.object_reads = m_object_reads;
+    s.packet_bytes = m_packet_bytes;
+    s.object_bytes = m_object_bytes;
+    s.all = grant_wait(m_all);
+    for (const auto &g : m_per) s.per_requester.push_back(grant_wait(g));
+    s.waiting = waiting();
+    return s;
+}
+
 double ClusterBus::carry(tlm::tlm_generic_payload &trans, sc_core::sc_time &memory_delay)
 {
     memory_delay = sc_core::SC_ZERO_TIME;

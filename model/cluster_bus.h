@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "bus_arbiter.h"
+#include "module_stats.h"
 #include "rt_timing.h"
 
 namespace torusrt {
@@ -82,6 +83,7 @@ class ClusterBus : public sc_core::sc_module {
     const GrantStats &grant_stats(int requester) const { return m_per[requester]; }
     // Requesters waiting for a grant right now (for the deadlock report).
     int waiting() const;
+    BusStats stats() const;
     void keep_log(bool on) { m_keep_log = on; }
     const std::vector<Grant> &log() const { return m_log; }
 

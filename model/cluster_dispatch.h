@@ -16,8 +16,10 @@
 #include <vector>
 
 #include "intersection_processor.h"
+#include "module_stats.h"
 #include "packet_queue.h"
 #include "packet_sink_if.h"
+#include "queue_registry.h"
 #include "sim_config.h"
 #include "time_keeper.h"
 
@@ -48,6 +50,12 @@ class ClusterDispatcher : public sc_core::sc_module, public PacketSinkIf {
 
     PacketQueue &inbox() { return m_inbox; }
     uint64_t dispatched(int k) const { return m_dispatched[k]; }
+    DispatcherStats stats() const { return {m_dispatched, m_inbox.high_water()}; }
+    void register_queues(QueueRegistry &reg, int node)
+    {
+        reg.add(std::string(name()) + ".input", node, m_inbox.space(), m_inbox.depth_trace(),
+                std::string(name()) + ".queue_depth");
+    }
     bool &busy_trace() { return m_busy_flag; }
 
   private:

@@ -52,6 +52,12 @@ void ClusterNode::accept(const TimedPacket &p) { m_dispatcher->accept(p); }
 bool ClusterNode::can_accept(const TimedPacket &p) const { return m_dispatcher->can_accept(p); }
 void ClusterNode::on_space(const TimedPacket &p, sc_core::sc_event &e) { m_dispatcher->on_space(p, e); }
 
+void ClusterNode::register_queues(QueueRegistry &reg)
+{
+    for (auto &p : m_processors) p->register_queues(reg);
+    m_dispatcher->register_queues(reg, m_node);
+}
+
 std::vector<IntersectionProcessor *> ClusterNode::processors() const
 {
     std::vector<IntersectionProcessor *> out;

@@ -12,7 +12,6 @@
 #pragma once
 
 #include <memory>
-#include <nlohmann/json.hpp>
 #include <string>
 #include <systemc>
 #include <vector>
@@ -24,6 +23,7 @@
 #include "packet_ledger.h"
 #include "packet_sink_if.h"
 #include "processor_bus_port.h"
+#include "queue_registry.h"
 #include "sim_config.h"
 #include "two_port_memory.h"
 
@@ -42,6 +42,7 @@ class ClusterNode : public sc_core::sc_module, public PacketSinkIf {
     bool can_accept(const TimedPacket &p) const override;
     void on_space(const TimedPacket &p, sc_core::sc_event &e) override;
     std::vector<IntersectionProcessor *> processors() const;
+    void register_queues(QueueRegistry &reg);  // the processors' and the dispatcher's
 
     int node() const { return m_node; }
     int size() const { return static_cast<int>(m_processors.size()); }
@@ -61,15 +62,5 @@ class ClusterNode : public sc_core::sc_module, public PacketSinkIf {
     std::unique_ptr<ClusterBus> m_bus;
     std::unique_ptr<ClusterDispatcher> m_dispatcher;
 };
-
-class TorusSystem;
-
-// Data memory of a clustered system (keys as the flat system's, plus per-mode detail).
-nlohmann::json cluster_memory_json(const SimConfig &config, TorusSystem &top, const rt_scene *scene,
-                                   const rt_grid *grid, const int32_t *cell_owner, uint64_t pixel_partitioned);
-// Adds the `cluster.` and `bus.` sections to a report.
-void add_cluster_report(nlohmann::json &report, const SimConfig &config, TorusSystem &top);
-// Lines naming the cluster's full queues and waiting requesters.
-std::string cluster_deadlock_lines(ClusterNode &cluster);
 
 }  // namespace torusrt

@@ -1,140 +1,164 @@
-// cluster_report.cpp - the cluster's statistics (`cluster.` and `bus.` report sections), its
-// memory figures, its VCD lines and its deadlock lines.
+// cluster_report.cpp - the clustered run's part of the report: the memory figures, the buses,
+// dispatchers, bus ports and 2-port memories (collect), and the `cluster.` and `bus.` sections.
 #include <algorithm>
-#include <sstream>
 
-#include "cluster_memory.h"
 #include "cluster_node.h"
+#include "run_report.h"
 #include "torus_system.h"
 
 namespace torusrt {
 
 namespace {
 
-nlohmann::json wait_json(const ClusterBus::GrantStats &g)
+double to_us(uint64_t ticks) { return sc_core::sc_time::from_value(ticks).to_seconds() * 1e6; }
+
+nlohmann::json wait_json(const GrantWait &g)
 {
-    double mean = g.grants ? g.wait_sum.to_seconds() * 1e6 / static_cast<double>(g.grants) : 0.0;
-    return {{"mean", mean}, {"max", g.wait_max.to_seconds() * 1e6}};
+    double mean = g.grants ? to_us(g.wait_sum) / static_cast<double>(g.grants) : 0.0;
+    return {{"mean", mean}, {"max", to_us(g.wait_max)}};
 }
 
-}  // namespace
+double bus_utilisation(const BusStats &b, double T) { return T > 0 ? std::min(1.0, b.busy_s / T) : 0.0; }
 
-nlohmann::json cluster_memory_json(const SimConfig &config, TorusSystem &, const rt_scene *scene, const rt_grid *grid,
-                                   const int32_t *cell_owner, uint64_t pixel_partitioned)
+nlohmann::json bus_json(const RunReport &r, const ClusterNodeReport &c)
 {
-    ClusterMemoryFigures f = cluster_memory_figures(scene, grid, cell_owner, config.node_count(), config.cluster);
-    return cluster_memory_report(f, config.data, config.processor_count(), pixel_partitioned);
+    int m = r.config.cluster;
+    const BusStats &bus = c.bus;
+    nlohmann::json requesters = nlohmann::json::array();
+    for (size_t k = 0; k < bus.per_requester.size(); k++) {
+        int q = static_cast<int>(k);
+        requesters.push_back({{"requester", q},
+                              {"master", q < m ? "processor" : "comm_unit"},
+                              {"processor", q < m ? nlohmann::json(c.node * m + q) : nlohmann::json()},
+                              {"grants", bus.per_requester[k].grants},
+                              {"grant_wait_us", wait_json(bus.per_requester[k])}});
+    }
+    return {{"node", c.node},
+            {"busy_s", bus.busy_s},
+            {"utilisation", bus_utilisation(bus, r.sim_time_s)},
+            {"transfers", bus.packet_transfers + bus.object_reads},
+            {"packet_transfers", bus.packet_transfers},
+            {"object_reads", bus.object_reads},
+            {"bytes", bus.packet_bytes + bus.object_bytes},
+            {"packet_bytes", bus.packet_bytes},
+            {"object_bytes", bus.object_bytes},
+            {"grants", bus.all.grants},
+            {"grant_wait_us", wait_json(bus.all)},
+            {"per_requester", requesters}};
 }
 
-void add_cluster_report(nlohmann::json &report, const SimConfig &config, TorusSystem &top)
+nlohmann::json node_json(const RunReport &r, const ClusterNodeReport &c)
 {
-    double T = report["sim_time_s"].get<double>();
-    int m = config.cluster;
-    nlohmann::json per_node = nlohmann::json::array(), per_bus = nlohmann::json::array();
+    nlohmann::json procs = nlohmann::json::array();
+    for (size_t k = 0; k < c.ports.size(); k++)
+        procs.push_back({{"id", c.node * r.config.cluster + static_cast<int>(k)},
+                         {"dispatched", c.dispatcher.dispatched[k]},
+                         {"objects_held", c.memories[k].objects_held},
+                         {"remote_reads", c.ports[k].remote_reads},
+                         {"local_reads", c.ports[k].local_reads},
+                         {"reads_served", c.memories[k].reads_served}});
+    return {{"node", c.node},
+            {"objects", c.objects},
+            {"dispatch_queue_high_water", c.dispatcher.inbox_high_water},
+            {"processors", procs}};
+}
+
+nlohmann::json buses_json(const RunReport &r)
+{
+    nlohmann::json per_bus = nlohmann::json::array();
     std::vector<double> util;
-    ClusterBus::GrantStats all;
+    GrantWait all;
     double busy = 0, packet_bytes = 0, object_bytes = 0;
     uint64_t packet_transfers = 0, object_reads = 0;
-    for (const auto &cl : top.clusters()) {
-        ClusterBus &bus = cl->bus();
-        double b = bus.busy_time().to_seconds();
-        double u = T > 0 ? std::min(1.0, b / T) : 0.0;
-        util.push_back(u);
-        busy += b;
-        packet_bytes += bus.packet_bytes();
-        object_bytes += bus.object_bytes();
-        packet_transfers += bus.packet_transfers();
-        object_reads += bus.object_reads();
-        const auto &g = bus.grant_stats();
-        all.grants += g.grants;
-        all.wait_sum += g.wait_sum;
-        if (g.wait_max > all.wait_max) all.wait_max = g.wait_max;
-
-        nlohmann::json requesters = nlohmann::json::array();
-        for (int r = 0; r < bus.requesters(); r++) {
-            const auto &rg = bus.grant_stats(r);
-            requesters.push_back({{"requester", r},
-                                  {"master", r < m ? "processor" : "comm_unit"},
-                                  {"processor", r < m ? nlohmann::json(cl->node() * m + r) : nlohmann::json()},
-                                  {"grants", rg.grants},
-                                  {"grant_wait_us", wait_json(rg)}});
-        }
-        per_bus.push_back({{"node", cl->node()},
-                           {"busy_s", b},
-                           {"utilisation", u},
-                           {"transfers", bus.transfers()},
-                           {"packet_transfers", bus.packet_transfers()},
-                           {"object_reads", bus.object_reads()},
-                           {"bytes", bus.packet_bytes() + bus.object_bytes()},
-                           {"packet_bytes", bus.packet_bytes()},
-                           {"object_bytes", bus.object_bytes()},
-                           {"grants", g.grants},
-                           {"grant_wait_us", wait_json(g)},
-                           {"per_requester", requesters}});
-
-        nlohmann::json procs = nlohmann::json::array();
-        for (int k = 0; k < cl->size(); k++) {
-            procs.push_back({{"id", cl->node() * m + k},
-                             {"dispatched", cl->dispatcher().dispatched(k)},
-                             {"objects_held", cl->memory(k).object_count()},
-                             {"remote_reads", cl->port(k).remote_reads()},
-                             {"local_reads", cl->port(k).local_reads()},
-                             {"reads_served", cl->memory(k).reads_served()}});
-        }
-        per_node.push_back({{"node", cl->node()},
-                            {"objects", cl->node_objects().size()},
-                            {"dispatch_queue_high_water", cl->dispatcher().inbox().high_water()},
-                            {"processors", procs}});
+    for (const auto &c : r.clusters) {
+        const BusStats &b = c.bus;
+        util.push_back(bus_utilisation(b, r.sim_time_s));
+        busy += b.busy_s;
+        packet_bytes += b.packet_bytes;
+        object_bytes += b.object_bytes;
+        packet_transfers += b.packet_transfers;
+        object_reads += b.object_reads;
+        all.grants += b.all.grants;
+        all.wait_sum += b.all.wait_sum;
+        all.wait_max = std::max(all.wait_max, b.all.wait_max);
+        per_bus.push_back(bus_json(r, c));
     }
     double umin = util.empty() ? 0 : *std::min_element(util.begin(), util.end());
     double umax = util.empty() ? 0 : *std::max_element(util.begin(), util.end());
     double umean = 0;
     for (double u : util) umean += u;
     if (!util.empty()) umean /= static_cast<double>(util.size());
-
-    report["cluster"] = {{"m", m},
-                         {"processors_per_node", m},
-                         {"nodes", config.node_count()},
-                         {"data", data_mode_name(config.data)},
-                         {"dispatch", dispatch_name(config.dispatch)},
-                         {"arbiter", arbiter_name(config.arbiter)},
-                         {"arbiter_priority", config.arbiter == ArbiterPolicy::fixed_priority
-                                                  ? "comm unit first, then processors by index (0 highest)"
-                                                  : "rotating"},
-                         {"placement", "shared: the j-th object (ascending index) listed by a node's cells is held "
-                                       "by its processor j mod m"},
-                         {"per_node", per_node}};
-    report["bus"] = {{"count", top.clusters().size()},
-                     {"utilisation", {{"min", umin}, {"mean", umean}, {"max", umax}}},
-                     {"busy_s", busy},
-                     {"grants", all.grants},
-                     {"grant_wait_us", wait_json(all)},
-                     {"transfers", packet_transfers + object_reads},
-                     {"packet_transfers", packet_transfers},
-                     {"object_reads", object_reads},
-                     {"bytes", packet_bytes + object_bytes},
-                     {"packet_bytes", packet_bytes},
-                     {"object_bytes", object_bytes},
-                     {"per_bus", per_bus}};
-    // Per processor: object reads it made over the bus (shared data).
-    auto &per_ip = report["per_ip"];
-    for (const auto &cl : top.clusters())
-        for (int k = 0; k < cl->size(); k++) {
-            size_t id = static_cast<size_t>(cl->node() * m + k);
-            if (id < per_ip.size()) per_ip[id]["bus_object_reads"] = cl->port(k).remote_reads();
-        }
+    return {{"count", r.clusters.size()},
+            {"utilisation", {{"min", umin}, {"mean", umean}, {"max", umax}}},
+            {"busy_s", busy},
+            {"grants", all.grants},
+            {"grant_wait_us", wait_json(all)},
+            {"transfers", packet_transfers + object_reads},
+            {"packet_transfers", packet_transfers},
+            {"object_reads", object_reads},
+            {"bytes", packet_bytes + object_bytes},
+            {"packet_bytes", packet_bytes},
+            {"object_bytes", object_bytes},
+            {"per_bus", per_bus}};
 }
 
-std::string cluster_deadlock_lines(ClusterNode &cluster)
+}  // namespace
+
+MemoryReport cluster_memory(const SimConfig &config, const rt_scene *scene, const rt_grid *grid,
+                            const int32_t *cell_owner, uint64_t pixel_partitioned)
 {
-    // Full processor queues are listed by deadlock_report with every other processor's.
-    std::ostringstream s;
-    PacketQueue &q = cluster.dispatcher().inbox();
-    if (q.full())
-        s << "  full: " << cluster.dispatcher().name() << " input queue (" << q.size() << "/" << q.capacity() << "), "
-          << q.blocked_writers() << " writer(s) waiting\n";
-    if (int w = cluster.bus().waiting()) s << "  waiting: " << w << " requester(s) on " << cluster.bus().name() << "\n";
-    return s.str();
+    MemoryReport m;
+    m.clustered = true;
+    m.cluster = cluster_memory_figures(scene, grid, cell_owner, config.node_count(), config.cluster);
+    m.max_per_ip_bytes = config.data == DataMode::replicated ? m.cluster.replicated_per_processor
+                                                             : m.cluster.shared_per_processor;
+    m.total_bytes = m.max_per_ip_bytes * static_cast<uint64_t>(config.processor_count());
+    m.pixel_partitioned_bytes = pixel_partitioned;
+    return m;
+}
+
+void collect_clusters(TorusSystem &top, RunReport &r)
+{
+    for (const auto &cl : top.clusters()) {
+        ClusterNodeReport c;
+        c.node = cl->node();
+        c.bus_name = cl->bus().name();
+        c.objects = cl->node_objects().size();
+        c.dispatcher = cl->dispatcher().stats();
+        c.bus = cl->bus().stats();
+        for (int k = 0; k < cl->size(); k++) {
+            c.ports.push_back(cl->port(k).stats());
+            c.memories.push_back(cl->memory(k).stats());
+        }
+        r.clusters.push_back(std::move(c));
+    }
+}
+
+void clusters_to_json(const RunReport &r, nlohmann::json &j)
+{
+    const SimConfig &config = r.config;
+    nlohmann::json per_node = nlohmann::json::array();
+    for (const auto &c : r.clusters) per_node.push_back(node_json(r, c));
+    j["cluster"] = {{"m", config.cluster},
+                    {"processors_per_node", config.cluster},
+                    {"nodes", config.node_count()},
+                    {"data", data_mode_name(config.data)},
+                    {"dispatch", dispatch_name(config.dispatch)},
+                    {"arbiter", arbiter_name(config.arbiter)},
+                    {"arbiter_priority", config.arbiter == ArbiterPolicy::fixed_priority
+                                             ? "comm unit first, then processors by index (0 highest)"
+                                             : "rotating"},
+                    {"placement", "shared: the j-th object (ascending index) listed by a node's cells is held "
+                                  "by its processor j mod m"},
+                    {"per_node", per_node}};
+    j["bus"] = buses_json(r);
+    // Per processor: object reads it made over the bus (shared data).
+    auto &per_ip = j["per_ip"];
+    for (const auto &c : r.clusters)
+        for (size_t k = 0; k < c.ports.size(); k++) {
+            size_t id = static_cast<size_t>(c.node * config.cluster) + k;
+            if (id < per_ip.size()) per_ip[id]["bus_object_reads"] = c.ports[k].remote_reads;
+        }
 }
 
 }  // namespace torusrt

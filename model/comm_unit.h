@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "arrival_queue.h"
+#include "module_stats.h"
 #include "packet_sink_if.h"
 #include "rt_grid.h"
 #include "routing.h"
@@ -55,6 +56,7 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf {
     uint64_t routed_transit() const { return m_transit; }
     // Packets held for room further on (for the deadlock report).
     size_t held() const;
+    CommUnitStats stats() const { return {m_local, m_transit, held()}; }
 
   private:
     PacketSinkIf &next_hop(const TimedPacket &p, bool &local);

@@ -10,6 +10,7 @@
 #include <tlm>
 #include <tlm_utils/simple_initiator_socket.h>
 
+#include "module_stats.h"
 #include "packet_ledger.h"
 #include "primary_source.h"
 #include "rt_grid.h"
@@ -28,6 +29,7 @@ class Host : public sc_core::sc_module {
     PrimarySource &primaries() { return m_primaries; }
     bool done_injecting() const { return m_done; }
     uint64_t injected() const { return m_primaries.entering(); }
+    HostStats stats() const { return {injected()}; }
 
   private:
     void write_background();

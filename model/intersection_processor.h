@@ -10,10 +10,12 @@
 #include <tlm_utils/simple_initiator_socket.h>
 #include <vector>
 
+#include "module_stats.h"
 #include "object_fetch_if.h"
 #include "packet_ledger.h"
 #include "packet_queue.h"
 #include "packet_sink_if.h"
+#include "queue_registry.h"
 #include "rt_grid.h"
 #include "rt_ops.h"
 #include "rt_scene.h"
@@ -46,6 +48,12 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf {
     uint64_t packets_in() const { return m_packets_in; }
     uint64_t packets_out() const { return m_packets_out; }
     PacketQueue &queue() { return m_queue; }
+    IpStats stats() const { return {m_busy.to_seconds(), m_packets_in, m_packets_out, m_queue.high_water(), m_ops}; }
+    void register_queues(QueueRegistry &reg)
+    {
+        reg.add(std::string(name()) + ".input", m_owner_id, m_queue.space(), m_queue.depth_trace(),
+                std::string(name()) + ".queue_depth");
+    }
     int index() const { return m_index; }
     bool &busy_trace() { return m_busy_flag; }
 

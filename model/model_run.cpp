@@ -12,7 +12,7 @@
 #include "packet_ledger.h"
 #include "progress.h"
 #include "rt_mapping.h"
-#include "sim_report.h"
+#include "run_report.h"
 #include "torus_system.h"
 #include "tracing.h"
 #include "user_error.h"
@@ -95,11 +95,18 @@ ModelOutcome run_model(const SimConfig &config, const rt_scene *scene, const rt_
                       "as SystemC's time holds about 1.8e7 s at 1 ps)", config.time_limit_s, kMaxSimTimeS);
         throw UserError(text);
     }
+    RunFacts facts;
+    facts.sim_wall_s = sim_wall;
+    facts.delta_cycles = sc_core::sc_delta_count();
     ModelOutcome out;
     if (!finished) {
+        facts.t1_s = t1_s < 0 ? 0 : t1_s;
+        facts.t1_source = t1_s < 0 ? "this run" : t1_source;
+        facts.wall_s = now_s() - wall_start_s;
         out.deadlock = true;
-        out.deadlock_details = deadlock_report(top);
-        out.sim_time_s = sc_core::sc_time_stamp().to_seconds();
+        out.report = collect(config, top, ledger, scene, grid, owner.data(), facts, true);
+        out.deadlock_details = deadlock_text(out.report);
+        out.sim_time_s = out.report.sim_time_s;
         return out; // the tracer's destructor removes the partial trace
     }
     if (!ledger.conserved())
@@ -107,20 +114,17 @@ ModelOutcome run_model(const SimConfig &config, const rt_scene *scene, const rt_
                         std::to_string(ledger.totals().created[0] + ledger.totals().created[1]) + ", consumed " +
                         std::to_string(ledger.totals().consumed[0] + ledger.totals().consumed[1]));
     out.sim_time_s = ledger.image_time().to_seconds();
-    RunFacts facts;
     facts.t1_s = t1_s < 0 ? out.sim_time_s : t1_s;
     facts.t1_source = t1_s < 0 ? "this run" : t1_source;
-    facts.sim_wall_s = sim_wall;
-    facts.delta_cycles = sc_core::sc_delta_count();
     facts.wall_s = now_s() - wall_start_s;
-    out.report = build_report(config, top, ledger, scene, grid, owner.data(), facts);
+    out.report = collect(config, top, ledger, scene, grid, owner.data(), facts, false);
     out.rgb8.resize(static_cast<size_t>(cam->width) * cam->height * 3);
     rt_framebuffer_to_rgb8(fb.get(), out.rgb8.data());
     if (tracer) tracer->finish();
     return out;
 }
 
-void print_summary_stdout(const nlohmann::json &report) { print_summary(report, stdout); }
+void print_summary_stdout(const RunReport &report) { print_summary(report, stdout); }
 
 double one_processor_time(const SimConfig &config, const rt_scene *scene, const rt_grid *grid)
 {

@@ -2,21 +2,21 @@
 // SystemC elaborates once per process, so a second configuration (T(1)) runs in a child process.
 #pragma once
 
-#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "kernel_handles.h"
+#include "run_report.h"
 #include "sim_config.h"
 
 namespace torusrt {
 
 struct ModelOutcome {
     bool deadlock = false;            // the network stalled with packets outstanding
-    std::string deadlock_details;     // which queues were full
-    double sim_time_s = 0;            // simulated image time
-    std::vector<uint8_t> rgb8;        // final image
-    nlohmann::json report;            // the full statistics
+    std::string deadlock_details;     // which queues were full (deadlock_text)
+    double sim_time_s = 0;            // simulated image time (deadlock: the time of the stall)
+    std::vector<uint8_t> rgb8;        // final image (empty after a deadlock)
+    RunReport report;                 // the full statistics, also after a deadlock
 };
 
 // Runs `config` on a loaded scene. `t1_s` < 0 means "this run is T(1)" (one processor). A VCD
@@ -25,7 +25,7 @@ ModelOutcome run_model(const SimConfig &config, const rt_scene *scene, const rt_
                        const std::string &t1_source, double wall_start_s);
 
 // Prints the human summary of a report on stdout.
-void print_summary_stdout(const nlohmann::json &report);
+void print_summary_stdout(const RunReport &report);
 
 // T(1) of `config`'s scene: the same model with one processor (and no cluster), run in a child
 // process. Throws UserError if that run fails.

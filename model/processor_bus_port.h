@@ -19,6 +19,7 @@
 #include <tlm_utils/simple_initiator_socket.h>
 #include <vector>
 
+#include "module_stats.h"
 #include "object_fetch_if.h"
 #include "packet_sink_if.h"
 #include "rt_scene.h"
@@ -43,6 +44,7 @@ class ProcessorBusPort : public sc_core::sc_module, public PacketSinkIf, public 
 
     uint64_t remote_reads() const { return m_remote_reads; }
     uint64_t local_reads() const { return m_local_reads; }
+    BusPortStats stats() const { return {m_remote_reads, m_local_reads}; }
 
   private:
     const rt_scene *m_scene;

@@ -17,7 +17,9 @@
 #include <utility>
 
 #include "buffer_space.h"
+#include "module_stats.h"
 #include "packet_sink_if.h"
+#include "queue_registry.h"
 #include "sim_config.h"
 
 namespace torusrt {
@@ -41,6 +43,8 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
     double bytes() const { return m_bytes; }
     const sc_core::sc_time &busy_time() const { return m_busy; }
     BufferSpace &queue() { return m_space; }
+    LinkStats stats() const { return {m_from, m_to, m_dir, m_packets, m_bytes, m_busy.to_seconds(), m_space.high_water()}; }
+    void register_queues(QueueRegistry &reg) { reg.add(name(), m_from, m_space, m_space.depth_trace()); }
     // Traced busy line; asking for it turns on the (otherwise idle) process that drives it.
     bool &busy_trace();
 

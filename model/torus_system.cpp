@@ -53,6 +53,9 @@ TorusSystem::TorusSystem(sc_core::sc_module_name name, const SimConfig &config, 
             m_links.push_back(std::move(link));
         }
     }
+    for (const auto &ip : m_ips) ip->register_queues(m_queues);
+    for (const auto &cl : m_clusters) cl->register_queues(m_queues);
+    for (const auto &l : m_links) l->register_queues(m_queues);
 }
 
 TorusSystem::~TorusSystem() = default;

@@ -13,6 +13,7 @@
 #include "host.h"
 #include "intersection_processor.h"
 #include "packet_ledger.h"
+#include "queue_registry.h"
 #include "routing.h"
 #include "sim_config.h"
 #include "toroidal_link.h"
@@ -34,6 +35,8 @@ class TorusSystem : public sc_core::sc_module {
     const std::vector<std::unique_ptr<ClusterNode>> &clusters() const { return m_clusters; }
     Host &host() { return *m_host; }
     FrameBuffer &frame_buffer() { return *m_fb; }
+    // Every bounded buffer: processor and dispatcher input queues node by node, then the links.
+    const QueueRegistry &queues() const { return m_queues; }
 
   private:
     Routing m_routing;
@@ -43,6 +46,7 @@ class TorusSystem : public sc_core::sc_module {
     std::vector<std::unique_ptr<IntersectionProcessor>> m_ips;   // flat torus: one per node
     std::vector<std::unique_ptr<ClusterNode>> m_clusters;        // clusters: one per node
     std::vector<std::unique_ptr<ToroidalLink>> m_links;
+    QueueRegistry m_queues;
 };
 
 }  // namespace torusrt

@@ -48,14 +48,12 @@ Tracer::Tracer(const SimConfig &config, TorusSystem &top) : m_config(config)
         for (int k = 0; k < config.cluster; k++) {
             IntersectionProcessor *p = procs[static_cast<size_t>(node * config.cluster + k)];
             add(g, p->busy_trace(), std::string(p->name()) + ".busy");
-            add(g, p->queue().depth_trace(), std::string(p->name()) + ".queue_depth");
         }
-        for (const auto &l : top.links()) {
-            if (l->from() != node) continue;
-            add(g, l->busy_trace(), std::string(l->name()) + ".busy");
-            add(g, l->queue().depth_trace(), std::string(l->name()) + ".queue_depth");
-        }
+        for (const auto &l : top.links())
+            if (l->from() == node) add(g, l->busy_trace(), std::string(l->name()) + ".busy");
         if (static_cast<size_t>(node) < top.clusters().size()) trace_cluster(g, *top.clusters()[node]);
+        for (const QueueRef &q : top.queues().all())  // every buffer held in this node
+            if (q.node == node) add(g, *q.depth, q.trace);
         m_groups.push_back(g);
     }
 }
@@ -79,9 +77,7 @@ void Tracer::trace_cluster(Group &g, ClusterNode &cluster)
     add(g, bus.owner_trace(), base + ".owner");
     for (int r = 0; r < bus.requesters(); r++)
         add(g, bus.request_trace(r), base + ".request_" + (r < cluster.size() ? std::to_string(r) : std::string("cu")));
-    std::string d = cluster.dispatcher().name();
-    add(g, cluster.dispatcher().inbox().depth_trace(), d + ".queue_depth");
-    add(g, cluster.dispatcher().busy_trace(), d + ".busy");
+    add(g, cluster.dispatcher().busy_trace(), std::string(cluster.dispatcher().name()) + ".busy");
 }
 
 std::string Tracer::save_file_text() const

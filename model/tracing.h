@@ -1,5 +1,5 @@
-// tracing.h - the optional VCD trace: IP busy and queue depth, link activity and queue depth,
-// bus owner and request lines, and a GTKWave save file that groups them per node.
+// tracing.h - the optional VCD trace: IP busy, link activity, bus owner and request lines, the
+// depth of every queue of the queue registry, and a GTKWave save file that groups them per node.
 // Created only when --vcd is given; the trace goes through a VcdStream (every write checked,
 // optional time window) into the path the run's OutputSet handed out.
 #pragma once

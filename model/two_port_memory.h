@@ -15,6 +15,7 @@
 #include <tlm_utils/simple_target_socket.h>
 #include <vector>
 
+#include "module_stats.h"
 #include "rt_timing.h"
 
 namespace torusrt {
@@ -32,6 +33,7 @@ class TwoPortMemory : public sc_core::sc_module {
     size_t object_count() const;
     uint64_t reads_served() const { return m_reads; }
     double bytes_served() const { return m_bytes; }
+    MemoryPortStats stats() const { return {object_count(), m_reads}; }
 
   private:
     void b_transport(tlm::tlm_generic_payload &trans, sc_core::sc_time &delay);

@@ -254,7 +254,10 @@ int run(const CommandLine &cl, double wall_start)
         t1_source = "one-processor run";
     }
     ModelOutcome out = run_model(config, loaded.scene.get(), loaded.grid.get(), t1, t1_source, wall_start);
-    if (out.deadlock) {
+    out.report.mapping = mapping_facts;
+    if (out.deadlock) {  // the JSON alone (status "deadlock"), no image
+        if (!stats.empty()) write_text_file(stats, cl.stats, to_json(out.report).dump(2) + "\n");
+        outputs.commit("--stats");
         std::fprintf(stderr,
                      "torusrt-sim: deadlock: the network stalled at %.6f s simulated with packets still "
                      "outstanding (queue capacity %u)\n%s",
@@ -262,10 +265,9 @@ int run(const CommandLine &cl, double wall_start)
         return 3;
     }
     const rt_camera *cam = rt_scene_camera(loaded.scene.get());
-    out.report["mapping"] = mapping_facts;
     write_mapping_outputs(config, loaded.scene.get(), loaded.grid.get(), map_out, load_map);
     write_png_file(png, cl.output, cam->width, cam->height, out.rgb8);
-    if (!stats.empty()) write_text_file(stats, cl.stats, out.report.dump(2) + "\n");
+    if (!stats.empty()) write_text_file(stats, cl.stats, to_json(out.report).dump(2) + "\n");
     outputs.commit();
     if (!cl.quiet) {
         print_summary_stdout(out.report);

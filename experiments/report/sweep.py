@@ -88,7 +88,7 @@ def collect(out, columns, y):
             flat.append(None)
             failed.append(row[0])
     if columns == ["all"]:
-        columns = sorted({k for f in flat if f for k in f})
+        columns = sorted({k for f in flat if f for k in f} - {"status"})  # the CSV has its own
     present = [f for f in flat if f]
     unknown = [c for c in columns + [y] if present and all(c not in f for f in present)]
     if unknown:

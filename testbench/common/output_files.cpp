@@ -81,10 +81,12 @@ std::string OutputSet::add(const std::string &option, const std::string &path, c
     return special ? path : e.tmp;
 }
 
-void OutputSet::commit()
+void OutputSet::commit() { commit(""); }
+
+void OutputSet::commit(const std::string &option)
 {
     for (auto &e : m_entries) {
-        if (e.tmp.empty()) continue;
+        if (e.tmp.empty() || (!option.empty() && e.option != option)) continue;
         if (std::rename(e.tmp.c_str(), e.path.c_str()) != 0)
             throw UserError(e.path + ": cannot write: " + std::strerror(errno));
         e.tmp.clear();

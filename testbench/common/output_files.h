@@ -27,6 +27,9 @@ class OutputSet {
     std::string add(const std::string &option, const std::string &path, const std::string &input);
     // Renames every temporary onto its path. Throws UserError if a rename fails.
     void commit();
+    // Renames only the temporary registered for `option` (the others are removed with the set):
+    // a run that fails after writing its report keeps the report alone.
+    void commit(const std::string &option);
 
   private:
     struct Entry {

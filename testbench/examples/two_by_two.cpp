@@ -17,10 +17,10 @@
 namespace {
 
 // Created = consumed for both kinds of packet, as the report counts them.
-bool conserved(const nlohmann::json &packets)
+bool conserved(const rt_packet_totals &packets)
 {
-    for (const char *kind : {"ray", "shadow"})
-        if (packets["created"][kind] != packets["consumed"][kind]) return false;
+    for (int kind : {RT_PACKET_RAY, RT_PACKET_SHADOW})
+        if (packets.created[kind] != packets.consumed[kind]) return false;
     return true;
 }
 
@@ -52,10 +52,10 @@ int run(int argc, char **argv)
         std::fprintf(stderr, "two_by_two: deadlock\n%s", out.deadlock_details.c_str());
         return 3;
     }
-    const nlohmann::json &packets = out.report["packets"];
+    const rt_packet_totals &packets = out.report.packets;
     std::printf("image_time_s %.17g\n", out.sim_time_s);
-    std::printf("rays created %llu consumed %llu\n", packets["created"]["ray"].get<unsigned long long>(),
-                packets["consumed"]["ray"].get<unsigned long long>());
+    std::printf("rays created %llu consumed %llu\n", static_cast<unsigned long long>(packets.created[RT_PACKET_RAY]),
+                static_cast<unsigned long long>(packets.consumed[RT_PACKET_RAY]));
     if (!conserved(packets)) {
         std::fprintf(stderr, "two_by_two: packet conservation violated\n");
         return 1;

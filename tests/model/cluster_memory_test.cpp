@@ -33,6 +33,7 @@
 #include "rt_memory.h"
 #include "rt_render.h"
 #include "rt_scene.h"
+#include "run_report.h"
 #include "sim_config.h"
 #include "torus_system.h"
 
@@ -143,9 +144,11 @@ int sc_main(int, char **)
     rt_framebuffer *fb = rt_framebuffer_new(cam->width, cam->height);
     PacketLedger ledger;
     TorusSystem top("top", config, scene, grid, owner, ledger, fb);
-    nlohmann::json mj = cluster_memory_json(config, top, scene, grid, owner, 720);
-    check(mj["max_per_ip_bytes"] == 92 && mj["total_bytes"] == 368 && mj["replicated_total_bytes"] == 496,
-          "cluster_memory_json of the elaborated system");
+    MemoryReport mr = cluster_memory(config, scene, grid, owner, 720);
+    nlohmann::json mj = cluster_memory_report(mr.cluster, config.data, config.processor_count(), 720);
+    check(mr.max_per_ip_bytes == 92 && mr.total_bytes == 368 && mj["max_per_ip_bytes"] == 92 &&
+              mj["total_bytes"] == 368 && mj["replicated_total_bytes"] == 496,
+          "cluster_memory of the elaborated system");
     check(top.clusters().size() == 2 && top.processors().size() == 4, "2 clusters of 2 processors elaborated");
     check(top.clusters()[0]->memory(0).object_count() == 2 && top.clusters()[0]->memory(1).object_count() == 1 &&
               top.clusters()[0]->memory(0).holds(2) && !top.clusters()[0]->memory(0).holds(1),

@@ -1,0 +1,128 @@
+// run_summary.cpp - the human summary and the deadlock description, printed from a RunReport.
+#include <algorithm>
+#include <numeric>
+#include <sstream>
+
+#include "run_report.h"
+
+namespace torusrt {
+
+namespace {
+
+struct Spread {
+    double min = 0, mean = 0, max = 0;
+};
+
+template <typename T, typename F>
+Spread spread(const std::vector<T> &items, F value)
+{
+    if (items.empty()) return {};
+    Spread s{value(items[0]), 0, value(items[0])};
+    double sum = 0;
+    for (const T &x : items) {
+        double v = value(x);
+        s.min = std::min(s.min, v);
+        s.max = std::max(s.max, v);
+        sum += v;
+    }
+    s.mean = sum / items.size();
+    return s;
+}
+
+void print_queues(const RunReport &r, std::FILE *out)
+{
+    if (r.queues.empty()) return;
+    auto hw = std::max_element(r.queues.begin(), r.queues.end(),
+                               [](const QueueStats &a, const QueueStats &b) { return a.high_water < b.high_water; });
+    auto st = std::max_element(r.queues.begin(), r.queues.end(),
+                               [](const QueueStats &a, const QueueStats &b) { return a.stalled_s < b.stalled_s; });
+    double total = std::accumulate(r.queues.begin(), r.queues.end(), 0.0,
+                                   [](double s, const QueueStats &q) { return s + q.stalled_s; });
+    std::string cap = hw->capacity ? std::to_string(hw->capacity) : std::string("unbounded");
+    std::fprintf(out, "  queues       %zu, largest high water %llu (%s, capacity %s), stalled %.6f s in all",
+                 r.queues.size(), static_cast<unsigned long long>(hw->high_water), hw->name.c_str(), cap.c_str(), total);
+    if (st->stalled_s > 0) std::fprintf(out, ", at most %.6f s (%s)", st->stalled_s, st->name.c_str());
+    std::fprintf(out, "\n");
+}
+
+void print_bus(const RunReport &r, std::FILE *out)
+{
+    if (!r.clusters.empty()) {
+        double T = r.sim_time_s;
+        auto util = [T](const ClusterNodeReport &c) { return T > 0 ? std::min(1.0, c.bus.busy_s / T) : 0.0; };
+        Spread u = spread(r.clusters, util);
+        uint64_t grants = 0, sum = 0, max = 0;
+        for (const auto &c : r.clusters) {
+            grants += c.bus.all.grants;
+            sum += c.bus.all.wait_sum;
+            max = std::max(max, c.bus.all.wait_max);
+        }
+        auto us = [](uint64_t ticks) { return sc_core::sc_time::from_value(ticks).to_seconds() * 1e6; };
+        std::fprintf(out, "  bus          utilisation mean %.2f %% max %.2f %%, grant wait mean %.3f us max %.3f us\n",
+                     100 * u.mean, 100 * u.max, grants ? us(sum) / static_cast<double>(grants) : 0.0, us(max));
+    }
+}
+
+void print_mapping(const RunReport &r, std::FILE *out)
+{
+    if (r.mapping.is_object() && r.mapping.contains("pilot_wall_s")) {
+        const auto &m = r.mapping;
+        std::fprintf(out, "  mapping      cost: pilot %.3f s modelled (%.3f s wall), Scotch %.3f s wall; not in the image time\n",
+                     m["pilot_modelled_s"].get<double>(), m["pilot_wall_s"].get<double>(), m["mapper_wall_s"].get<double>());
+    }
+}
+
+}  // namespace
+
+void print_summary(const RunReport &r, std::FILE *out)
+{
+    const SimConfig &c = r.config;
+    const RunFacts &f = r.facts;
+    double T = r.sim_time_s;
+    int n = c.processor_count();
+    std::fprintf(out, "torusrt-sim: %s (%ux%u, %llu objects, %llu lights)\n", c.scene_path.c_str(), r.width, r.height,
+                 static_cast<unsigned long long>(r.objects), static_cast<unsigned long long>(r.lights));
+    std::fprintf(out, "  system       %dx%dx%d %s, %s mapping, %d processor(s) per node, %s data, %s timing\n", c.ips[0],
+                 c.ips[1], c.ips[2], topology_name(c.topology), mapping_name(c.mapping), c.cluster,
+                 data_mode_name(c.data), style_name(c.style));
+    std::fprintf(out, "  image time   %.6f s simulated   (T(1) %.3f s, %s)\n", T, f.t1_s, f.t1_source.c_str());
+    std::fprintf(out, "  efficiency   %.1f %% = T(1)/(n T(n)), n = %d   (load balance %.1f %% = busy/(n T(n)))\n",
+                 T > 0 ? 100 * (f.t1_s / (n * T)) : 0.0, n, T > 0 ? 100 * (r.totals.busy_s / (n * T)) : 0.0);
+    std::fprintf(out, "  timing       profile %s (hand-over send %g us, receive %g us)\n", c.timing_profile.c_str(),
+                 c.timing.handover_send_us, c.timing.handover_receive_us);
+    Spread b = spread(r.ips, [](const IpStats &p) { return p.busy_s; });
+    std::fprintf(out, "  load/IP      busy min %.4f  mean %.4f  max %.4f s\n", b.min, b.mean, b.max);
+    const rt_packet_totals &p = r.packets;
+    std::fprintf(out, "  packets      ray %llu  shadow %llu  created = consumed: %s  forwarded %llu  missed %llu\n",
+                 static_cast<unsigned long long>(p.created[RT_PACKET_RAY]),
+                 static_cast<unsigned long long>(p.created[RT_PACKET_SHADOW]), r.conserved ? "yes" : "NO",
+                 static_cast<unsigned long long>(p.forwarded), static_cast<unsigned long long>(p.primary_missed));
+    Spread l = spread(r.links, [T](const LinkStats &k) { return T > 0 ? k.busy_s / T : 0.0; });
+    std::fprintf(out, "  links        %zu links, %llu packet hops, utilisation mean %.2f %% max %.2f %%\n", r.links.size(),
+                 static_cast<unsigned long long>(r.totals.hops), 100 * l.mean, 100 * l.max);
+    print_bus(r, out);
+    print_queues(r, out);
+    const MemoryReport &m = r.memory;
+    std::fprintf(out, "  memory       %llu bytes (max per processor x n) vs %llu pixel-partitioned (%.3f)\n",
+                 static_cast<unsigned long long>(m.total_bytes), static_cast<unsigned long long>(m.pixel_partitioned_bytes),
+                 m.pixel_partitioned_bytes ? static_cast<double>(m.total_bytes) / m.pixel_partitioned_bytes : 0.0);
+    std::fprintf(out, "  preprocess   %llu units serial, %llu units on %d processors\n",
+                 static_cast<unsigned long long>(r.units_serial), static_cast<unsigned long long>(r.units_parallel), n);
+    print_mapping(r, out);
+    double w = f.sim_wall_s;
+    std::fprintf(out, "  wall         %.3f s (%.3f s simulating), %.0f events/s, %.0f packet hops/s\n", f.wall_s, w,
+                 w > 0 ? r.totals.events / w : 0.0, w > 0 ? r.totals.hops / w : 0.0);
+}
+
+std::string deadlock_text(const RunReport &r)
+{
+    std::ostringstream s;
+    for (const QueueStats &q : r.deadlock.full)
+        s << "  full: " << q.name << " (" << q.occupancy << "/" << q.capacity << "), " << q.waiting_writers
+          << " writer(s) waiting\n";
+    for (const auto &b : r.deadlock.bus_waits) s << "  waiting: " << b.second << " requester(s) on " << b.first << "\n";
+    if (r.deadlock.held) s << "  held: " << r.deadlock.held << " packet(s) in communication units waiting for room\n";
+    return s.str();
+}
+
+}  // namespace torusrt

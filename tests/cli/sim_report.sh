@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# The summary and the JSON come from one report, and the queue figures mean what they say:
+# - the summary's image time, efficiency, packet hops and queue line equal the JSON's;
+# - every queue of the flat torus is listed once (an input queue per IP, one per link), with the
+#   high water the per-IP and per-link entries give, and with unbounded queues no writer ever
+#   waits (stalled_s 0, nothing ever full);
+# - with every queue one packet smaller than the unbounded run's largest high water, the run is
+#   the unbounded one until that queue is full, so a writer must wait for its reader to take a
+#   packet: a completed run with stall time > 0 and no queue above its capacity.
+source "$(dirname "$0")/common.bash" "$@"
+need_exe torusrt-sim
+time_limit 300
+
+f="$SRC/scenes/paper-image2.nff"
+opts=(-o "$TMP/a.png" --t1 1 --size 32x32 --ips 2x2x2)
+"${run_limited[@]}" "$BUILD/torusrt-sim" "$f" "${opts[@]}" --stats "$TMP/a.json" >"$TMP/sum" || fail "unbounded run"
+j="$TMP/a.json"
+line() { grep "^  $1 " "$TMP/sum"; }
+six() { awk '{ printf "%.6f", $1 }'; }
+check "status ok" test "$(json "$j" '.status')" = ok
+check "summary image time = sim_time_s" \
+    test "$(line 'image time' | awk '{ print $3 }')" = "$(json "$j" '.sim_time_s' | six)"
+check "summary efficiency = efficiency" \
+    test "$(line efficiency | awk '{ print $2 }')" = "$(json "$j" '.efficiency * 100' | awk '{ printf "%.1f", $1 }')"
+check "summary packet hops = links.packets" \
+    test "$(line links | awk '{ print $4 }')" = "$(json "$j" '.links.packets')"
+hw=$(json "$j" '[.queues[].high_water] | max')
+name=$(json "$j" "[.queues[] | select(.high_water == $hw)][0].name")
+check "summary: largest high water $hw ($name)" \
+    grep -q "^  queues       $(json "$j" '.queues | length'), largest high water $hw ($name, capacity unbounded)" "$TMP/sum"
+check "summary: stalled 0 in all" grep -q "stalled 0.000000 s in all$" "$TMP/sum"
+check "one queue per IP and per link" \
+    jq -e '(.queues | length) == (.per_ip | length) + .links.count and ([.queues[].name] | unique | length) == (.queues | length)' "$j"
+check "IP input queues: the per-IP high water" \
+    jq -e '. as $r | all($r.per_ip[]; .id as $i | .queue_high_water as $h |
+           ($r.queues[] | select(.name == "top.ip_\($i).input") | .high_water) == $h)' "$j"
+check "links: the per-link high water" \
+    jq -e '[.links.per_link[].queue_high_water] == [.queues[] | select(.name | startswith("top.link_")) | .high_water]' "$j"
+check "unbounded: capacity 0, no stall, nobody waiting, nothing left" \
+    jq -e 'all(.queues[]; .capacity == 0 and .stalled_s == 0 and .waiting_writers == 0 and .occupancy == 0)' "$j"
+
+q=$((hw - 1))
+"${run_limited[@]}" "$BUILD/torusrt-sim" "$f" "${opts[@]}" --stats "$TMP/b.json" --queue "$q" >"$TMP/sum_b"
+rc=$?
+b="$TMP/b.json"
+check "--queue $q: completes (exit $rc)" test "$rc" -eq 0
+check "--queue $q: status ok" test "$(json "$b" '.status')" = ok
+check "--queue $q: some writer waited (stalled_s > 0)" jq -e '[.queues[].stalled_s] | max > 0' "$b"
+check "--queue $q: no queue above its capacity" jq -e "all(.queues[]; .capacity == $q and .high_water <= $q)" "$b"
+check "--queue $q: nobody left waiting" jq -e 'all(.queues[]; .waiting_writers == 0 and .occupancy == 0)' "$b"
+worst=$(json "$b" '([.queues[].stalled_s] | max) as $m | [.queues[] | select(.stalled_s == $m)][0].name')
+check "--queue $q: summary names the longest stall ($worst) and the total" \
+    grep -q "stalled $(json "$b" '[.queues[].stalled_s] | add' | six) s in all, at most $(json "$b" '[.queues[].stalled_s] | max' | six) s ($worst)" "$TMP/sum_b"
+finish
