@@ -193,6 +193,10 @@ void declare_options(CLI::App &app, CommandLine &cl)
                                    "options on the command line take precedence")->type_name("FILE");
     app.add_flag("--dump-config", cl.dump_config, "print the machine as TOML and exit without running")
         ->configurable(false);
+    for (CLI::Option *opt : app.get_options())  // --help shows which options make the machine
+        if (!opt->get_positional() && opt != app.get_help_ptr() && opt != app.get_config_ptr() &&
+            opt->get_name() != "--dump-config")
+            opt->group(opt->get_configurable() ? "Machine (a --config file may hold these)" : "Run");
 }
 
 // The options turned into a checked configuration (UserError on a bad value).
