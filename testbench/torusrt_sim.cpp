@@ -199,6 +199,23 @@ void declare_options(CLI::App &app, CommandLine &cl)
             opt->group(opt->get_configurable() ? "Machine (a --config file may hold these)" : "Run");
 }
 
+bool on_command_line(int argc, char **argv, const std::string &name)
+{
+    for (int i = 1; i < argc; i++)
+        if (argv[i] == name || std::string(argv[i]).rfind(name + "=", 0) == 0) return true;
+    return false;
+}
+
+// --map and --map-file exclude each other; one on the command line replaces the other from a
+// --config file (both in one place is an error, reported by apply_mapping_options).
+void resolve_mapping_sources(const CLI::App &app, CommandLine &cl, int argc, char **argv)
+{
+    bool map_here = on_command_line(argc, argv, "--map"), file_here = on_command_line(argc, argv, "--map-file");
+    cl.map_given = app.count("--map") > 0;
+    if (map_here && !file_here) cl.mapping.map_file.clear();
+    if (file_here && !map_here) cl.map_given = false;
+}
+
 // The options turned into a checked configuration (UserError on a bad value).
 SimConfig checked_config(const CommandLine &cl)
 {
@@ -322,7 +339,7 @@ int sc_main(int argc, char **argv)
     declare_options(app, cl);
     return run_cli("torusrt-sim", app, argc, argv,
                    [&] {
-                       cl.map_given = app.count("--map") > 0;
+                       resolve_mapping_sources(app, cl, argc, argv);
                        return cl.dump_config ? dump_config(app, cl) : run(cl, wall_start);
                    },
                    "  3 deadlock: the network stalled with packets outstanding\n");

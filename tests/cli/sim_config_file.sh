@@ -103,10 +103,21 @@ check "a missing --config file exits 2" test $? -eq 2
 check "a missing --config file is named" grep -q "missing.toml" "$TMP/err"
 "$sim" --dump-config --ips 0 > /dev/null 2> "$TMP/err"
 check "--dump-config checks the values (--ips 0 exits 2)" test $? -eq 2
-printf 'map-file="%s"\n' "$TMP/w.map" > "$TMP/mf.toml"
-"$sim" --dump-config --config "$TMP/mf.toml" --map block > /dev/null 2> "$TMP/err"
-check "--map beside a file's map-file exits 2" test $? -eq 2
-check "--map beside a file's map-file: message" grep -q -- "--map-file: give either" "$TMP/err"
+# --map and --map-file: one on the command line replaces the other from the file; both in one place is an error.
+"$sim" --dump-config --config "$TMP/mapfile.toml" --ips 3 --map block > "$TMP/mf-map.toml" 2> "$TMP/err"
+check "--map replaces a file's map-file ($(head -1 "$TMP/err"))" grep -qx 'map="block"' "$TMP/mf-map.toml"
+check "--map replaces a file's map-file: no file left" grep -qx 'map-file=""' "$TMP/mf-map.toml"
+"$sim" --dump-config --config "$TMP/flat.toml" --cells 24 --ips 3 --map-file "$TMP/w.map" > "$TMP/flat-mf.toml"
+check "--map-file replaces a file's map" bash -c "! grep -q '^map=' '$TMP/flat-mf.toml'"
+check "--map-file replaces a file's map: the file is used" grep -qx "map-file=\"$TMP/w.map\"" "$TMP/flat-mf.toml"
+sim_run flat-mapfile --config "$TMP/flat.toml" --cells 24 --ips 3 --map-file "$TMP/w.map"
+check "a run with --map-file over a file's map uses the table" test "$(json "$TMP/flat-mapfile.json" .mapping.kind)" = file
+"$sim" --dump-config --map block --map-file "$TMP/w.map" > /dev/null 2> "$TMP/err"
+check "--map and --map-file on the command line exit 2" test $? -eq 2
+check "--map and --map-file on the command line: message" grep -q -- "--map-file: give either" "$TMP/err"
+printf 'map="block"\nmap-file="%s"\n' "$TMP/w.map" > "$TMP/both.toml"
+"$sim" --dump-config --config "$TMP/both.toml" > /dev/null 2> "$TMP/err"
+check "map and map-file in one file exit 2" test $? -eq 2
 
 # Without --dump-config the scene and -o are still required.
 "$sim" --config "$d" -o "$TMP/r.png" 2> "$TMP/err"
