@@ -52,7 +52,7 @@ std::unique_ptr<DispatchPolicyIf> make_dispatch_policy(const std::string &name)
     return it->second();
 }
 
-ClusterDispatcher::ClusterDispatcher(sc_core::sc_module_name name, const SimConfig &config,
+ClusterDispatcher::ClusterDispatcher(sc_core::sc_module_name name, const MachineConfig &config,
                                      std::vector<IntersectionProcessor *> processors)
     : sc_module(name), in("in"), bus_socket("bus_socket"), m_processors(std::move(processors)),
       m_policy(make_dispatch_policy(dispatch_name(config.dispatch))),

@@ -41,7 +41,7 @@ class ClusterDispatcher : public sc_core::sc_module, public PacketSinkIf {
     sc_core::sc_export<PacketSinkIf> in;                               // packets for this node's cells
     tlm_utils::simple_initiator_socket<ClusterDispatcher> bus_socket;  // packet writes over the bus
 
-    ClusterDispatcher(sc_core::sc_module_name name, const SimConfig &config,
+    ClusterDispatcher(sc_core::sc_module_name name, const MachineConfig &config,
                       std::vector<IntersectionProcessor *> processors);
 
     void accept(const TimedPacket &p) override { m_inbox.push_blocking(p); }

@@ -8,7 +8,7 @@
 
 namespace torusrt {
 
-ClusterNode::ClusterNode(sc_core::sc_module_name name, const SimConfig &config, const rt_scene *scene,
+ClusterNode::ClusterNode(sc_core::sc_module_name name, const MachineConfig &config, const rt_scene *scene,
                          const rt_grid *grid, const int32_t *cell_owner, int node, PacketLedger &ledger)
     : sc_module(name), from_comm_unit("from_comm_unit"), to_comm_unit("to_comm_unit"), m_node(node),
       m_node_objects(cluster_node_objects(grid, cell_owner, node))

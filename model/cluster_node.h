@@ -34,7 +34,7 @@ class ClusterNode : public sc_core::sc_module, public PacketSinkIf {
     sc_core::sc_export<PacketSinkIf> from_comm_unit;  // packets for this node's cells
     sc_core::sc_port<PacketSinkIf> to_comm_unit;      // the processors' outgoing packets
 
-    ClusterNode(sc_core::sc_module_name name, const SimConfig &config, const rt_scene *scene, const rt_grid *grid,
+    ClusterNode(sc_core::sc_module_name name, const MachineConfig &config, const rt_scene *scene, const rt_grid *grid,
                 const int32_t *cell_owner, int node, PacketLedger &ledger);
     ~ClusterNode() override;
 

@@ -17,7 +17,7 @@ double seconds_now()
 }
 
 // Runs the pilot at the pilot size (the scene's resolution is restored afterwards).
-rt_cost_pilot run_pilot(const SimConfig &config, rt_scene *scene, const rt_grid *grid)
+rt_cost_pilot run_pilot(const MachineConfig &config, rt_scene *scene, const rt_grid *grid)
 {
     const rt_camera *cam = rt_scene_camera(scene);
     unsigned w = cam->width, h = cam->height;
@@ -34,7 +34,7 @@ rt_cost_pilot run_pilot(const SimConfig &config, rt_scene *scene, const rt_grid 
 
 }  // namespace
 
-nlohmann::json cost_mapping(const SimConfig &config, rt_scene *scene, const rt_grid *grid,
+nlohmann::json cost_mapping(const MachineConfig &config, rt_scene *scene, const rt_grid *grid,
                             std::vector<int32_t> &owner)
 {
     double t0 = seconds_now();

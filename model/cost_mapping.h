@@ -13,7 +13,7 @@ namespace torusrt {
 
 // Fills owner (one node per cell) and returns the JSON facts: pilot and mapper modelled
 // cost and wall time. Throws UserError with a clear message if the pilot or Scotch fails.
-nlohmann::json cost_mapping(const SimConfig &config, rt_scene *scene, const rt_grid *grid,
+nlohmann::json cost_mapping(const MachineConfig &config, rt_scene *scene, const rt_grid *grid,
                             std::vector<int32_t> &owner);
 
 }  // namespace torusrt

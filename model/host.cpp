@@ -5,7 +5,7 @@
 
 namespace torusrt {
 
-Host::Host(sc_core::sc_module_name name, const SimConfig &config, const rt_scene *scene, const rt_grid *grid,
+Host::Host(sc_core::sc_module_name name, const MachineConfig &config, const rt_scene *scene, const rt_grid *grid,
            const int32_t *cell_owner, PacketLedger &ledger)
     : sc_module(name), fb_socket("fb_socket"), m_scene(scene),
       m_primaries(scene, grid, cell_owner, config.node_count(),

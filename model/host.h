@@ -23,7 +23,7 @@ class Host : public sc_core::sc_module {
   public:
     tlm_utils::simple_initiator_socket<Host> fb_socket;         // background of missed rays
 
-    Host(sc_core::sc_module_name name, const SimConfig &config, const rt_scene *scene, const rt_grid *grid,
+    Host(sc_core::sc_module_name name, const MachineConfig &config, const rt_scene *scene, const rt_grid *grid,
          const int32_t *cell_owner, PacketLedger &ledger);
 
     PrimarySource &primaries() { return m_primaries; }

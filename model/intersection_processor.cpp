@@ -5,7 +5,7 @@
 
 namespace torusrt {
 
-IntersectionProcessor::IntersectionProcessor(sc_core::sc_module_name name, const SimConfig &config,
+IntersectionProcessor::IntersectionProcessor(sc_core::sc_module_name name, const MachineConfig &config,
                                              const rt_scene *scene, const rt_grid *grid,
                                              const int32_t *cell_owner, int owner_id, int index,
                                              PacketLedger &ledger)

@@ -33,7 +33,7 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf {
     tlm_utils::simple_initiator_socket<IntersectionProcessor> fb_socket;      // frame-buffer writes
 
     // `owner_id` is the id the cell-owner table uses for this IP's node.
-    IntersectionProcessor(sc_core::sc_module_name name, const SimConfig &config, const rt_scene *scene,
+    IntersectionProcessor(sc_core::sc_module_name name, const MachineConfig &config, const rt_scene *scene,
                           const rt_grid *grid, const int32_t *cell_owner, int owner_id, int index,
                           PacketLedger &ledger);
     ~IntersectionProcessor() override;
@@ -61,7 +61,7 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf {
     void run();
     static void on_test(void *ctx, uint32_t object);
 
-    const SimConfig &m_config;
+    const MachineConfig &m_config;
     const rt_scene *m_scene;
     const rt_grid *m_grid;
     const int32_t *m_owner;

@@ -15,12 +15,8 @@
 
 namespace torusrt {
 
-void add_mapping_options(CLI::App &app, std::string &timing_profile, MappingOptions &o)
+void add_mapping_options(CLI::App &app, MappingOptions &o)
 {
-    app.add_option("--timing-profile", timing_profile,
-                   std::string("timing profile: calibrated or literal (default ") + rt_timing_default_profile() +
-                       "); --timing FILE overrides single keys on top")
-        ->type_name("NAME");
     app.add_option("--map-file", o.map_file, "explicit cell -> node table (torusrt-map 1 format)")->type_name("FILE");
     app.add_option("--write-map", o.write_map, "write the cell -> node table this run used")->type_name("FILE")
         ->configurable(false);  // an output: not from a --config file
@@ -39,10 +35,7 @@ void apply_mapping_options(SimConfig &config, const MappingOptions &o, bool map_
     config.write_map = o.write_map;
     if (!o.write_map.empty()) check_output_folder("--write-map", o.write_map);
     if (!o.load_map.empty()) check_output_folder("--load-map", o.load_map);
-    if (!o.pilot_size.empty()) {
-        if (config.mapping != RT_MAP_COST) throw UserError("--pilot-size: only with --map cost", 2);
-        config.pilot_size = parse_size("--pilot-size", o.pilot_size);
-    }
+    if (!o.pilot_size.empty()) config.pilot_size = parse_size("--pilot-size", o.pilot_size);
 }
 
 namespace {

@@ -17,11 +17,12 @@ struct MappingOptions {
     std::string map_file, write_map, pilot_size, load_map;
 };
 
-// Registers --timing-profile, --map-file, --write-map, --pilot-size and --load-map.
-void add_mapping_options(CLI::App &app, std::string &timing_profile, MappingOptions &options);
+// Registers --map-file and --pilot-size (machine options) and --write-map and --load-map (the
+// run's outputs, never from a machine file).
+void add_mapping_options(CLI::App &app, MappingOptions &options);
 
 // Checks the options against --map (and the output folders) and stores them in `config`
-// (UserError, exit 2).
+// (UserError, exit 2); validate() checks the result.
 void apply_mapping_options(SimConfig &config, const MappingOptions &options, bool map_given);
 
 // Fills config.owner_table for the loaded scene and returns what the report says about it

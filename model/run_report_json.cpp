@@ -2,6 +2,7 @@
 #include <algorithm>
 
 #include "routing.h"
+#include "machine_options.h"
 #include "run_report.h"
 #include "stats_json.h"
 
@@ -44,7 +45,8 @@ nlohmann::json config_json(const SimConfig &config)
             {"max_depth", config.step.max_depth},
             {"min_weight", config.step.min_weight},
             {"timing_profile", config.timing_profile},
-            {"timing", timing_json(config.timing)}};
+            {"timing", timing_json(config.timing)},
+            {"options", machine_options_json(config)}};  // the machine, as --dump-config writes it
 }
 
 nlohmann::json per_ip_json(const RunReport &r, std::vector<double> &busy)

@@ -1,11 +1,14 @@
-// sim_config.h - every setting of a model run in one struct: defaults, then the timing
-// file, then command-line overrides, checked by one validator.
+// sim_config.h - the settings of a model run in two parts: the machine (what is simulated:
+// topology, mapping, capacities, timing, cluster, policies) and the run options (the scene, its
+// image size, the outputs, tracing, limits). The hardware modules see only the machine.
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 
+#include "named_values.h"
 #include "rt_budget.h"
 #include "rt_mapping.h"
 #include "rt_step.h"
@@ -20,6 +23,8 @@ constexpr double kMaxSimTimeS = 1e7;
 // 8192 processors exceed Linux's default 65530 memory maps per process and abort.
 constexpr int kMaxNodes = 4096;
 constexpr int kMaxProcessors = 4096;
+constexpr int kMaxCluster = 256;
+constexpr unsigned kMaxQueue = 100000000;  // packets per queue
 
 enum class Topology { torus, mesh };
 enum class TimingStyle { at, lt };
@@ -27,17 +32,36 @@ enum class DataMode { replicated, shared };
 enum class ArbiterPolicy { round_robin, fixed_priority };
 enum class DispatchPolicy { round_robin, shortest_queue };
 
-struct SimConfig {
-    std::string scene_path;                 // NFF scene
-    std::array<int, 3> cells{24, 24, 24};   // grid cells per axis
-    unsigned width = 0, height = 0;         // image size override (0 = the scene's)
+// The names the options take and the reports print (the arbiter and dispatch names are the
+// ones their registries know).
+constexpr NamedValue<Topology> kTopologyNames[] = {{Topology::torus, "torus"}, {Topology::mesh, "mesh"}};
+constexpr NamedValue<TimingStyle> kStyleNames[] = {{TimingStyle::at, "at"}, {TimingStyle::lt, "lt"}};
+constexpr NamedValue<DataMode> kDataModeNames[] = {{DataMode::replicated, "replicated"}, {DataMode::shared, "shared"}};
+constexpr NamedValue<ArbiterPolicy> kArbiterNames[] = {{ArbiterPolicy::round_robin, "round-robin"},
+                                                      {ArbiterPolicy::fixed_priority, "fixed-priority"}};
+constexpr NamedValue<DispatchPolicy> kDispatchNames[] = {{DispatchPolicy::round_robin, "round-robin"},
+                                                        {DispatchPolicy::shortest_queue, "shortest-queue"}};
+constexpr NamedValue<rt_map_kind> kMappingNames[] = {{RT_MAP_BLOCK, "block"},
+                                                    {RT_MAP_CYCLIC, "cyclic"},
+                                                    {RT_MAP_BLOCK_CYCLIC, "block-cyclic"},
+                                                    {RT_MAP_FILE, "file"},
+                                                    {RT_MAP_COST, "cost"}};
+
+// The machine: everything that decides the image time. machine_options.h writes it back as
+// the options that rebuild it (--dump-config, the JSON report's config.options).
+struct MachineConfig {
     std::array<int, 3> ips{1, 1, 1};        // torus nodes per axis
-    rt_map_kind mapping = RT_MAP_CYCLIC;    // cell-to-node mapping
-    int block = 1;                          // block size for block-cyclic
     Topology topology = Topology::torus;    // rings in every dimension, or a mesh
+    std::array<int, 3> cells{24, 24, 24};   // grid cells per axis (the object space's division)
+    rt_map_kind mapping = RT_MAP_CYCLIC;    // cell-to-node mapping
+    int block = 1;                          // block size of block-cyclic, K of cost:K
+    std::string map_file;                   // --map-file: explicit cell -> node table
+    std::array<unsigned, 2> pilot_size{0, 0}; // --pilot-size for --map cost (0 = the image's)
     unsigned queue_capacity = 0;            // packets per queue, 0 = unbounded
     rt_timing timing{};                     // operation and transfer times
-    std::string timing_profile;             // which profile (and file) the timing came from
+    std::string timing_profile;             // label: the profile, with " + FILE" for a timing file
+    std::string timing_base;                // the built-in profile the table started from
+    std::string timing_file;                // the timing file applied on top ("" = none)
     rt_step_params step{};                  // shade-tree limits
     TimingStyle style = TimingStyle::at;    // approximately- or loosely-timed
     double quantum_us = 0;                  // loosely-timed global quantum
@@ -45,6 +69,16 @@ struct SimConfig {
     DataMode data = DataMode::replicated;   // object data in a cluster
     ArbiterPolicy arbiter = ArbiterPolicy::round_robin;
     DispatchPolicy dispatch = DispatchPolicy::round_robin;
+
+    int node_count() const { return ips[0] * ips[1] * ips[2]; }
+    int processor_count() const { return node_count() * cluster; }
+};
+
+// The run: what is rendered and what is written, watched and allowed. None of it changes the
+// simulated time (the image size is the workload's, like the scene).
+struct RunOptions {
+    std::string scene_path;                 // NFF scene
+    unsigned width = 0, height = 0;         // image size override (0 = the scene's)
     std::string vcd_path;                   // VCD trace file ("" = no tracing)
     std::string vcd_write_path;             // where it is written now (a temporary or vcd_path)
     std::string gtkw_path, gtkw_write_path; // GTKWave save file beside it ("" = none)
@@ -54,25 +88,26 @@ struct SimConfig {
     double t1_s = -1;                       // T(1) passed in (< 0: compute)
     rt_budget memory{};                     // what is left of --memory-budget for packets
     double time_limit_s = kMaxSimTimeS;     // stop with an error past this simulated time
-    // Mapping inputs and the table a run uses (filled by prepare_mapping before the run).
-    std::string map_file;                   // --map-file: explicit cell -> node table
     std::string write_map;                  // --write-map: where to write the table used
-    std::array<unsigned, 2> pilot_size{0, 0}; // --pilot-size for --map cost (0 = the image's)
-    std::vector<int32_t> owner_table;       // node of every cell (empty: rt_mapping_fill)
     bool quiet = false;
-
-    int node_count() const { return ips[0] * ips[1] * ips[2]; }
-    int processor_count() const { return node_count() * cluster; }
 };
 
-// Throws UserError (exit 2) naming the first bad setting.
+// A run of a machine, with the cell -> node table prepared for it (prepare_mapping).
+struct SimConfig : MachineConfig, RunOptions {
+    std::vector<int32_t> owner_table;       // node of every cell (empty: rt_mapping_fill)
+};
+
+// The one validator (config_validation.cpp): every range and every combination of settings,
+// before the scene is loaded. Throws UserError (exit 2) naming the option of the first bad one.
+void validate_machine(const MachineConfig &machine);
+void validate_run(const RunOptions &run, const MachineConfig &machine);
 void validate(const SimConfig &config);
 
-const char *mapping_name(rt_map_kind kind);
-const char *topology_name(Topology t);
-const char *style_name(TimingStyle s);
-const char *data_mode_name(DataMode d);
-const char *arbiter_name(ArbiterPolicy a);
-const char *dispatch_name(DispatchPolicy d);
+inline const char *mapping_name(rt_map_kind kind) { return name_in(kMappingNames, kind); }
+inline const char *topology_name(Topology t) { return name_in(kTopologyNames, t); }
+inline const char *style_name(TimingStyle s) { return name_in(kStyleNames, s); }
+inline const char *data_mode_name(DataMode d) { return name_in(kDataModeNames, d); }
+inline const char *arbiter_name(ArbiterPolicy a) { return name_in(kArbiterNames, a); }
+inline const char *dispatch_name(DispatchPolicy d) { return name_in(kDispatchNames, d); }
 
 }  // namespace torusrt

@@ -3,7 +3,7 @@
 
 namespace torusrt {
 
-ToroidalLink::ToroidalLink(sc_core::sc_module_name name, const SimConfig &config, int from, int to, int dir)
+ToroidalLink::ToroidalLink(sc_core::sc_module_name name, const MachineConfig &config, int from, int to, int dir)
     : sc_module(name), socket("socket"), in("in"),
       m_packet_time(rt_timing_link_packet_us(&config.timing), sc_core::SC_US),
       m_packet_bytes(config.timing.packet_bytes), m_from(from), m_to(to), m_dir(dir),

@@ -29,7 +29,7 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
     tlm_utils::simple_initiator_socket<ToroidalLink> socket; // packets to the receiving comm unit
     sc_core::sc_export<PacketSinkIf> in;                     // packets from the sending comm unit
 
-    ToroidalLink(sc_core::sc_module_name name, const SimConfig &config, int from, int to, int dir);
+    ToroidalLink(sc_core::sc_module_name name, const MachineConfig &config, int from, int to, int dir);
 
     // Waits (in a thread) for room, then sends. A method caller checks can_accept() first.
     void accept(const TimedPacket &p) override;

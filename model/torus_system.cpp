@@ -7,7 +7,7 @@
 
 namespace torusrt {
 
-TorusSystem::TorusSystem(sc_core::sc_module_name name, const SimConfig &config, const rt_scene *scene,
+TorusSystem::TorusSystem(sc_core::sc_module_name name, const MachineConfig &config, const rt_scene *scene,
                          const rt_grid *grid, const int32_t *cell_owner, PacketLedger &ledger,
                          rt_framebuffer *fb)
     : sc_module(name), m_routing(config.ips, config.topology == Topology::torus)

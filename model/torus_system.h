@@ -24,7 +24,7 @@ class ClusterNode;
 
 class TorusSystem : public sc_core::sc_module {
   public:
-    TorusSystem(sc_core::sc_module_name name, const SimConfig &config, const rt_scene *scene,
+    TorusSystem(sc_core::sc_module_name name, const MachineConfig &config, const rt_scene *scene,
                 const rt_grid *grid, const int32_t *cell_owner, PacketLedger &ledger, rt_framebuffer *fb);
     ~TorusSystem() override;
 

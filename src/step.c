@@ -88,96 +88,123 @@ static int worth_a_ray(const rt_step_params *params, int depth, rt_vec3 weight)
            !rt_vec_is_zero(weight);
 }
 
-/* Shading at an accepted ray hit (docs/design.md section 3). */
-static void shade(const rt_scene *scene, const rt_grid *grid, const rt_step_params *params,
-                  const rt_packet *p, uint32_t obj, const rt_hit *hit, rt_step_result *out)
+/* What the shading of one hit needs to know of the surface there. */
+typedef struct surface {
+    const rt_material *m;
+    rt_vec3 nf;      /* shading normal toward the ray */
+    rt_vec3 refl;    /* mirror direction */
+    rt_vec3 above;   /* secondary rays start here, off the surface on the ray's side */
+    rt_vec3 below;   /* and here on the far side (refraction) */
+    rt_vec3 pt;      /* the hit point */
+    int entering;    /* the ray enters the object */
+} surface;
+
+/* One shadow packet toward every light the surface faces (into `np`, reused). */
+static void shadow_rays(const rt_scene *scene, const rt_grid *grid, const rt_step_params *params,
+                        const rt_packet *p, const surface *s, rt_packet *np, rt_step_result *out)
 {
-    const rt_material *m = &scene->materials[scene->objects[obj].material];
-    rt_vec3 d = p->dir;
-    rt_vec3 pt = rt_vec_add(p->origin, rt_vec_scale(d, hit->t));
-    rt_vec3 n_geo, n_shade;
-    rt_object_normals(scene, obj, pt, hit, &n_geo, &n_shade);
-    int entering = rt_vec_dot(d, n_geo) < 0.0;
-    rt_vec3 nf = entering ? n_shade : rt_vec_scale(n_shade, -1.0); /* shading normal toward the ray */
-    rt_vec3 gf = entering ? n_geo : rt_vec_scale(n_geo, -1.0);     /* geometric normal toward the ray */
-    rt_vec3 w = p->weight;
-    out->ops.shadings++;
-
-    contribute(out, p, rt_vec_mul(rt_vec_mul(w, m->color), scene->ambient));
-
-    /* Secondary rays start off the surface by a distance relative to the
-     * magnitudes that bound the hit point's rounding error. */
-    double scale = fmax(fmax(rt_vec_max_abs(pt), rt_vec_max_abs(p->origin)), hit->t);
-    double eps = RT_SURFACE_OFFSET * scale;
-    rt_vec3 above = rt_vec_add(pt, rt_vec_scale(gf, eps));
-    rt_vec3 below = rt_vec_sub(pt, rt_vec_scale(gf, eps));
-    rt_vec3 refl = rt_vec_normalize(rt_vec_sub(d, rt_vec_scale(nf, 2.0 * rt_vec_dot(d, nf))));
-
-    rt_packet np;
-    memset(&np, 0, sizeof np);
-    np.x = p->x;
-    np.y = p->y;
-
+    const rt_material *m = s->m;
     for (size_t j = 0; j < scene->light_count; j++) {
         const rt_light *lj = &scene->lights[j].light;
-        rt_vec3 l = rt_vec_normalize(rt_vec_sub(lj->position, pt));
-        double c = rt_vec_dot(nf, l);
+        rt_vec3 l = rt_vec_normalize(rt_vec_sub(lj->position, s->pt));
+        double c = rt_vec_dot(s->nf, l);
         if (!(c > 0.0)) continue;
         rt_vec3 value = rt_vec_scale(m->color, m->kd * c);
         if (m->shine > 0.0) {
             /* Clamped to [0, 1] (rounding can pass 1), so any Shine gives a finite power. */
-            double spec = m->ks * pow(fmin(1.0, fmax(0.0, rt_vec_dot(refl, l))), m->shine);
+            double spec = m->ks * pow(fmin(1.0, fmax(0.0, rt_vec_dot(s->refl, l))), m->shine);
             value = rt_vec_add(value, rt_vec(spec, spec, spec));
         }
-        value = rt_vec_mul(rt_vec_mul(w, lj->color), value);
+        value = rt_vec_mul(rt_vec_mul(p->weight, lj->color), value);
         if (rt_vec_is_zero(value)) continue;
-        rt_vec3 to = rt_vec_sub(lj->position, above);
+        rt_vec3 to = rt_vec_sub(lj->position, s->above);
         double dist = rt_vec_length(to);
-        np.kind = RT_PACKET_SHADOW;
-        np.depth = p->depth;
-        np.weight = value;
-        np.origin = above;
+        np->kind = RT_PACKET_SHADOW;
+        np->depth = p->depth;
+        np->weight = value;
+        np->origin = s->above;
         if (!(dist > 0.0)) { /* the light sits on the surface: nothing can block it */
-            contribute(out, &np, value);
+            contribute(out, np, value);
             continue;
         }
-        np.dir = rt_vec_scale(to, 1.0 / dist);
-        np.t_light = dist;
-        launch(scene, grid, params, &np, out);
+        np->dir = rt_vec_scale(to, 1.0 / dist);
+        np->t_light = dist;
+        launch(scene, grid, params, np, out);
     }
+}
 
+/* The reflected and the refracted ray, where they are worth tracing. */
+static void secondary_rays(const rt_scene *scene, const rt_grid *grid, const rt_step_params *params,
+                           const rt_packet *p, const surface *s, rt_packet *np, rt_step_result *out)
+{
+    const rt_material *m = s->m;
+    rt_vec3 d = p->dir, w = p->weight;
     int depth = p->depth + 1;
-    np.kind = RT_PACKET_RAY;
-    np.depth = (uint16_t)depth;
-    np.t_light = INFINITY;
+    np->kind = RT_PACKET_RAY;
+    np->depth = (uint16_t)depth;
+    np->t_light = INFINITY;
     if (m->ks > 0.0) {
         rt_vec3 wr = rt_vec_scale(w, m->ks);
         if (worth_a_ray(params, depth, wr)) {
             out->ops.reflection_vectors++;
-            np.weight = wr;
-            np.origin = above;
-            np.dir = refl;
-            launch(scene, grid, params, &np, out);
+            np->weight = wr;
+            np->origin = s->above;
+            np->dir = s->refl;
+            launch(scene, grid, params, np, out);
         }
     }
     if (m->t > 0.0) {
         rt_vec3 wt = rt_vec_scale(w, m->t);
         if (worth_a_ray(params, depth, wt)) {
             out->ops.refraction_vectors++;
-            double eta = entering ? 1.0 / m->ior : m->ior;
-            double cosi = fmin(1.0, fmax(0.0, -rt_vec_dot(d, nf)));
+            double eta = s->entering ? 1.0 / m->ior : m->ior;
+            double cosi = fmin(1.0, fmax(0.0, -rt_vec_dot(d, s->nf)));
             double k = 1.0 - eta * eta * (1.0 - cosi * cosi);
-            np.weight = wt;
+            np->weight = wt;
             if (k < 0.0) { /* total internal reflection */
-                np.origin = above;
-                np.dir = refl;
+                np->origin = s->above;
+                np->dir = s->refl;
             } else {
-                np.origin = below;
-                np.dir = rt_vec_normalize(rt_vec_add(rt_vec_scale(d, eta), rt_vec_scale(nf, eta * cosi - sqrt(k))));
+                np->origin = s->below;
+                np->dir = rt_vec_normalize(
+                    rt_vec_add(rt_vec_scale(d, eta), rt_vec_scale(s->nf, eta * cosi - sqrt(k))));
             }
-            launch(scene, grid, params, &np, out);
+            launch(scene, grid, params, np, out);
         }
     }
+}
+
+/* Shading at an accepted ray hit (docs/design.md section 3). */
+static void shade(const rt_scene *scene, const rt_grid *grid, const rt_step_params *params,
+                  const rt_packet *p, uint32_t obj, const rt_hit *hit, rt_step_result *out)
+{
+    surface s;
+    s.m = &scene->materials[scene->objects[obj].material];
+    rt_vec3 d = p->dir;
+    s.pt = rt_vec_add(p->origin, rt_vec_scale(d, hit->t));
+    rt_vec3 n_geo, n_shade;
+    rt_object_normals(scene, obj, s.pt, hit, &n_geo, &n_shade);
+    s.entering = rt_vec_dot(d, n_geo) < 0.0;
+    s.nf = s.entering ? n_shade : rt_vec_scale(n_shade, -1.0);
+    rt_vec3 gf = s.entering ? n_geo : rt_vec_scale(n_geo, -1.0); /* geometric normal toward the ray */
+    out->ops.shadings++;
+
+    contribute(out, p, rt_vec_mul(rt_vec_mul(p->weight, s.m->color), scene->ambient));
+
+    /* Secondary rays start off the surface by a distance relative to the
+     * magnitudes that bound the hit point's rounding error. */
+    double scale = fmax(fmax(rt_vec_max_abs(s.pt), rt_vec_max_abs(p->origin)), hit->t);
+    double eps = RT_SURFACE_OFFSET * scale;
+    s.above = rt_vec_add(s.pt, rt_vec_scale(gf, eps));
+    s.below = rt_vec_sub(s.pt, rt_vec_scale(gf, eps));
+    s.refl = rt_vec_normalize(rt_vec_sub(d, rt_vec_scale(s.nf, 2.0 * rt_vec_dot(d, s.nf))));
+
+    rt_packet np;
+    memset(&np, 0, sizeof np);
+    np.x = p->x;
+    np.y = p->y;
+    shadow_rays(scene, grid, params, p, &s, &np, out);
+    secondary_rays(scene, grid, params, p, &s, &np, out);
 }
 
 /* Nearest hit among `objs` of a ray; ties go to the lowest index. */

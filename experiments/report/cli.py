@@ -80,6 +80,23 @@ def compare(args):
     return 1 if diffs else 0
 
 
+def machine(args):
+    import json
+    from . import machine_file as mf
+    with open(args.report) as f:
+        pairs = mf.from_report(json.load(f))
+    if not args.compare:
+        sys.stdout.write(mf.toml_text(pairs))
+        return 0
+    with open(args.compare) as f:
+        diff = mf.differences(pairs, mf.read_machine_file(f.read(), args.compare))
+    for line in diff:
+        print("machine: %s" % line, file=sys.stderr)
+    print("machine: %s and %s: %s" % (args.report, args.compare,
+                                      "%d keys differ" % len(diff) if diff else "the same %d keys" % len(pairs)))
+    return 1 if diff else 0
+
+
 def main(argv):
     parser = argparse.ArgumentParser(prog="experiments/report", description=__doc__)
     sub = parser.add_subparsers(dest="command", required=True)
@@ -121,6 +138,10 @@ def main(argv):
     p.add_argument("new", help="the results folder to hold against it")
     p.add_argument("--columns", default="", help="compare only these columns (comma-separated)")
     p.set_defaults(run=compare)
+    p = sub.add_parser("machine", help="the machine file (torusrt-sim --config) of a JSON report's config.options")
+    p.add_argument("report")
+    p.add_argument("--compare", metavar="M.toml", help="compare with this machine file key by key instead")
+    p.set_defaults(run=machine)
     args = parser.parse_args(argv)
     try:
         return args.run(args)

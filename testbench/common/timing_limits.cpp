@@ -5,7 +5,7 @@
 
 namespace torusrt {
 
-std::string timing_limit_problem(const rt_timing &t)
+std::string timing_limit_problem(const rt_timing &t, std::string *key)
 {
     char buf[200];
     for (size_t i = 0; i < rt_timing_key_count(); i++) {
@@ -13,6 +13,7 @@ std::string timing_limit_problem(const rt_timing &t)
         if (v > kMaxTimingUs) {
             std::snprintf(buf, sizeof buf, "'%s' is %g; every timing value must be at most %g", rt_timing_key_name(i),
                           v, kMaxTimingUs);
+            if (key) *key = rt_timing_key_name(i);
             return buf;
         }
     }
@@ -22,6 +23,7 @@ std::string timing_limit_problem(const rt_timing &t)
         std::snprintf(buf, sizeof buf, "a %s transfer takes %g us; it must take at most %g us",
                       link > kMaxTimingUs ? "packet's link" : "64 KiB bus", link > kMaxTimingUs ? link : bus,
                       kMaxTimingUs);
+        if (key) *key = link > kMaxTimingUs ? "link transfer" : "bus transfer";
         return buf;
     }
     return "";

@@ -12,7 +12,8 @@ namespace torusrt {
 constexpr double kMaxTimingUs = 1e6;
 
 // "" if every value of `timing` is within the limits, else a message naming the first key
-// that is not (the packet size is bounded by kMaxTimingUs bytes too).
-std::string timing_limit_problem(const rt_timing &timing);
+// that is not (the packet size is bounded by kMaxTimingUs bytes too). `key`, if given, is set
+// to that key, or to "link transfer" / "bus transfer" for a time the rates and widths make.
+std::string timing_limit_problem(const rt_timing &timing, std::string *key = nullptr);
 
 }  // namespace torusrt

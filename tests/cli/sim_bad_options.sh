@@ -36,6 +36,12 @@ bad "--min-weight" --min-weight -1
 bad "--trace-ips" --ips 2 --trace-ips 7
 bad "--data" --data everywhere
 bad "--t1" --t1 0
+# Ranges and combinations the validator checks before the scene is read.
+bad "--cells" --cells 1024
+bad "--pilot-size" --pilot-size 8x8
+bad "--queue" --queue 100000001
+bad "--max-depth" --max-depth 1001
+bad "--trace-from" --trace-from 5 --trace-to 4
 bad "frobnicate" --frobnicate
 bad "cannot open" --timing "$TMP/missing.timing"
 printf 'test_miss -3\n' > "$TMP/neg.timing"

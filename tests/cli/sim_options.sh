@@ -22,6 +22,15 @@ for exe in torusrt-sim torusrt-render; do
     "$BUILD/$exe" -o "$TMP/x.png" 2> "$TMP/err"
     check "$exe: missing scene exits 2" test $? -eq 2
     check "$exe: parser error names the program ($(head -1 "$TMP/err"))" grep -q "^$exe: .*scene.* is required" "$TMP/err"
+    # The shared options are parsed and checked alike by both (exit 2 naming the option).
+    for bad in "--cells 1024" "--cells 0" "--max-depth 1001" "--min-weight -1" "--size 0x10" "--memory-budget lots"; do
+        rm -f "$TMP/x.png"
+        # shellcheck disable=SC2086 # the option and its value
+        "$BUILD/$exe" "$f" -o "$TMP/x.png" -q $bad 2> "$TMP/err"
+        check "$exe $bad exits 2" test $? -eq 2
+        check "$exe $bad: message names ${bad%% *} ($(head -1 "$TMP/err"))" grep -q -- "^$exe: ${bad%% *}" "$TMP/err"
+        check "$exe $bad: no image" test ! -e "$TMP/x.png"
+    done
 done
 
 # One time syntax: a bare number is microseconds, units ns, us, ms, s.

@@ -1,0 +1,112 @@
+// config_validation_test.cpp - the validator names the option of every bad setting it is given,
+// and machine_options writes a machine as the options that rebuild it.
+#include <string>
+#include <systemc>
+
+#include "harness.h"
+#include "machine_options.h"
+#include "sim_config.h"
+#include "user_error.h"
+
+using harness::check;
+using namespace torusrt;
+
+namespace {
+
+SimConfig good()
+{
+    SimConfig c;
+    rt_timing_defaults(&c.timing);
+    c.step = rt_step_params_default();
+    return c;
+}
+
+// The message of validate(), "" when it passes; every failure must be exit status 2.
+std::string problem(const SimConfig &c)
+{
+    try {
+        validate(c);
+    } catch (const UserError &e) {
+        return e.exit_code() == 2 ? e.what() : "exit status not 2";
+    }
+    return "";
+}
+
+void expect(const SimConfig &c, const std::string &option, const char *what)
+{
+    std::string p = problem(c);
+    check(p.compare(0, option.size(), option) == 0, (std::string(what) + ": names " + option + " (" + p + ")").c_str());
+}
+
+void bad_settings()
+{
+    SimConfig c = good();
+    c.ips = {0, 1, 1};
+    expect(c, "--ips", "no node along x");
+    c = good(), c.ips = {64, 64, 2};
+    expect(c, "--ips", "8192 nodes");
+    c = good(), c.ips = {16, 16, 1}, c.cluster = 32;
+    expect(c, "--ips x --cluster", "8192 processors");
+    c = good(), c.cluster = 0;
+    expect(c, "--cluster", "no processor in a node");
+    c = good(), c.cells = {1024, 1024, 1024};
+    expect(c, "--cells", "more cells than a grid holds");
+    c = good(), c.queue_capacity = kMaxQueue + 1;
+    expect(c, "--queue", "a queue too large");
+    c = good(), c.mapping = RT_MAP_BLOCK_CYCLIC, c.block = 0;
+    expect(c, "--map block-cyclic:B", "block 0");
+    c = good(), c.mapping = RT_MAP_FILE;
+    expect(c, "--map-file", "the file mapping without a file");
+    c = good(), c.pilot_size = {16, 16};
+    expect(c, "--pilot-size", "a pilot size without --map cost");
+    c = good(), c.timing.link_us = 2e6;
+    expect(c, "--link-us", "a 2 s link");
+    c = good(), c.timing.link_bytes_per_us = 1e-9;
+    expect(c, "--link-bytes-per-us", "a link rate that makes a packet take hours");
+    c = good(), c.step.max_depth = 1001;
+    expect(c, "--max-depth", "depth 1001");
+    c = good(), c.quantum_us = 5;
+    expect(c, "--quantum", "a quantum with --style at");
+    c = good(), c.width = 20000, c.height = 10;
+    expect(c, "--size", "an image too wide");
+    c = good(), c.trace_to_us = 5;
+    expect(c, "--trace-from/--trace-to", "a trace window without --vcd");
+    c = good(), c.vcd_path = "t.vcd", c.trace_ips = {1};
+    expect(c, "--trace-ips", "a node that does not exist");
+    c = good(), c.t1_s = 0;
+    expect(c, "--t1", "T(1) of 0 s");
+    c = good(), c.time_limit_s = 2e7;
+    expect(c, "--time-limit", "a limit past SystemC's time");
+}
+
+void machine_as_options()
+{
+    SimConfig c = good();
+    check(problem(c).empty(), "the default machine and run pass");
+    c.ips = {4, 2, 1};
+    c.mapping = RT_MAP_BLOCK_CYCLIC, c.block = 3;
+    c.step.min_weight = 1.0 / 3.0;
+    c.quantum_us = 0.1, c.style = TimingStyle::lt;
+    c.cluster = 2, c.arbiter = ArbiterPolicy::fixed_priority;
+    nlohmann::json j = machine_options_json(c);
+    check(j["ips"] == "4x2x1", "ips as PXxPYxPZ");
+    check(j["map"] == "block-cyclic:3", "block-cyclic with its block");
+    check(j["min-weight"] == "0.33333333333333331", "min-weight with 17 digits (reads back bit for bit)");
+    check(j["quantum"] == "0.10000000000000001", "quantum in microseconds");
+    check(j["arbiter"] == "fixed-priority" && j["style"] == "lt" && j["cluster"] == "2", "policies by name");
+    check(j["link-us"] == "50", "link-us from the timing table");
+    check(!j.contains("map-file") || j["map-file"] == "", "no map file");
+    c.mapping = RT_MAP_FILE, c.map_file = "m.map";
+    j = machine_options_json(c);
+    check(!j.contains("map") && j["map-file"] == "m.map", "a file mapping has map-file and no map");
+    check(machine_options_toml(c).find("map-file=\"m.map\"\n") != std::string::npos, "TOML lines key=\"value\"");
+}
+
+}  // namespace
+
+int sc_main(int, char **)
+{
+    bad_settings();
+    machine_as_options();
+    return harness::finish();
+}

@@ -1,0 +1,38 @@
+"""The machine file of a report (experiments/report machine): written, read back and compared."""
+import os
+import sys
+import unittest
+
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+sys.path.insert(0, os.path.join(REPO, "experiments"))
+
+from report import machine_file as mf  # noqa: E402
+
+REPORT = {"config": {"ips": [2, 2, 1], "options": {"ips": "2x2x1", "map": "cyclic", "timing": 'a"b.timing'}}}
+
+
+class MachineFile(unittest.TestCase):
+    def test_written_file_reads_back(self):
+        pairs = mf.from_report(REPORT)
+        text = mf.toml_text(pairs)
+        self.assertIn('ips="2x2x1"\n', text)
+        self.assertIn("timing='a\"b.timing'\n", text)  # a double quote goes in a literal string
+        self.assertEqual(mf.read_machine_file(text), dict(pairs))
+
+    def test_differences_name_every_key(self):
+        pairs = mf.from_report(REPORT)
+        other = {"ips": "4x1x1", "map": "cyclic", "cluster": "2"}
+        self.assertEqual(mf.differences(pairs, other),
+                         ["cluster: report (none), file '2'", "ips: report '2x2x1', file '4x1x1'",
+                          "timing: report 'a\"b.timing', file (none)"])
+        self.assertEqual(mf.differences(pairs, dict(pairs)), [])
+
+    def test_bad_input(self):
+        with self.assertRaises(ValueError):
+            mf.from_report({"config": {"ips": [1, 1, 1]}})
+        with self.assertRaisesRegex(ValueError, "m.toml:2:"):
+            mf.read_machine_file('ips="1"\nmap=cyclic\n', "m.toml")
+
+
+if __name__ == "__main__":
+    unittest.main()
