@@ -34,6 +34,10 @@ class TorusSystem : public sc_core::sc_module {
     const std::vector<std::unique_ptr<ClusterNode>> &clusters() const { return m_clusters; }
     Host &host() { return *m_host; }
     FrameBuffer &frame_buffer() { return *m_fb; }
+    // Starts an animation frame between two sc_start calls, with the network empty: the
+    // frame's image, its primaries from `offset` under the owner table's current contents,
+    // and every idle input queue woken to take them up.
+    void start_frame(rt_framebuffer *fb, const int32_t *cell_owner, const sc_core::sc_time &offset);
 
   private:
     Routing m_routing;

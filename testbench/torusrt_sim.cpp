@@ -7,7 +7,10 @@
 #include <string>
 #include <systemc>
 
+#include "animation_options.h"
+#include "animation_run.h"
 #include "cli_main.h"
+#include "frame_pattern.h"
 #include "model_run.h"
 #include "option_parsing.h"
 #include "output_files.h"
@@ -38,6 +41,9 @@ struct CommandLine {
     MappingOptions mapping;
     bool map_given = false; // --map was on the command line or in the --config file
     bool dump_config = false;
+    // Animation (its own block).
+    AnimationOptions anim;
+    std::string remap, frames_csv;
 };
 
 double seconds_now()
@@ -195,6 +201,69 @@ void declare_options(CLI::App &app, CommandLine &cl)
                    "packets, e.g. 512M or 4G; 0 = no limit (default 4G)")->type_name("SIZE");
     app.add_flag("-q,--quiet", cl.quiet, "print nothing but errors; no progress");
     add_mapping_options(app, cl.timing_profile, cl.mapping); // profiles and mappings
+    // Animation.
+    add_animation_options(app, cl.anim);
+    app.add_option("--remap", cl.remap, "mapping across the frames: static (default: the first frame's), every-frame,\n"
+                   "adaptive or oracle")->type_name("POLICY");
+    app.add_option("--frames-csv", cl.frames_csv, "write one CSV row per frame of an animation")->type_name("FILE")
+        ->configurable(false);
+}
+
+// The animation options checked before any file is read (exit 2).
+void check_animation(CommandLine &cl)
+{
+    check_animation_options(cl.anim);
+    if (!cl.anim.animated()) {
+        if (!cl.remap.empty() || !cl.frames_csv.empty())
+            throw UserError(std::string(cl.remap.empty() ? "--frames-csv" : "--remap") +
+                                ": only for an animation (--frames N with --orbit DEG, or --camera-path FILE)", 2);
+        return;
+    }
+    if (!cl.remap.empty()) parse_remap_policy(cl.remap);
+    if (!cl.t1.empty()) throw UserError("--t1: not used by an animation (each frame's T(1) is its pilot's work)", 2);
+    if (!cl.output.empty()) check_frame_pattern("-o", cl.output);
+}
+
+// An animation: every frame's PNG, the statistics and the CSV commit together.
+int animate(const CommandLine &cl, SimConfig &config, LoadedScene &loaded, nlohmann::json mapping_facts,
+            OutputSet &outputs, const std::string &stats, double wall_start)
+{
+    rt_scene *scene = loaded.scene.get();
+    CameraPathPtr path = make_camera_path(cl.anim, scene);
+    size_t n = rt_camera_path_count(path.get());
+    std::vector<std::string> files, staged;
+    for (size_t k = 0; k < n; k++) {
+        files.push_back(frame_file_name(cl.output, k));
+        staged.push_back(outputs.add("-o", files.back(), cl.scene));
+    }
+    std::string csv = cl.frames_csv.empty() ? "" : outputs.add("--frames-csv", cl.frames_csv, cl.scene);
+    RemapPolicy policy = cl.remap.empty() ? RemapPolicy::static_map : parse_remap_policy(cl.remap);
+    AnimationOutcome out = run_animation(config, scene, loaded.grid.get(), path.get(), files, policy, wall_start);
+    if (out.deadlock) {
+        std::fprintf(stderr,
+                     "torusrt-sim: deadlock: the network stalled at %.6f s simulated with packets still "
+                     "outstanding (queue capacity %u)\n%s",
+                     out.sim_time_s, config.queue_capacity, out.deadlock_details.c_str());
+        return 3;
+    }
+    out.report["mapping"] = mapping_facts;
+    out.report["camera_source"] = cl.anim.orbit.empty() ? "camera-path" : "orbit";
+    out.report["output_pattern"] = cl.output;
+    const rt_camera *cam = rt_scene_camera(scene);
+    for (size_t k = 0; k < n; k++) write_png_file(staged[k], files[k], cam->width, cam->height, out.images[k]);
+    if (!stats.empty()) write_text_file(stats, cl.stats, out.report.dump(2) + "\n");
+    if (!csv.empty()) write_text_file(csv, cl.frames_csv, frames_csv(out.frames));
+    outputs.commit();
+    if (!cl.quiet) {
+        print_summary_stdout(out.report);
+        print_frame_table(out.report, stdout);
+        std::printf("  wrote        %zu frames %s", n, cl.output.c_str());
+        if (!cl.stats.empty()) std::printf(", %s", cl.stats.c_str());
+        if (!cl.frames_csv.empty()) std::printf(", %s", cl.frames_csv.c_str());
+        if (!cl.vcd.empty()) std::printf(", %s", cl.vcd.c_str());
+        std::printf("\n");
+    }
+    return 0;
 }
 
 // The options turned into a checked configuration (UserError on a bad value).
@@ -222,17 +291,18 @@ int dump_config(CLI::App &app, const CommandLine &cl)
     return 0;
 }
 
-int run(const CommandLine &cl, double wall_start)
+int run(CommandLine &cl, double wall_start)
 {
     if (cl.scene.empty()) throw UserError("scene is required", 2);
     if (cl.output.empty()) throw UserError("--output is required", 2);
     route_systemc_messages(cl.quiet);
+    check_animation(cl);
     SimConfig config = checked_config(cl);
     if (config.step.min_weight > 1 && !cl.quiet)
         std::fprintf(stderr, "torusrt-sim: warning: --min-weight %g is above 1: every secondary ray is dropped\n",
                      config.step.min_weight);
     OutputSet outputs;
-    std::string png = outputs.add("-o", cl.output, cl.scene);
+    std::string png = cl.anim.animated() ? "" : outputs.add("-o", cl.output, cl.scene);
     std::string stats = cl.stats.empty() ? "" : outputs.add("--stats", cl.stats, cl.scene);
     if (!cl.vcd.empty()) {
         config.vcd_write_path = outputs.add("--vcd", cl.vcd, cl.scene);
@@ -247,6 +317,10 @@ int run(const CommandLine &cl, double wall_start)
     config.memory = rt_budget_make(parse_memory_size("--memory-budget", cl.memory_budget));
     LoadedScene loaded = load_scene(cl.scene, config.width, config.height, config.cells, cl.quiet, &config.memory);
     nlohmann::json mapping_facts = prepare_mapping(config, loaded.scene.get(), loaded.grid.get());
+    if (cl.anim.animated()) {
+        write_mapping_outputs(config, loaded.scene.get(), loaded.grid.get(), map_out, load_map);
+        return animate(cl, config, loaded, mapping_facts, outputs, stats, wall_start);
+    }
     double t1 = config.t1_s;
     std::string t1_source = "passed with --t1";
     if (t1 < 0 && config.processor_count() > 1) {

@@ -85,10 +85,4 @@ CameraPathPtr make_camera_path(const AnimationOptions &opt, const rt_scene *scen
     return path;
 }
 
-nlohmann::json camera_pose_json(const rt_camera_pose &p)
-{
-    auto vec = [](rt_vec3 v) { return nlohmann::json::array({v.x, v.y, v.z}); };
-    return {{"from", vec(p.from)}, {"at", vec(p.at)}, {"up", vec(p.up)}, {"angle", p.angle}};
-}
-
 }  // namespace torusrt
