@@ -40,6 +40,43 @@ std::vector<int32_t> remapped(const RemapContext &ctx, const std::vector<int32_t
 
 }  // namespace
 
+std::vector<int32_t> oracle_mapping(const RemapContext &ctx, const FramePilot &pilot);
+
+namespace {
+
+// Adaptive: two candidates from the previous frame's work, the remapping (cells kept where
+// moving does not pay) and a fresh mapping; the one whose predicted gain minus its migration
+// time is largest is taken if that is positive, else the table stays.
+void adaptive_choice(const RemapContext &ctx, const std::vector<int32_t> &current, const FramePilot &previous,
+                     double previous_time_s, RemapDecision &d)
+{
+    int nodes = ctx.config.node_count();
+    double w_now = previous.max_node_work_s(current, nodes);
+    const char *names[2] = {"remap", "fresh map"};
+    std::vector<int32_t> candidates[2] = {remapped(ctx, current, previous), oracle_mapping(ctx, previous)};
+    int best = -1;
+    double best_net = 0, best_gain = 0, best_move = 0;
+    for (int i = 0; i < 2; i++) {
+        double gain = w_now > 0 ? previous_time_s * (1 - previous.max_node_work_s(candidates[i], nodes) / w_now) : 0;
+        double move = migration_cost(ctx.scene, ctx.grid, ctx.routing, nodes, ctx.config.timing, current,
+                                     candidates[i]).time_s;
+        if (best < 0 || gain - move > best_net) {
+            best = i;
+            best_net = gain - move;
+            best_gain = gain;
+            best_move = move;
+        }
+    }
+    bool take = best_net > 0;
+    d.predicted_gain_s = best_gain;
+    d.owner = take ? std::move(candidates[best]) : current;
+    d.decision = take ? "remap" : "keep";
+    d.reason = std::string("adaptive: ") + names[best] + " predicted gain " + seconds_text(best_gain) +
+               (take ? " > " : " <= ") + "migration " + seconds_text(best_move);
+}
+
+}  // namespace
+
 RemapPolicy parse_remap_policy(const std::string &text)
 {
     if (text == "static") return RemapPolicy::static_map;
@@ -101,24 +138,12 @@ RemapDecision decide_mapping(RemapPolicy policy, const RemapContext &ctx, const 
         d.decision = "remap";
         d.reason = "oracle: this frame's own pilot, migration free";
         d.migration_charged = false;
+    } else if (policy == RemapPolicy::every_frame) {
+        d.owner = remapped(ctx, current, previous);
+        d.decision = "remap";
+        d.reason = "every-frame: remapped from the previous frame's work";
     } else {
-        std::vector<int32_t> candidate = remapped(ctx, current, previous);
-        MigrationCost cost = migration_cost(ctx.scene, ctx.grid, ctx.routing, nodes, ctx.config.timing, current,
-                                            candidate);
-        if (policy == RemapPolicy::every_frame) {
-            d.owner = std::move(candidate);
-            d.decision = "remap";
-            d.reason = "every-frame: remapped from the previous frame's work";
-        } else {
-            double w_now = previous.max_node_work_s(current, nodes);
-            double w_new = previous.max_node_work_s(candidate, nodes);
-            d.predicted_gain_s = w_now > 0 ? previous_time_s * (1 - w_new / w_now) : 0;
-            bool take = d.predicted_gain_s > cost.time_s;
-            d.owner = take ? std::move(candidate) : current;
-            d.decision = take ? "remap" : "keep";
-            d.reason = "adaptive: predicted gain " + seconds_text(d.predicted_gain_s) + (take ? " > " : " <= ") +
-                       "migration " + seconds_text(cost.time_s);
-        }
+        adaptive_choice(ctx, current, previous, previous_time_s, d);
     }
     d.mapper_wall_s = now_s() - t0;
     d.migration = migration_cost(ctx.scene, ctx.grid, ctx.routing, nodes, ctx.config.timing, current, d.owner);

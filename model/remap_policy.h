@@ -4,13 +4,15 @@
 //   every-frame before each frame, SCOTCH_graphRemap from the previous frame's per-cell work
 //               and face traffic, the old table as the old partition, and each cell's move
 //               cost (one hop of its bytes, see migration.h) against keeping it;
-//   adaptive    the every-frame candidate, taken only when the predicted gain in image time
-//               exceeds its migration time (predictor below);
+//   adaptive    two candidates from the previous frame's work, the every-frame remapping and a
+//               fresh SCOTCH_graphMap; the one with the largest predicted gain in image time
+//               minus its migration time is taken when that is positive (predictor below);
 //   oracle      each frame mapped from its own pilot (SCOTCH_graphMap, as --map cost), its
 //               migration free: the bound.
 // Adaptive's predictor: with W(M) the busiest node's work under table M from the previous
 // frame's pilot and T the previous frame's measured image time, frame k under M is predicted
-// to take T x W(M) / W(current); the gain of the candidate C is T x (1 - W(C) / W(current)).
+// to take T x W(M) / W(current); the gain of a candidate C is T x (1 - W(C) / W(current)), and
+// C is taken when that exceeds C's migration time (migration.h).
 // Per-cell work and face traffic do not depend on the mapping, so the previous frame's pilot
 // (the same packet step with every cell its own owner) gives what the machine measured.
 #pragma once
