@@ -81,9 +81,9 @@ bool run_frame(const SimConfig &config, Machine &m, size_t k, size_t n)
 
 // Frame k's mapping (k > 0) and its record's mapping fields; the owner table is updated.
 void next_mapping(RemapPolicy policy, const RemapContext &ctx, Machine &m, const FramePilot &previous,
-                  double previous_time_s, const FramePilot &pilot, FrameRecord &rec)
+                  double previous_time_s, const FramePilot *before, const FramePilot &pilot, FrameRecord &rec)
 {
-    RemapDecision d = decide_mapping(policy, ctx, m.owner, previous, previous_time_s, pilot);
+    RemapDecision d = decide_mapping(policy, ctx, m.owner, previous, previous_time_s, before, pilot);
     std::copy(d.owner.begin(), d.owner.end(), m.owner.begin()); // same storage: the modules' pointer stays
     rec.decision = d.decision;
     rec.reason = d.reason;
@@ -116,7 +116,7 @@ AnimationOutcome run_animation(const SimConfig &config, rt_scene *scene, const r
     if (!config.vcd_path.empty()) m.tracer = std::make_unique<Tracer>(config, *m.top);
 
     AnimationOutcome out;
-    std::unique_ptr<FramePilot> previous;
+    std::unique_ptr<FramePilot> previous, before;
     double end_s = 0;
     for (size_t k = 0; k < n; k++) {
         FrameRecord rec;
@@ -130,9 +130,10 @@ AnimationOutcome run_animation(const SimConfig &config, rt_scene *scene, const r
         sc_core::sc_time start = sc_core::SC_ZERO_TIME;
         if (k > 0) {
             set_camera(scene, path, k);
+            before = std::move(previous);
             previous = std::move(pilot);
             pilot = std::make_unique<FramePilot>(config, scene, grid);
-            next_mapping(policy, ctx, m, *previous, out.frames.back().image_time_s, *pilot, rec);
+            next_mapping(policy, ctx, m, *previous, out.frames.back().image_time_s, before.get(), *pilot, rec);
             m.fb = new_frame_buffer(scene);
             start = frame_start(config, end_s + rec.charged_migration_s());
             m.top->start_frame(m.fb.get(), m.owner.data(), start);

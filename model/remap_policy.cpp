@@ -4,6 +4,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
+#include <new>
+#include <functional>
 
 #include "user_error.h"
 
@@ -40,39 +43,23 @@ std::vector<int32_t> remapped(const RemapContext &ctx, const std::vector<int32_t
 
 }  // namespace
 
-std::vector<int32_t> oracle_mapping(const RemapContext &ctx, const FramePilot &pilot);
-
 namespace {
 
-// Adaptive: two candidates from the previous frame's work, the remapping (cells kept where
-// moving does not pay) and a fresh mapping; the one whose predicted gain minus its migration
-// time is largest is taken if that is positive, else the table stays.
+// Adaptive: the every-frame remapping, taken only if its predicted gain exceeds its migration.
 void adaptive_choice(const RemapContext &ctx, const std::vector<int32_t> &current, const FramePilot &previous,
                      double previous_time_s, RemapDecision &d)
 {
     int nodes = ctx.config.node_count();
-    double w_now = previous.max_node_work_s(current, nodes);
-    const char *names[2] = {"remap", "fresh map"};
-    std::vector<int32_t> candidates[2] = {remapped(ctx, current, previous), oracle_mapping(ctx, previous)};
-    int best = -1;
-    double best_net = 0, best_gain = 0, best_move = 0;
-    for (int i = 0; i < 2; i++) {
-        double gain = w_now > 0 ? previous_time_s * (1 - previous.max_node_work_s(candidates[i], nodes) / w_now) : 0;
-        double move = migration_cost(ctx.scene, ctx.grid, ctx.routing, nodes, ctx.config.timing, current,
-                                     candidates[i]).time_s;
-        if (best < 0 || gain - move > best_net) {
-            best = i;
-            best_net = gain - move;
-            best_gain = gain;
-            best_move = move;
-        }
-    }
-    bool take = best_net > 0;
-    d.predicted_gain_s = best_gain;
-    d.owner = take ? std::move(candidates[best]) : current;
+    std::vector<int32_t> candidate = remapped(ctx, current, previous);
+    double w_now = previous.busiest_work_s(current, nodes);
+    double w_new = previous.busiest_work_s(candidate, nodes);
+    double move = migration_cost(ctx.scene, ctx.grid, ctx.routing, nodes, ctx.config.timing, current, candidate).time_s;
+    d.predicted_gain_s = w_now > 0 ? previous_time_s * (1 - w_new / w_now) : 0;
+    bool take = d.predicted_gain_s > move;
+    d.owner = take ? std::move(candidate) : current;
     d.decision = take ? "remap" : "keep";
-    d.reason = std::string("adaptive: ") + names[best] + " predicted gain " + seconds_text(best_gain) +
-               (take ? " > " : " <= ") + "migration " + seconds_text(best_move);
+    d.reason = "adaptive: predicted gain " + seconds_text(d.predicted_gain_s) + (take ? " > " : " <= ") +
+               "migration " + seconds_text(move);
 }
 
 }  // namespace
@@ -106,11 +93,34 @@ FramePilot::FramePilot(const SimConfig &config, const rt_scene *scene, const rt_
     m_wall_s = now_s() - t0;
 }
 
-double FramePilot::max_node_work_s(const std::vector<int32_t> &owner, int nodes) const
+FramePilot::FramePilot(const FramePilot &last, const FramePilot &before)
+{
+    const rt_cost_pilot &a = last.m_pilot, &b = before.m_pilot;
+    m_pilot = a;
+    m_pilot.work_us = static_cast<double *>(std::malloc(a.cells * sizeof(double)));
+    m_pilot.traffic = static_cast<uint64_t *>(std::malloc(a.cells * RT_CELL_FACES * sizeof(uint64_t)));
+    if (!m_pilot.work_us || !m_pilot.traffic) {
+        rt_cost_pilot_release(&m_pilot);
+        throw std::bad_alloc();
+    }
+    m_pilot.total_us = 0;
+    for (size_t c = 0; c < a.cells; c++) {
+        m_pilot.work_us[c] = std::max(0.0, 2 * a.work_us[c] - b.work_us[c]);
+        m_pilot.total_us += m_pilot.work_us[c];
+    }
+    for (size_t i = 0; i < a.cells * RT_CELL_FACES; i++)
+        m_pilot.traffic[i] = 2 * a.traffic[i] > b.traffic[i] ? 2 * a.traffic[i] - b.traffic[i] : 0;
+}
+
+double FramePilot::busiest_work_s(const std::vector<int32_t> &owner, int nodes) const
 {
     std::vector<double> work(static_cast<size_t>(nodes), 0.0);
     for (size_t c = 0; c < m_pilot.cells; c++) work[static_cast<size_t>(owner[c])] += m_pilot.work_us[c];
-    return *std::max_element(work.begin(), work.end()) * 1e-6;
+    size_t top = std::max<size_t>(1, work.size() / 10);
+    std::partial_sort(work.begin(), work.begin() + static_cast<long>(top), work.end(), std::greater<double>());
+    double sum = 0;
+    for (size_t i = 0; i < top; i++) sum += work[i];
+    return sum / static_cast<double>(top) * 1e-6;
 }
 
 std::vector<int32_t> oracle_mapping(const RemapContext &ctx, const FramePilot &pilot)
@@ -125,7 +135,8 @@ std::vector<int32_t> oracle_mapping(const RemapContext &ctx, const FramePilot &p
 }
 
 RemapDecision decide_mapping(RemapPolicy policy, const RemapContext &ctx, const std::vector<int32_t> &current,
-                             const FramePilot &previous, double previous_time_s, const FramePilot &pilot)
+                             const FramePilot &previous, double previous_time_s, const FramePilot *before,
+                             const FramePilot &pilot)
 {
     RemapDecision d;
     int nodes = ctx.config.node_count();
@@ -143,7 +154,8 @@ RemapDecision decide_mapping(RemapPolicy policy, const RemapContext &ctx, const 
         d.decision = "remap";
         d.reason = "every-frame: remapped from the previous frame's work";
     } else {
-        adaptive_choice(ctx, current, previous, previous_time_s, d);
+        if (before) adaptive_choice(ctx, current, FramePilot(previous, *before), previous_time_s, d);
+        else adaptive_choice(ctx, current, previous, previous_time_s, d);
     }
     d.mapper_wall_s = now_s() - t0;
     d.migration = migration_cost(ctx.scene, ctx.grid, ctx.routing, nodes, ctx.config.timing, current, d.owner);
