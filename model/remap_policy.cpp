@@ -159,7 +159,6 @@ RemapDecision decide_mapping(RemapPolicy policy, const RemapContext &ctx, const 
     }
     d.mapper_wall_s = now_s() - t0;
     d.migration = migration_cost(ctx.scene, ctx.grid, ctx.routing, nodes, ctx.config.timing, current, d.owner);
-    if (d.decision == "remap" && d.migration.cells == 0) d.decision = "remap (unchanged)";
     return d;
 }
 
