@@ -19,6 +19,7 @@ Host::Host(sc_core::sc_module_name name, const SimConfig &config, const rt_scene
 void Host::count_primaries()
 {
     for (uint64_t i = 0; i < m_primaries.entering(); i++) m_ledger.created(RT_PACKET_RAY);
+    m_injected += m_primaries.entering();
     for (uint32_t pixel : m_primaries.missed()) m_ledger.primary_missed(m_primaries.inject_time(pixel));
 }
 

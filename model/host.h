@@ -31,7 +31,7 @@ class Host : public sc_core::sc_module {
     // counts them in the ledger and writes the background of the rays that miss.
     void start_frame(const int32_t *cell_owner, const sc_core::sc_time &offset);
     bool done_injecting() const { return m_done; }
-    uint64_t injected() const { return m_primaries.entering(); }
+    uint64_t injected() const { return m_injected; } // primaries entering the space, every frame
 
   private:
     void write_background();
@@ -42,6 +42,7 @@ class Host : public sc_core::sc_module {
     PacketLedger &m_ledger;
     PrimarySource m_primaries;
     bool m_done = false;
+    uint64_t m_injected = 0;
 };
 
 }  // namespace torusrt
