@@ -74,6 +74,13 @@ rt_status rt_cost_map(const rt_cost_pilot *pilot, const int nodes[3], int torus,
 rt_status rt_cost_map_folded(const rt_cost_pilot *pilot, const int nodes[3], int torus, double edge_us, int fold,
                              int32_t *owner, rt_cost_map_facts *facts, char *msg, size_t msg_len);
 
+/* A remapping from `old_owner` (SCOTCH_graphRemap): the same graph, each cell also weighing
+ * move_us[cell], the microseconds moving it to another node costs, against keeping it on its
+ * old node (migration ratio 1, in the edge weights' units). Node ids as rt_cost_map's. */
+rt_status rt_cost_remap(const rt_cost_pilot *pilot, const int nodes[3], int torus, double edge_us,
+                        const int32_t *old_owner, const double *move_us, int32_t *owner,
+                        rt_cost_map_facts *facts, char *msg, size_t msg_len);
+
 #ifdef __cplusplus
 }
 #endif

@@ -17,6 +17,8 @@ class FrameBuffer : public sc_core::sc_module {
     FrameBuffer(sc_core::sc_module_name name, rt_framebuffer *fb);
 
     uint64_t writes() const { return m_writes; }
+    // The next frame's image (between frames of an animation).
+    void retarget(rt_framebuffer *fb) { m_fb = fb; }
 
   private:
     void b_transport(int id, tlm::tlm_generic_payload &trans, sc_core::sc_time &delay);

@@ -7,14 +7,28 @@ namespace torusrt {
 
 Host::Host(sc_core::sc_module_name name, const MachineConfig &config, const rt_scene *scene, const rt_grid *grid,
            const int32_t *cell_owner, PacketLedger &ledger)
-    : sc_module(name), fb_socket("fb_socket"), m_scene(scene),
+    : sc_module(name), fb_socket("fb_socket"), m_scene(scene), m_ledger(ledger),
       m_primaries(scene, grid, cell_owner, config.node_count(),
                   sc_core::sc_time(config.timing.host_inject_us, sc_core::SC_US))
 {
-    for (uint64_t i = 0; i < m_primaries.entering(); i++) ledger.created(RT_PACKET_RAY);
-    for (uint32_t pixel : m_primaries.missed()) ledger.primary_missed(m_primaries.inject_time(pixel));
+    count_primaries();
     SC_HAS_PROCESS(Host);
     SC_METHOD(write_background);
+}
+
+void Host::count_primaries()
+{
+    for (uint64_t i = 0; i < m_primaries.entering(); i++) m_ledger.created(RT_PACKET_RAY);
+    m_injected += m_primaries.entering();
+    for (uint32_t pixel : m_primaries.missed()) m_ledger.primary_missed(m_primaries.inject_time(pixel));
+}
+
+void Host::start_frame(const int32_t *cell_owner, const sc_core::sc_time &offset)
+{
+    m_done = false;
+    m_primaries.restart(cell_owner, offset);
+    count_primaries();
+    write_background(); // a plain call: the frame buffer's b_transport never waits
 }
 
 void Host::write_background()

@@ -27,16 +27,24 @@ class Host : public sc_core::sc_module {
          const int32_t *cell_owner, PacketLedger &ledger);
 
     PrimarySource &primaries() { return m_primaries; }
+    // Between frames of an animation (no packet outstanding): plans the next frame's primaries
+    // with the scene's current camera and `cell_owner` as it is now, stamped from `offset`,
+    // counts them in the ledger and writes the background of the rays that miss.
+    void start_frame(const int32_t *cell_owner, const sc_core::sc_time &offset);
     bool done_injecting() const { return m_done; }
-    uint64_t injected() const { return m_primaries.entering(); }
+    uint64_t injected() const { return m_injected; } // primaries entering the space, every frame
     HostStats stats() const { return {injected()}; }
 
   private:
     void write_background();
 
+    void count_primaries();
+
     const rt_scene *m_scene;
+    PacketLedger &m_ledger;
     PrimarySource m_primaries;
     bool m_done = false;
+    uint64_t m_injected = 0;
 };
 
 }  // namespace torusrt

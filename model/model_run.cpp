@@ -26,12 +26,7 @@ double now_s()
     return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-void show_progress(void *ctx, uint64_t consumed, int64_t outstanding)
-{
-    auto *p = static_cast<Progress *>(ctx);
-    // The total is not known in advance: show consumed against consumed + outstanding.
-    p->update(consumed, consumed + static_cast<uint64_t>(outstanding > 0 ? outstanding : 0));
-}
+}  // namespace
 
 // A node that owns no cell never does work: worth a word, since it lowers the efficiency.
 void warn_idle_nodes(const SimConfig &config, const std::vector<int32_t> &owner)
@@ -46,10 +41,33 @@ void warn_idle_nodes(const SimConfig &config, const std::vector<int32_t> &owner)
                      idle, config.node_count(), owner.size(), config.node_count());
 }
 
-}  // namespace
+bool run_finished(const SimConfig &config, TorusSystem &top, const PacketLedger &ledger, rt_budget &memory)
+{
+    char msg[RT_MSG_LEN] = "";
+    if (ledger.over_limit()) {
+        rt_budget_packets_exceeded(&memory, ledger.outstanding_over_limit(), sizeof(rt_packet), msg,
+                                   sizeof msg);
+        throw UserError(msg); // the tracer's destructor removes the partial trace
+    }
+    bool finished = ledger.outstanding() == 0 && top.host().done_injecting();
+    if ((!finished && sc_core::sc_pending_activity()) || ledger.image_time().to_seconds() > config.time_limit_s) {
+        char text[200];
+        std::snprintf(text, sizeof text, "the simulated time passed the limit of %g s (--time-limit; at most %g s, "
+                      "as SystemC's time holds about 1.8e7 s at 1 ps)", config.time_limit_s, kMaxSimTimeS);
+        throw UserError(text);
+    }
+    return finished;
+}
 
-ModelOutcome run_model(const SimConfig &config, const rt_scene *scene, const rt_grid *grid, double t1_s,
-                       const std::string &t1_source, double wall_start_s)
+void check_conservation(const PacketLedger &ledger)
+{
+    if (!ledger.conserved())
+        throw UserError("packet conservation violated: created " +
+                        std::to_string(ledger.totals().created[0] + ledger.totals().created[1]) + ", consumed " +
+                        std::to_string(ledger.totals().consumed[0] + ledger.totals().consumed[1]));
+}
+
+std::vector<int32_t> owner_table_of(const SimConfig &config, const rt_grid *grid)
 {
     int dims[3];
     rt_grid_dims(grid, dims);
@@ -60,6 +78,20 @@ ModelOutcome run_model(const SimConfig &config, const rt_scene *scene, const rt_
         if (rt_mapping_fill(dims, config.ips.data(), config.mapping, config.block, owner.data(), msg, sizeof msg) != RT_OK)
             throw UserError(std::string("--map: ") + msg, 2);
     }
+    return owner;
+}
+
+void show_progress(void *ctx, uint64_t consumed, int64_t outstanding)
+{
+    auto *p = static_cast<Progress *>(ctx);
+    // The total is not known in advance: show consumed against consumed + outstanding.
+    p->update(consumed, consumed + static_cast<uint64_t>(outstanding > 0 ? outstanding : 0));
+}
+
+ModelOutcome run_model(const SimConfig &config, const rt_scene *scene, const rt_grid *grid, double t1_s,
+                       const std::string &t1_source, double wall_start_s)
+{
+    std::vector<int32_t> owner = owner_table_of(config, grid);
     warn_idle_nodes(config, owner);
     const rt_camera *cam = rt_scene_camera(scene);
     FramebufferPtr fb(rt_framebuffer_new(cam->width, cam->height));
@@ -83,23 +115,11 @@ ModelOutcome run_model(const SimConfig &config, const rt_scene *scene, const rt_
     double sim_wall = now_s() - sim_start;
     progress.finish();
 
-    if (ledger.over_limit()) {
-        rt_budget_packets_exceeded(&memory, ledger.outstanding_over_limit(), sizeof(rt_packet), msg,
-                                   sizeof msg);
-        throw UserError(msg); // the tracer's destructor removes the partial trace
-    }
-    bool finished = ledger.outstanding() == 0 && top.host().done_injecting();
-    if ((!finished && sc_core::sc_pending_activity()) || ledger.image_time().to_seconds() > config.time_limit_s) {
-        char text[200];
-        std::snprintf(text, sizeof text, "the simulated time passed the limit of %g s (--time-limit; at most %g s, "
-                      "as SystemC's time holds about 1.8e7 s at 1 ps)", config.time_limit_s, kMaxSimTimeS);
-        throw UserError(text);
-    }
     RunFacts facts;
     facts.sim_wall_s = sim_wall;
     facts.delta_cycles = sc_core::sc_delta_count();
     ModelOutcome out;
-    if (!finished) {
+    if (!run_finished(config, top, ledger, memory)) {
         facts.t1_s = t1_s < 0 ? 0 : t1_s;
         facts.t1_source = t1_s < 0 ? "this run" : t1_source;
         facts.wall_s = now_s() - wall_start_s;
@@ -109,10 +129,7 @@ ModelOutcome run_model(const SimConfig &config, const rt_scene *scene, const rt_
         out.sim_time_s = out.report.sim_time_s;
         return out; // the tracer's destructor removes the partial trace
     }
-    if (!ledger.conserved())
-        throw UserError("packet conservation violated: created " +
-                        std::to_string(ledger.totals().created[0] + ledger.totals().created[1]) + ", consumed " +
-                        std::to_string(ledger.totals().consumed[0] + ledger.totals().consumed[1]));
+    check_conservation(ledger);
     out.sim_time_s = ledger.image_time().to_seconds();
     facts.t1_s = t1_s < 0 ? out.sim_time_s : t1_s;
     facts.t1_source = t1_s < 0 ? "this run" : t1_source;

@@ -6,8 +6,10 @@
 #include <vector>
 
 #include "kernel_handles.h"
+#include "packet_ledger.h"
 #include "run_report.h"
 #include "sim_config.h"
+#include "torus_system.h"
 
 namespace torusrt {
 
@@ -23,6 +25,19 @@ struct ModelOutcome {
 // trace, if asked for, is moved to its final name only when the run succeeds.
 ModelOutcome run_model(const SimConfig &config, const rt_scene *scene, const rt_grid *grid, double t1_s,
                        const std::string &t1_source, double wall_start_s);
+
+// Pieces of a run that an animation's run shares:
+// the owner table of config (config.owner_table, or the regular mapping filled in);
+std::vector<int32_t> owner_table_of(const SimConfig &config, const rt_grid *grid);
+// a warning for nodes that own no cell;
+void warn_idle_nodes(const SimConfig &config, const std::vector<int32_t> &owner);
+// the ledger's progress callback (ctx: a Progress);
+void show_progress(void *ctx, uint64_t consumed, int64_t outstanding);
+// after sc_start: UserError if the memory budget's packet limit or the time limit stopped the
+// run; otherwise whether every packet was consumed (false: a deadlock);
+bool run_finished(const SimConfig &config, TorusSystem &top, const PacketLedger &ledger, rt_budget &memory);
+// UserError unless created = consumed.
+void check_conservation(const PacketLedger &ledger);
 
 // Prints the human summary of a report on stdout.
 void print_summary_stdout(const RunReport &report);

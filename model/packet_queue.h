@@ -34,6 +34,12 @@ class PacketQueue {
         m_source = source;
         m_node = node;
     }
+    // Wakes a reader waiting on an empty queue, so it looks again at the primary source
+    // (a new frame's primaries appeared between two sc_start calls).
+    void wake()
+    {
+        if (m_reader_waiting) m_not_empty.notify(sc_core::SC_ZERO_TIME);
+    }
     bool empty() const { return m_items.empty() && !(m_source && m_source->pending(m_node)); }
     bool full() const { return m_space.full(); }
     size_t size() const { return m_items.size(); } // network packets waiting

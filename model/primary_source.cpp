@@ -1,6 +1,8 @@
 // primary_source.cpp - entry nodes of the primary rays, and their packets made on demand.
 #include "primary_source.h"
 
+#include <algorithm>
+
 #include "rt_packet.h"
 #include "rt_step.h"
 
@@ -10,19 +12,34 @@ PrimarySource::PrimarySource(const rt_scene *scene, const rt_grid *grid, const i
                              const sc_core::sc_time &inject)
     : m_scene(scene), m_grid(grid), m_inject(inject), m_pixels(nodes), m_next(nodes, 0)
 {
-    const rt_camera *cam = rt_scene_camera(scene);
+    plan(owner);
+}
+
+void PrimarySource::restart(const int32_t *owner, const sc_core::sc_time &offset)
+{
+    m_offset = offset;
+    for (auto &list : m_pixels) std::vector<uint32_t>().swap(list);
+    std::fill(m_next.begin(), m_next.end(), 0);
+    m_missed.clear();
+    m_entering = 0;
+    plan(owner);
+}
+
+void PrimarySource::plan(const int32_t *owner)
+{
+    const rt_camera *cam = rt_scene_camera(m_scene);
     m_width = cam->width;
     uint32_t pixel = 0;
     for (uint32_t y = 0; y < cam->height; y++)
         for (uint32_t x = 0; x < cam->width; x++, pixel++) {
             rt_packet p;
             int enters = 0;
-            rt_primary_packet(scene, grid, x, y, &p, &enters);
+            rt_primary_packet(m_scene, m_grid, x, y, &p, &enters);
             if (!enters) {
                 m_missed.push_back(pixel);
                 continue;
             }
-            m_pixels[owner[rt_packet_cell(grid, &p)]].push_back(pixel);
+            m_pixels[owner[rt_packet_cell(m_grid, &p)]].push_back(pixel);
             m_entering++;
         }
 }

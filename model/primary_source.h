@@ -2,7 +2,8 @@
 // the pixels once to learn where each primary ray enters the object space and keeps, per entry
 // node, the pixel numbers (4 bytes each) in pixel order; the packet itself is made only when the
 // node's input queue takes it up, so packet memory does not grow with the image. Pixel i (in
-// row-major order) is injected at (i + 1) x host_inject: its packet's stamp.
+// row-major order) is injected at (i + 1) x host_inject: its packet's stamp. In an animation the
+// source is planned again for every frame (restart), with the stamps offset by the frame's start.
 #pragma once
 
 #include <cstdint>
@@ -24,7 +25,10 @@ class PrimarySource {
     // Pixels whose ray misses the space (the host writes their background).
     const std::vector<uint32_t> &missed() const { return m_missed; }
     uint64_t entering() const { return m_entering; }
-    sc_core::sc_time inject_time(uint32_t pixel) const { return m_inject * static_cast<double>(pixel + 1); }
+    sc_core::sc_time inject_time(uint32_t pixel) const { return m_offset + m_inject * static_cast<double>(pixel + 1); }
+    // Plans a new frame: the scene's current camera, `owner` as it is now, stamps from `offset`.
+    // Every earlier primary must have been taken.
+    void restart(const int32_t *owner, const sc_core::sc_time &offset);
     uint32_t width() const { return m_width; }
 
     bool pending(int node) const { return m_next[node] < m_pixels[node].size(); }
@@ -34,9 +38,12 @@ class PrimarySource {
     TimedPacket take(int node);
 
   private:
+    void plan(const int32_t *owner);
+
     const rt_scene *m_scene;
     const rt_grid *m_grid;
     sc_core::sc_time m_inject;
+    sc_core::sc_time m_offset = sc_core::SC_ZERO_TIME;
     uint32_t m_width = 0;
     std::vector<std::vector<uint32_t>> m_pixels; // per entry node, ascending
     std::vector<size_t> m_next;

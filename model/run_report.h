@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cluster_memory.h"
+#include "frame_report.h"
 #include "module_stats.h"
 #include "packet_ledger.h"
 #include "rt_grid.h"
@@ -79,6 +80,9 @@ struct RunReport {
     nlohmann::json units_parallel_by_p;  // preprocess_json's table
     nlohmann::json mapping;              // the mapping set-up's facts (null: none given)
     DeadlockReport deadlock;             // status "deadlock" only
+    // An animation (no frames: a single image).
+    std::vector<FrameRecord> frames;
+    std::string remap_policy, camera_source, output_pattern;
 };
 
 // Reads the system after the run. `deadlock`: the network stalled (fills report.deadlock).

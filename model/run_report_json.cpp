@@ -180,6 +180,13 @@ nlohmann::json to_json(const RunReport &r)
         {"delta_cycles", f.delta_cycles}};
     j["packets"]["conserved"] = r.conserved;
     if (!r.mapping.is_null()) j["mapping"] = r.mapping;
+    if (!r.frames.empty()) {
+        j["animation"] = animation_json(r.frames, r.remap_policy);
+        j["frames"] = nlohmann::json::array();
+        for (const FrameRecord &frame : r.frames) j["frames"].push_back(frame_json(frame));
+        j["camera_source"] = r.camera_source;
+        j["output_pattern"] = r.output_pattern;
+    }
     if (r.status == "deadlock") j["deadlock"] = deadlock_json(r.deadlock);
     if (!r.clusters.empty()) clusters_to_json(r, j);
     return j;

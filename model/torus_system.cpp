@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "cluster_dispatch.h"
 #include "cluster_node.h"
 
 namespace torusrt {
@@ -59,6 +60,14 @@ TorusSystem::TorusSystem(sc_core::sc_module_name name, const MachineConfig &conf
 }
 
 TorusSystem::~TorusSystem() = default;
+
+void TorusSystem::start_frame(rt_framebuffer *fb, const int32_t *cell_owner, const sc_core::sc_time &offset)
+{
+    m_fb->retarget(fb);
+    m_host->start_frame(cell_owner, offset);
+    for (const auto &ip : m_ips) ip->queue().wake();
+    for (const auto &cl : m_clusters) cl->dispatcher().inbox().wake();
+}
 
 std::vector<IntersectionProcessor *> TorusSystem::processors() const
 {

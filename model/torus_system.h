@@ -37,6 +37,10 @@ class TorusSystem : public sc_core::sc_module {
     FrameBuffer &frame_buffer() { return *m_fb; }
     // Every bounded buffer: processor and dispatcher input queues node by node, then the links.
     const QueueRegistry &queues() const { return m_queues; }
+    // Starts an animation frame between two sc_start calls, with the network empty: the
+    // frame's image, its primaries from `offset` under the owner table's current contents,
+    // and every idle input queue woken to take them up.
+    void start_frame(rt_framebuffer *fb, const int32_t *cell_owner, const sc_core::sc_time &offset);
 
   private:
     Routing m_routing;

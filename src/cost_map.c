@@ -113,9 +113,15 @@ static rt_status bind_context(SCOTCH_Context *ctx, SCOTCH_Graph *graph, SCOTCH_G
     return RT_OK;
 }
 
-/* Maps the bound graph onto the node torus or mesh. */
-static rt_status map_onto(SCOTCH_Graph *graph, const int nodes[3], int torus, SCOTCH_Num *parttab, char *msg,
-                          size_t msg_len)
+/* A remapping's inputs: the old owner of every vertex and the cost of moving it. */
+typedef struct remap_args {
+    SCOTCH_Num *old_part; /* NULL: a plain mapping */
+    SCOTCH_Num *move_load;
+} remap_args;
+
+/* Maps the bound graph onto the node torus or mesh (or remaps it from the old partition). */
+static rt_status map_onto(SCOTCH_Graph *graph, const int nodes[3], int torus, const remap_args *remap,
+                          SCOTCH_Num *parttab, char *msg, size_t msg_len)
 {
     SCOTCH_Arch arch;
     SCOTCH_Strat strat;
@@ -126,18 +132,23 @@ static rt_status map_onto(SCOTCH_Graph *graph, const int nodes[3], int torus, SC
     if (r != 0) st = scotch_fail(msg, msg_len, torus ? "SCOTCH_archTorus3" : "SCOTCH_archMesh3");
     SCOTCH_stratInit(&strat);
     SCOTCH_Num parts = (SCOTCH_Num)nodes[0] * nodes[1] * nodes[2];
-    if (st == RT_OK && SCOTCH_stratGraphMapBuild(&strat, SCOTCH_STRATQUALITY | SCOTCH_STRATBALANCE, parts, 0.03) != 0)
+    SCOTCH_Num flags = SCOTCH_STRATQUALITY | SCOTCH_STRATBALANCE | (remap->old_part ? SCOTCH_STRATREMAP : 0);
+    if (st == RT_OK && SCOTCH_stratGraphMapBuild(&strat, flags, parts, 0.03) != 0)
         st = scotch_fail(msg, msg_len, "SCOTCH_stratGraphMapBuild");
-    if (st == RT_OK && SCOTCH_graphMap(graph, &arch, &strat, parttab) != 0)
+    if (st == RT_OK && !remap->old_part && SCOTCH_graphMap(graph, &arch, &strat, parttab) != 0)
         st = scotch_fail(msg, msg_len, "SCOTCH_graphMap");
+    /* Moving a vertex costs its migration load (times a ratio of 1), in the edge loads' units. */
+    if (st == RT_OK && remap->old_part &&
+        SCOTCH_graphRemap(graph, &arch, remap->old_part, 1.0, remap->move_load, &strat, parttab) != 0)
+        st = scotch_fail(msg, msg_len, "SCOTCH_graphRemap");
     SCOTCH_stratExit(&strat);
     SCOTCH_archExit(&arch);
     return st;
 }
 
 /* Runs Scotch on the graph; parttab gets a terminal per cell (x fastest, as our node ids). */
-static rt_status scotch_map(cell_graph *g, const int nodes[3], int torus, SCOTCH_Num *parttab, char *msg,
-                            size_t msg_len)
+static rt_status scotch_map(cell_graph *g, const int nodes[3], int torus, const remap_args *remap,
+                            SCOTCH_Num *parttab, char *msg, size_t msg_len)
 {
     SCOTCH_Graph graph, bound;
     SCOTCH_Context ctx;
@@ -153,7 +164,7 @@ static rt_status scotch_map(cell_graph *g, const int nodes[3], int torus, SCOTCH
     if (st == RT_OK) {
         st = bind_context(&ctx, &graph, &bound, msg, msg_len);
         if (st == RT_OK) {
-            st = map_onto(&bound, nodes, torus, parttab, msg, msg_len);
+            st = map_onto(&bound, nodes, torus, remap, parttab, msg, msg_len);
             SCOTCH_graphExit(&bound);
         }
         SCOTCH_contextExit(&ctx);
@@ -233,11 +244,59 @@ rt_status rt_cost_map_folded(const rt_cost_pilot *p, const int nodes[3], int tor
         if (st == RT_ERR_NOMEM && msg && msg_len) snprintf(msg, msg_len, "cost mapping: out of memory");
         int v[3];
         for (int k = 0; k < 3; k++) v[k] = nodes[k] > 1 ? nodes[k] * fold : 1;
-        if (st == RT_OK) st = scotch_map(&g, v, torus, part, msg, msg_len);
+        remap_args plain = {NULL, NULL};
+        if (st == RT_OK) st = scotch_map(&g, v, torus, &plain, part, msg, msg_len);
         for (size_t c = 0; st == RT_OK && c < p->cells; c++) owner[c] = fold_node(part[c], v, nodes);
         free(part);
         graph_free(&g);
     }
+    if (st == RT_OK && facts) map_facts(p, nodes, torus, owner, facts);
+    return st;
+}
+
+rt_status rt_cost_remap(const rt_cost_pilot *p, const int nodes[3], int torus, double edge_us,
+                        const int32_t *old_owner, const double *move_us, int32_t *owner, rt_cost_map_facts *facts,
+                        char *msg, size_t msg_len)
+{
+    long n = (long)nodes[0] * nodes[1] * nodes[2];
+    if (nodes[0] < 1 || nodes[1] < 1 || nodes[2] < 1 || !p->work_us || !(edge_us >= 0) || !old_owner || !move_us) {
+        if (msg && msg_len) snprintf(msg, msg_len, "cost remapping: bad arguments");
+        return RT_ERR_INVALID;
+    }
+    if (p->cells > (size_t)(TOTAL_MAX / 8)) {
+        if (msg && msg_len) snprintf(msg, msg_len, "cost remapping: %zu cells is too many for Scotch's weights", p->cells);
+        return RT_ERR_LIMIT;
+    }
+    if (n == 1) return rt_cost_map(p, nodes, torus, edge_us, owner, facts, msg, msg_len);
+    cell_graph g;
+    rt_status st = build_graph(p, edge_us, &g);
+    SCOTCH_Num *part = malloc(p->cells * sizeof *part);
+    SCOTCH_Num *old_part = malloc(p->cells * sizeof *old_part);
+    SCOTCH_Num *move = malloc(p->cells * sizeof *move);
+    if (st == RT_OK && (!part || !old_part || !move)) st = RT_ERR_NOMEM;
+    if (st == RT_ERR_NOMEM && msg && msg_len) snprintf(msg, msg_len, "cost remapping: out of memory");
+    if (st == RT_OK) {
+        /* The graph's scale, recovered from the largest vertex weight, scales the move costs too. */
+        double wmax = 0;
+        SCOTCH_Num vmax = 1;
+        for (size_t c = 0; c < p->cells; c++) {
+            wmax = fmax(wmax, p->work_us[c]);
+            if (g.velotab[c] > vmax) vmax = g.velotab[c];
+        }
+        double scale = wmax > 0 ? (double)vmax / wmax : 1;
+        for (size_t c = 0; c < p->cells; c++) {
+            SCOTCH_Num m = scaled(move_us[c], scale);
+            move[c] = m > WEIGHT_MAX ? WEIGHT_MAX : m;
+            old_part[c] = (old_owner[c] >= 0 && old_owner[c] < n) ? old_owner[c] : -1;
+        }
+        remap_args args = {old_part, move};
+        st = scotch_map(&g, nodes, torus, &args, part, msg, msg_len);
+    }
+    for (size_t c = 0; st == RT_OK && c < p->cells; c++) owner[c] = (int32_t)part[c];
+    free(part);
+    free(old_part);
+    free(move);
+    graph_free(&g);
     if (st == RT_OK && facts) map_facts(p, nodes, torus, owner, facts);
     return st;
 }

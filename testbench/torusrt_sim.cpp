@@ -9,8 +9,11 @@
 #include <string>
 #include <systemc>
 
+#include "animation_options.h"
+#include "animation_run.h"
 #include "cli_main.h"
 #include "common_options.h"
+#include "frame_pattern.h"
 #include "machine_options.h"
 #include "model_run.h"
 #include "option_parsing.h"
@@ -37,6 +40,9 @@ struct CommandLine {
     // The run: the command line only.
     std::string vcd, trace_ips, trace_from, trace_to, t1, time_limit;
     bool dump_config = false;
+    // Animation (run options too: the frames are the workload).
+    AnimationOptions anim;
+    std::string remap, frames_csv;
 };
 
 double seconds_now()
@@ -179,8 +185,28 @@ void declare_run_options(CLI::App &app, CommandLine &cl)
         ->type_name("SECONDS");
     app.add_option("--time-limit", cl.time_limit, "stop with an error (exit 1) when simulated time passes this\n"
                    "(default and maximum 1e7 s, SystemC's 64-bit picosecond time holds 1.8e7 s)")->type_name("TIME");
-    for (const char *name : {"--vcd", "--trace-from", "--trace-to", "--trace-ips", "--t1", "--time-limit"})
+    add_animation_options(app, cl.anim);
+    app.add_option("--remap", cl.remap, "mapping across the frames: static (default: the first frame's), every-frame,\n"
+                   "adaptive or oracle")->type_name("POLICY");
+    app.add_option("--frames-csv", cl.frames_csv, "write one CSV row per frame of an animation")->type_name("FILE");
+    for (const char *name : {"--vcd", "--trace-from", "--trace-to", "--trace-ips", "--t1", "--time-limit", "--remap",
+                             "--frames-csv"})
         app.get_option(name)->configurable(false);
+}
+
+// The animation options checked before any file is read (exit 2).
+void check_animation(CommandLine &cl)
+{
+    check_animation_options(cl.anim);
+    if (!cl.anim.animated()) {
+        if (!cl.remap.empty() || !cl.frames_csv.empty())
+            throw UserError(std::string(cl.remap.empty() ? "--frames-csv" : "--remap") +
+                                ": only for an animation (--frames N with --orbit DEG, or --camera-path FILE)", 2);
+        return;
+    }
+    if (!cl.remap.empty()) parse_remap_policy(cl.remap);
+    if (!cl.t1.empty()) throw UserError("--t1: not used by an animation (each frame's T(1) is its pilot's work)", 2);
+    if (!cl.common.output.empty()) check_frame_pattern("-o", cl.common.output);
 }
 
 void declare_options(CLI::App &app, CommandLine &cl)
@@ -265,7 +291,7 @@ struct StagedOutputs {
 void stage_outputs(const CommandLine &cl, SimConfig &config, StagedOutputs &out)
 {
     const std::string &scene = cl.common.scene;
-    out.png = out.set.add("-o", cl.common.output, scene);
+    if (!cl.anim.animated()) out.png = out.set.add("-o", cl.common.output, scene);  // frames: animate()
     if (!cl.common.stats.empty()) out.stats = out.set.add("--stats", cl.common.stats, scene);
     if (!cl.vcd.empty()) {
         config.vcd_write_path = out.set.add("--vcd", cl.vcd, scene);
@@ -287,10 +313,64 @@ void print_written(const CommandLine &cl, const SimConfig &config)
     std::printf("\n");
 }
 
-int run(const CommandLine &cl, double wall_start)
+void report_deadlock(const SimConfig &config, double sim_time_s, const std::string &details)
+{
+    std::fprintf(stderr,
+                 "torusrt-sim: deadlock: the network stalled at %.6f s simulated with packets still "
+                 "outstanding (queue capacity %u)\n%s",
+                 sim_time_s, config.queue_capacity, details.c_str());
+}
+
+void write_stats(const StagedOutputs &outputs, const CommandLine &cl, const RunReport &report)
+{
+    if (!outputs.stats.empty()) write_text_file(outputs.stats, cl.common.stats, to_json(report).dump(2) + "\n");
+}
+
+// An animation: every frame's PNG, the statistics and the CSV commit together.
+int animate(const CommandLine &cl, SimConfig &config, LoadedScene &loaded, const nlohmann::json &mapping_facts,
+            StagedOutputs &outputs, double wall_start)
+{
+    rt_scene *scene = loaded.scene.get();
+    CameraPathPtr path = make_camera_path(cl.anim, scene);
+    size_t n = rt_camera_path_count(path.get());
+    std::vector<std::string> files, staged;
+    for (size_t k = 0; k < n; k++) {
+        files.push_back(frame_file_name(cl.common.output, k));
+        staged.push_back(outputs.set.add("-o", files.back(), cl.common.scene));
+    }
+    std::string csv = cl.frames_csv.empty() ? "" : outputs.set.add("--frames-csv", cl.frames_csv, cl.common.scene);
+    RemapPolicy policy = cl.remap.empty() ? RemapPolicy::static_map : parse_remap_policy(cl.remap);
+    AnimationOutcome out = run_animation(config, scene, loaded.grid.get(), path.get(), files, policy, wall_start);
+    out.report.mapping = mapping_facts;
+    out.report.camera_source = cl.anim.orbit.empty() ? "camera-path" : "orbit";
+    out.report.output_pattern = cl.common.output;
+    if (out.deadlock) {  // the JSON alone (status "deadlock"), no image
+        write_stats(outputs, cl, out.report);
+        outputs.set.commit("--stats");
+        report_deadlock(config, out.sim_time_s, out.deadlock_details);
+        return 3;
+    }
+    const rt_camera *cam = rt_scene_camera(scene);
+    for (size_t k = 0; k < n; k++) write_png_file(staged[k], files[k], cam->width, cam->height, out.images[k]);
+    write_stats(outputs, cl, out.report);
+    if (!csv.empty()) write_text_file(csv, cl.frames_csv, frames_csv(out.frames));
+    outputs.set.commit();
+    if (!config.quiet) {
+        print_summary_stdout(out.report);
+        std::printf("  wrote        %zu frames %s", n, cl.common.output.c_str());
+        if (!cl.common.stats.empty()) std::printf(", %s", cl.common.stats.c_str());
+        if (!cl.frames_csv.empty()) std::printf(", %s", cl.frames_csv.c_str());
+        if (!cl.vcd.empty()) std::printf(", %s", cl.vcd.c_str());
+        std::printf("\n");
+    }
+    return 0;
+}
+
+int run(CommandLine &cl, double wall_start)
 {
     require_scene_and_output(cl.common);
     route_systemc_messages(cl.common.quiet);
+    check_animation(cl);
     SimConfig config = checked_config(cl);
     warn_about_settings("torusrt-sim", config.step, config.quiet);
     StagedOutputs outputs;
@@ -298,6 +378,10 @@ int run(const CommandLine &cl, double wall_start)
     LoadedScene loaded = load_scene(config.scene_path, config.width, config.height, config.cells, config.quiet,
                                     &config.memory);
     nlohmann::json mapping_facts = prepare_mapping(config, loaded.scene.get(), loaded.grid.get());
+    if (cl.anim.animated()) {
+        write_mapping_outputs(config, loaded.scene.get(), loaded.grid.get(), outputs.write_map, outputs.load_map);
+        return animate(cl, config, loaded, mapping_facts, outputs, wall_start);
+    }
     double t1 = config.t1_s;
     std::string t1_source = "passed with --t1";
     if (t1 < 0 && config.processor_count() > 1) {
@@ -307,19 +391,15 @@ int run(const CommandLine &cl, double wall_start)
     ModelOutcome out = run_model(config, loaded.scene.get(), loaded.grid.get(), t1, t1_source, wall_start);
     out.report.mapping = mapping_facts;
     if (out.deadlock) {  // the JSON alone (status "deadlock"), no image
-        if (!outputs.stats.empty())
-            write_text_file(outputs.stats, cl.common.stats, to_json(out.report).dump(2) + "\n");
+        write_stats(outputs, cl, out.report);
         outputs.set.commit("--stats");
-        std::fprintf(stderr,
-                     "torusrt-sim: deadlock: the network stalled at %.6f s simulated with packets still "
-                     "outstanding (queue capacity %u)\n%s",
-                     out.sim_time_s, config.queue_capacity, out.deadlock_details.c_str());
+        report_deadlock(config, out.sim_time_s, out.deadlock_details);
         return 3;
     }
     const rt_camera *cam = rt_scene_camera(loaded.scene.get());
     write_mapping_outputs(config, loaded.scene.get(), loaded.grid.get(), outputs.write_map, outputs.load_map);
     write_png_file(outputs.png, cl.common.output, cam->width, cam->height, out.rgb8);
-    if (!outputs.stats.empty()) write_text_file(outputs.stats, cl.common.stats, to_json(out.report).dump(2) + "\n");
+    write_stats(outputs, cl, out.report);
     outputs.set.commit();
     if (!config.quiet) {
         print_summary_stdout(out.report);

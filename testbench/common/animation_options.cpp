@@ -29,13 +29,16 @@ void add_animation_options(CLI::App &app, AnimationOptions &opt)
 {
     app.add_option("--frames", opt.frames_text, "frames of an animation (needs --orbit; 1 to " +
                                                std::to_string(RT_CAMERA_PATH_MAX_FRAMES) + ")")
-        ->type_name("N");
+        ->type_name("N")
+        ->configurable(false);  // the frames are the run's workload, never a machine file's
     app.add_option("--orbit", opt.orbit,
                    "turn the eye about 'at' around 'up' by DEG degrees over the frames")
-        ->type_name("DEG");
+        ->type_name("DEG")
+        ->configurable(false);
     app.add_option("--camera-path", opt.camera_path,
                    "camera path file: one 'from at up angle' line (10 numbers) per frame")
-        ->type_name("FILE");
+        ->type_name("FILE")
+        ->configurable(false);
 }
 
 void check_animation_options(AnimationOptions &opt)
@@ -83,12 +86,6 @@ CameraPathPtr make_camera_path(const AnimationOptions &opt, const rt_scene *scen
                             " holds " + std::to_string(count) + " camera lines (one per frame)",
                         2);
     return path;
-}
-
-nlohmann::json camera_pose_json(const rt_camera_pose &p)
-{
-    auto vec = [](rt_vec3 v) { return nlohmann::json::array({v.x, v.y, v.z}); };
-    return {{"from", vec(p.from)}, {"at", vec(p.at)}, {"up", vec(p.up)}, {"angle", p.angle}};
 }
 
 }  // namespace torusrt

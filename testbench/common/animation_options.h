@@ -9,6 +9,7 @@
 
 #include "rt_camera_path.h"
 #include "rt_scene.h"
+#include "stats_json.h" // camera_pose_json
 
 namespace torusrt {
 
@@ -32,7 +33,5 @@ void check_animation_options(AnimationOptions &opt);
 // The frames' camera poses: the orbit from the scene's own camera, or the file (exit 1 with
 // FILE:LINE for a bad file, exit 2 if --frames disagrees with it).
 CameraPathPtr make_camera_path(const AnimationOptions &opt, const rt_scene *scene);
-// {"from": [x, y, z], "at": [...], "up": [...], "angle": a}
-nlohmann::json camera_pose_json(const rt_camera_pose &pose);
 
 }  // namespace torusrt

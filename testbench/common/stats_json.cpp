@@ -38,4 +38,10 @@ nlohmann::json preprocess_json(const rt_grid *grid, int extra_processors)
     return {{"units_serial", rt_grid_units_serial(grid)}, {"units_parallel_by_p", parallel}};
 }
 
+nlohmann::json camera_pose_json(const rt_camera_pose &p)
+{
+    auto vec = [](rt_vec3 v) { return nlohmann::json::array({v.x, v.y, v.z}); };
+    return {{"from", vec(p.from)}, {"at", vec(p.at)}, {"up", vec(p.up)}, {"angle", p.angle}};
+}
+
 }  // namespace torusrt

@@ -1,0 +1,92 @@
+// frame_report.cpp - JSON, CSV and the summary table of an animation's frames.
+#include "frame_report.h"
+
+#include <sstream>
+
+#include "stats_json.h"
+
+namespace torusrt {
+
+nlohmann::json frame_json(const FrameRecord &f)
+{
+    const MigrationCost &m = f.migration;
+    return {{"index", f.index},
+            {"file", f.file},
+            {"camera", camera_pose_json(f.camera)},
+            {"start_s", f.start_s},
+            {"image_time_s", f.image_time_s},
+            {"t1_s", f.t1_s},
+            {"efficiency", f.efficiency()},
+            {"packets", f.packets},
+            {"remap", {{"decision", f.decision}, {"reason", f.reason}, {"predicted_gain_s", f.predicted_gain_s}}},
+            {"migration_bytes", m.bytes()},
+            {"migration_time_s", f.charged_migration_s()},
+            {"migration",
+             {{"cells", m.cells},
+              {"objects", m.objects},
+              {"list_bytes", m.list_bytes},
+              {"object_bytes", m.object_bytes},
+              {"byte_hops", m.byte_hops},
+              {"max_hops", m.max_hops},
+              {"busiest_link_bytes", m.busiest_link_bytes},
+              {"link_time_s", m.time_s},
+              {"charged", f.migration_charged}}},
+            {"pilot_wall_s", f.pilot_wall_s},
+            {"mapper_wall_s", f.mapper_wall_s}};
+}
+
+nlohmann::json animation_json(const std::vector<FrameRecord> &frames, const std::string &policy)
+{
+    double image = 0, migration = 0, t1 = 0;
+    uint64_t bytes = 0, remaps = 0;
+    for (const FrameRecord &f : frames) {
+        image += f.image_time_s;
+        migration += f.charged_migration_s();
+        t1 += f.t1_s;
+        bytes += f.migration.bytes();
+        if (f.migration.cells > 0) remaps++;
+    }
+    double total = image + migration;
+    int n = frames.empty() ? 1 : frames.front().processors;
+    return {{"frame_count", frames.size()},
+            {"policy", policy},
+            {"total_s", total},
+            {"image_time_s", image},
+            {"migration_time_s", migration},
+            {"migration_share", total > 0 ? migration / total : 0.0},
+            {"migration_bytes", bytes},
+            {"mapping_changes", remaps},
+            {"t1_s", t1},
+            {"efficiency", total > 0 ? t1 / (n * total) : 0.0}};
+}
+
+std::string frames_csv(const std::vector<FrameRecord> &frames)
+{
+    std::ostringstream out;
+    out.precision(9);
+    out << "frame,file,start_s,image_time_s,t1_s,efficiency,packets,decision,migration_bytes,migration_cells,"
+           "migration_objects,migration_max_hops,migration_time_s,migration_charged,predicted_gain_s\n";
+    for (const FrameRecord &f : frames)
+        out << f.index << ',' << f.file << ',' << f.start_s << ',' << f.image_time_s << ',' << f.t1_s << ','
+            << f.efficiency() << ',' << f.packets << ',' << f.decision << ',' << f.migration.bytes() << ','
+            << f.migration.cells << ',' << f.migration.objects << ',' << f.migration.max_hops << ','
+            << f.charged_migration_s() << ',' << (f.migration_charged ? 1 : 0) << ',' << f.predicted_gain_s
+            << '\n';
+    return out.str();
+}
+
+void print_frame_table(const std::vector<FrameRecord> &frames, const std::string &policy, std::FILE *out)
+{
+    if (frames.empty()) return;
+    nlohmann::json a = animation_json(frames, policy);
+    std::fprintf(out, "  animation    %zu frames, remap %s: total %.6f s = images %.6f s + migration %.6f s (%.1f %%)\n",
+                 frames.size(), policy.c_str(), a["total_s"].get<double>(), a["image_time_s"].get<double>(),
+                 a["migration_time_s"].get<double>(), 100 * a["migration_share"].get<double>());
+    std::fprintf(out, "  frame   image s  effic.  migr. bytes  migr. s    decision\n");
+    for (const FrameRecord &f : frames)
+        std::fprintf(out, "  %5zu %9.5f %6.1f%% %12llu %9.6f  %s\n", f.index, f.image_time_s, 100 * f.efficiency(),
+                     static_cast<unsigned long long>(f.migration.bytes()), f.charged_migration_s(),
+                     f.decision.c_str());
+}
+
+}  // namespace torusrt

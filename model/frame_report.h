@@ -1,0 +1,42 @@
+// frame_report.h - the per-frame figures of an animation: its JSON `frames` entries and
+// `animation` totals, the --frames-csv table, and the summary's compact frame table.
+#pragma once
+
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "migration.h"
+#include "rt_camera_path.h"
+
+namespace torusrt {
+
+struct FrameRecord {
+    size_t index = 0;
+    std::string file;             // the frame's PNG
+    rt_camera_pose camera{};
+    double start_s = 0;           // simulated time the frame's primaries start from
+    double image_time_s = 0;      // frame start to its last contribution
+    double t1_s = 0;              // the frame's sequential work (its pilot)
+    int processors = 1;
+    uint64_t packets = 0;         // packets created in the frame
+    std::string decision;         // "first", "keep" or "remap"
+    std::string reason;
+    double predicted_gain_s = 0;
+    MigrationCost migration;      // before the frame
+    bool migration_charged = true;
+    double pilot_wall_s = 0, mapper_wall_s = 0;
+    double efficiency() const { return image_time_s > 0 ? t1_s / (processors * image_time_s) : 0; }
+    double charged_migration_s() const { return migration_charged ? migration.time_s : 0; }
+};
+
+nlohmann::json frame_json(const FrameRecord &frame);
+// Totals: frame_count, policy, total_s = sum of image times + charged migration, and its parts.
+nlohmann::json animation_json(const std::vector<FrameRecord> &frames, const std::string &policy);
+// One header line and one row per frame (columns as README "Animation in torusrt-sim").
+std::string frames_csv(const std::vector<FrameRecord> &frames);
+// The summary's table (nothing for a single image).
+void print_frame_table(const std::vector<FrameRecord> &frames, const std::string &policy, std::FILE *out);
+
+}  // namespace torusrt
