@@ -16,17 +16,21 @@ class BufferSpace {
     explicit BufferSpace(unsigned capacity) : m_capacity(capacity) {}
 
     bool available() const { return !m_capacity || m_used < m_capacity; }
+    // Whether `n` more packets fit now.
+    bool room(size_t n) const { return !m_capacity || m_used + n <= m_capacity; }
     bool full() const { return !available(); }
     void take()
     {
         m_used++;
         m_depth = static_cast<int>(m_used);
         if (m_used > m_high_water) m_high_water = m_used;
+        if (m_total) ++*m_total;
     }
     void release()
     {
         m_used--;
         m_depth = static_cast<int>(m_used);
+        if (m_total) --*m_total;
         if (!m_capacity) return;
         m_released.notify(sc_core::SC_ZERO_TIME);
         for (sc_core::sc_event *e : m_waiters) e->notify(sc_core::SC_ZERO_TIME);
@@ -59,12 +63,15 @@ class BufferSpace {
     unsigned capacity() const { return m_capacity; }
     // Writers (threads and methods) waiting for room, for the deadlock report.
     unsigned blocked_writers() const { return m_blocked_writers + static_cast<unsigned>(m_waiters.size()); }
+    // Also counts takes and releases in `*total` (the occupancy of a group of buffers).
+    void count_in(int *total) { m_total = total; }
 
   private:
     unsigned m_capacity;
     size_t m_used = 0, m_high_water = 0;
     unsigned m_blocked_writers = 0;
     int m_depth = 0;
+    int *m_total = nullptr;
     sc_core::sc_event m_released;
     std::vector<sc_core::sc_event *> m_waiters;
 };

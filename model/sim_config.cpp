@@ -52,5 +52,6 @@ const char *style_name(TimingStyle s) { return s == TimingStyle::at ? "at" : "lt
 const char *data_mode_name(DataMode d) { return d == DataMode::replicated ? "replicated" : "shared"; }
 const char *arbiter_name(ArbiterPolicy a) { return a == ArbiterPolicy::round_robin ? "round-robin" : "fixed-priority"; }
 const char *dispatch_name(DispatchPolicy d) { return d == DispatchPolicy::round_robin ? "round-robin" : "shortest-queue"; }
+const char *flow_name(FlowControl f) { return f == FlowControl::none ? "none" : "classes"; }
 
 }  // namespace torusrt

@@ -26,6 +26,7 @@ enum class TimingStyle { at, lt };
 enum class DataMode { replicated, shared };
 enum class ArbiterPolicy { round_robin, fixed_priority };
 enum class DispatchPolicy { round_robin, shortest_queue };
+enum class FlowControl { none, classes }; // see flow_control.h
 
 struct SimConfig {
     std::string scene_path;                 // NFF scene
@@ -35,7 +36,8 @@ struct SimConfig {
     rt_map_kind mapping = RT_MAP_CYCLIC;    // cell-to-node mapping
     int block = 1;                          // block size for block-cyclic
     Topology topology = Topology::torus;    // rings in every dimension, or a mesh
-    unsigned queue_capacity = 0;            // packets per queue, 0 = unbounded
+    unsigned queue_capacity = 0;            // packets per buffer (per class), 0 = unbounded
+    FlowControl flow = FlowControl::classes; // deadlock-free class split, or one class (none)
     rt_timing timing{};                     // operation and transfer times
     std::string timing_profile;             // which profile (and file) the timing came from
     rt_step_params step{};                  // shade-tree limits
@@ -74,5 +76,6 @@ const char *style_name(TimingStyle s);
 const char *data_mode_name(DataMode d);
 const char *arbiter_name(ArbiterPolicy a);
 const char *dispatch_name(DispatchPolicy d);
+const char *flow_name(FlowControl f);
 
 }  // namespace torusrt

@@ -28,6 +28,7 @@ struct CommandLine {
     std::string min_weight = "1/512", style = "at", quantum = "0", data = "replicated", arbiter = "round-robin";
     std::string dispatch = "round-robin", trace_ips, link_us, packet_bytes, link_bytes_per_us, t1;
     std::string memory_budget = "4G";
+    std::string flow = "classes";
     std::string trace_from, trace_to, time_limit, scene, vcd;
     int cluster = 1;
     bool quiet = false;
@@ -108,6 +109,7 @@ SimConfig make_config(const std::string &scene, const CommandLine &cl, bool quie
     c.topology = parse_choice("--topology", cl.topology, "torus", Topology::torus, "mesh", Topology::mesh);
     if (cl.queue < 0 || cl.queue > 100000000) throw UserError("--queue: must be 0 (unbounded) to 100000000", 2);
     c.queue_capacity = static_cast<unsigned>(cl.queue);
+    c.flow = parse_choice("--flow", cl.flow, "classes", FlowControl::classes, "none", FlowControl::none);
     c.timing_profile = choose_timing(cl.timing_profile, cl.timing_file, &c.timing);
     char msg[RT_MSG_LEN] = "";
     std::string problem = timing_limit_problem(c.timing);
@@ -168,7 +170,10 @@ void declare_options(CLI::App &app, CommandLine &cl)
     app.add_option("--topology", cl.topology, "torus (default, rings) or mesh (no wrap-around)")->type_name("KIND");
     app.add_option("--cells", cl.cells, "grid cells: N or NXxNYxNZ (default 24)")->type_name("DIMS");
     app.add_option("--size", cl.size, "image size WxH, overriding the scene's resolution")->type_name("WxH");
-    app.add_option("--queue", cl.queue, "capacity of every packet queue, 0 = unbounded (default)")->type_name("N");
+    app.add_option("--queue", cl.queue, "capacity of every packet buffer (of each class), 0 = unbounded (default)")
+        ->type_name("N");
+    app.add_option("--flow", cl.flow, "flow control: classes (default, deadlock-free class-split buffers) or none\n"
+                                     "(one class; finite buffers may deadlock, exit 3)")->type_name("SCHEME");
     app.add_option("--timing", cl.timing_file, "timing file overriding the paper's table")->type_name("FILE");
     app.add_option("--link-us", cl.link_us, "time per packet on a link: microseconds, or with a unit ns, us, ms, s\n"
                                          "(default 50)")->type_name("TIME");
