@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "cluster_node.h"
+#include "flow_report.h"
 #include "rt_memory.h"
 #include "stats_json.h"
 
@@ -167,6 +168,7 @@ nlohmann::json build_report(const SimConfig &config, TorusSystem &top, const Pac
         {"delta_cycles", facts.delta_cycles}};
     report["packets"]["conserved"] = ledger.conserved();
     if (config.cluster > 1) add_cluster_report(report, config, top);
+    report["flow"] = flow_report_json(config, top, scene);
     return report;
 }
 
