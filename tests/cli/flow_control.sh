@@ -7,7 +7,8 @@
 # - at capacity 1 the machine does the same work as unbounded (the same operation counts and
 #   packets): flow control changes only the order of the work;
 # - --flow none on configurations known to deadlock (one class, capacity 1 or 2) exits 3 and
-#   writes no image.
+#   writes no image, and every full queue it names holds no more packets than its capacity (every
+#   packet counts, primaries a cluster dispatcher handed to a processor too).
 source "$(dirname "$0")/common.bash" "$@"
 need_exe torusrt-sim torusrt-render
 time_limit 120
@@ -73,6 +74,9 @@ for cfg in "--ips 2x2x2 --queue 1" "--ips 4x2x2 --queue 2" "--ips 2x2x1 --cluste
     rc=$?
     check "--flow none $cfg: exit 3 (got $rc)" test "$rc" -eq 3
     check "--flow none $cfg: no image" test ! -e "$TMP/dead.png"
+    check "--flow none $cfg: full queues named" grep -q "full: " "$TMP/err"
+    check "--flow none $cfg: no queue above its capacity" test -z "$(sed -n 's/.*(\([0-9]*\)\/\([0-9]*\)).*/\1 \2/p' \
+        "$TMP/err" | awk '$1 > $2')"
     # The same machine with the class scheme finishes.
     # shellcheck disable=SC2086
     "${run_limited[@]}" "$BUILD/torusrt-sim" "$f" -o "$TMP/live.png" -q --t1 1 --size 24x24 $cfg 2>"$TMP/err"
