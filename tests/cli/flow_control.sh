@@ -6,6 +6,7 @@
 # - no buffer holds more packets of one class than its capacity (the flow report, read with jq);
 # - at capacity 1 the machine does the same work as unbounded (the same operation counts and
 #   packets): flow control changes only the order of the work;
+# - the same bounded run twice gives the same times;
 # - --flow none on configurations known to deadlock (one class, capacity 1 or 2) exits 3 and
 #   writes no image, and every full queue it names holds no more packets than its capacity (every
 #   packet counts, primaries a cluster dispatcher handed to a processor too).
@@ -64,6 +65,15 @@ for f in "$SRC"/scenes/*.nff; do
         --ips "${clustered_ips[$(((i + 1) % 3))]}" --cluster 2 $style
     i=$((i + 1))
 done
+
+# Deterministic: the same bounded run twice gives the same simulated time and delta cycles.
+f="$SRC/scenes/paper-image2.nff"
+for k in 1 2; do
+    "${run_limited[@]}" "$BUILD/torusrt-sim" "$f" -o "$TMP/det$k.png" --stats "$TMP/det$k.json" -q --t1 1 --size 24x24 \
+        --ips 2x2x2 --cluster 2 --dispatch shortest-queue --queue 1 --style lt --quantum 1ms || fail "determinism run $k"
+done
+check "bounded run twice: same time and delta cycles" \
+    test "$(jq -c '[.sim_time_s, .delta_cycles]' "$TMP/det1.json")" = "$(jq -c '[.sim_time_s, .delta_cycles]' "$TMP/det2.json")"
 
 f="$SRC/scenes/paper-image1.nff"
 for cfg in "--ips 2x2x2 --queue 1" "--ips 4x2x2 --queue 2" "--ips 2x2x1 --cluster 2 --queue 1"; do
