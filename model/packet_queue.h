@@ -32,7 +32,11 @@ class PacketQueue {
     // The buffer `p` takes a slot in.
     BufferSpace &space_for(const TimedPacket &p) { return m_spaces.at(p.cls); }
     // Whether `p` fits now (its slot may already be reserved).
-    bool has_room(const TimedPacket &p) { return p.reserved || space_for(p).available(); }
+    bool has_room(const TimedPacket &p) const
+    {
+        const BufferSpace *s = m_spaces.find(p.cls); // not made yet: empty
+        return p.reserved || !s || s->available();
+    }
     // Appends, waiting (in the calling thread) while its class is full; a reserved packet
     // already holds its slot.
     void push_blocking(const TimedPacket &p);

@@ -46,7 +46,7 @@ struct Relay : sc_core::sc_module, PacketSinkIf {
         SC_THREAD(run);
     }
     void accept(const TimedPacket &p) override { queue.push_blocking(p); }
-    bool can_accept(const TimedPacket &p) const override { return const_cast<PacketQueue &>(queue).has_room(p); }
+    bool can_accept(const TimedPacket &p) const override { return queue.has_room(p); }
     void on_space(const TimedPacket &p, sc_core::sc_event &e) override { queue.space_for(p).on_release(e); }
     BufferSpace *room_for(const TimedPacket &p) override { return &queue.space_for(p); }
 
