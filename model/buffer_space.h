@@ -5,7 +5,9 @@
 // once, at the next release. Capacity 0 = unbounded (room always available).
 // Stall time: the simulated time during which at least one writer waits for room, from the
 // moment the first writer starts waiting until the next release (a writer that still finds no
-// room starts a new interval).
+// room starts a new interval). A group of buffers (ClassBuffers: one queue split by packet class)
+// shares an occupancy count and a StallClock, so a queue reports its stall time once however
+// many of its classes wait at the same time.
 #pragma once
 
 #include <cstddef>
@@ -14,15 +16,38 @@
 
 namespace torusrt {
 
+// The simulated time during which at least one of its members is stalled (intervals that
+// overlap count once).
+class StallClock {
+  public:
+    void begin()
+    {
+        if (m_active++ == 0) m_since = sc_core::sc_time_stamp();
+    }
+    void end()
+    {
+        if (m_active && --m_active == 0) m_total += sc_core::sc_time_stamp() - m_since;
+    }
+    // An interval still open counts up to now.
+    sc_core::sc_time time() const { return m_active ? m_total + (sc_core::sc_time_stamp() - m_since) : m_total; }
+
+  private:
+    unsigned m_active = 0;
+    sc_core::sc_time m_since = sc_core::SC_ZERO_TIME, m_total = sc_core::SC_ZERO_TIME;
+};
+
 class BufferSpace {
   public:
     explicit BufferSpace(unsigned capacity) : m_capacity(capacity) {}
 
     bool available() const { return !m_capacity || m_used < m_capacity; }
     bool full() const { return !available(); }
+    // Whether `n` more packets fit now.
+    bool room(size_t n) const { return !m_capacity || m_used + n <= m_capacity; }
     void take()
     {
         m_used++;
+        if (m_total) ++*m_total;
         m_depth = static_cast<int>(m_used);
         if (m_used > m_high_water) m_high_water = m_used;
     }
@@ -30,6 +55,7 @@ class BufferSpace {
     {
         m_used--;
         m_depth = static_cast<int>(m_used);
+        if (m_total) --*m_total;
         if (!m_capacity) return;
         end_stall();
         m_released.notify(sc_core::SC_ZERO_TIME);
@@ -66,9 +92,12 @@ class BufferSpace {
     // Writers (threads and methods) waiting for room, for the deadlock report.
     unsigned blocked_writers() const { return m_blocked_writers + static_cast<unsigned>(m_waiters.size()); }
     // Simulated time writers have waited for room so far (an interval still open counts up to now).
-    sc_core::sc_time stalled_time() const
+    sc_core::sc_time stalled_time() const { return m_stall.time(); }
+    // Also counts takes and releases in `*total` and stalls in `*group` (a group of buffers).
+    void count_in(int *total, StallClock *group = nullptr)
     {
-        return m_stalling ? m_stalled + (sc_core::sc_time_stamp() - m_stall_since) : m_stalled;
+        m_total = total;
+        m_group = group;
     }
 
   private:
@@ -76,21 +105,25 @@ class BufferSpace {
     {
         if (m_stalling) return;
         m_stalling = true;
-        m_stall_since = sc_core::sc_time_stamp();
+        m_stall.begin();
+        if (m_group) m_group->begin();
     }
     void end_stall()
     {
         if (!m_stalling) return;
-        m_stalled += sc_core::sc_time_stamp() - m_stall_since;
         m_stalling = false;
+        m_stall.end();
+        if (m_group) m_group->end();
     }
 
     unsigned m_capacity;
     size_t m_used = 0, m_high_water = 0;
     unsigned m_blocked_writers = 0;
     int m_depth = 0;
-    bool m_stalling = false;  // a writer waits for room since m_stall_since
-    sc_core::sc_time m_stall_since = sc_core::SC_ZERO_TIME, m_stalled = sc_core::SC_ZERO_TIME;
+    bool m_stalling = false;  // a writer waits for room
+    StallClock m_stall;
+    int *m_total = nullptr;
+    StallClock *m_group = nullptr;
     sc_core::sc_event m_released;
     std::vector<sc_core::sc_event *> m_waiters;
 };

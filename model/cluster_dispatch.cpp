@@ -12,11 +12,11 @@ namespace {
 
 class RoundRobinDispatch : public DispatchPolicyIf {
   public:
-    int choose(const std::vector<IntersectionProcessor *> &processors) override
+    int candidate(const std::vector<IntersectionProcessor *> &processors) const override
     {
-        m_next = (m_next + 1) % static_cast<int>(processors.size());
-        return m_next;
+        return (m_next + 1) % static_cast<int>(processors.size());
     }
+    void chosen(int k) override { m_next = k; }
 
   private:
     int m_next = -1;
@@ -24,7 +24,7 @@ class RoundRobinDispatch : public DispatchPolicyIf {
 
 class ShortestQueueDispatch : public DispatchPolicyIf {
   public:
-    int choose(const std::vector<IntersectionProcessor *> &processors) override
+    int candidate(const std::vector<IntersectionProcessor *> &processors) const override
     {
         int best = 0;
         size_t best_load = SIZE_MAX;
@@ -57,20 +57,39 @@ ClusterDispatcher::ClusterDispatcher(sc_core::sc_module_name name, const Machine
     : sc_module(name), in("in"), bus_socket("bus_socket"), m_processors(std::move(processors)),
       m_policy(make_dispatch_policy(dispatch_name(config.dispatch))),
       m_inbox(std::string(basename()) + ".queue", config.queue_capacity), m_time(config.style == TimingStyle::lt),
-      m_dispatched(m_processors.size(), 0)
+      m_flow(config.flow), m_dispatched(m_processors.size(), 0)
 {
     in.bind(*this);
     SC_HAS_PROCESS(ClusterDispatcher);
     SC_THREAD(run);
 }
 
+bool ClusterDispatcher::place(TimedPacket &tp)
+{
+    m_target = -1; // unbounded or --flow none: chosen once the packet has arrived
+    if (m_flow == FlowControl::none || m_inbox.capacity() == 0) return true;
+    int k = m_policy->candidate(m_processors);
+    BufferSpace &room = m_processors[k]->queue().space_for(tp);
+    if (!room.available()) {
+        room.on_release(m_room);
+        return false;
+    }
+    room.take();
+    tp.reserved = true;
+    m_policy->chosen(k);
+    m_target = k;
+    return true;
+}
+
 void ClusterDispatcher::run()
 {
     for (;;) {
         if (m_inbox.empty()) m_time.sync();
-        TimedPacket tp = m_inbox.pop_blocking();
+        sc_core::sc_time before = m_time.now();
+        TimedPacket tp = m_inbox.take_first([this](TimedPacket &c) { return place(c); }, m_room);
+        m_time.settle(before);        // it may have waited for room
         m_time.advance_to(tp.stamp);  // cannot move a packet before it arrived
-        int k = m_policy->choose(m_processors);
+        int k = m_target >= 0 ? m_target : m_policy->choose(m_processors);
         m_busy_flag = true;
         // Packet write over the bus; the delay argument carries this process's local offset.
         sc_core::sc_time delay = m_time.now() - sc_core::sc_time_stamp();

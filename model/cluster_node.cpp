@@ -51,6 +51,7 @@ ClusterNode::~ClusterNode() = default;
 void ClusterNode::accept(const TimedPacket &p) { m_dispatcher->accept(p); }
 bool ClusterNode::can_accept(const TimedPacket &p) const { return m_dispatcher->can_accept(p); }
 void ClusterNode::on_space(const TimedPacket &p, sc_core::sc_event &e) { m_dispatcher->on_space(p, e); }
+BufferSpace *ClusterNode::room_for(const TimedPacket &p) { return m_dispatcher->room_for(p); }
 
 void ClusterNode::register_queues(QueueRegistry &reg)
 {

@@ -41,6 +41,7 @@ class ClusterNode : public sc_core::sc_module, public PacketSinkIf {
     void accept(const TimedPacket &p) override;
     bool can_accept(const TimedPacket &p) const override;
     void on_space(const TimedPacket &p, sc_core::sc_event &e) override;
+    BufferSpace *room_for(const TimedPacket &p) override;
     std::vector<IntersectionProcessor *> processors() const;
     void register_queues(QueueRegistry &reg);  // the processors' and the dispatcher's
 

@@ -2,6 +2,7 @@
 // queue, and holding packets while the next buffer is full.
 #include "comm_unit.h"
 
+#include "flow_control.h"
 #include "rt_step.h"
 #include "timed_packet.h"
 
@@ -30,7 +31,7 @@ void CommUnit::end_of_elaboration()
     m_held.resize(link_in.size() + 1);
 }
 
-PacketSinkIf &CommUnit::next_hop(const TimedPacket &p, bool &is_local)
+PacketSinkIf &CommUnit::next_hop(TimedPacket &p, bool &is_local)
 {
     int owner = m_owner[rt_packet_cell(m_grid, &p.packet)];
     is_local = owner == m_node;
@@ -38,20 +39,39 @@ PacketSinkIf &CommUnit::next_hop(const TimedPacket &p, bool &is_local)
     int dir = m_routing.next_direction(m_node, owner);
     int port = dir >= 0 ? m_port_of_dir[dir] : -1;
     if (port < 0) SC_REPORT_FATAL(name(), "no link toward the packet's owner");
+    p.vc = link_channel(m_flow, m_routing, p, m_node, dir);
     return *link_out[port];
+}
+
+BufferSpace *CommUnit::room_for(const TimedPacket &p)
+{
+    TimedPacket q = p;
+    q.last_dir = -1; // it leaves the processor side
+    bool is_local = false;
+    return next_hop(q, is_local).room_for(q);
+}
+
+bool CommUnit::processor_held() const
+{
+    for (const auto &kv : m_held[processor_source()])
+        if (!kv.second.empty()) return true;
+    return false;
 }
 
 void CommUnit::accept(const TimedPacket &p)
 {
     if (p.from_host) { // a primary at its entry node: straight to the processor side
+        TimedPacket q = p;
         bool is_local = false;
-        next_hop(p, is_local).accept(p);
+        next_hop(q, is_local).accept(q);
         m_local++;
         return;
     }
     // Called in the processor side's thread: it waits while one of its packets is held.
-    while (!m_held[processor_source()].empty()) sc_core::wait(m_processor_room);
-    enqueue(p, p.stamp, processor_source(), nullptr);
+    while (processor_held()) sc_core::wait(m_processor_room);
+    TimedPacket q = p;
+    q.last_dir = -1;
+    enqueue(q, q.stamp, processor_source(), nullptr);
 }
 
 void CommUnit::enqueue(const TimedPacket &p, const sc_core::sc_time &stamp, int source, BufferSpace *credit)
@@ -111,7 +131,8 @@ void CommUnit::deliver()
             return;
         }
         uint32_t h = m_arrivals.pop();
-        auto &held = m_held[m_arrivals.at(h).source];
+        const ArrivalQueue::Arrival &a = m_arrivals.at(h);
+        auto &held = m_held[a.source][2 * a.item.cls + a.item.vc];
         if (!held.empty() || !forward(h)) held.push_back(h);
     }
     if (!m_arrivals.empty()) m_due.notify(m_arrivals.next_time() - now);
@@ -120,16 +141,21 @@ void CommUnit::deliver()
 void CommUnit::retry()
 {
     for (size_t s = 0; s < m_held.size(); s++) {
-        auto &held = m_held[s];
-        while (!held.empty() && forward(held.front())) held.pop_front();
-        if (static_cast<int>(s) == processor_source() && held.empty()) m_processor_room.notify(sc_core::SC_ZERO_TIME);
+        for (auto it = m_held[s].begin(); it != m_held[s].end();) {
+            auto &held = it->second;
+            while (!held.empty() && forward(held.front())) held.pop_front();
+            it = held.empty() ? m_held[s].erase(it) : std::next(it);
+        }
+        if (static_cast<int>(s) == processor_source() && m_held[s].empty())
+            m_processor_room.notify(sc_core::SC_ZERO_TIME);
     }
 }
 
 size_t CommUnit::held() const
 {
     size_t n = 0;
-    for (const auto &h : m_held) n += h.size();
+    for (const auto &source : m_held)
+        for (const auto &kv : source) n += kv.second.size();
     return n;
 }
 

@@ -14,14 +14,18 @@
 // link books it in the order it is handled, which is where the style's timing error comes from.
 // Q = 0 is the approximately-timed path exactly.
 //
-// Room: a packet whose next buffer is full is held here, in a FIFO per source, and later packets
-// from that source queue behind it; the next buffer's release wakes the retry method. A held
-// packet keeps its link slot (credit) until it moves on. The processor side waits (in its
-// thread) at its next hand-over while one of its packets is held.
+// Room: a packet whose next buffer is full is held here, in a FIFO per source and buffer it
+// came from (class and virtual channel of the incoming link; one per source under --flow none),
+// and later packets from that buffer queue behind it; the next buffer's release wakes the retry
+// method. A held packet keeps its link slot (credit) until it moves on. The processor side
+// waits (in its thread) at its next hand-over while one of its packets is held; under the class
+// scheme its packets come with their next slot reserved and are never held. A packet going on
+// to a link gets its virtual channel there by the dateline rule (flow_control.h).
 #pragma once
 
 #include <array>
 #include <deque>
+#include <map>
 #include <systemc>
 #include <tlm>
 #include <tlm_utils/multi_passthrough_target_socket.h>
@@ -32,6 +36,7 @@
 #include "packet_sink_if.h"
 #include "rt_grid.h"
 #include "routing.h"
+#include "sim_config.h"
 
 namespace torusrt {
 
@@ -49,6 +54,9 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf {
              const int32_t *cell_owner, const sc_core::sc_time &lookahead = sc_core::SC_ZERO_TIME);
 
     void accept(const TimedPacket &p) override;
+    BufferSpace *room_for(const TimedPacket &p) override;
+    // Selects the flow-control scheme (virtual channels; default none).
+    void set_flow(FlowControl flow) { m_flow = flow; }
     // Records which link_out port index serves direction `dir` (call at elaboration).
     void set_link_port(int dir, int port_index) { m_port_of_dir[dir] = port_index; }
 
@@ -59,7 +67,9 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf {
     CommUnitStats stats() const { return {m_local, m_transit, held()}; }
 
   private:
-    PacketSinkIf &next_hop(const TimedPacket &p, bool &local);
+    // The next hop of `p`, setting its channel when that is a link.
+    PacketSinkIf &next_hop(TimedPacket &p, bool &local);
+    bool processor_held() const;
     bool forward(uint32_t handle);
     void b_transport(int id, tlm::tlm_generic_payload &trans, sc_core::sc_time &delay);
     void enqueue(const TimedPacket &p, const sc_core::sc_time &stamp, int source, BufferSpace *credit);
@@ -78,7 +88,9 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf {
     uint64_t m_local = 0, m_transit = 0;
     sc_core::sc_time m_lookahead; // the quantum when loosely timed, else 0
     ArrivalQueue m_arrivals;
-    std::vector<std::deque<uint32_t>> m_held; // per source, arrival handles
+    FlowControl m_flow = FlowControl::none;
+    // Per source, per incoming buffer (2 x class + channel), arrival handles.
+    std::vector<std::map<uint32_t, std::deque<uint32_t>>> m_held;
     sc_core::sc_event m_due, m_run, m_retry, m_processor_room;
 };
 

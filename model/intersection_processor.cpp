@@ -3,6 +3,8 @@
 
 #include <stdexcept>
 
+#include "flow_control.h"
+
 namespace torusrt {
 
 IntersectionProcessor::IntersectionProcessor(sc_core::sc_module_name name, const MachineConfig &config,
@@ -27,6 +29,45 @@ void IntersectionProcessor::on_test(void *ctx, uint32_t object)
     static_cast<IntersectionProcessor *>(ctx)->m_tested.push_back(object);
 }
 
+bool IntersectionProcessor::prepare(TimedPacket &tp)
+{
+    m_tested.clear();
+    rt_status st = rt_step(m_scene, m_grid, m_owner, m_owner_id, &m_params, &tp.packet, &m_result);
+    if (st != RT_OK) SC_REPORT_FATAL(name(), rt_status_name(st));
+    m_outputs.clear();
+    uint32_t cls = output_class(m_config.flow, tp.cls);
+    for (size_t i = 0; i < m_result.created_count; i++) m_outputs.push_back(TimedPacket{m_result.created[i], {}});
+    if (m_result.fate == RT_FATE_FORWARDED) m_outputs.push_back(TimedPacket{tp.packet, {}});
+    for (TimedPacket &o : m_outputs) o.cls = cls;
+    // Unbounded buffers always have room: nothing to reserve (the timing is the same either way).
+    return m_config.flow == FlowControl::none || m_config.queue_capacity == 0 || reserve_outputs();
+}
+
+bool IntersectionProcessor::reserve_outputs()
+{
+    // Outputs that would share a first buffer go one class up each (see flow_control.h), so
+    // every output needs one slot of its own and a step fits buffers of capacity 1.
+    std::vector<BufferSpace *> base(m_outputs.size()), first(m_outputs.size());
+    for (size_t i = 0; i < m_outputs.size(); i++) {
+        first[i] = base[i] = out->room_for(m_outputs[i]);
+        uint32_t rank = 0;
+        for (size_t j = 0; j < i; j++) rank += base[j] == base[i];
+        if (!rank) continue;
+        m_outputs[i].cls += rank;
+        first[i] = out->room_for(m_outputs[i]);
+    }
+    for (size_t i = 0; i < m_outputs.size(); i++)
+        if (first[i] && !first[i]->available()) {
+            first[i]->on_release(m_room);
+            return false;
+        }
+    for (size_t i = 0; i < m_outputs.size(); i++) {
+        if (first[i]) first[i]->take();
+        m_outputs[i].reserved = true;
+    }
+    return true;
+}
+
 void IntersectionProcessor::run()
 {
     bool fetching = fetch.size() > 0;
@@ -36,13 +77,12 @@ void IntersectionProcessor::run()
     }
     for (;;) {
         if (m_queue.empty()) m_time.sync();
-        TimedPacket tp = m_queue.pop_blocking();
+        sc_core::sc_time before = m_time.now();
+        TimedPacket tp = m_queue.take_first([this](TimedPacket &c) { return prepare(c); }, m_room);
+        m_time.settle(before); // it may have waited for room
         m_time.advance_to(tp.stamp); // never start a packet before it arrived
         m_packets_in++;
         m_busy_flag = true;
-        m_tested.clear();
-        rt_status st = rt_step(m_scene, m_grid, m_owner, m_owner_id, &m_params, &tp.packet, &m_result);
-        if (st != RT_OK) SC_REPORT_FATAL(name(), rt_status_name(st));
         rt_ops_add(&m_ops, &m_result.ops);
         sc_core::sc_time start = m_time.now();
         for (uint32_t obj : m_tested) fetch->fetch(m_index, obj, m_time);
@@ -65,16 +105,12 @@ void IntersectionProcessor::run()
         for (size_t i = 0; i < m_result.created_count; i++) m_ledger.created(m_result.created[i].kind);
         if (m_result.fate == RT_FATE_FORWARDED) m_ledger.forwarded();
         else m_ledger.consumed(tp.packet.kind, now);
-        for (size_t i = 0; i < m_result.created_count; i++) {
-            out->accept(TimedPacket{m_result.created[i], now});
-            m_time.settle(now); // a full queue may have held us
+        for (TimedPacket &o : m_outputs) {
+            o.stamp = now;
+            out->accept(o);
+            m_time.settle(now); // a full queue may have held us (--flow none)
         }
-        m_packets_out += m_result.created_count;
-        if (m_result.fate == RT_FATE_FORWARDED) {
-            out->accept(TimedPacket{tp.packet, now});
-            m_time.settle(now);
-            m_packets_out++;
-        }
+        m_packets_out += m_outputs.size();
     }
 }
 

@@ -1,7 +1,10 @@
 // intersection_processor.h - an intersection processor (IP): takes packets from its input queue,
 // runs the kernel's packet step over the cells its node owns, spends the time the step's
 // operation counts cost, writes contributions to the frame buffer and hands new and forwarded
-// packets to its communication unit.
+// packets to its communication unit. Under the class scheme (flow_control.h) it takes up a
+// packet only once it has reserved a slot for each of the packet's outputs in the buffer the
+// output goes to first, trying its waiting packets in queue order; so it never waits with a
+// packet in hand. Under --flow none it takes the oldest packet and waits at each hand-over.
 #pragma once
 
 #include <string>
@@ -40,7 +43,8 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf {
 
     void accept(const TimedPacket &p) override { m_queue.push_blocking(p); }
     bool can_accept(const TimedPacket &p) const override { return m_queue.has_room(p); }
-    void on_space(const TimedPacket &, sc_core::sc_event &e) override { m_queue.space().on_release(e); }
+    void on_space(const TimedPacket &p, sc_core::sc_event &e) override { m_queue.space_for(p).on_release(e); }
+    BufferSpace *room_for(const TimedPacket &p) override { return &m_queue.space_for(p); }
 
     // Statistics, read after the run.
     const rt_op_counts &ops() const { return m_ops; }
@@ -51,7 +55,7 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf {
     IpStats stats() const { return {m_busy.to_seconds(), m_packets_in, m_packets_out, m_queue.high_water(), m_ops}; }
     void register_queues(QueueRegistry &reg)
     {
-        reg.add(std::string(name()) + ".input", m_owner_id, m_queue.space(), m_queue.depth_trace(),
+        reg.add(std::string(name()) + ".input", QueueKind::ip, m_owner_id, m_queue.spaces(), m_queue.depth_trace(),
                 std::string(name()) + ".queue_depth");
     }
     int index() const { return m_index; }
@@ -59,6 +63,10 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf {
 
   private:
     void run();
+    // Runs the step of `tp` (updated in place) and lists its outputs; under the class scheme
+    // reserves their slots and returns false (nothing reserved) if one has no room.
+    bool prepare(TimedPacket &tp);
+    bool reserve_outputs();
     static void on_test(void *ctx, uint32_t object);
 
     const MachineConfig &m_config;
@@ -72,6 +80,8 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf {
     rt_step_params m_params;
     rt_step_result m_result;
     std::vector<uint32_t> m_tested; // objects tested in the current step (shared data only)
+    std::vector<TimedPacket> m_outputs; // the current step's created packets, then the forwarded one
+    sc_core::sc_event m_room;           // an output's buffer released a slot
     rt_op_counts m_ops{};
     sc_core::sc_time m_busy = sc_core::SC_ZERO_TIME;
     uint64_t m_packets_in = 0, m_packets_out = 0;

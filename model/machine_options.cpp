@@ -51,6 +51,7 @@ OptionList machine_options(const MachineConfig &m)
     o.emplace_back("topology", topology_name(m.topology));
     o.emplace_back("cells", dims(m.cells));
     o.emplace_back("queue", std::to_string(m.queue_capacity));
+    o.emplace_back("flow", flow_name(m.flow));
     o.emplace_back("timing", m.timing_file);
     o.emplace_back("link-us", number(timing_value(m.timing, "link")));
     o.emplace_back("packet-bytes", number(timing_value(m.timing, "packet_bytes")));

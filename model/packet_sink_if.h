@@ -6,6 +6,7 @@
 
 #include <systemc>
 
+#include "buffer_space.h"
 #include "timed_packet.h"
 
 namespace torusrt {
@@ -15,6 +16,9 @@ class PacketSinkIf : public virtual sc_core::sc_interface {
     virtual void accept(const TimedPacket &p) = 0;
     virtual bool can_accept(const TimedPacket &) const { return true; }
     virtual void on_space(const TimedPacket &, sc_core::sc_event &) {}
+    // The buffer `p` would take a slot in if handed over now (null: none, no bound). A
+    // processor reserves its outputs' slots there before it takes up a packet (flow_control.h).
+    virtual BufferSpace *room_for(const TimedPacket &) { return nullptr; }
 };
 
 }  // namespace torusrt

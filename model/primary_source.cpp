@@ -44,14 +44,21 @@ void PrimarySource::plan(const int32_t *owner)
         }
 }
 
-TimedPacket PrimarySource::take(int node)
+TimedPacket PrimarySource::peek(int node) const
 {
-    uint32_t pixel = m_pixels[node][m_next[node]++];
+    uint32_t pixel = m_pixels[node][m_next[node]];
     TimedPacket t{};
     int enters = 0;
     rt_primary_packet(m_scene, m_grid, pixel % m_width, pixel / m_width, &t.packet, &enters);
     t.stamp = inject_time(pixel);
     t.from_host = true;
+    return t;
+}
+
+TimedPacket PrimarySource::take(int node)
+{
+    TimedPacket t = peek(node);
+    m_next[node]++;
     if (!pending(node)) { // the node's list is spent: give its memory back
         std::vector<uint32_t>().swap(m_pixels[node]);
         m_next[node] = 0;

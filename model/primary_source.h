@@ -36,6 +36,8 @@ class PrimarySource {
     sc_core::sc_time next_time(int node) const { return inject_time(m_pixels[node][m_next[node]]); }
     // Makes the node's next primary packet (pending(node) must hold).
     TimedPacket take(int node);
+    // The packet take() would make, without taking it.
+    TimedPacket peek(int node) const;
 
   private:
     void plan(const int32_t *owner);

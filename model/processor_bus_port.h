@@ -40,6 +40,7 @@ class ProcessorBusPort : public sc_core::sc_module, public PacketSinkIf, public 
                      const std::vector<uint32_t> &node_objects, int m);
 
     void accept(const TimedPacket &p) override;
+    BufferSpace *room_for(const TimedPacket &p) override { return to_comm_unit->room_for(p); }
     void fetch(int reader, uint32_t object, TimeKeeper &time) override;
 
     uint64_t remote_reads() const { return m_remote_reads; }

@@ -47,6 +47,14 @@ int Routing::next_direction(int from, int to) const
     return -1;
 }
 
+bool Routing::wraps(int n, int dir) const
+{
+    int axis = dir / 2;
+    if (!m_torus || m_dims[axis] < 2) return false;
+    int c = coords(n)[axis];
+    return dir % 2 == 0 ? c == m_dims[axis] - 1 : c == 0;
+}
+
 int Routing::hops(int from, int to) const
 {
     int h = 0;

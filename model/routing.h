@@ -21,6 +21,9 @@ class Routing {
     // Direction of the first hop from `from` toward `to` (x, then y, then z; on a ring the
     // shorter way, + on a tie), or -1 if from == to.
     int next_direction(int from, int to) const;
+    // Whether the link leaving `node` in direction `dir` is its ring's wrap-around link (from
+    // the last coordinate to 0 going +, from 0 to the last going -): the dateline.
+    bool wraps(int node, int dir) const;
     // Hops from `from` to `to` by dimension-order routing.
     int hops(int from, int to) const;
 

@@ -4,6 +4,7 @@
 
 #include "cluster_node.h"
 #include "rt_memory.h"
+#include "flow_report.h"
 #include "run_report.h"
 #include "stats_json.h"
 #include "torus_system.h"
@@ -29,8 +30,11 @@ MemoryReport flat_memory(const SimConfig &config, const rt_scene *scene, const r
 
 QueueStats queue_stats(const QueueRef &q)
 {
-    const BufferSpace &s = *q.space;
-    return {q.name, q.node, s.capacity(), s.used(), s.high_water(), s.blocked_writers(), s.stalled_time().to_seconds()};
+    const ClassBuffers &b = *q.buffers;
+    uint64_t used = 0;
+    for (uint32_t i = 0; i < b.count(); i++) used += b.find(i) != nullptr;
+    return {q.name, queue_kind_name(q.kind), q.node, used, b.capacity(), b.used(), b.high_water(), b.blocked_writers(),
+            b.stalled_time().to_seconds()};
 }
 
 void collect_modules(TorusSystem &top, RunReport &r)
@@ -81,6 +85,7 @@ RunReport collect(const SimConfig &config, TorusSystem &top, const PacketLedger 
     r.sim_time_s = deadlock ? sc_core::sc_time_stamp().to_seconds() : ledger.image_time().to_seconds();
     r.facts = facts;
     collect_modules(top, r);
+    r.flow = flow_report_json(config, top, scene);
     r.packets = ledger.totals();
     r.conserved = ledger.conserved();
 

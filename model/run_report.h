@@ -80,6 +80,7 @@ struct RunReport {
     nlohmann::json units_parallel_by_p;  // preprocess_json's table
     nlohmann::json mapping;              // the mapping set-up's facts (null: none given)
     DeadlockReport deadlock;             // status "deadlock" only
+    nlohmann::json flow;                 // flow control: capacities, packet memory, classes (flow_report.h)
     // An animation (no frames: a single image).
     std::vector<FrameRecord> frames;
     std::string remap_policy, camera_source, output_pattern;

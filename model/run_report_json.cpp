@@ -113,7 +113,9 @@ nlohmann::json memory_json(const RunReport &r)
 nlohmann::json queue_json(const QueueStats &q)
 {
     return {{"name", q.name},
+            {"kind", q.kind},
             {"node", q.node},
+            {"buffers_used", q.buffers_used},
             {"capacity", q.capacity},
             {"occupancy", q.occupancy},
             {"high_water", q.high_water},
@@ -187,6 +189,7 @@ nlohmann::json to_json(const RunReport &r)
         j["camera_source"] = r.camera_source;
         j["output_pattern"] = r.output_pattern;
     }
+    j["flow"] = r.flow;
     if (r.status == "deadlock") j["deadlock"] = deadlock_json(r.deadlock);
     if (!r.clusters.empty()) clusters_to_json(r, j);
     return j;

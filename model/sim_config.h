@@ -31,6 +31,7 @@ enum class TimingStyle { at, lt };
 enum class DataMode { replicated, shared };
 enum class ArbiterPolicy { round_robin, fixed_priority };
 enum class DispatchPolicy { round_robin, shortest_queue };
+enum class FlowControl { none, classes }; // see flow_control.h
 
 // The names the options take and the reports print (the arbiter and dispatch names are the
 // ones their registries know).
@@ -41,6 +42,7 @@ constexpr NamedValue<ArbiterPolicy> kArbiterNames[] = {{ArbiterPolicy::round_rob
                                                       {ArbiterPolicy::fixed_priority, "fixed-priority"}};
 constexpr NamedValue<DispatchPolicy> kDispatchNames[] = {{DispatchPolicy::round_robin, "round-robin"},
                                                         {DispatchPolicy::shortest_queue, "shortest-queue"}};
+constexpr NamedValue<FlowControl> kFlowNames[] = {{FlowControl::classes, "classes"}, {FlowControl::none, "none"}};
 constexpr NamedValue<rt_map_kind> kMappingNames[] = {{RT_MAP_BLOCK, "block"},
                                                     {RT_MAP_CYCLIC, "cyclic"},
                                                     {RT_MAP_BLOCK_CYCLIC, "block-cyclic"},
@@ -57,7 +59,8 @@ struct MachineConfig {
     int block = 1;                          // block size of block-cyclic, K of cost:K
     std::string map_file;                   // --map-file: explicit cell -> node table
     std::array<unsigned, 2> pilot_size{0, 0}; // --pilot-size for --map cost (0 = the image's)
-    unsigned queue_capacity = 0;            // packets per queue, 0 = unbounded
+    unsigned queue_capacity = 0;            // packets per buffer (per class), 0 = unbounded
+    FlowControl flow = FlowControl::classes; // deadlock-free class split, or one class (none)
     rt_timing timing{};                     // operation and transfer times
     std::string timing_profile;             // label: the profile, with " + FILE" for a timing file
     std::string timing_base;                // the built-in profile the table started from
@@ -109,5 +112,6 @@ inline const char *style_name(TimingStyle s) { return name_in(kStyleNames, s); }
 inline const char *data_mode_name(DataMode d) { return name_in(kDataModeNames, d); }
 inline const char *arbiter_name(ArbiterPolicy a) { return name_in(kArbiterNames, a); }
 inline const char *dispatch_name(DispatchPolicy d) { return name_in(kDispatchNames, d); }
+inline const char *flow_name(FlowControl f) { return name_in(kFlowNames, f); }
 
 }  // namespace torusrt

@@ -13,8 +13,15 @@ namespace torusrt {
 struct TimedPacket {
     rt_packet packet;       // the kernel's packet
     sc_core::sc_time stamp; // send time; after a link, arrival time (loosely-timed runs use it)
-    bool from_host = false; // a primary packet from the host: it waits in the host's memory, so
-                            // it does not count against a queue's capacity
+    bool from_host = false; // a primary packet from the host, not yet in any buffer
+    // Flow control (flow_control.h): the packet's class, its virtual channel on the link it is
+    // on, the direction of the last link it crossed (-1: none since it left a processor), and
+    // whether its slot in the next buffer was already taken when its processor took up its
+    // parent (then the next buffer does not take one again).
+    uint32_t cls = 0;
+    uint8_t vc = 0;
+    int8_t last_dir = -1;
+    bool reserved = false;
 };
 
 // Packets cross links and the cluster bus as a generic payload (command WRITE, data = the packet's

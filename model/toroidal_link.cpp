@@ -7,7 +7,7 @@ ToroidalLink::ToroidalLink(sc_core::sc_module_name name, const MachineConfig &co
     : sc_module(name), socket("socket"), in("in"),
       m_packet_time(rt_timing_link_packet_us(&config.timing), sc_core::SC_US),
       m_packet_bytes(config.timing.packet_bytes), m_from(from), m_to(to), m_dir(dir),
-      m_space(config.queue_capacity)
+      m_spaces(config.queue_capacity)
 {
     in.bind(*this);
     m_ext = new PacketExtension;
@@ -20,8 +20,9 @@ ToroidalLink::ToroidalLink(sc_core::sc_module_name name, const MachineConfig &co
 
 void ToroidalLink::accept(const TimedPacket &p)
 {
-    m_space.take_blocking();
+    if (!p.reserved) space_for(p).take_blocking();
     TimedPacket q = p;
+    q.reserved = false;
     // A thread that waited for room sends no earlier than now.
     if (q.stamp < sc_core::sc_time_stamp()) q.stamp = sc_core::sc_time_stamp();
     send(q);
@@ -40,7 +41,8 @@ void ToroidalLink::send(const TimedPacket &p)
     }
     m_ext->item = p;
     m_ext->item.stamp = m_free_at;
-    m_ext->credit = &m_space;
+    m_ext->item.last_dir = static_cast<int8_t>(m_dir);
+    m_ext->credit = &space_for(p);
     m_trans.set_command(tlm::TLM_WRITE_COMMAND);
     m_trans.set_address(static_cast<uint64_t>(m_to));
     // Data = the packet as held in memory; its size on the wire is a timing parameter.

@@ -4,10 +4,10 @@
 // communication unit as a TLM-2.0 b_transport whose delay is annotated with the queueing and the
 // serialisation, and the receiver delivers it at that time from its arrival queue.
 //
-// Room: with --queue N the link holds at most N packets, counted from the moment the sender
-// hands one over until the receiver has taken it on (waiting, on the wire, or held at the
-// receiver for room further on). The transaction carries the slot (the credit); the receiver
-// releases it.
+// Room: with --queue N the link holds at most N packets of each class and virtual channel
+// (one buffer under --flow none), counted from the moment the sender hands one over until the
+// receiver has taken it on (waiting, on the wire, or held at the receiver for room further on).
+// The transaction carries the slot (the credit); the receiver releases it.
 #pragma once
 
 #include <deque>
@@ -16,7 +16,7 @@
 #include <tlm_utils/simple_initiator_socket.h>
 #include <utility>
 
-#include "buffer_space.h"
+#include "class_buffers.h"
 #include "module_stats.h"
 #include "packet_sink_if.h"
 #include "queue_registry.h"
@@ -33,8 +33,13 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
 
     // Waits (in a thread) for room, then sends. A method caller checks can_accept() first.
     void accept(const TimedPacket &p) override;
-    bool can_accept(const TimedPacket &) const override { return m_space.available(); }
-    void on_space(const TimedPacket &, sc_core::sc_event &e) override { m_space.on_release(e); }
+    bool can_accept(const TimedPacket &p) const override
+    {
+        const BufferSpace *s = m_spaces.find(index_of(p));
+        return p.reserved || !s || s->available();
+    }
+    void on_space(const TimedPacket &p, sc_core::sc_event &e) override { space_for(p).on_release(e); }
+    BufferSpace *room_for(const TimedPacket &p) override { return &space_for(p); }
 
     int from() const { return m_from; }
     int to() const { return m_to; }
@@ -42,20 +47,26 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
     uint64_t packets() const { return m_packets; }
     double bytes() const { return m_bytes; }
     const sc_core::sc_time &busy_time() const { return m_busy; }
-    BufferSpace &queue() { return m_space; }
-    LinkStats stats() const { return {m_from, m_to, m_dir, m_packets, m_bytes, m_busy.to_seconds(), m_space.high_water()}; }
-    void register_queues(QueueRegistry &reg) { reg.add(name(), m_from, m_space, m_space.depth_trace()); }
+    // The link's buffers, every class and channel.
+    ClassBuffers &queue() { return m_spaces; }
+    LinkStats stats() const { return {m_from, m_to, m_dir, m_packets, m_bytes, m_busy.to_seconds(), m_spaces.high_water()}; }
+    void register_queues(QueueRegistry &reg)
+    {
+        reg.add(name(), QueueKind::link, m_from, m_spaces, m_spaces.depth_trace());
+    }
     // Traced busy line; asking for it turns on the (otherwise idle) process that drives it.
     bool &busy_trace();
 
   private:
+    static uint32_t index_of(const TimedPacket &p) { return 2 * p.cls + p.vc; }
+    BufferSpace &space_for(const TimedPacket &p) { return m_spaces.at(index_of(p)); }
     void send(const TimedPacket &p);
     void drive_busy_trace();
 
     sc_core::sc_time m_packet_time; // serialisation time of one packet
     double m_packet_bytes;
     int m_from, m_to, m_dir;
-    BufferSpace m_space;
+    ClassBuffers m_spaces;
     sc_core::sc_time m_free_at = sc_core::SC_ZERO_TIME; // busy until
     uint64_t m_packets = 0;
     double m_bytes = 0;

@@ -22,6 +22,7 @@ TorusSystem::TorusSystem(sc_core::sc_module_name name, const MachineConfig &conf
     for (int n = 0; n < nodes; n++) {
         m_comm.push_back(std::make_unique<CommUnit>(("cu_" + std::to_string(n)).c_str(), n, m_routing, grid, cell_owner,
                                                     lookahead));
+        m_comm[n]->set_flow(config.flow);
         if (config.cluster == 1) {
             auto ip = std::make_unique<IntersectionProcessor>(("ip_" + std::to_string(n)).c_str(), config, scene,
                                                               grid, cell_owner, n, n, ledger);

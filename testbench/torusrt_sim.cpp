@@ -33,6 +33,7 @@ struct CommandLine {
     // The machine: --config reads these, --dump-config writes them (machine_options.cpp).
     std::string ips = "1", map = "cyclic", topology = "torus", style = "at", quantum = "0", data = "replicated";
     std::string arbiter = "round-robin", dispatch = "round-robin", link_us, packet_bytes, link_bytes_per_us;
+    std::string flow = "classes";
     long long queue = 0;
     int cluster = 1;
     MappingOptions mapping;
@@ -118,6 +119,7 @@ MachineConfig machine_from(const CommandLine &cl, const CommonSettings &common)
     m.ips = parse_dims_1_to_3("--ips", cl.ips, 1, kMaxNodes);
     m.mapping = parse_mapping(cl.map, m.block);
     m.topology = value_named("--topology", cl.topology, kTopologyNames);
+    m.flow = value_named("--flow", cl.flow, kFlowNames);
     if (cl.queue < 0 || cl.queue > kMaxQueue)
         throw UserError("--queue: must be 0 (unbounded) to " + std::to_string(kMaxQueue), 2);
     m.queue_capacity = static_cast<unsigned>(cl.queue);
@@ -154,7 +156,10 @@ void declare_machine_options(CLI::App &app, CommandLine &cl)
     app.add_option("--ips", cl.ips, "torus nodes: P, PXxPY or PXxPYxPZ (default 1, at most 4096)")->type_name("DIMS");
     app.add_option("--map", cl.map, "cell mapping: block, cyclic (default), block-cyclic:B, cost or cost:K")->type_name("KIND");
     app.add_option("--topology", cl.topology, "torus (default, rings) or mesh (no wrap-around)")->type_name("KIND");
-    app.add_option("--queue", cl.queue, "capacity of every packet queue, 0 = unbounded (default)")->type_name("N");
+    app.add_option("--queue", cl.queue, "capacity of every packet buffer (of each class), 0 = unbounded (default)")
+        ->type_name("N");
+    app.add_option("--flow", cl.flow, "flow control: classes (default, deadlock-free class-split buffers) or none\n"
+                                     "(one class; finite buffers may deadlock, exit 3)")->type_name("SCHEME");
     app.add_option("--link-us", cl.link_us, "time per packet on a link: microseconds, or with a unit ns, us, ms, s\n"
                                          "(default 50)")->type_name("TIME");
     app.add_option("--packet-bytes", cl.packet_bytes, "packet size on the wire in bytes (default 28)")->type_name("BYTES");

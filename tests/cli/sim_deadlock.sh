@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Finite queues, one outcome each:
-# - a configuration that must deadlock: paper-image1 (two lights) on one IP with --queue 1. Each
+# - a configuration that must deadlock: paper-image1 (two lights) on one IP with --queue 1 and
+#   one packet class (--flow none). Each
 #   hit on a sphere lit by both lights makes two shadow packets whose cells the IP owns itself;
 #   the first fills its input queue, which only that IP drains, so the second can never enter.
 #   The run must end with exit 3, the deadlock message naming the full queue, no image and no
@@ -15,7 +16,7 @@ time_limit 120
 
 f="$SRC/scenes/paper-image1.nff"
 "${run_limited[@]}" "$BUILD/torusrt-sim" "$f" -o "$TMP/dead.png" --stats "$TMP/dead.json" --vcd "$TMP/dead.vcd" \
-    -q --t1 1 --size 16x16 --ips 1 --queue 1 2>"$TMP/err"
+    -q --t1 1 --size 16x16 --ips 1 --queue 1 --flow none 2>"$TMP/err"
 rc=$?
 d="$TMP/dead.json"
 check "one IP, --queue 1: exit 3 (got $rc)" test "$rc" -eq 3

@@ -7,12 +7,15 @@
 # - with every queue one packet smaller than the unbounded run's largest high water, the run is
 #   the unbounded one until that queue is full, so a writer must wait for its reader to take a
 #   packet: a completed run with stall time > 0 and no queue above its capacity.
+# These figures are those of one class per buffer (--flow none), where a queue's high water is
+# the per-IP and per-link one; under the default class split (--flow classes) a queue's high
+# water is that of its fullest class buffer, and with one slot per class buffer writers wait.
 source "$(dirname "$0")/common.bash" "$@"
 need_exe torusrt-sim
 time_limit 300
 
 f="$SRC/scenes/paper-image2.nff"
-opts=(-o "$TMP/a.png" --t1 1 --size 32x32 --ips 2x2x2)
+opts=(-o "$TMP/a.png" --t1 1 --size 32x32 --ips 2x2x2 --flow none)
 "${run_limited[@]}" "$BUILD/torusrt-sim" "$f" "${opts[@]}" --stats "$TMP/a.json" >"$TMP/sum" || fail "unbounded run"
 j="$TMP/a.json"
 line() { grep "^  $1 " "$TMP/sum"; }
@@ -51,4 +54,14 @@ check "--queue $q: nobody left waiting" jq -e 'all(.queues[]; .waiting_writers =
 worst=$(json "$b" '([.queues[].stalled_s] | max) as $m | [.queues[] | select(.stalled_s == $m)][0].name')
 check "--queue $q: summary names the longest stall ($worst) and the total" \
     grep -q "stalled $(json "$b" '[.queues[].stalled_s] | add' | six) s in all, at most $(json "$b" '[.queues[].stalled_s] | max' | six) s ($worst)" "$TMP/sum_b"
+
+"${run_limited[@]}" "$BUILD/torusrt-sim" "$f" -o "$TMP/c.png" --t1 1 --size 32x32 --ips 2x2x2 --queue 1 \
+    --stats "$TMP/c.json" -q
+check "--flow classes --queue 1: completes" test "$?" -eq 0
+c="$TMP/c.json"
+check "--flow classes --queue 1: some writer waited" jq -e '[.queues[].stalled_s] | max > 0' "$c"
+check "--flow classes --queue 1: a stall is no longer than the run" \
+    jq -e '.sim_time_s as $t | all(.queues[]; .stalled_s >= 0 and .stalled_s <= $t)' "$c"
+check "--flow classes --queue 1: no class buffer above one packet, several classes used" \
+    jq -e 'all(.queues[]; .capacity == 1 and .high_water <= 1) and ([.queues[].buffers_used] | max > 1)' "$c"
 finish

@@ -68,23 +68,33 @@ struct Sender : sc_core::sc_module {
     }
 };
 
-// Pushes host packets and then network packets into a queue of capacity 2 nobody drains.
+// Pushes a host packet, then network packets, then packets of class 1, into a queue of
+// capacity 2 (per class) nobody drains: every packet counts, whatever its origin.
 struct Filler : sc_core::sc_module {
     PacketQueue queue{"filler.queue", 2};
-    int host_pushed = 0, network_pushed = 0;
+    int host_pushed = 0, network_pushed = 0, class1_pushed = 0;
+    sc_core::sc_event stop;
     explicit Filler(sc_core::sc_module_name n) : sc_module(n)
     {
         SC_HAS_PROCESS(Filler);
         SC_THREAD(run);
+        SC_THREAD(run_class1);
     }
-    void run()
+    void run_class1()
     {
         for (int i = 0; i < 5; i++) {
             TimedPacket p{};
-            p.from_host = true;
+            p.cls = 1;
             queue.push_blocking(p);
-            host_pushed++;
+            class1_pushed++;
         }
+    }
+    void run()
+    {
+        TimedPacket h{};
+        h.from_host = true;
+        queue.push_blocking(h);
+        host_pushed++;
         for (int i = 0; i < 5; i++) {
             queue.push_blocking(TimedPacket{});
             network_pushed++;
@@ -115,8 +125,10 @@ int sc_main(int, char **)
     check(tx.pushed.size() == 5 && tx.pushed.back() > sc_core::SC_ZERO_TIME, "bounded queue blocks the writer");
     check(link.queue().high_water() == 2, "the link holds up to its capacity, never more");
     check(rx.released == 5 && link.queue().used() == 0, "every slot returned at arrival");
-    check(filler.host_pushed == 5, "host packets never wait for room (they live in host memory)");
-    check(filler.network_pushed == 2, "network packets stop at the capacity");
-    check(filler.queue.blocked_writers() == 1 && filler.queue.full(), "the writer is left waiting on a full queue");
+    check(filler.host_pushed == 1, "the host packet entered");
+    check(filler.network_pushed == 1, "class 0 stops at the capacity, the host packet counted");
+    check(filler.class1_pushed == 2, "class 1 has a capacity of its own");
+    check(filler.queue.size() == 4 && filler.queue.class_high_water() == 2, "4 waiting, at most 2 of a class");
+    check(filler.queue.blocked_writers() == 2 && filler.queue.full(), "both writers are left waiting");
     return harness::finish();
 }
