@@ -115,6 +115,7 @@ Outcome simulate()
     rt_scene *scene = tiny_scene();
     char msg[256] = "";
     rt_grid *grid = rt_grid_new(scene, 2, 1, 1, msg, sizeof msg);
+    if (!grid) return run; // every check of the run then fails; HandCountPremises says why
     int32_t owner[2] = {0, 1};
     SimConfig config;
     config.cells = {2, 1, 1};
