@@ -8,16 +8,13 @@
 #include <systemc>
 
 #include "buffer_space.h"
-#include "harness.h"
+#include "model_test.h"
 
-using harness::check;
+using model_test::us;
 using sc_core::sc_time;
-using sc_core::SC_US;
 using namespace torusrt;
 
 namespace {
-
-sc_time us(double v) { return sc_time(v, SC_US); }
 
 struct Schedule : sc_core::sc_module {
     BufferSpace space{1};
@@ -89,22 +86,62 @@ struct Schedule : sc_core::sc_module {
     }
 };
 
-}  // namespace
+// The schedule's figures and an unbounded space's.
+struct Outcome {
+    int method_runs = 0;
+    bool method_took = false;
+    sc_time b_first_got, b_second_got, stalled_at_56, stalled;
+    unsigned waiting_at_56 = 0;
+    size_t high_water = 0, used = 0, unbounded_high_water = 0;
+    sc_time unbounded_stalled;
+};
 
-int sc_main(int, char **)
+Outcome simulate()
 {
     Schedule s("schedule");
     BufferSpace unbounded(0);
     for (int i = 0; i < 5; i++) unbounded.take();
     sc_core::sc_start();
-    check(s.b_first_got == us(10), "B takes the slot when A releases it at 10 us");
-    check(s.method_runs == 3 && s.method_took, "M is notified at the release and takes the slot at 40 us");
-    check(s.b_second_got == us(60), "B takes the slot at 60 us");
-    check(s.waiting_at_56 == 2, "two writers wait at 56 us");
-    check(s.stalled_at_56 == us(27), "stall time at 56 us: 8 + 15 + 4 (the open interval) = 27 us");
-    check(s.space.stalled_time() == us(31), "stall time: 8 + 15 + 8 = 31 us, overlapping waits counted once");
-    check(s.space.high_water() == 1 && s.space.used() == 0, "high water 1, every slot given back");
-    check(unbounded.stalled_time() == sc_core::SC_ZERO_TIME && unbounded.high_water() == 5,
-          "unbounded: high water 5, no stall");
-    return harness::finish();
+    Outcome run;
+    run.method_runs = s.method_runs, run.method_took = s.method_took;
+    run.b_first_got = s.b_first_got, run.b_second_got = s.b_second_got;
+    run.stalled_at_56 = s.stalled_at_56, run.waiting_at_56 = s.waiting_at_56, run.stalled = s.space.stalled_time();
+    run.high_water = s.space.high_water(), run.used = s.space.used();
+    run.unbounded_high_water = unbounded.high_water(), run.unbounded_stalled = unbounded.stalled_time();
+    return run;
+}
+
+const Outcome &run()
+{
+    static const Outcome r = simulate();
+    return r;
+}
+
+}  // namespace
+
+TEST(BufferSpace, WritersTakeTheSlotWhenItIsReleased)
+{
+    EXPECT_EQ(run().b_first_got, us(10)) << "B takes the slot when A releases it at 10 us";
+    EXPECT_EQ(run().method_runs, 3);
+    EXPECT_TRUE(run().method_took) << "M is notified at the release and takes the slot at 40 us";
+    EXPECT_EQ(run().b_second_got, us(60)) << "B takes the slot at 60 us";
+}
+
+TEST(BufferSpace, StallTimeCountsOverlappingWaitsOnce)
+{
+    EXPECT_EQ(run().waiting_at_56, 2u) << "two writers wait at 56 us";
+    EXPECT_EQ(run().stalled_at_56, us(27)) << "stall time at 56 us: 8 + 15 + 4 (the open interval) = 27 us";
+    EXPECT_EQ(run().stalled, us(31)) << "stall time: 8 + 15 + 8 = 31 us, overlapping waits counted once";
+}
+
+TEST(BufferSpace, GivesEverySlotBack)
+{
+    EXPECT_EQ(run().high_water, 1u);
+    EXPECT_EQ(run().used, 0u);
+}
+
+TEST(BufferSpace, UnboundedNeverStalls)
+{
+    EXPECT_EQ(run().unbounded_stalled, sc_core::SC_ZERO_TIME) << "no stall";
+    EXPECT_EQ(run().unbounded_high_water, 5u);
 }

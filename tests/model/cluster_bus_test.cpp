@@ -1,4 +1,4 @@
-// cluster_bus_test.cpp - harness for the cluster bus, its arbiters and the 2-port memory:
+// cluster_bus_test.cpp - the cluster bus, its arbiters and the 2-port memory:
 //  - arbiters alone: round-robin rotates, fixed priority ranks `top` then ascending index;
 //  - a saturated bus (4 masters, each re-requesting 10 us after its transfer ends, demand ~1.7x
 //    the bus): fixed priority's lowest-priority master waits far longer (grant wait max) than
@@ -9,7 +9,6 @@
 //    the default table and with a changed one;
 //  - loosely-timed: a transfer books the earliest free slot at or after the requester's local
 //    time; reads of an object the memory does not hold fail.
-// Prints one line per check and a final "N passed, M failed"; returns non-zero on any failure.
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -21,6 +20,7 @@
 
 #include "bus_arbiter.h"
 #include "cluster_bus.h"
+#include "model_test.h"
 #include "rt_timing.h"
 #include "two_port_memory.h"
 
@@ -29,14 +29,6 @@ using sc_core::sc_time;
 using sc_core::SC_US;
 
 namespace {
-
-int g_passed = 0, g_failed = 0;
-
-void check(bool ok, const std::string &what)
-{
-    std::printf("%s: %s\n", ok ? "PASS" : "FAIL", what.c_str());
-    (ok ? g_passed : g_failed)++;
-}
 
 bool near(double a, double b) { return std::fabs(a - b) < 1e-9; }
 
@@ -162,34 +154,83 @@ struct LtProbe : sc_core::sc_module {
     }
 };
 
-}  // namespace
+double to_us(const sc_time &t) { return t.to_seconds() * 1e6; }
 
-int sc_main(int, char **)
+// What the arbiters chose alone (before the run).
+struct ArbiterChoices {
+    std::vector<int> rr_all;        // round-robin, 5 picks with all 4 lines requesting
+    std::vector<int> rr_some;       // then 3 picks with lines 1 and 3 requesting
+    int rr_none = 0, fp_all = 0, fp_some = 0, fp_none = 0;
+    bool unknown_threw = false;
+    size_t policies = 0;
+};
+
+ArbiterChoices choose_alone()
 {
+    ArbiterChoices c;
+    RoundRobinArbiter rr("rr_alone", 4);
+    std::vector<bool> all(4, true), some{false, true, false, true};
+    for (int i = 0; i < 5; i++) c.rr_all.push_back(rr.pick(all));
+    for (int i = 0; i < 3; i++) c.rr_some.push_back(rr.pick(some));
+    c.rr_none = rr.pick(std::vector<bool>(4, false));
+    FixedPriorityArbiter fp("fp_alone", 5, 4);
+    c.fp_all = fp.pick({true, true, true, true, true});
+    c.fp_some = fp.pick({false, true, true, true, false});
+    c.fp_none = fp.pick({false, false, false, false, false});
+    try {
+        make_arbiter("lottery", "bad", 2, -1);
+    } catch (const std::invalid_argument &) {
+        c.unknown_threw = true;
+    }
+    c.policies = arbiter_policies().size();
+    return c;
+}
+
+// The saturated buses' figures, per policy; master 3 has the lowest fixed priority.
+struct Saturation {
+    uint64_t transfers = 0;
+    double low_wait_max = 0, high_wait_max = 0, wait_max = 0, low_wait_mean = 0, utilisation = 0;
+    bool one_at_a_time = false;
+    std::string why;
+    std::vector<double> durations;
+};
+
+Saturation saturation(const SaturatedBus &b)
+{
+    Saturation s;
+    ClusterBus &bus = *b.bus;
+    s.transfers = bus.transfers();
+    s.low_wait_max = to_us(bus.grant_stats(3).wait_max);
+    s.high_wait_max = to_us(bus.grant_stats(0).wait_max);
+    s.wait_max = to_us(bus.grant_stats().wait_max);
+    s.low_wait_mean = to_us(bus.grant_stats(3).wait_sum) / bus.grant_stats(3).grants;
+    s.utilisation = bus.busy_time().to_seconds() / sc_core::sc_time_stamp().to_seconds();
+    s.one_at_a_time = grants_never_overlap(bus, s.why);
+    for (const auto &g : bus.log()) s.durations.push_back(to_us(g.end - g.start));
+    return s;
+}
+
+struct Outcome {
+    ArbiterChoices alone;
+    Saturation rr, fp;
+    double one = 0; // one packet transfer, us
+    // Lone masters on a free bus: elapsed time of each transfer, and whether all succeeded.
+    std::vector<double> w, r1, r3, r20, r21, ww;
+    bool w_ok = false, r1_ok = false, r20_ok = false, r21_ok = false, bad_ok = true;
+    double packet_bytes = 0, object_bytes = 0;
+    uint64_t reads_served = 0;
+    // Loosely timed.
+    std::vector<double> lt_ends;
+    bool lt_unheld_failed = false;
+    double lt_wait_max = 0;
+};
+
+Outcome simulate()
+{
+    Outcome run;
     rt_timing timing;
     rt_timing_defaults(&timing);
-
-    // Arbiters alone.
-    {
-        RoundRobinArbiter rr("rr_alone", 4);
-        std::vector<bool> all(4, true), some{false, true, false, true};
-        std::vector<int> seq;
-        for (int i = 0; i < 5; i++) seq.push_back(rr.pick(all));
-        check(seq == std::vector<int>({0, 1, 2, 3, 0}), "round-robin rotates 0 1 2 3 0 when all request");
-        check(rr.pick(some) == 1 && rr.pick(some) == 3 && rr.pick(some) == 1, "round-robin skips idle lines");
-        check(rr.pick(std::vector<bool>(4, false)) == -1, "round-robin returns -1 with no request");
-        FixedPriorityArbiter fp("fp_alone", 5, 4);
-        check(fp.pick({true, true, true, true, true}) == 4, "fixed priority grants `top` (the comm unit) first");
-        check(fp.pick({false, true, true, true, false}) == 1, "fixed priority: lower index wins");
-        check(fp.pick({false, false, false, false, false}) == -1, "fixed priority returns -1 with no request");
-        bool threw = false;
-        try {
-            make_arbiter("lottery", "bad", 2, -1);
-        } catch (const std::invalid_argument &) {
-            threw = true;
-        }
-        check(threw && arbiter_policies().size() == 2, "unknown arbiter policy is rejected by name");
-    }
+    run.alone = choose_alone();
 
     // Saturated buses, one per policy.
     SaturatedBus rr("rr", "round-robin", timing, 4), fp("fp", "fixed-priority", timing, 4);
@@ -233,54 +274,121 @@ int sc_main(int, char **)
 
     sc_core::sc_start();
 
-    // Starvation under fixed priority against round-robin.
-    double rr_low = rr.bus->grant_stats(3).wait_max.to_seconds() * 1e6;
-    double fp_low = fp.bus->grant_stats(3).wait_max.to_seconds() * 1e6;
-    double fp_high = fp.bus->grant_stats(0).wait_max.to_seconds() * 1e6;
-    double rr_max = rr.bus->grant_stats().wait_max.to_seconds() * 1e6;
-    double one = rr.bus->transfer_time(timing.packet_bytes).to_seconds() * 1e6;
+    run.rr = saturation(rr), run.fp = saturation(fp);
+    run.one = to_us(rr.bus->transfer_time(timing.packet_bytes));
+    run.w = w.elapsed_us, run.r1 = r1.elapsed_us, run.r3 = r3.elapsed_us, run.r20 = r20.elapsed_us;
+    run.r21 = r21.elapsed_us, run.ww = ww.elapsed_us;
+    run.w_ok = w.all_ok, run.r1_ok = r1.all_ok, run.r20_ok = r20.all_ok, run.r21_ok = r21.all_ok;
+    run.bad_ok = bad.all_ok;
+    run.packet_bytes = time_bus.packet_bytes(), run.object_bytes = time_bus.object_bytes();
+    run.reads_served = time_mem.reads_served();
+    run.lt_ends = probe.ends_us, run.lt_unheld_failed = probe.unheld_read_failed;
+    run.lt_wait_max = to_us(lt_bus.grant_stats().wait_max);
+    return run;
+}
+
+const Outcome &run()
+{
+    static const Outcome r = simulate();
+    return r;
+}
+
+}  // namespace
+
+TEST(BusArbiter, RoundRobinRotatesAndSkipsIdleLines)
+{
+    EXPECT_EQ(run().alone.rr_all, std::vector<int>({0, 1, 2, 3, 0})) << "rotates 0 1 2 3 0 when all request";
+    EXPECT_EQ(run().alone.rr_some, std::vector<int>({1, 3, 1})) << "skips idle lines";
+    EXPECT_EQ(run().alone.rr_none, -1) << "-1 with no request";
+}
+
+TEST(BusArbiter, FixedPriorityRanksTopThenAscendingIndex)
+{
+    EXPECT_EQ(run().alone.fp_all, 4) << "grants `top` (the comm unit) first";
+    EXPECT_EQ(run().alone.fp_some, 1) << "lower index wins";
+    EXPECT_EQ(run().alone.fp_none, -1) << "-1 with no request";
+}
+
+TEST(BusArbiter, UnknownPolicyIsRejectedByName)
+{
+    EXPECT_TRUE(run().alone.unknown_threw);
+    EXPECT_EQ(run().alone.policies, 2u);
+}
+
+TEST(ClusterBus, SaturatedBusCompletesEveryTransfer)
+{
     std::printf("saturated bus: one transfer %.2f us; grant wait max of master 3: round-robin %.2f us, "
                 "fixed-priority %.2f us; utilisation rr %.3f fp %.3f\n",
-                one, rr_low, fp_low, rr.bus->busy_time().to_seconds() / sc_core::sc_time_stamp().to_seconds(),
-                fp.bus->busy_time().to_seconds() / sc_core::sc_time_stamp().to_seconds());
-    check(rr.bus->transfers() == 800 && fp.bus->transfers() == 800, "every transfer completed on both buses");
-    check(rr_max <= 3 * one + 1e-9,
-          "round-robin: no master waits more than 3 transfers (" + std::to_string(rr_max) + " us)");
-    check(fp_high <= one + 1e-9,
-          "fixed priority: master 0 waits at most one transfer (" + std::to_string(fp_high) + " us)");
-    check(fp_low > 3 * rr_low, "fixed priority starves master 3: grant wait max " + std::to_string(fp_low) +
-                                   " us > 3 x round-robin's " + std::to_string(rr_low) + " us");
-    double rr_mean3 = rr.bus->grant_stats(3).wait_sum.to_seconds() * 1e6 / rr.bus->grant_stats(3).grants;
-    double fp_mean3 = fp.bus->grant_stats(3).wait_sum.to_seconds() * 1e6 / fp.bus->grant_stats(3).grants;
-    check(fp_mean3 > rr_mean3, "fixed priority: master 3's mean wait exceeds round-robin's");
-    std::string why;
-    check(grants_never_overlap(*rr.bus, why), "round-robin bus: one grant at a time " + why);
-    check(grants_never_overlap(*fp.bus, why), "fixed-priority bus: one grant at a time " + why);
-    bool durations = true;
-    for (const auto &g : fp.bus->log()) durations = durations && near((g.end - g.start).to_seconds() * 1e6, one);
-    check(durations && near(one, 0.25 + 14 * 0.5), "packet transfer occupies arbitration + 14 cycles = 7.25 us");
+                run().one, run().rr.low_wait_max, run().fp.low_wait_max, run().rr.utilisation, run().fp.utilisation);
+    EXPECT_EQ(run().rr.transfers, 800u) << "4 masters x 200 transfers";
+    EXPECT_EQ(run().fp.transfers, 800u);
+}
 
-    // Occupancy formula on a free bus (grant wait 0).
-    check(w.elapsed_us.size() == 1 && near(w.elapsed_us[0], 7.25), "packet write: 0.25 + ceil(28/2) x 0.5 = 7.25 us");
-    check(near(r1.elapsed_us[0], 0.25 + 1 * 0.5 + 0.5), "1-byte read: arbitration + 1 cycle + memory = 1.25 us");
-    check(near(r3.elapsed_us[0], 0.25 + 2 * 0.5 + 0.5), "3-byte read: arbitration + 2 cycles + memory = 1.75 us");
-    check(near(r20.elapsed_us[0], 0.25 + 10 * 0.5 + 0.5), "20-byte read: 5.75 us");
-    check(near(r21.elapsed_us[0], 0.25 + 11 * 0.5 + 0.5), "21-byte read: 6.25 us");
-    check(w.all_ok && r1.all_ok && r20.all_ok && r21.all_ok && !bad.all_ok,
-          "reads of held objects succeed, of an unheld object fail");
-    check(time_bus.packet_bytes() == 28 && time_bus.object_bytes() == 1 + 3 + 20 + 21 && time_mem.reads_served() == 4,
-          "bytes moved: packet and object bytes counted apart");
-    check(ww.elapsed_us.size() == 3 && near(ww.elapsed_us[0], 0.1 + 8 * 0.125) && near(ww.elapsed_us[2], 1.1),
-          "changed table: 0.1 + ceil(30/4) x 0.125 = 1.1 us");
+TEST(ClusterBus, RoundRobinWaitsAtMostThreeTransfers)
+{
+    EXPECT_LE(run().rr.wait_max, 3 * run().one + 1e-9) << "no master waits more than 3 transfers";
+}
 
-    // Loosely timed.
-    check(probe.ends_us.size() == 4 && near(probe.ends_us[0], 107.25) && near(probe.ends_us[1], 114.5) &&
-              near(probe.ends_us[2], 57.25) && near(probe.ends_us[3], 121.75),
-          "loosely timed: earliest free slot at or after local time (107.25 114.5 57.25 121.75)");
-    check(probe.unheld_read_failed, "loosely timed: a read of an unheld object fails");
-    check(near(lt_bus.grant_stats().wait_max.to_seconds() * 1e6, 121.75 - 7.25 - 92.9),
-          "loosely timed: grant wait = slot start - local time");
+TEST(ClusterBus, FixedPriorityStarvesTheLowestMaster)
+{
+    EXPECT_LE(run().fp.high_wait_max, run().one + 1e-9) << "master 0 waits at most one transfer";
+    EXPECT_GT(run().fp.low_wait_max, 3 * run().rr.low_wait_max) << "master 3's grant wait max > 3 x round-robin's";
+    EXPECT_GT(run().fp.low_wait_mean, run().rr.low_wait_mean) << "master 3's mean wait exceeds round-robin's";
+}
 
-    std::printf("%d passed, %d failed\n", g_passed, g_failed);
-    return g_failed == 0 ? 0 : 1;
+TEST(ClusterBus, GrantsOneMasterAtATime)
+{
+    EXPECT_TRUE(run().rr.one_at_a_time) << "round-robin bus: " << run().rr.why;
+    EXPECT_TRUE(run().fp.one_at_a_time) << "fixed-priority bus: " << run().fp.why;
+}
+
+TEST(ClusterBus, PacketTransferOccupiesArbitrationPlusCycles)
+{
+    // Default table: 0.25 us arbitration + ceil(28 / 2) = 14 cycles of 0.5 us = 7.25 us.
+    EXPECT_TRUE(near(run().one, 0.25 + 14 * 0.5)) << run().one;
+    for (double d : run().fp.durations) EXPECT_TRUE(near(d, run().one)) << d;
+    ASSERT_EQ(run().w.size(), 1u);
+    EXPECT_TRUE(near(run().w[0], 7.25)) << "packet write: 0.25 + ceil(28/2) x 0.5 = 7.25 us, got " << run().w[0];
+}
+
+TEST(ClusterBus, ReadOccupiesArbitrationCyclesAndTheMemoryAccess)
+{
+    ASSERT_TRUE(run().r1.size() == 1 && run().r3.size() == 1 && run().r20.size() == 1 && run().r21.size() == 1);
+    EXPECT_TRUE(near(run().r1[0], 0.25 + 1 * 0.5 + 0.5)) << "1-byte read: arbitration + 1 cycle + memory = 1.25 us";
+    EXPECT_TRUE(near(run().r3[0], 0.25 + 2 * 0.5 + 0.5)) << "3-byte read: arbitration + 2 cycles + memory = 1.75 us";
+    EXPECT_TRUE(near(run().r20[0], 0.25 + 10 * 0.5 + 0.5)) << "20-byte read: 5.75 us";
+    EXPECT_TRUE(near(run().r21[0], 0.25 + 11 * 0.5 + 0.5)) << "21-byte read: 6.25 us";
+}
+
+TEST(ClusterBus, ReadsOfUnheldObjectsFail)
+{
+    EXPECT_TRUE(run().w_ok && run().r1_ok && run().r20_ok && run().r21_ok) << "reads of held objects succeed";
+    EXPECT_FALSE(run().bad_ok) << "a read of an unheld object fails";
+}
+
+TEST(ClusterBus, CountsPacketAndObjectBytesApart)
+{
+    EXPECT_EQ(run().packet_bytes, 28);
+    EXPECT_EQ(run().object_bytes, 1 + 3 + 20 + 21);
+    EXPECT_EQ(run().reads_served, 4u);
+}
+
+TEST(ClusterBus, ChangedTimingTable)
+{
+    ASSERT_EQ(run().ww.size(), 3u);
+    EXPECT_TRUE(near(run().ww[0], 0.1 + 8 * 0.125)) << "0.1 + ceil(30/4) x 0.125 = 1.1 us";
+    EXPECT_TRUE(near(run().ww[2], 1.1));
+}
+
+TEST(ClusterBus, LooselyTimedBooksTheEarliestFreeSlot)
+{
+    // 100 + 7.25; 103 overlaps, waits for 107.25; 50 fits before: 57.25; 92.9 + 7.25 does not fit
+    // before 100: after 114.5.
+    ASSERT_EQ(run().lt_ends.size(), 4u);
+    EXPECT_TRUE(near(run().lt_ends[0], 107.25)) << run().lt_ends[0];
+    EXPECT_TRUE(near(run().lt_ends[1], 114.5)) << run().lt_ends[1];
+    EXPECT_TRUE(near(run().lt_ends[2], 57.25)) << run().lt_ends[2];
+    EXPECT_TRUE(near(run().lt_ends[3], 121.75)) << run().lt_ends[3];
+    EXPECT_TRUE(run().lt_unheld_failed) << "a read of an unheld object fails";
+    EXPECT_TRUE(near(run().lt_wait_max, 121.75 - 7.25 - 92.9)) << "grant wait = slot start - local time";
 }

@@ -13,16 +13,14 @@
 #include "bus_arbiter.h"
 #include "cluster_bus.h"
 #include "cluster_dispatch.h"
-#include "harness.h"
+#include "model_test.h"
 #include "packet_injector.h"
 #include "rt_packet.h"
 
-using harness::check;
-using harness::Injector;
+using model_test::Injector;
+using model_test::us;
 using sc_core::sc_time;
 using namespace torusrt;
-
-static sc_time us(double v) { return sc_time(v, sc_core::SC_US); }
 
 struct NullSink : PacketSinkIf {
     size_t count = 0;
@@ -60,38 +58,50 @@ struct Processors {
     }
 };
 
-static void policy_checks(Processors &procs, const TimedPacket &p)
+// What the policies chose on set loads (before the run) and what the run did.
+struct Outcome {
+    bool enters = false;
+    std::vector<int> shortest_queue; // choices at loads 0 0 0, 1 0 0, 1 2 0, 1 2 2, 3 2 2
+    std::vector<int> round_robin;    // five choices at loads 3 2 2
+    bool unknown_policy_threw = false;
+    std::vector<ClusterBus::Grant> bus_log;
+    std::vector<uint64_t> dispatched, consumed;
+    std::vector<sc_time> last_arrival;
+};
+
+// Loads are packets waiting or in service: a queued packet counts 1, a busy line 1.
+static void choose_on_set_loads(Processors &procs, const TimedPacket &p, Outcome &run)
 {
     auto sq = make_dispatch_policy("shortest-queue");
     auto rr = make_dispatch_policy("round-robin");
     std::vector<IntersectionProcessor *> &v = procs.raw;
-    check(sq->choose(v) == 0, "shortest-queue: all idle, ties to processor 0");
+    run.shortest_queue.push_back(sq->choose(v));
     v[0]->busy_trace() = true; // loads 1, 0, 0
-    check(sq->choose(v) == 1, "shortest-queue: 0 in service, ties between 1 and 2 go to 1");
+    run.shortest_queue.push_back(sq->choose(v));
     v[1]->queue().push_blocking(p);
     v[1]->queue().push_blocking(p); // loads 1, 2, 0
-    check(sq->choose(v) == 2, "shortest-queue: loads 1, 2, 0 give 2");
+    run.shortest_queue.push_back(sq->choose(v));
     v[2]->queue().push_blocking(p);
     v[2]->busy_trace() = true; // loads 1, 2, 2
-    check(sq->choose(v) == 0, "shortest-queue: loads 1, 2, 2 give 0");
+    run.shortest_queue.push_back(sq->choose(v));
     v[0]->queue().push_blocking(p);
     v[0]->queue().push_blocking(p); // loads 3, 2, 2
-    check(sq->choose(v) == 1, "shortest-queue: loads 3, 2, 2 give 1 (lowest of the tie)");
-    std::vector<int> seq;
-    for (int i = 0; i < 5; i++) seq.push_back(rr->choose(v));
-    check((seq == std::vector<int>{0, 1, 2, 0, 1}), "round-robin: 0, 1, 2, 0, 1 whatever the loads");
+    run.shortest_queue.push_back(sq->choose(v));
+    for (int i = 0; i < 5; i++) run.round_robin.push_back(rr->choose(v));
     for (auto *ip : v) ip->busy_trace() = false;
-    bool threw = false;
     try {
         make_dispatch_policy("longest-queue");
     } catch (const std::invalid_argument &) {
-        threw = true;
+        run.unknown_policy_threw = true;
     }
-    check(threw, "an unknown policy name throws invalid_argument");
 }
 
-int sc_main(int, char *[])
+// The bus figures: arbitration 1 us, 4-byte width, 2 us cycle, 30-byte packets.
+static const double transfer_us = 1 + 8 * 2; // ceil(30 / 4) = 8 cycles
+
+static Outcome simulate()
 {
+    Outcome run;
     char msg[256];
     rt_scene *scene = rt_scene_new();
     rt_scene_set_view(scene, rt_vec(0, 0, 5), rt_vec(0, 0, 0), rt_vec(0, 1, 0), 45.0, 16, 16);
@@ -101,7 +111,7 @@ int sc_main(int, char *[])
     TimedPacket p{};
     int enters = 0;
     rt_primary_packet(scene, grid, 8, 8, &p.packet, &enters);
-    check(enters, "the test ray enters the grid");
+    run.enters = enters;
 
     SimConfig config;
     rt_timing_defaults(&config.timing);
@@ -109,11 +119,10 @@ int sc_main(int, char *[])
     t.test_miss_us = t.test_hit_us = t.dda_step_us = t.shading_us = t.reflection_us = t.refraction_us = 0;
     t.packet_analysis_us = t.packet_creation_us = t.fb_write_us = t.handover_send_us = t.handover_receive_us = 0;
     t.bus_arbitration_us = 1, t.bus_width_bytes = 4, t.bus_cycle_us = 2, t.packet_bytes = 30;
-    const double transfer_us = 1 + 8 * 2; // ceil(30 / 4) = 8 cycles
     config.dispatch = DispatchPolicy::round_robin;
 
     Processors policy_ips("pol", 3, config, scene, grid);
-    policy_checks(policy_ips, p);
+    choose_on_set_loads(policy_ips, p, run);
 
     Processors procs("ip", 3, config, scene, grid);
     ClusterDispatcher dispatcher("dispatcher", config, procs.raw);
@@ -129,23 +138,53 @@ int sc_main(int, char *[])
     inj.packets = {p, p, p, p, late};
     sc_core::sc_start();
 
-    // Back to back from 0: ends 17, 34, 51, 68; the fifth waits for its stamp: 100 to 117.
-    std::vector<sc_time> want_start{us(0), us(17), us(34), us(51), us(100)};
-    bool log_ok = bus.log().size() == 5;
-    for (size_t i = 0; log_ok && i < 5; i++)
-        log_ok = bus.log()[i].start == want_start[i] && bus.log()[i].end == want_start[i] + us(transfer_us);
-    check(log_ok, "bus transfers at 0, 17, 34, 51 and 100 us, each 1 + 8 x 2 = 17 us");
-    check(dispatcher.dispatched(0) == 2 && dispatcher.dispatched(1) == 2 && dispatcher.dispatched(2) == 1,
-          "round-robin dispatch counts 2, 2, 1");
-    check(procs.ledgers[0]->totals().consumed[RT_PACKET_RAY] == 2 &&
-              procs.ledgers[1]->totals().consumed[RT_PACKET_RAY] == 2 &&
-              procs.ledgers[2]->totals().consumed[RT_PACKET_RAY] == 1,
-          "each processor took up the packets dispatched to it");
-    check(procs.ledgers[0]->image_time() == us(68), "processor 0's last packet arrived at 68 us (4th transfer)");
-    check(procs.ledgers[1]->image_time() == us(117), "processor 1's last packet arrived at 117 us (5th transfer)");
-    check(procs.ledgers[2]->image_time() == us(51), "processor 2's packet arrived at 51 us (3rd transfer)");
-    int rc = harness::finish();
+    run.bus_log = bus.log();
+    for (int k = 0; k < 3; k++) {
+        run.dispatched.push_back(dispatcher.dispatched(k));
+        run.consumed.push_back(procs.ledgers[k]->totals().consumed[RT_PACKET_RAY]);
+        run.last_arrival.push_back(procs.ledgers[k]->image_time());
+    }
     rt_grid_free(grid);
     rt_scene_free(scene);
-    return rc;
+    return run;
+}
+
+static const Outcome &run()
+{
+    static const Outcome r = simulate();
+    return r;
+}
+
+TEST(ClusterDispatcher, TestRayEntersTheGrid) { EXPECT_TRUE(run().enters); }
+
+TEST(ClusterDispatcher, ShortestQueuePicksTheFewestTiesToTheLowest)
+{
+    // Loads 0 0 0 -> 0; 1 0 0 -> 1 (tie with 2); 1 2 0 -> 2; 1 2 2 -> 0; 3 2 2 -> 1 (tie with 2).
+    EXPECT_EQ(run().shortest_queue, (std::vector<int>{0, 1, 2, 0, 1}));
+}
+
+TEST(ClusterDispatcher, RoundRobinIgnoresTheLoads)
+{
+    EXPECT_EQ(run().round_robin, (std::vector<int>{0, 1, 2, 0, 1})) << "0, 1, 2, 0, 1 at loads 3 2 2";
+}
+
+TEST(ClusterDispatcher, UnknownPolicyThrows) { EXPECT_TRUE(run().unknown_policy_threw); }
+
+TEST(ClusterDispatcher, EachPacketCrossesTheBusNoEarlierThanItsStamp)
+{
+    // Back to back from 0: ends 17, 34, 51, 68; the fifth waits for its stamp: 100 to 117.
+    const std::vector<sc_time> want_start{us(0), us(17), us(34), us(51), us(100)};
+    ASSERT_EQ(run().bus_log.size(), 5u);
+    for (size_t i = 0; i < 5; i++) {
+        EXPECT_EQ(run().bus_log[i].start, want_start[i]) << "transfer " << i;
+        EXPECT_EQ(run().bus_log[i].end, want_start[i] + us(transfer_us)) << "transfer " << i << ": 1 + 8 x 2 = 17 us";
+    }
+}
+
+TEST(ClusterDispatcher, RoundRobinDispatchReachesEachProcessor)
+{
+    EXPECT_EQ(run().dispatched, (std::vector<uint64_t>{2, 2, 1})) << "round-robin dispatch counts 2, 2, 1";
+    EXPECT_EQ(run().consumed, (std::vector<uint64_t>{2, 2, 1})) << "each processor took up its packets";
+    // Processor 0 got transfers 1 and 4 (ends 17, 68), 1 got 2 and 5 (34, 117), 2 got 3 (51).
+    EXPECT_EQ(run().last_arrival, (std::vector<sc_time>{us(68), us(117), us(51)}));
 }

@@ -10,14 +10,12 @@
 #include <vector>
 
 #include "comm_unit.h"
-#include "harness.h"
+#include "model_test.h"
 #include "rt_scene.h"
 
-using harness::check;
+using model_test::us;
 using sc_core::sc_time;
 using namespace torusrt;
-
-static sc_time us(double v) { return sc_time(v, sc_core::SC_US); }
 
 // A packet in cell (cell, 0, 0), tagged by its x pixel.
 static TimedPacket packet_in(int cell, uint32_t tag, sc_time stamp = sc_core::SC_ZERO_TIME, bool host = false)
@@ -113,7 +111,15 @@ struct CreditProbe : sc_core::sc_module {
     }
 };
 
-int sc_main(int, char *[])
+// What the three sides of the unit received, and its counts.
+struct Outcome {
+    std::vector<uint32_t> local_tags, plus_tags, minus_tags;
+    std::vector<sc_time> local_times, plus_times, minus_times;
+    uint64_t routed_local = 0, routed_transit = 0;
+    size_t credits_at4 = 0, credits_at6 = 0, held = 0;
+};
+
+static Outcome simulate()
 {
     char msg[256];
     rt_scene *scene = rt_scene_new();
@@ -156,19 +162,48 @@ int sc_main(int, char *[])
     };
     sc_core::sc_start();
 
-    check((local.tags == std::vector<uint32_t>{13, 10, 11, 12, 20, 30}),
-          "local order: 13 (3 us), then 10 (port 0), 11, 12 (port 1, send order) at 5 us, then 20, host 30");
-    check((local.times == std::vector<sc_time>{us(3), us(5), us(5), us(5), us(20), us(30)}),
-          "local times: link arrivals at their annotated time, host primary at once");
-    check((plus.tags == std::vector<uint32_t>{21, 22, 40}), "+x link gets the packets for nodes 1 and 2");
-    check((plus.times == std::vector<sc_time>{us(20), us(20), us(47)}), "+x link times: 20, 20 and the stamp 47 us");
-    check((minus.tags == std::vector<uint32_t>{23}) && minus.times == std::vector<sc_time>{us(20)},
-          "-x link gets the packet for node 3 at 20 us");
-    check(cu.routed_local() == 6 && cu.routed_transit() == 4, "6 routed locally, 4 in transit");
-    check(probe.at4 == 3 && probe.at6 == 0, "link slots held until delivery (3 at 4 us), all back at 6 us");
-    check(cu.held() == 0, "nothing held");
-    int rc = harness::finish();
+    Outcome run;
+    run.local_tags = local.tags, run.plus_tags = plus.tags, run.minus_tags = minus.tags;
+    run.local_times = local.times, run.plus_times = plus.times, run.minus_times = minus.times;
+    run.routed_local = cu.routed_local(), run.routed_transit = cu.routed_transit();
+    run.credits_at4 = probe.at4, run.credits_at6 = probe.at6, run.held = cu.held();
     rt_grid_free(grid);
     rt_scene_free(scene);
-    return rc;
+    return run;
+}
+
+static const Outcome &run()
+{
+    static const Outcome r = simulate();
+    return r;
+}
+
+TEST(CommUnit, DeliversLinkPacketsAtArrivalInPortThenSendOrder)
+{
+    // 13 arrives first (1 + 2 = 3 us); at 5 us 10 (port 0, 2 + 3) before 11, 12 (port 1, 1 + 4, send
+    // order); then the processor's own-cell packet 20 at 20 us and the host primary 30 at once at 30 us.
+    EXPECT_EQ(run().local_tags, (std::vector<uint32_t>{13, 10, 11, 12, 20, 30}));
+    EXPECT_EQ(run().local_times, (std::vector<sc_time>{us(3), us(5), us(5), us(5), us(20), us(30)}))
+        << "link arrivals at their annotated time, host primary at once";
+}
+
+TEST(CommUnit, RoutesOtherCellsToTheFirstHopLink)
+{
+    EXPECT_EQ(run().plus_tags, (std::vector<uint32_t>{21, 22, 40})) << "+x link gets the packets for nodes 1 and 2";
+    EXPECT_EQ(run().plus_times, (std::vector<sc_time>{us(20), us(20), us(47)})) << "+x link times: 20, 20 and the stamp 47 us";
+    EXPECT_EQ(run().minus_tags, (std::vector<uint32_t>{23})) << "-x link gets the packet for node 3";
+    EXPECT_EQ(run().minus_times, (std::vector<sc_time>{us(20)})) << "at 20 us";
+}
+
+TEST(CommUnit, CountsLocalAndTransitPackets)
+{
+    EXPECT_EQ(run().routed_local, 6u) << "13, 10, 11, 12, 20, 30";
+    EXPECT_EQ(run().routed_transit, 4u) << "21, 22, 23, 40";
+    EXPECT_EQ(run().held, 0u) << "nothing held";
+}
+
+TEST(CommUnit, HoldsLinkSlotsUntilDelivery)
+{
+    EXPECT_EQ(run().credits_at4, 3u) << "11, 12 (port 1) and 10 (port 0) not yet delivered at 4 us";
+    EXPECT_EQ(run().credits_at6, 0u) << "all back at 6 us";
 }

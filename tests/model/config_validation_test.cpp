@@ -1,14 +1,12 @@
 // config_validation_test.cpp - the validator names the option of every bad setting it is given,
 // and machine_options writes a machine as the options that rebuild it.
 #include <string>
-#include <systemc>
 
-#include "harness.h"
 #include "machine_options.h"
+#include "model_test.h"
 #include "sim_config.h"
 #include "user_error.h"
 
-using harness::check;
 using namespace torusrt;
 
 namespace {
@@ -35,10 +33,12 @@ std::string problem(const SimConfig &c)
 void expect(const SimConfig &c, const std::string &option, const char *what)
 {
     std::string p = problem(c);
-    check(p.compare(0, option.size(), option) == 0, (std::string(what) + ": names " + option + " (" + p + ")").c_str());
+    EXPECT_EQ(p.compare(0, option.size(), option), 0) << what << ": names " << option << " (" << p << ")";
 }
 
-void bad_settings()
+}  // namespace
+
+TEST(ConfigValidation, NamesTheOptionOfEveryBadSetting)
 {
     SimConfig c = good();
     c.ips = {0, 1, 1};
@@ -79,34 +79,42 @@ void bad_settings()
     expect(c, "--time-limit", "a limit past SystemC's time");
 }
 
-void machine_as_options()
+TEST(ConfigValidation, DefaultMachinePasses) { EXPECT_EQ(problem(good()), "") << "the default machine and run pass"; }
+
+namespace {
+
+// A machine with several options away from their defaults.
+SimConfig sample_machine()
 {
     SimConfig c = good();
-    check(problem(c).empty(), "the default machine and run pass");
     c.ips = {4, 2, 1};
     c.mapping = RT_MAP_BLOCK_CYCLIC, c.block = 3;
     c.step.min_weight = 1.0 / 3.0;
     c.quantum_us = 0.1, c.style = TimingStyle::lt;
     c.cluster = 2, c.arbiter = ArbiterPolicy::fixed_priority;
-    nlohmann::json j = machine_options_json(c);
-    check(j["ips"] == "4x2x1", "ips as PXxPYxPZ");
-    check(j["map"] == "block-cyclic:3", "block-cyclic with its block");
-    check(j["min-weight"] == "0.33333333333333331", "min-weight with 17 digits (reads back bit for bit)");
-    check(j["quantum"] == "0.10000000000000001", "quantum in microseconds");
-    check(j["arbiter"] == "fixed-priority" && j["style"] == "lt" && j["cluster"] == "2", "policies by name");
-    check(j["link-us"] == "50", "link-us from the timing table");
-    check(!j.contains("map-file") || j["map-file"] == "", "no map file");
-    c.mapping = RT_MAP_FILE, c.map_file = "m.map";
-    j = machine_options_json(c);
-    check(!j.contains("map") && j["map-file"] == "m.map", "a file mapping has map-file and no map");
-    check(machine_options_toml(c).find("map-file=\"m.map\"\n") != std::string::npos, "TOML lines key=\"value\"");
+    return c;
 }
 
 }  // namespace
 
-int sc_main(int, char **)
+TEST(MachineOptions, WritesTheMachineAsOptions)
 {
-    bad_settings();
-    machine_as_options();
-    return harness::finish();
+    SimConfig c = sample_machine();
+    nlohmann::json j = machine_options_json(c);
+    EXPECT_EQ(j["ips"], "4x2x1") << "ips as PXxPYxPZ";
+    EXPECT_EQ(j["map"], "block-cyclic:3") << "block-cyclic with its block";
+    EXPECT_EQ(j["min-weight"], "0.33333333333333331") << "min-weight with 17 digits (reads back bit for bit)";
+    EXPECT_EQ(j["quantum"], "0.10000000000000001") << "quantum in microseconds";
+    EXPECT_TRUE(j["arbiter"] == "fixed-priority" && j["style"] == "lt" && j["cluster"] == "2") << "policies by name";
+    EXPECT_EQ(j["link-us"], "50") << "link-us from the timing table";
+    EXPECT_TRUE(!j.contains("map-file") || j["map-file"] == "") << "no map file";
+}
+
+TEST(MachineOptions, FileMappingHasMapFileAndNoMap)
+{
+    SimConfig c = sample_machine();
+    c.mapping = RT_MAP_FILE, c.map_file = "m.map";
+    nlohmann::json j = machine_options_json(c);
+    EXPECT_TRUE(!j.contains("map") && j["map-file"] == "m.map") << "a file mapping has map-file and no map";
+    EXPECT_NE(machine_options_toml(c).find("map-file=\"m.map\"\n"), std::string::npos) << "TOML lines key=\"value\"";
 }

@@ -13,6 +13,7 @@
 // stalls with packets undelivered. With classes each wait points to a buffer of a higher class, and every
 // packet arrives. One packet per node making H hops arrives, by hand, at H (10 + 50) + 10 us
 // (a step, a 50 us link crossing, the next step, ...), the last step absorbing it.
+#include <algorithm>
 #include <memory>
 #include <string>
 #include <systemc>
@@ -20,17 +21,15 @@
 
 #include "comm_unit.h"
 #include "flow_control.h"
-#include "harness.h"
+#include "model_test.h"
 #include "packet_injector.h"
 #include "packet_queue.h"
 #include "rt_scene.h"
 #include "toroidal_link.h"
 
-using harness::check;
+using model_test::us;
 using sc_core::sc_time;
 using namespace torusrt;
-
-static sc_time us(double v) { return sc_time(v, sc_core::SC_US); }
 
 struct Relay : sc_core::sc_module, PacketSinkIf {
     sc_core::sc_port<PacketSinkIf> out; // to the node's communication unit
@@ -99,7 +98,7 @@ struct Ring {
     SimConfig config;
     std::vector<std::unique_ptr<CommUnit>> cus;
     std::vector<std::unique_ptr<Relay>> relays;
-    std::vector<std::unique_ptr<harness::Injector>> injectors;
+    std::vector<std::unique_ptr<model_test::Injector>> injectors;
     std::vector<std::unique_ptr<ToroidalLink>> links;
 
     Ring(const std::string &name, const rt_scene *scene, int n, FlowControl flow, int per_node, int hops, char *msg)
@@ -116,7 +115,7 @@ struct Ring {
             relays.push_back(std::make_unique<Relay>(("relay_" + s).c_str(), i, n, flow));
             relays[i]->out.bind(cus[i]->in);
             cus[i]->local.bind(*relays[i]);
-            injectors.push_back(std::make_unique<harness::Injector>(("inj_" + s).c_str()));
+            injectors.push_back(std::make_unique<model_test::Injector>(("inj_" + s).c_str()));
             injectors[i]->out.bind(*relays[i]);
             for (int k = 0; k < per_node; k++) {
                 TimedPacket p{};
@@ -164,36 +163,71 @@ struct Ring {
     }
 };
 
-int sc_main(int, char *[])
+// What the six rings did.
+struct Outcome {
+    size_t none2 = 0, none3 = 0, classes2 = 0, classes3 = 0;  // packets absorbed
+    size_t none2_held = 0;                                     // held at the receivers at the end
+    size_t classes_most = 0, none_most = 0;                    // most packets in one buffer
+    std::vector<sc_time> timed2, timed3;                       // absorption times, one packet per node
+    bool wrap_channel_1 = false;
+};
+
+static Outcome simulate()
 {
     char msg[256];
     rt_scene *scene = rt_scene_new();
     rt_scene_set_view(scene, rt_vec(0, 0, 5), rt_vec(0, 0, 0), rt_vec(0, 1, 0), 45.0, 4, 4);
     rt_scene_add_sphere(scene, rt_vec(0, 0, 0), 1.0);
     rt_scene_finish(scene, msg, sizeof msg);
-
-    Ring none2("none2", scene, 2, FlowControl::none, 6, 8, msg);
-    Ring none3("none3", scene, 3, FlowControl::none, 6, 8, msg);
-    Ring classes2("classes2", scene, 2, FlowControl::classes, 6, 8, msg);
-    Ring classes3("classes3", scene, 3, FlowControl::classes, 6, 8, msg);
-    Ring timed2("timed2", scene, 2, FlowControl::classes, 1, 2, msg);
-    Ring timed3("timed3", scene, 3, FlowControl::classes, 1, 5, msg);
-    sc_core::sc_start();
-
-    check(none2.absorbed().size() < 12, "ring of 2, one class: a cyclic wait, packets left undelivered");
-    check(none3.absorbed().size() < 18, "ring of 3, one class: a cyclic wait, packets left undelivered");
-    size_t held = 0;
-    for (const auto &cu : none2.cus) held += cu->held();
-    check(held > 0, "ring of 2, one class: packets held at the receivers for a full queue");
-    check(classes2.absorbed().size() == 12, "ring of 2, classes: all 12 packets arrive");
-    check(classes3.absorbed().size() == 18, "ring of 3, classes: all 18 packets arrive");
-    check(classes2.most_in_one_buffer() <= 1 && classes3.most_in_one_buffer() <= 1,
-          "classes: no buffer ever holds more than its capacity of 1");
-    check(none2.most_in_one_buffer() <= 1 && none3.most_in_one_buffer() <= 1, "one class: capacity 1 held too");
-    check(timed2.absorbed() == std::vector<sc_time>(2, us(2 * 60 + 10)), "ring of 2, 2 hops: both at 130 us");
-    check(timed3.absorbed() == std::vector<sc_time>(3, us(5 * 60 + 10)), "ring of 3, 5 hops: all at 310 us");
-    check(classes3.wrap_used_channel_1() && timed3.wrap_used_channel_1(), "the wrap-around link carries channel 1");
-    int rc = harness::finish();
+    Outcome o;
+    {
+        Ring none2("none2", scene, 2, FlowControl::none, 6, 8, msg);
+        Ring none3("none3", scene, 3, FlowControl::none, 6, 8, msg);
+        Ring classes2("classes2", scene, 2, FlowControl::classes, 6, 8, msg);
+        Ring classes3("classes3", scene, 3, FlowControl::classes, 6, 8, msg);
+        Ring timed2("timed2", scene, 2, FlowControl::classes, 1, 2, msg);
+        Ring timed3("timed3", scene, 3, FlowControl::classes, 1, 5, msg);
+        sc_core::sc_start();
+        o.none2 = none2.absorbed().size();
+        o.none3 = none3.absorbed().size();
+        for (const auto &cu : none2.cus) o.none2_held += cu->held();
+        o.classes2 = classes2.absorbed().size();
+        o.classes3 = classes3.absorbed().size();
+        o.classes_most = std::max(classes2.most_in_one_buffer(), classes3.most_in_one_buffer());
+        o.none_most = std::max(none2.most_in_one_buffer(), none3.most_in_one_buffer());
+        o.timed2 = timed2.absorbed();
+        o.timed3 = timed3.absorbed();
+        o.wrap_channel_1 = classes3.wrap_used_channel_1() && timed3.wrap_used_channel_1();
+    }
     rt_scene_free(scene);
-    return rc;
+    return o;
+}
+
+static const Outcome &run()
+{
+    static const Outcome r = simulate();
+    return r;
+}
+
+TEST(FlowRing, OneClassStallsInACyclicWait)
+{
+    EXPECT_LT(run().none2, 12u) << "ring of 2, one class: packets left undelivered";
+    EXPECT_LT(run().none3, 18u) << "ring of 3, one class: packets left undelivered";
+    EXPECT_GT(run().none2_held, 0u) << "ring of 2, one class: packets held at the receivers for a full queue";
+    EXPECT_LE(run().none_most, 1u) << "one class: capacity 1 held too";
+}
+
+TEST(FlowRing, ClassesDrainEveryPacket)
+{
+    EXPECT_EQ(run().classes2, 12u) << "ring of 2, classes: all 2 x 6 packets arrive";
+    EXPECT_EQ(run().classes3, 18u) << "ring of 3, classes: all 3 x 6 packets arrive";
+    EXPECT_LE(run().classes_most, 1u) << "no buffer ever holds more than its capacity of 1";
+    EXPECT_TRUE(run().wrap_channel_1) << "the wrap-around link carries channel 1";
+}
+
+TEST(FlowRing, DeliveryTimesByHand)
+{
+    // H hops: H x (10 us step + 50 us link) + the 10 us step that absorbs it.
+    EXPECT_EQ(run().timed2, std::vector<sc_time>(2, us(2 * 60 + 10))) << "ring of 2, 2 hops: both at 130 us";
+    EXPECT_EQ(run().timed3, std::vector<sc_time>(3, us(5 * 60 + 10))) << "ring of 3, 5 hops: all at 310 us";
 }

@@ -7,17 +7,15 @@
 #include <tlm_utils/simple_target_socket.h>
 #include <vector>
 
-#include "harness.h"
-#include "packet_injector.h"
 #include "intersection_processor.h"
+#include "model_test.h"
+#include "packet_injector.h"
 #include "rt_packet.h"
 
-using harness::check;
-using harness::Injector;
+using model_test::Injector;
+using model_test::us;
 using sc_core::sc_time;
 using namespace torusrt;
-
-static sc_time us(double v) { return sc_time(v, sc_core::SC_US); }
 
 // Records (time, kind) of every packet the IP emits.
 struct RecordingSink : PacketSinkIf {
@@ -77,8 +75,22 @@ static Expected expect(const rt_scene *s, const rt_grid *g, const int32_t *owner
     return e;
 }
 
-int sc_main(int, char *[])
+// What the run recorded, and the step costs worked out apart from the model.
+struct Outcome {
+    bool both_enter = false;
+    Expected ea, eb; // A: hits the sphere; B: passes beside it and is forwarded
+    std::vector<sc_time> times;
+    std::vector<int> kinds;
+    bool stamp_mismatch = false;
+    std::vector<sc_time> fb_times;
+    std::vector<size_t> fb_counts;
+    sc_time busy;
+    uint64_t packets_in = 0, packets_out = 0;
+};
+
+static Outcome simulate()
 {
+    Outcome run;
     char msg[256];
     rt_scene *scene = rt_scene_new();
     rt_scene_set_view(scene, rt_vec(0, 0, 5), rt_vec(0, 0, 0), rt_vec(0, 1, 0), 45.0, 16, 16);
@@ -94,7 +106,7 @@ int sc_main(int, char *[])
     int enters_a = 0, enters_b = 0;
     rt_primary_packet(scene, grid, 5, 5, &a, &enters_a);
     rt_primary_packet(scene, grid, 4, 4, &b, &enters_b);
-    check(enters_a && enters_b, "both test rays enter the grid");
+    run.both_enter = enters_a && enters_b;
     std::vector<int32_t> owner(rt_grid_cell_count(grid), 1);
     owner[rt_packet_cell(grid, &a)] = 0;
     owner[rt_packet_cell(grid, &b)] = 0;
@@ -108,10 +120,8 @@ int sc_main(int, char *[])
     config.timing.fb_write_us = 7, config.timing.handover_send_us = 11, config.timing.handover_receive_us = 13;
     config.step = rt_step_params_default();
 
-    Expected ea = expect(scene, grid, owner.data(), config, a);
-    Expected eb = expect(scene, grid, owner.data(), config, b);
-    check(!ea.kinds.empty() && ea.contribs > 0, "A's step creates packets and contributions");
-    check(!eb.kinds.empty() && eb.kinds.back() == RT_PACKET_RAY, "B's step forwards the ray");
+    run.ea = expect(scene, grid, owner.data(), config, a);
+    run.eb = expect(scene, grid, owner.data(), config, b);
 
     PacketLedger ledger;
     IntersectionProcessor ip("ip", config, scene, grid, owner.data(), 0, 0, ledger);
@@ -125,21 +135,66 @@ int sc_main(int, char *[])
     inj.packets = {TimedPacket{a, us(10)}, TimedPacket{b, sc_core::SC_ZERO_TIME}};
     sc_core::sc_start();
 
-    sc_time end_a = us(10) + us(ea.us), end_b = end_a + us(eb.us);
-    std::vector<sc_time> want_times(ea.kinds.size(), end_a);
-    want_times.insert(want_times.end(), eb.kinds.size(), end_b);
-    std::vector<int> want_kinds = ea.kinds;
-    want_kinds.insert(want_kinds.end(), eb.kinds.begin(), eb.kinds.end());
-    check(sink.kinds == want_kinds, "emitted kinds: A's new packets, then B's forwarded ray");
-    check(sink.times == want_times, "emissions at 10 us + step(A), then + step(B)");
-    check(!sink.stamp_mismatch, "every emitted packet is stamped with its emission time");
-    check(ip.busy_time() == us(ea.us + eb.us), "busy time is step(A) + step(B)");
-    check(ip.packets_in() == 2 && ip.packets_out() == want_kinds.size(), "packet counts in and out");
-    check(!fb.times.empty() && fb.times[0] == end_a && fb.counts[0] == ea.contribs,
-          "A's contributions written at the end of its step");
-    check(fb.times.size() == (eb.contribs ? 2u : 1u), "one frame-buffer write per step with contributions");
-    int rc = harness::finish();
+    run.times = sink.times, run.kinds = sink.kinds, run.stamp_mismatch = sink.stamp_mismatch;
+    run.fb_times = fb.times, run.fb_counts = fb.counts;
+    run.busy = ip.busy_time(), run.packets_in = ip.packets_in(), run.packets_out = ip.packets_out();
     rt_grid_free(grid);
     rt_scene_free(scene);
-    return rc;
+    return run;
+}
+
+static const Outcome &run()
+{
+    static const Outcome r = simulate();
+    return r;
+}
+
+// A's new packets, then B's forwarded ray.
+static std::vector<int> want_kinds()
+{
+    std::vector<int> k = run().ea.kinds;
+    k.insert(k.end(), run().eb.kinds.begin(), run().eb.kinds.end());
+    return k;
+}
+
+TEST(IntersectionProcessor, ScenarioPremises)
+{
+    EXPECT_TRUE(run().both_enter) << "both test rays enter the grid";
+    EXPECT_TRUE(!run().ea.kinds.empty() && run().ea.contribs > 0) << "A's step creates packets and contributions";
+    EXPECT_TRUE(!run().eb.kinds.empty() && run().eb.kinds.back() == RT_PACKET_RAY) << "B's step forwards the ray";
+}
+
+TEST(IntersectionProcessor, EmitsNewPacketsThenTheForwardedRay)
+{
+    EXPECT_EQ(run().kinds, want_kinds()) << "emitted kinds: A's new packets, then B's forwarded ray";
+}
+
+TEST(IntersectionProcessor, EachPacketCostsItsStepAfterItsStamp)
+{
+    // A starts at its stamp, 10 us, and ends step(A) later; B waited behind A and ends step(B) after that.
+    sc_time end_a = us(10) + us(run().ea.us), end_b = end_a + us(run().eb.us);
+    std::vector<sc_time> want(run().ea.kinds.size(), end_a);
+    want.insert(want.end(), run().eb.kinds.size(), end_b);
+    EXPECT_EQ(run().times, want) << "emissions at 10 us + step(A), then + step(B)";
+    EXPECT_FALSE(run().stamp_mismatch) << "every emitted packet is stamped with its emission time";
+}
+
+TEST(IntersectionProcessor, BusyTimeIsTheSumOfTheSteps)
+{
+    EXPECT_EQ(run().busy, us(run().ea.us + run().eb.us)) << "busy time is step(A) + step(B)";
+}
+
+TEST(IntersectionProcessor, CountsPacketsInAndOut)
+{
+    EXPECT_EQ(run().packets_in, 2u);
+    EXPECT_EQ(run().packets_out, want_kinds().size());
+}
+
+TEST(IntersectionProcessor, WritesContributionsAtTheEndOfTheStep)
+{
+    const Outcome &r = run();
+    ASSERT_FALSE(r.fb_times.empty());
+    EXPECT_EQ(r.fb_times[0], us(10) + us(r.ea.us)) << "A's contributions written at the end of its step";
+    EXPECT_EQ(r.fb_counts[0], r.ea.contribs);
+    EXPECT_EQ(r.fb_times.size(), r.eb.contribs ? 2u : 1u) << "one frame-buffer write per step with contributions";
 }

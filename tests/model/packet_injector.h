@@ -7,7 +7,7 @@
 #include "packet_sink_if.h"
 #include "timed_packet.h"
 
-namespace harness {
+namespace model_test {
 
 struct Injector : sc_core::sc_module {
     sc_core::sc_port<torusrt::PacketSinkIf> out;  // where the packets go
@@ -23,4 +23,4 @@ struct Injector : sc_core::sc_module {
     }
 };
 
-}  // namespace harness
+}  // namespace model_test

@@ -10,16 +10,14 @@
 
 #include "bus_arbiter.h"
 #include "cluster_bus.h"
-#include "harness.h"
+#include "model_test.h"
 #include "processor_bus_port.h"
 #include "time_keeper.h"
 #include "two_port_memory.h"
 
-using harness::check;
+using model_test::us;
 using sc_core::sc_time;
 using namespace torusrt;
-
-static sc_time us(double v) { return sc_time(v, sc_core::SC_US); }
 
 struct RecordingSink : PacketSinkIf {
     std::vector<sc_time> times, stamps;
@@ -59,7 +57,19 @@ struct Processor : sc_core::sc_module {
     }
 };
 
-int sc_main(int, char *[])
+// The bus figures: arbitration 1 us, 4-byte width, 2 us cycle, 30-byte packets, 3 us memory access.
+static const double packet_us = 1 + 8 * 2; // ceil(30 / 4) = 8 cycles
+
+// What reached the communication unit, the fetch times and the counts; read1 and read3 are the
+// remote reads of objects 1 and 3 worked out from their sizes.
+struct Outcome {
+    std::vector<sc_time> comm_times, comm_stamps, after_fetch;
+    sc_time fetch_start, read1, read3;
+    uint64_t local_reads = 0, remote_reads = 0, mem0_reads = 0, mem1_reads = 0, packet_transfers = 0,
+             object_reads = 0;
+};
+
+static Outcome simulate()
 {
     char msg[256];
     rt_scene *scene = rt_scene_new();
@@ -71,7 +81,6 @@ int sc_main(int, char *[])
     rt_timing_defaults(&config.timing);
     rt_timing &t = config.timing;
     t.bus_arbitration_us = 1, t.bus_width_bytes = 4, t.bus_cycle_us = 2, t.packet_bytes = 30, t.memory_access_us = 3;
-    const double packet_us = 1 + 8 * 2; // ceil(30 / 4) = 8 cycles
 
     // Objects 0..3 in the node; with m = 2 processor 0 holds 0 and 2, processor 1 holds 1 and 3.
     const std::vector<uint32_t> node_objects{0, 1, 2, 3};
@@ -91,22 +100,50 @@ int sc_main(int, char *[])
     proc.objects = {0, 1, 2, 3};
     sc_core::sc_start();
 
-    check((comm.times == std::vector<sc_time>{us(5 + packet_us), us(32 + packet_us)}),
-          "packets reach the communication unit at 5 + 17 = 22 us and (22 + 10) + 17 = 49 us");
-    check(comm.stamps == comm.times, "each packet is stamped with the end of its transfer");
-    sc_time start = proc.fetch_start;
-    sc_time read1 = us(1 + std::ceil(rt_scene_object_bytes(scene, 1) / 4.0) * 2 + 3);
-    sc_time read3 = us(1 + std::ceil(rt_scene_object_bytes(scene, 3) / 4.0) * 2 + 3);
-    check(start == us(49), "fetches start after the second packet's transfer");
-    check(proc.after_fetch.size() == 4 && proc.after_fetch[0] == start, "object 0 (own memory): no time");
-    check(proc.after_fetch.size() == 4 && proc.after_fetch[1] == start + read1,
-          "object 1 (processor 1): arbitration + ceil(bytes / 4) x 2 + 3 us");
-    check(proc.after_fetch.size() == 4 && proc.after_fetch[2] == start + read1, "object 2 (own memory): no time");
-    check(proc.after_fetch.size() == 4 && proc.after_fetch[3] == start + read1 + read3,
-          "object 3 (processor 1): a second remote read");
-    check(port.local_reads() == 2 && port.remote_reads() == 2, "2 local and 2 remote reads");
-    check(mem1.reads_served() == 2 && mem0.reads_served() == 0, "remote reads served by processor 1's memory");
-    check(bus.packet_transfers() == 2 && bus.object_reads() == 2, "bus counts 2 packet transfers and 2 reads");
+    Outcome run;
+    run.comm_times = comm.times, run.comm_stamps = comm.stamps;
+    run.fetch_start = proc.fetch_start, run.after_fetch = proc.after_fetch;
+    // Arbitration + ceil(bytes / 4) x 2 + the 3 us memory access.
+    run.read1 = us(1 + std::ceil(rt_scene_object_bytes(scene, 1) / 4.0) * 2 + 3);
+    run.read3 = us(1 + std::ceil(rt_scene_object_bytes(scene, 3) / 4.0) * 2 + 3);
+    run.local_reads = port.local_reads(), run.remote_reads = port.remote_reads();
+    run.mem0_reads = mem0.reads_served(), run.mem1_reads = mem1.reads_served();
+    run.packet_transfers = bus.packet_transfers(), run.object_reads = bus.object_reads();
     rt_scene_free(scene);
-    return harness::finish();
+    return run;
+}
+
+static const Outcome &run()
+{
+    static const Outcome r = simulate();
+    return r;
+}
+
+TEST(ProcessorBusPort, PacketsCrossTheBusNoEarlierThanTheirStamp)
+{
+    EXPECT_EQ(run().comm_times, (std::vector<sc_time>{us(5 + packet_us), us(32 + packet_us)}))
+        << "packets reach the communication unit at 5 + 17 = 22 us and (22 + 10) + 17 = 49 us";
+    EXPECT_EQ(run().comm_stamps, run().comm_times) << "each packet is stamped with the end of its transfer";
+}
+
+TEST(ProcessorBusPort, OwnMemoryFetchIsFreeRemoteCostsABusRead)
+{
+    const Outcome &r = run();
+    EXPECT_EQ(r.fetch_start, us(49)) << "fetches start after the second packet's transfer";
+    ASSERT_EQ(r.after_fetch.size(), 4u);
+    EXPECT_EQ(r.after_fetch[0], r.fetch_start) << "object 0 (own memory): no time";
+    EXPECT_EQ(r.after_fetch[1], r.fetch_start + r.read1)
+        << "object 1 (processor 1): arbitration + ceil(bytes / 4) x 2 + 3 us";
+    EXPECT_EQ(r.after_fetch[2], r.fetch_start + r.read1) << "object 2 (own memory): no time";
+    EXPECT_EQ(r.after_fetch[3], r.fetch_start + r.read1 + r.read3) << "object 3 (processor 1): a second remote read";
+}
+
+TEST(ProcessorBusPort, CountsReadsAndTransfers)
+{
+    EXPECT_EQ(run().local_reads, 2u);
+    EXPECT_EQ(run().remote_reads, 2u);
+    EXPECT_EQ(run().mem1_reads, 2u) << "remote reads served by processor 1's memory";
+    EXPECT_EQ(run().mem0_reads, 0u);
+    EXPECT_EQ(run().packet_transfers, 2u);
+    EXPECT_EQ(run().object_reads, 2u);
 }

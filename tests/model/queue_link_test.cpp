@@ -1,18 +1,19 @@
 // queue_link_test.cpp - a toroidal link serialises packets at its packet time and delivers them as
 // TLM-2.0 transactions in order, annotated with their arrival time; a bounded link blocks its
-// writer until the receiver returns a slot; a bounded queue blocks its writer while full.
+// writer until the receiver returns a slot; a bounded queue blocks its writer while its class is
+// full, every packet counting.
 #include <systemc>
 #include <tlm>
 #include <tlm_utils/simple_target_socket.h>
 #include <vector>
 
-#include "harness.h"
+#include "model_test.h"
 #include "packet_queue.h"
 #include "rt_timing.h"
 #include "sim_config.h"
 #include "toroidal_link.h"
 
-using harness::check;
+using model_test::us;
 using namespace torusrt;
 
 // Records each packet's annotated arrival and returns its link slot at that time.
@@ -102,7 +103,20 @@ struct Filler : sc_core::sc_module {
     }
 };
 
-int sc_main(int, char **)
+// What the receiver saw, the link's and the queue's figures.
+struct Outcome {
+    std::vector<sc_core::sc_time> arrivals, pushed;
+    std::vector<uint32_t> xs;
+    size_t released = 0, link_high_water = 0, link_used = 0;
+    uint64_t link_packets = 0;
+    sc_core::sc_time link_busy;
+    int host_pushed = 0, network_pushed = 0, class1_pushed = 0;
+    size_t filler_size = 0, filler_class_high_water = 0;
+    unsigned filler_blocked = 0;
+    bool filler_full = false;
+};
+
+static Outcome simulate()
 {
     Filler filler("filler");
     SimConfig config;
@@ -114,21 +128,55 @@ int sc_main(int, char **)
     tx.out.bind(link.in);
     link.socket.bind(rx.socket);
     sc_core::sc_start();
-    check(rx.arrivals.size() == 5, "all five packets delivered");
-    bool spaced = rx.arrivals.size() == 5;
-    for (size_t i = 0; spaced && i < 5; i++)
-        spaced = rx.arrivals[i] == sc_core::sc_time(50.0 * (i + 1), sc_core::SC_US) && rx.xs[i] == i;
-    check(spaced, "packet i arrives at 50 us x (i+1), in order");
-    check(link.packets() == 5, "link counts five packets");
-    check(link.busy_time() == sc_core::sc_time(250, sc_core::SC_US), "link busy 250 us");
+
+    Outcome run;
+    run.arrivals = rx.arrivals, run.xs = rx.xs, run.released = rx.released, run.pushed = tx.pushed;
+    run.link_packets = link.packets(), run.link_busy = link.busy_time();
+    run.link_high_water = link.queue().high_water(), run.link_used = link.queue().used();
+    run.host_pushed = filler.host_pushed, run.network_pushed = filler.network_pushed;
+    run.class1_pushed = filler.class1_pushed, run.filler_size = filler.queue.size();
+    run.filler_class_high_water = filler.queue.class_high_water();
+    run.filler_blocked = filler.queue.blocked_writers(), run.filler_full = filler.queue.full();
+    return run;
+}
+
+static const Outcome &run()
+{
+    static const Outcome r = simulate();
+    return r;
+}
+
+TEST(ToroidalLink, SerialisesPacketsAtThePacketTime)
+{
+    ASSERT_EQ(run().arrivals.size(), 5u) << "all five packets delivered";
+    // The default link packet time is 50 us: packet i (sent from 0, back to back) arrives at 50 x (i + 1).
+    for (uint32_t i = 0; i < 5; i++) {
+        EXPECT_EQ(run().arrivals[i], us(50.0 * (i + 1))) << "packet " << i;
+        EXPECT_EQ(run().xs[i], i) << "in order";
+    }
+    EXPECT_EQ(run().link_packets, 5u) << "link counts five packets";
+    EXPECT_EQ(run().link_busy, us(250)) << "link busy 5 x 50 = 250 us";
+}
+
+TEST(ToroidalLink, BoundedLinkBlocksTheWriter)
+{
     // With capacity 2 the sender must have been held back: its last push happens after t = 0.
-    check(tx.pushed.size() == 5 && tx.pushed.back() > sc_core::SC_ZERO_TIME, "bounded queue blocks the writer");
-    check(link.queue().high_water() == 2, "the link holds up to its capacity, never more");
-    check(rx.released == 5 && link.queue().used() == 0, "every slot returned at arrival");
-    check(filler.host_pushed == 1, "the host packet entered");
-    check(filler.network_pushed == 1, "class 0 stops at the capacity, the host packet counted");
-    check(filler.class1_pushed == 2, "class 1 has a capacity of its own");
-    check(filler.queue.size() == 4 && filler.queue.class_high_water() == 2, "4 waiting, at most 2 of a class");
-    check(filler.queue.blocked_writers() == 2 && filler.queue.full(), "both writers are left waiting");
-    return harness::finish();
+    ASSERT_EQ(run().pushed.size(), 5u);
+    EXPECT_GT(run().pushed.back(), sc_core::SC_ZERO_TIME) << "bounded queue blocks the writer";
+    EXPECT_EQ(run().link_high_water, 2u) << "the link holds up to its capacity, never more";
+    EXPECT_EQ(run().released, 5u) << "every slot returned at arrival";
+    EXPECT_EQ(run().link_used, 0u);
+}
+
+TEST(PacketQueue, EveryPacketCountsAndEachClassHasItsCapacity)
+{
+    // Capacity 2 per class: the host packet takes a class-0 slot like any other, so one network
+    // packet of class 0 fits; class 1 has two slots of its own.
+    EXPECT_EQ(run().host_pushed, 1) << "the host packet entered";
+    EXPECT_EQ(run().network_pushed, 1) << "class 0 stops at the capacity, the host packet counted";
+    EXPECT_EQ(run().class1_pushed, 2) << "class 1 has a capacity of its own";
+    EXPECT_EQ(run().filler_size, 4u) << "4 waiting";
+    EXPECT_EQ(run().filler_class_high_water, 2u) << "at most 2 of a class";
+    EXPECT_EQ(run().filler_blocked, 2u) << "both writers are left waiting";
+    EXPECT_TRUE(run().filler_full);
 }

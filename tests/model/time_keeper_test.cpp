@@ -4,38 +4,47 @@
 // wait; sync() with no offset does not wait.
 #include <systemc>
 #include <tlm>
+#include <vector>
 
-#include "harness.h"
+#include "model_test.h"
 #include "time_keeper.h"
 
-using harness::check;
+using model_test::ns;
 using sc_core::sc_time;
 using sc_core::sc_time_stamp;
-using sc_core::SC_NS;
 using namespace torusrt;
 
-static sc_time ns(double v) { return sc_time(v, SC_NS); }
+// Simulation time and keeper time after one step of a user's schedule.
+struct Sample {
+    sc_time simulation, local;
+};
+
+// Records a sample after each step; the TESTs compare them with the times worked out by hand.
+struct Samples {
+    std::vector<Sample> at, lt;
+};
 
 struct AtUser : sc_core::sc_module {
     TimeKeeper time{false};
-    explicit AtUser(sc_core::sc_module_name n) : sc_module(n)
+    std::vector<Sample> &out;
+    AtUser(sc_core::sc_module_name n, std::vector<Sample> &out_) : sc_module(n), out(out_)
     {
         SC_HAS_PROCESS(AtUser);
         SC_THREAD(run);
     }
+    void sample() { out.push_back({sc_time_stamp(), time.now()}); }
     void run()
     {
         time.advance(ns(7));
-        check(sc_time_stamp() == ns(7), "AT: advance(7 ns) waits exactly 7 ns");
-        check(time.now() == ns(7), "AT: now() is simulation time");
+        sample(); // 0
         time.advance(ns(13));
-        check(sc_time_stamp() == ns(20), "AT: a second advance(13 ns) ends at 20 ns");
+        sample(); // 1
         time.advance_to(ns(15));
-        check(sc_time_stamp() == ns(20), "AT: advance_to a past time does not wait");
+        sample(); // 2
         time.advance_to(ns(32));
-        check(sc_time_stamp() == ns(32), "AT: advance_to(32 ns) ends at 32 ns");
+        sample(); // 3
         time.settle(ns(100));
-        check(time.now() == ns(32), "AT: settle has no effect");
+        sample(); // 4
     }
 };
 
@@ -43,52 +52,108 @@ struct AtUser : sc_core::sc_module {
 // sync point from it).
 struct LtUser : sc_core::sc_module {
     TimeKeeper time{true};
-    explicit LtUser(sc_core::sc_module_name n) : sc_module(n)
+    std::vector<Sample> &out;
+    LtUser(sc_core::sc_module_name n, std::vector<Sample> &out_) : sc_module(n), out(out_)
     {
         SC_HAS_PROCESS(LtUser);
         SC_THREAD(run);
     }
+    void sample() { out.push_back({sc_time_stamp(), time.now()}); }
     void run()
     {
         for (int i = 0; i < 3; i++) time.advance(ns(30));
-        check(sc_time_stamp() == sc_core::SC_ZERO_TIME, "LT: 3 x 30 ns stays below the 100 ns quantum: no wait");
-        check(time.now() == ns(90), "LT: local time is 90 ns after 3 x 30 ns");
+        sample(); // 0
         time.advance(ns(30));
-        check(sc_time_stamp() == ns(120), "LT: the 4th 30 ns reaches the quantum: sync to 120 ns");
-        check(time.now() == ns(120), "LT: no offset left after the sync");
-        // Next boundary is 200 ns: 120 + 50 = 170 stays local, + 40 = 210 syncs.
+        sample(); // 1
         time.advance(ns(50));
-        check(sc_time_stamp() == ns(120) && time.now() == ns(170), "LT: 170 ns is before the 200 ns boundary");
+        sample(); // 2
         time.advance(ns(40));
-        check(sc_time_stamp() == ns(210) && time.now() == ns(210), "LT: 210 ns passes the 200 ns boundary: sync");
+        sample(); // 3
         time.advance_to(ns(205));
-        check(time.now() == ns(210), "LT: advance_to a past time keeps local time");
+        sample(); // 4
         time.advance_to(ns(250));
-        check(sc_time_stamp() == ns(210) && time.now() == ns(250), "LT: advance_to(250 ns) is a local offset");
+        sample(); // 5
         time.sync();
-        check(sc_time_stamp() == ns(250) && time.now() == ns(250), "LT: sync() waits the 40 ns offset");
+        sample(); // 6
         time.sync();
-        check(sc_time_stamp() == ns(250), "LT: sync() with no offset does not wait");
+        sample(); // 7
 
         // settle: a wait on an event (here a plain wait) happened while an offset was pending.
         time.advance(ns(20)); // local 270, simulation 250
         sc_time before = time.now();
         sc_core::wait(ns(30)); // simulation 280, later than `before`
         time.settle(before);
-        check(time.now() == ns(280), "LT: settle after a wait past the local time: local = simulation time");
+        sample(); // 8
         time.advance(ns(10)); // local 290, simulation 280
         before = time.now();
         sc_core::wait(ns(5)); // simulation 285, earlier than `before`
         time.settle(before);
-        check(sc_time_stamp() == ns(285) && time.now() == ns(290), "LT: settle after a short wait keeps `before`");
+        sample(); // 9
     }
 };
 
-int sc_main(int, char *[])
+static Samples simulate()
 {
+    Samples s;
     tlm::tlm_global_quantum::instance().set(ns(100));
-    AtUser at("at");
-    LtUser lt("lt");
+    AtUser at("at", s.at);
+    LtUser lt("lt", s.lt);
     sc_core::sc_start();
-    return harness::finish();
+    return s;
+}
+
+static const Samples &run()
+{
+    static const Samples s = simulate();
+    return s;
+}
+
+TEST(TimeKeeper, ApproximatelyTimedAdvanceWaitsExactlyTheDelay)
+{
+    const std::vector<Sample> &at = run().at;
+    ASSERT_EQ(at.size(), 5u);
+    EXPECT_EQ(at[0].simulation, ns(7)) << "advance(7 ns) waits exactly 7 ns";
+    EXPECT_EQ(at[0].local, ns(7)) << "now() is simulation time";
+    EXPECT_EQ(at[1].simulation, ns(20)) << "a second advance(13 ns) ends at 7 + 13 = 20 ns";
+    EXPECT_EQ(at[2].simulation, ns(20)) << "advance_to a past time (15 ns) does not wait";
+    EXPECT_EQ(at[3].simulation, ns(32)) << "advance_to(32 ns) ends at 32 ns";
+    EXPECT_EQ(at[4].local, ns(32)) << "settle has no effect";
+}
+
+TEST(TimeKeeper, LooselyTimedSyncsAtTheQuantumBoundary)
+{
+    const std::vector<Sample> &lt = run().lt;
+    ASSERT_EQ(lt.size(), 10u);
+    EXPECT_EQ(lt[0].simulation, sc_core::SC_ZERO_TIME) << "3 x 30 ns stays below the 100 ns quantum: no wait";
+    EXPECT_EQ(lt[0].local, ns(90)) << "local time is 90 ns after 3 x 30 ns";
+    EXPECT_EQ(lt[1].simulation, ns(120)) << "the 4th 30 ns reaches the quantum: sync to 120 ns";
+    EXPECT_EQ(lt[1].local, ns(120)) << "no offset left after the sync";
+    // Next boundary is 200 ns: 120 + 50 = 170 stays local, + 40 = 210 syncs.
+    EXPECT_EQ(lt[2].simulation, ns(120)) << "170 ns is before the 200 ns boundary";
+    EXPECT_EQ(lt[2].local, ns(170));
+    EXPECT_EQ(lt[3].simulation, ns(210)) << "210 ns passes the 200 ns boundary: sync";
+    EXPECT_EQ(lt[3].local, ns(210));
+}
+
+TEST(TimeKeeper, LooselyTimedAdvanceToAndSync)
+{
+    const std::vector<Sample> &lt = run().lt;
+    ASSERT_EQ(lt.size(), 10u);
+    EXPECT_EQ(lt[4].local, ns(210)) << "advance_to a past time (205 ns) keeps local time";
+    EXPECT_EQ(lt[5].simulation, ns(210)) << "advance_to(250 ns) is a local offset";
+    EXPECT_EQ(lt[5].local, ns(250));
+    EXPECT_EQ(lt[6].simulation, ns(250)) << "sync() waits the 40 ns offset";
+    EXPECT_EQ(lt[6].local, ns(250));
+    EXPECT_EQ(lt[7].simulation, ns(250)) << "sync() with no offset does not wait";
+}
+
+TEST(TimeKeeper, LooselyTimedSettleDropsAnOffsetThatPredatesAWait)
+{
+    const std::vector<Sample> &lt = run().lt;
+    ASSERT_EQ(lt.size(), 10u);
+    // Local 270 ns, then a 30 ns wait from 250: simulation 280 is past the local time.
+    EXPECT_EQ(lt[8].local, ns(280)) << "settle after a wait past the local time: local = simulation time";
+    // Local 290 ns, then a 5 ns wait from 280: simulation 285 is before `before` (290).
+    EXPECT_EQ(lt[9].simulation, ns(285)) << "settle after a short wait keeps `before`";
+    EXPECT_EQ(lt[9].local, ns(290));
 }
