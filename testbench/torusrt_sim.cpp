@@ -11,6 +11,7 @@
 
 #include "cli_main.h"
 #include "common_options.h"
+#include "machine_file_reader.h"
 #include "machine_options.h"
 #include "model_run.h"
 #include "option_parsing.h"
@@ -189,6 +190,7 @@ void declare_options(CLI::App &app, CommandLine &cl)
     declare_machine_options(app, cl);
     declare_run_options(app, cl);
     app.allow_config_extras(CLI::config_extras_mode::error);  // an unknown key is an error
+    app.config_formatter(std::make_shared<MachineFileReader>());  // '#' in a quoted path, no repeated key
     app.set_config("--config", "", "read the machine from this TOML file (as --dump-config writes it);\n"
                                    "options on the command line take precedence")->type_name("FILE");
     app.add_flag("--dump-config", cl.dump_config, "print the machine as TOML and exit without running")

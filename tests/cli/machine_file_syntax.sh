@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Machine files as a user writes them: '#' starts a comment only outside a quoted value (a path
+# may hold '#', and its dump reads back to the same machine); a key given twice or a [section]
+# is an error naming the file, the line and the key (exit 2), never a silent choice.
+source "$(dirname "$0")/common.bash" "$@"
+need_exe torusrt-sim
+sim="$BUILD/torusrt-sim"
+
+# Paths with '#' (and a space) survive a dump and a read back.
+cp "$SRC/timing/literal.timing" "$TMP/lit #1.timing"
+"$sim" --dump-config --timing "$TMP/lit #1.timing" > "$TMP/t.toml" 2> "$TMP/err"
+check "dump with a '#' timing path exits 0 ($(head -1 "$TMP/err"))" test $? -eq 0
+"$sim" --dump-config --config "$TMP/t.toml" > "$TMP/t-again.toml" 2> "$TMP/err"
+check "a '#' timing path reads back ($(head -1 "$TMP/err"))" cmp -s "$TMP/t.toml" "$TMP/t-again.toml"
+"$sim" "$SRC/scenes/one-pixel.nff" -o "$TMP/w.png" -q --t1 1 --cells 2 --ips 2 --write-map "$TMP/m#2.map" \
+    || fail "--write-map run"
+"$sim" --dump-config --cells 2 --ips 2 --map-file "$TMP/m#2.map" > "$TMP/m.toml" 2> "$TMP/err"
+check "dump with a '#' map-file exits 0 ($(head -1 "$TMP/err"))" test $? -eq 0
+"$sim" --dump-config --config "$TMP/m.toml" > "$TMP/m-again.toml" 2> "$TMP/err"
+check "a '#' map-file path reads back ($(head -1 "$TMP/err"))" cmp -s "$TMP/m.toml" "$TMP/m-again.toml"
+
+# Comments: whole lines and after a value.
+printf '# a machine\nips="2x2" # four nodes\n  # indented\nmap="block"\n' > "$TMP/c.toml"
+"$sim" --dump-config --config "$TMP/c.toml" > "$TMP/c-dump.toml" 2> "$TMP/err"
+check "comments are skipped ($(head -1 "$TMP/err"))" grep -qx 'ips="2x2x1"' "$TMP/c-dump.toml"
+
+# bad_file EXPECTED CONTENT: exit 2, stderr matches EXPECTED, nothing on stdout.
+bad_file() {
+    printf '%b' "$2" > "$TMP/bad.toml"
+    "$sim" --dump-config --config "$TMP/bad.toml" > "$TMP/out" 2> "$TMP/err"
+    local rc=$?
+    check "'$2' exits 2 (got $rc)" test $rc -eq 2
+    check "'$2': message '$1' ($(head -1 "$TMP/err"))" grep -q -- "$1" "$TMP/err"
+    check "'$2': no dump" test ! -s "$TMP/out"
+}
+bad_file "bad.toml: line 3: ips: given twice" 'ips="2"\nmap="block"\nips="3"\n'
+bad_file "bad.toml: line 2: ips: given twice" 'ips="2"\n ips = "2"\n'
+bad_file "bad.toml: line 1: \[machine\]: a machine file has no sections" '[machine]\nips="2"\n'
+finish
