@@ -253,6 +253,8 @@ int dump_config(const CLI::App &app, const CommandLine &cl)
 {
     route_systemc_messages(cl.common.quiet);
     SimConfig config = checked_config(cl);
+    std::vector<int32_t> owner;  // the table a run would read, checked as the run checks it
+    if (config.mapping == RT_MAP_FILE) read_map_file(config, config.cells.data(), owner);
     check_dump_covers_options(app, machine_options(config));
     std::fputs(machine_options_toml(config).c_str(), stdout);
     return 0;

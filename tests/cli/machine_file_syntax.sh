@@ -24,6 +24,15 @@ printf '# a machine\nips="2x2" # four nodes\n  # indented\nmap="block"\n' > "$TM
 "$sim" --dump-config --config "$TMP/c.toml" > "$TMP/c-dump.toml" 2> "$TMP/err"
 check "comments are skipped ($(head -1 "$TMP/err"))" grep -qx 'ips="2x2x1"' "$TMP/c-dump.toml"
 
+# --dump-config reads the --map-file as a run does: a missing table or one for another grid exits 2.
+"$sim" --dump-config --ips 2 --map-file "$TMP/missing.map" > "$TMP/out" 2> "$TMP/err"
+rc=$?
+check "--dump-config with a missing --map-file exits 2 (got $rc)" test $rc -eq 2
+check "--dump-config with a missing --map-file names it ($(head -1 "$TMP/err"))" grep -q "missing.map" "$TMP/err"
+"$sim" --dump-config --cells 3 --ips 2 --map-file "$TMP/m#2.map" > "$TMP/out" 2> "$TMP/err"
+rc=$?
+check "--dump-config with a --map-file for other cells exits 2 (got $rc)" test $rc -eq 2
+
 # bad_file EXPECTED CONTENT: exit 2, stderr matches EXPECTED, nothing on stdout.
 bad_file() {
     printf '%b' "$2" > "$TMP/bad.toml"
