@@ -208,6 +208,21 @@ bool on_command_line(int argc, char **argv, const std::string &name)
     return false;
 }
 
+// A bad setting (exit 2) whose option came from the --config file, not the command line: the
+// message names the file too (the validator names only the option).
+UserError naming_config_file(const CLI::App &app, const UserError &e, int argc, char **argv)
+{
+    std::string what = e.what();
+    size_t end = what.find_first_of(" :");
+    std::string name = what.substr(0, end);
+    const CLI::Option *config = app.get_config_ptr();
+    const CLI::Option *opt = name.rfind("--", 0) == 0 ? app.get_option_no_throw(name) : nullptr;
+    if (e.exit_code() != 2 || config == nullptr || config->count() == 0 || opt == nullptr ||
+        !opt->get_configurable() || opt->count() == 0 || on_command_line(argc, argv, name))
+        return e;
+    return UserError(config->as<std::string>() + ": " + what, 2);
+}
+
 // --map and --map-file exclude each other; one on the command line replaces the other from a
 // --config file (both in one place is an error, reported by apply_mapping_options).
 void resolve_mapping_sources(const CLI::App &app, CommandLine &cl, int argc, char **argv)
@@ -346,7 +361,11 @@ int sc_main(int argc, char **argv)
     return run_cli("torusrt-sim", app, argc, argv,
                    [&] {
                        resolve_mapping_sources(app, cl, argc, argv);
-                       return cl.dump_config ? dump_config(app, cl) : run(cl, wall_start);
+                       try {
+                           return cl.dump_config ? dump_config(app, cl) : run(cl, wall_start);
+                       } catch (const UserError &e) {
+                           throw naming_config_file(app, e, argc, argv);
+                       }
                    },
                    "  3 deadlock: the network stalled with packets outstanding\n");
 }

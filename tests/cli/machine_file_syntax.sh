@@ -33,6 +33,20 @@ check "--dump-config with a missing --map-file names it ($(head -1 "$TMP/err"))"
 rc=$?
 check "--dump-config with a --map-file for other cells exits 2 (got $rc)" test $rc -eq 2
 
+# A bad value or combination that comes from the file names the file beside the option.
+from_file() {  # from_file EXPECTED CONTENT OPTIONS...
+    printf '%b' "$2" > "$TMP/m.toml"; local expect=$1; shift 2
+    "$sim" --dump-config --config "$TMP/m.toml" "$@" > "$TMP/out" 2> "$TMP/err"
+    local rc=$?
+    check "'$expect' exits 2 (got $rc)" test $rc -eq 2
+    check "message '$expect' ($(head -1 "$TMP/err"))" grep -q -- "$expect" "$TMP/err"
+}
+from_file "m.toml: --ips 'zz'" 'ips="zz"\n'
+from_file "m.toml: --quantum: only meaningful with --style lt" 'style="lt"\nquantum="10"\n' --style at
+"$sim" --dump-config --config "$TMP/m.toml" --style at --quantum 10 > "$TMP/out" 2> "$TMP/err"
+check "an option from the command line is named without the file ($(head -1 "$TMP/err"))" \
+    grep -q "^torusrt-sim: --quantum: only meaningful" "$TMP/err"
+
 # bad_file EXPECTED CONTENT: exit 2, stderr matches EXPECTED, nothing on stdout.
 bad_file() {
     printf '%b' "$2" > "$TMP/bad.toml"
