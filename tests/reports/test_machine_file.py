@@ -40,6 +40,18 @@ class MachineFile(unittest.TestCase):
         with self.assertRaisesRegex(ValueError, "m.toml:3: ips given twice"):
             mf.read_machine_file('ips="1"\nmap="cyclic"\nips="2"\n', "m.toml")
 
+    def test_bad_report_is_named(self):
+        import tempfile
+        import types
+        from report import cli
+        with tempfile.TemporaryDirectory() as tmp:
+            for name, text in (("cut.json", "{"), ("old.json", '{"config": {}}')):
+                path = os.path.join(tmp, name)
+                with open(path, "w") as f:
+                    f.write(text)
+                with self.assertRaisesRegex(ValueError, "^" + path + ": "):
+                    cli.machine(types.SimpleNamespace(report=path, compare=None))
+
 
 if __name__ == "__main__":
     unittest.main()
