@@ -271,6 +271,9 @@ int dump_config(const CLI::App &app, const CommandLine &cl)
     std::vector<int32_t> owner;  // the table a run would read, checked as the run checks it
     if (config.mapping == RT_MAP_FILE) read_map_file(config, config.cells.data(), owner);
     check_dump_covers_options(app, machine_options(config));
+    for (const auto &kv : machine_options(config))  // a key="value" line cannot hold a line break
+        if (kv.second.find_first_of("\r\n") != std::string::npos)
+            throw UserError("--" + kv.first + ": a value with a line break cannot be written to a machine file", 2);
     std::fputs(machine_options_toml(config).c_str(), stdout);
     return 0;
 }

@@ -47,6 +47,15 @@ from_file "m.toml: --quantum: only meaningful with --style lt" 'style="lt"\nquan
 check "an option from the command line is named without the file ($(head -1 "$TMP/err"))" \
     grep -q "^torusrt-sim: --quantum: only meaningful" "$TMP/err"
 
+# A value the file format cannot hold (a line break in a path) is refused by the dump, not
+# written as a file that does not read back.
+cp "$SRC/timing/literal.timing" "$TMP/two"$'\n'"lines.timing"
+"$sim" --dump-config --timing "$TMP/two"$'\n'"lines.timing" > "$TMP/out" 2> "$TMP/err"
+rc=$?
+check "--dump-config of a path with a line break exits 2 (got $rc)" test $rc -eq 2
+check "--dump-config of a path with a line break names --timing ($(head -1 "$TMP/err"))" grep -q -- "--timing" "$TMP/err"
+check "--dump-config of a path with a line break writes nothing" test ! -s "$TMP/out"
+
 # bad_file EXPECTED CONTENT: exit 2, stderr matches EXPECTED, nothing on stdout.
 bad_file() {
     printf '%b' "$2" > "$TMP/bad.toml"
