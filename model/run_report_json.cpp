@@ -180,7 +180,10 @@ nlohmann::json to_json(const RunReport &r)
         {"delta_cycles", f.delta_cycles}};
     j["packets"]["conserved"] = r.conserved;
     if (!r.mapping.is_null()) j["mapping"] = r.mapping;
-    if (r.status == "deadlock") j["deadlock"] = deadlock_json(r.deadlock);
+    if (r.status == "deadlock") {  // no image was finished: the stall's time is no T(n)
+        j["deadlock"] = deadlock_json(r.deadlock);
+        j["efficiency"] = j["efficiency_t1"] = nullptr;
+    }
     if (!r.clusters.empty()) clusters_to_json(r, j);
     return j;
 }
