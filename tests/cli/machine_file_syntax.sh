@@ -68,4 +68,5 @@ bad_file() {
 bad_file "bad.toml: line 3: ips: given twice" 'ips="2"\nmap="block"\nips="3"\n'
 bad_file "bad.toml: line 2: ips: given twice" 'ips="2"\n ips = "2"\n'
 bad_file "bad.toml: line 1: \[machine\]: a machine file has no sections" '[machine]\nips="2"\n'
+bad_file "bad.toml: frobnicate: not a machine option" 'ips="2"\nfrobnicate="2"\n'
 finish
