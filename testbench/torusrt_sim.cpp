@@ -38,6 +38,7 @@ struct CommandLine {
     // The run: the command line only.
     std::string vcd, trace_ips, trace_from, trace_to, t1, time_limit;
     bool dump_config = false;
+    std::string config_file;  // the --config file read, if any (no output may replace it)
 };
 
 double seconds_now()
@@ -298,6 +299,9 @@ void stage_outputs(const CommandLine &cl, SimConfig &config, StagedOutputs &out)
     }
     if (!cl.mapping.write_map.empty()) out.write_map = out.set.add("--write-map", cl.mapping.write_map, scene);
     if (!cl.mapping.load_map.empty()) out.load_map = out.set.add("--load-map", cl.mapping.load_map, scene);
+    out.set.check_not_input("--config", cl.config_file);
+    out.set.check_not_input("--timing", config.timing_file);
+    out.set.check_not_input("--map-file", config.map_file);
 }
 
 void print_written(const CommandLine &cl, const SimConfig &config)
@@ -364,6 +368,7 @@ int sc_main(int argc, char **argv)
     return run_cli("torusrt-sim", app, argc, argv,
                    [&] {
                        resolve_mapping_sources(app, cl, argc, argv);
+                       if (app.get_config_ptr()->count() > 0) cl.config_file = app.get_config_ptr()->as<std::string>();
                        try {
                            return cl.dump_config ? dump_config(app, cl) : run(cl, wall_start);
                        } catch (const UserError &e) {

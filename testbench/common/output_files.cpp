@@ -91,6 +91,14 @@ std::string OutputSet::add(const std::string &option, const std::string &path, c
     return special ? path : e.tmp;
 }
 
+void OutputSet::check_not_input(const std::string &option, const std::string &input) const
+{
+    if (input.empty() || is_special_file(input)) return;
+    for (const auto &e : m_entries)
+        if (!e.tmp.empty() && same_file(e.path, input))
+            throw UserError(e.option + " '" + e.path + "': is the " + option + " file " + input, 2);
+}
+
 void OutputSet::commit() { commit(""); }
 
 void OutputSet::commit(const std::string &option)
