@@ -120,6 +120,7 @@ int run_single(const RenderOptions &opt, RenderSetup &setup, std::chrono::steady
     std::string png_path = outputs.add("-o", opt.common.output, opt.common.scene);
     std::string stats_path = opt.common.stats.empty() ? "" : outputs.add("--stats", opt.common.stats, opt.common.scene);
     std::string cost_path = opt.cost_image.empty() ? "" : outputs.add("--cost-image", opt.cost_image, opt.common.scene);
+    outputs.check_not_input("--timing", opt.common.timing_file);
     const rt_camera *cam = rt_scene_camera(setup.loaded.scene.get());
     CostImage cost(opt.cost_image, cam->width, cam->height, &setup.settings.timing);
     FrameResult fr = render_frame(setup, "torusrt-render", opt, &cost);

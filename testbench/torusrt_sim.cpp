@@ -14,6 +14,7 @@
 #include "cli_main.h"
 #include "common_options.h"
 #include "frame_pattern.h"
+#include "machine_file_reader.h"
 #include "machine_options.h"
 #include "model_run.h"
 #include "option_parsing.h"
@@ -44,6 +45,7 @@ struct CommandLine {
     // Animation (run options too: the frames are the workload).
     AnimationOptions anim;
     std::string remap, frames_csv;
+    std::string config_file;  // the --config file read, if any (no output may replace it)
 };
 
 double seconds_now()
@@ -220,6 +222,7 @@ void declare_options(CLI::App &app, CommandLine &cl)
     declare_machine_options(app, cl);
     declare_run_options(app, cl);
     app.allow_config_extras(CLI::config_extras_mode::error);  // an unknown key is an error
+    app.config_formatter(std::make_shared<MachineFileReader>());  // '#' in a quoted path, no repeated key
     app.set_config("--config", "", "read the machine from this TOML file (as --dump-config writes it);\n"
                                    "options on the command line take precedence")->type_name("FILE");
     app.add_flag("--dump-config", cl.dump_config, "print the machine as TOML and exit without running")
@@ -235,6 +238,21 @@ bool on_command_line(int argc, char **argv, const std::string &name)
     for (int i = 1; i < argc; i++)
         if (argv[i] == name || std::string(argv[i]).rfind(name + "=", 0) == 0) return true;
     return false;
+}
+
+// A bad setting (exit 2) whose option came from the --config file, not the command line: the
+// message names the file too (the validator names only the option).
+UserError naming_config_file(const CLI::App &app, const UserError &e, int argc, char **argv)
+{
+    std::string what = e.what();
+    size_t end = what.find_first_of(" :");
+    std::string name = what.substr(0, end);
+    const CLI::Option *config = app.get_config_ptr();
+    const CLI::Option *opt = name.rfind("--", 0) == 0 ? app.get_option_no_throw(name) : nullptr;
+    if (e.exit_code() != 2 || config == nullptr || config->count() == 0 || opt == nullptr ||
+        !opt->get_configurable() || opt->count() == 0 || on_command_line(argc, argv, name))
+        return e;
+    return UserError(config->as<std::string>() + ": " + what, 2);
 }
 
 // --map and --map-file exclude each other; one on the command line replaces the other from a
@@ -282,7 +300,12 @@ int dump_config(const CLI::App &app, const CommandLine &cl)
 {
     route_systemc_messages(cl.common.quiet);
     SimConfig config = checked_config(cl);
+    std::vector<int32_t> owner;  // the table a run would read, checked as the run checks it
+    if (config.mapping == RT_MAP_FILE) read_map_file(config, config.cells.data(), owner);
     check_dump_covers_options(app, machine_options(config));
+    for (const auto &kv : machine_options(config))  // a key="value" line cannot hold a line break
+        if (kv.second.find_first_of("\r\n") != std::string::npos)
+            throw UserError("--" + kv.first + ": a value with a line break cannot be written to a machine file", 2);
     std::fputs(machine_options_toml(config).c_str(), stdout);
     return 0;
 }
@@ -307,6 +330,9 @@ void stage_outputs(const CommandLine &cl, SimConfig &config, StagedOutputs &out)
     }
     if (!cl.mapping.write_map.empty()) out.write_map = out.set.add("--write-map", cl.mapping.write_map, scene);
     if (!cl.mapping.load_map.empty()) out.load_map = out.set.add("--load-map", cl.mapping.load_map, scene);
+    out.set.check_not_input("--config", cl.config_file);
+    out.set.check_not_input("--timing", config.timing_file);
+    out.set.check_not_input("--map-file", config.map_file);
 }
 
 void print_written(const CommandLine &cl, const SimConfig &config)
@@ -427,7 +453,12 @@ int sc_main(int argc, char **argv)
     return run_cli("torusrt-sim", app, argc, argv,
                    [&] {
                        resolve_mapping_sources(app, cl, argc, argv);
-                       return cl.dump_config ? dump_config(app, cl) : run(cl, wall_start);
+                       if (app.get_config_ptr()->count() > 0) cl.config_file = app.get_config_ptr()->as<std::string>();
+                       try {
+                           return cl.dump_config ? dump_config(app, cl) : run(cl, wall_start);
+                       } catch (const UserError &e) {
+                           throw naming_config_file(app, e, argc, argv);
+                       }
                    },
                    "  3 deadlock: the network stalled with packets outstanding\n");
 }

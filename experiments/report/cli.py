@@ -84,7 +84,10 @@ def machine(args):
     import json
     from . import machine_file as mf
     with open(args.report) as f:
-        pairs = mf.from_report(json.load(f))
+        try:
+            pairs = mf.from_report(json.load(f))
+        except ValueError as e:  # not JSON, or no machine in it: name the report
+            raise ValueError("%s: %s" % (args.report, e))
     if not args.compare:
         sys.stdout.write(mf.toml_text(pairs))
         return 0

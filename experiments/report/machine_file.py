@@ -23,18 +23,33 @@ def toml_text(pairs):
     return "".join(lines)
 
 
+def without_comment(line):
+    """The line up to a '#' outside quotes (a path may hold '#'), as torusrt-sim reads it."""
+    quote = None
+    for i, c in enumerate(line):
+        if quote:
+            quote = None if c == quote else quote
+        elif c in "\"'":
+            quote = c
+        elif c == "#":
+            return line[:i]
+    return line
+
+
 def read_machine_file(text, name="machine file"):
     """{key: value} of key="value" lines; blank lines and # comments are skipped."""
     values = {}
     for number, line in enumerate(text.splitlines(), 1):
-        line = line.strip()
-        if not line or line.startswith("#"):
+        line = without_comment(line).strip()
+        if not line:
             continue
         key, sep, value = line.partition("=")
-        value = value.strip()
+        key, value = key.strip(), value.strip()
         if not sep or len(value) < 2 or value[0] not in "\"'" or value[-1] != value[0]:
             raise ValueError("%s:%d: expected key=\"value\"" % (name, number))
-        values[key.strip()] = value[1:-1]
+        if key in values:
+            raise ValueError("%s:%d: %s given twice" % (name, number, key))
+        values[key] = value[1:-1]
     return values
 
 

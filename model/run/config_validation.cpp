@@ -60,6 +60,7 @@ void validate_timing(const MachineConfig &m)
     check_step_limits(m.step);
     if (!(m.quantum_us >= 0) || !std::isfinite(m.quantum_us)) bad("--quantum: must not be negative");
     if (m.style == TimingStyle::at && m.quantum_us > 0) bad("--quantum: only meaningful with --style lt");
+    if (m.quantum_us > 0 && m.quantum_us < 1e-6) bad("--quantum: 0 or at least 1 ps (SystemC's time resolution)");
     if (m.quantum_us > kMaxSimTimeS * 1e6) bad("--quantum: at most " + str(kMaxSimTimeS) + " s");
 }
 

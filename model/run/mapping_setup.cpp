@@ -50,6 +50,14 @@ nlohmann::json cells_per_node(const std::vector<int32_t> &owner, int nodes)
 
 }  // namespace
 
+void read_map_file(const SimConfig &config, const int dims[3], std::vector<int32_t> &owner)
+{
+    owner.assign(size_t(dims[0]) * dims[1] * dims[2], 0);
+    char msg[RT_MSG_LEN] = "";
+    if (rt_map_file_read(config.map_file.c_str(), dims, config.node_count(), owner.data(), msg, sizeof msg) != RT_OK)
+        throw UserError(std::string("--map-file: ") + msg, 2);
+}
+
 nlohmann::json prepare_mapping(SimConfig &config, rt_scene *scene, const rt_grid *grid)
 {
     int dims[3];
@@ -59,8 +67,7 @@ nlohmann::json prepare_mapping(SimConfig &config, rt_scene *scene, const rt_grid
     char msg[RT_MSG_LEN] = "";
     nlohmann::json j = {{"kind", mapping_name(config.mapping)}};
     if (config.mapping == RT_MAP_FILE) {
-        if (rt_map_file_read(config.map_file.c_str(), dims, nodes, owner.data(), msg, sizeof msg) != RT_OK)
-            throw UserError(std::string("--map-file: ") + msg, 2);
+        read_map_file(config, dims, owner);
         j["file"] = config.map_file;
     } else if (config.mapping == RT_MAP_COST) {
         j.update(cost_mapping(config, scene, grid, owner));

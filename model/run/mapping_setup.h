@@ -28,6 +28,10 @@ void apply_mapping_options(SimConfig &config, const MappingOptions &options, boo
 // Fills config.owner_table for the loaded scene and returns what the report says about it
 // (JSON `mapping`: kind, cells per node, pilot and mapper costs for `cost`).
 // Throws UserError naming the file and line (exit 2) for a bad --map-file.
+// Reads config.map_file for a grid of `dims` cells into `owner` (UserError naming the file and
+// line, exit 2).
+void read_map_file(const SimConfig &config, const int dims[3], std::vector<int32_t> &owner);
+
 nlohmann::json prepare_mapping(SimConfig &config, rt_scene *scene, const rt_grid *grid);
 
 // Writes the files asked for to the paths given (empty: not asked; UserError on failure):

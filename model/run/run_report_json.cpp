@@ -190,7 +190,10 @@ nlohmann::json to_json(const RunReport &r)
         j["output_pattern"] = r.output_pattern;
     }
     j["flow"] = r.flow;
-    if (r.status == "deadlock") j["deadlock"] = deadlock_json(r.deadlock);
+    if (r.status == "deadlock") {  // no image was finished: the stall's time is no T(n)
+        j["deadlock"] = deadlock_json(r.deadlock);
+        j["efficiency"] = j["efficiency_t1"] = nullptr;
+    }
     if (!r.clusters.empty()) clusters_to_json(r, j);
     return j;
 }

@@ -20,8 +20,11 @@ int run_cli(const char *program, CLI::App &app, int argc, char **argv, const std
         if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
         std::string what = e.what();
         const CLI::Option *config = app.get_config_ptr();  // name the --config file its errors come from
-        if (dynamic_cast<const CLI::ConfigError *>(&e) && config != nullptr && config->count() > 0)
+        if (dynamic_cast<const CLI::ConfigError *>(&e) && config != nullptr && config->count() > 0) {
+            const std::string unknown = "INI was not able to parse ";  // CLI11's words for an unknown key
+            if (what.rfind(unknown, 0) == 0) what = what.substr(unknown.size()) + ": not a machine option";
             what = config->as<std::string>() + ": " + what;
+        }
         std::fprintf(stderr, "%s: %s\nRun with --help for more information.\n", program, what.c_str());
         return 2;
     }

@@ -33,8 +33,18 @@ bool same_file(const std::string &a, const std::string &b)
            da.st_dev == db.st_dev && da.st_ino == db.st_ino;
 }
 
+// The path names this process's standard output (/dev/stdout, /dev/fd/1, or the file it is
+// redirected to): written through stdout, whose position the shell's redirection owns.
+bool names_stdout(const std::string &path)
+{
+    struct stat sp, so;
+    return stat(path.c_str(), &sp) == 0 && fstat(STDOUT_FILENO, &so) == 0 && sp.st_dev == so.st_dev &&
+           sp.st_ino == so.st_ino;
+}
+
 FILE *open_for_writing(const std::string &path, const std::string &shown)
 {
+    if (names_stdout(path)) return stdout;
     FILE *f = std::fopen(path.c_str(), "wb");
     if (!f) throw UserError(shown + ": cannot write: " + std::strerror(errno));
     return f;
@@ -43,7 +53,7 @@ FILE *open_for_writing(const std::string &path, const std::string &shown)
 // Closes `f`; throws naming `shown` if the close (the last flush) fails or `failed` is set.
 void close_checked(FILE *f, const std::string &shown, bool failed, int err)
 {
-    if (std::fclose(f) != 0 && !failed) {
+    if ((f == stdout ? std::fflush(f) : std::fclose(f)) != 0 && !failed) {
         failed = true;
         err = errno;
     }
@@ -55,7 +65,7 @@ void close_checked(FILE *f, const std::string &shown, bool failed, int err)
 bool is_special_file(const std::string &path)
 {
     struct stat st;
-    return stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode);
+    return stat(path.c_str(), &st) == 0 && (!S_ISREG(st.st_mode) || names_stdout(path));
 }
 
 OutputSet::~OutputSet()
@@ -79,6 +89,14 @@ std::string OutputSet::add(const std::string &option, const std::string &path, c
     Entry e{option, path, special ? "" : path + ".tmp." + std::to_string(getpid())};
     m_entries.push_back(e);
     return special ? path : e.tmp;
+}
+
+void OutputSet::check_not_input(const std::string &option, const std::string &input) const
+{
+    if (input.empty() || is_special_file(input)) return;
+    for (const auto &e : m_entries)
+        if (!e.tmp.empty() && same_file(e.path, input))
+            throw UserError(e.option + " '" + e.path + "': is the " + option + " file " + input, 2);
 }
 
 void OutputSet::commit() { commit(""); }
@@ -106,7 +124,7 @@ void write_png_file(const std::string &write_path, const std::string &shown, uns
     FILE *f = open_for_writing(write_path, shown);
     char msg[RT_MSG_LEN] = "";
     if (rt_png_write_stream(f, shown.c_str(), width, height, rgb8.data(), msg, sizeof msg) != RT_OK) {
-        std::fclose(f);
+        if (f != stdout) std::fclose(f);
         throw UserError(msg);
     }
     close_checked(f, shown, false, 0);

@@ -25,6 +25,8 @@ class OutputSet {
     // Registers PATH for OPTION and returns the path to write. Throws UserError (exit 2) if its
     // folder is missing, or it is the input file `input` or another output of this set.
     std::string add(const std::string &option, const std::string &path, const std::string &input);
+    // Throws UserError (exit 2) if an output of this set is the file `input` that `option` reads.
+    void check_not_input(const std::string &option, const std::string &input) const;
     // Renames every temporary onto its path. Throws UserError if a rename fails.
     void commit();
     // Renames only the temporary registered for `option` (the others are removed with the set):

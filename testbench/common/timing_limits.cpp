@@ -26,6 +26,12 @@ std::string timing_limit_problem(const rt_timing &t, std::string *key)
         if (key) *key = link > kMaxTimingUs ? "link transfer" : "bus transfer";
         return buf;
     }
+    if (link > 0 && link < 1e-6) {  // SystemC counts whole picoseconds: it would round to 0
+        std::snprintf(buf, sizeof buf, "a packet's link transfer takes %g us, below SystemC's time resolution of 1 ps",
+                      link);
+        if (key) *key = "link transfer";
+        return buf;
+    }
     return "";
 }
 

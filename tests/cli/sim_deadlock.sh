@@ -39,6 +39,8 @@ check "JSON: every full queue is full in the queue list too" \
 check "JSON: no queue holds more than its capacity" jq -e 'all(.queues[]; .occupancy <= .capacity and .high_water <= .capacity)' "$d"
 check "JSON: no queue stalled longer than the run" jq -e '. as $r | all(.queues[]; .stalled_s >= 0 and .stalled_s <= $r.deadlock.time_s)' "$d"
 check "JSON: packets not conserved (some are stuck)" jq -e '.packets.conserved == false' "$d"
+check "JSON: no efficiency without an image time (null)" \
+    jq -e 'has("efficiency") and .efficiency == null and .efficiency_t1 == null' "$d"
 
 for scene in one-cell facing-mirrors paper-image2; do
   f="$SRC/scenes/$scene.nff"

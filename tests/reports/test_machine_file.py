@@ -33,6 +33,25 @@ class MachineFile(unittest.TestCase):
         with self.assertRaisesRegex(ValueError, "m.toml:2:"):
             mf.read_machine_file('ips="1"\nmap=cyclic\n', "m.toml")
 
+    def test_read_as_torusrt_sim_reads(self):
+        # As torusrt-sim --config: '#' outside quotes is a comment, inside a path it is kept.
+        text = 'ips="2x2x1" # four nodes\ntiming="run #2.timing"\n'
+        self.assertEqual(mf.read_machine_file(text), {"ips": "2x2x1", "timing": "run #2.timing"})
+        with self.assertRaisesRegex(ValueError, "m.toml:3: ips given twice"):
+            mf.read_machine_file('ips="1"\nmap="cyclic"\nips="2"\n', "m.toml")
+
+    def test_bad_report_is_named(self):
+        import tempfile
+        import types
+        from report import cli
+        with tempfile.TemporaryDirectory() as tmp:
+            for name, text in (("cut.json", "{"), ("old.json", '{"config": {}}')):
+                path = os.path.join(tmp, name)
+                with open(path, "w") as f:
+                    f.write(text)
+                with self.assertRaisesRegex(ValueError, "^" + path + ": "):
+                    cli.machine(types.SimpleNamespace(report=path, compare=None))
+
 
 if __name__ == "__main__":
     unittest.main()

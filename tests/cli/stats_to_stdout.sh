@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# --stats naming the command's own standard output (/dev/fd/1, as /dev/stdout) while that output
+# is redirected to a regular file: the JSON is written through it, in place (never a temporary
+# renamed over the device path), and with -q standard output holds exactly the JSON.
+source "$(dirname "$0")/common.bash" "$@"
+need_exe torusrt-sim
+f="$SRC/scenes/paper-image1.nff"
+ok_json() { test -s "$1" && jq -e '.status == "ok"' "$1" > /dev/null; }
+"$BUILD/torusrt-sim" "$f" -o "$TMP/a.png" --stats /dev/fd/1 -q --t1 1 --size 8x8 --ips 2 > "$TMP/out.json" 2> "$TMP/err"
+rc=$?
+check "--stats /dev/fd/1 into a file exits 0 (got $rc: $(head -1 "$TMP/err"))" test $rc -eq 0
+check "--stats /dev/fd/1 into a file: stdout is the JSON report" ok_json "$TMP/out.json"
+"$BUILD/torusrt-sim" "$f" -o "$TMP/b.png" --stats /dev/fd/1 -q --t1 1 --size 8x8 --ips 2 2> "$TMP/err" | cat > "$TMP/pipe.json"
+check "--stats /dev/fd/1 into a pipe: stdout is the JSON report" ok_json "$TMP/pipe.json"
+finish
