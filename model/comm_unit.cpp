@@ -72,17 +72,16 @@ void CommUnit::accept(const TimedPacket &p)
     }
     // Called in the processor side's thread: it waits while one of its packets is held.
     while (processor_held()) sc_core::wait(m_processor_room);
-    TimedPacket q = p;
-    q.last_dir = -1;
-    enqueue(q, q.stamp, processor_source(), nullptr);
+    m_arrivals.at(enqueue(p, p.stamp, processor_source(), nullptr)).item.last_dir = -1; // it leaves the processor side
 }
 
-void CommUnit::enqueue(const TimedPacket &p, const sc_core::sc_time &stamp, int source, BufferSpace *credit)
+uint32_t CommUnit::enqueue(const TimedPacket &p, const sc_core::sc_time &stamp, int source, BufferSpace *credit)
 {
     sc_core::sc_time now = sc_core::sc_time_stamp();
     sc_core::sc_time when = stamp > now + m_lookahead ? stamp - m_lookahead : now;
-    m_arrivals.push(when, source, p, stamp, credit);
+    uint32_t h = m_arrivals.push(when, source, p, stamp, credit);
     wake_at(when);
+    return h;
 }
 
 void CommUnit::b_transport(int id, tlm::tlm_generic_payload &trans, sc_core::sc_time &delay)

@@ -74,7 +74,8 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf {
     bool holds(int source, uint32_t buffer) const;
     bool forward(uint32_t handle);
     void b_transport(int id, tlm::tlm_generic_payload &trans, sc_core::sc_time &delay);
-    void enqueue(const TimedPacket &p, const sc_core::sc_time &stamp, int source, BufferSpace *credit);
+    // Returns the arrival's handle.
+    uint32_t enqueue(const TimedPacket &p, const sc_core::sc_time &stamp, int source, BufferSpace *credit);
     void wake_at(const sc_core::sc_time &when);
     void deliver();
     void retry();
