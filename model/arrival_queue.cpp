@@ -12,7 +12,7 @@ bool ArrivalQueue::later(const Key &a, const Key &b)
     return a.seq > b.seq;
 }
 
-void ArrivalQueue::push(const sc_core::sc_time &when, int source, const TimedPacket &item,
+uint32_t ArrivalQueue::push(const sc_core::sc_time &when, int source, const TimedPacket &item,
                         const sc_core::sc_time &stamp, BufferSpace *credit)
 {
     uint32_t slot;
@@ -30,6 +30,7 @@ void ArrivalQueue::push(const sc_core::sc_time &when, int source, const TimedPac
     a.credit = credit;
     m_heap.push_back(Key{when, source, slot, m_seq++, sc_core::sc_delta_count()});
     std::push_heap(m_heap.begin(), m_heap.end(), later);
+    return slot;
 }
 
 uint32_t ArrivalQueue::pop()

@@ -22,8 +22,8 @@ class ArrivalQueue {
         BufferSpace *credit; // returned once the packet is taken on (null: nothing to return)
     };
 
-    // Holds `item` (stamped `stamp`) until `when` (>= simulation time).
-    void push(const sc_core::sc_time &when, int source, const TimedPacket &item, const sc_core::sc_time &stamp,
+    // Holds `item` (stamped `stamp`) until `when` (>= simulation time); returns its handle.
+    uint32_t push(const sc_core::sc_time &when, int source, const TimedPacket &item, const sc_core::sc_time &stamp,
               BufferSpace *credit);
     bool empty() const { return m_heap.empty(); }
     const sc_core::sc_time &next_time() const { return m_heap.front().when; }

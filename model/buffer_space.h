@@ -1,7 +1,7 @@
 // buffer_space.h - the room in one bounded buffer, counted in packets: the "space available"
 // notion of flow control. A writer takes a slot before it hands a packet over and the reader
 // gives it back once the packet has left the buffer (a credit returned). A thread that finds no
-// room waits on released(); an SC_METHOD registers an event with on_release() and is notified
+// room waits for the next release; an SC_METHOD registers an event with on_release() and is notified
 // once, at the next release. Capacity 0 = unbounded (room always available).
 // Stall time: the simulated time during which at least one writer waits for room, from the
 // moment the first writer starts waiting until the next release (a writer that still finds no
@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cstddef>
+#include <memory>
 #include <systemc>
 #include <vector>
 
@@ -58,7 +59,7 @@ class BufferSpace {
         if (m_total) --*m_total;
         if (!m_capacity) return;
         end_stall();
-        m_released.notify(sc_core::SC_ZERO_TIME);
+        if (m_released) m_released->notify(sc_core::SC_ZERO_TIME);
         for (sc_core::sc_event *e : m_waiters) e->notify(sc_core::SC_ZERO_TIME);
         m_waiters.clear();
     }
@@ -68,7 +69,8 @@ class BufferSpace {
         while (!available()) {
             m_blocked_writers++;
             begin_stall();
-            sc_core::wait(m_released);
+            if (!m_released) m_released = std::make_unique<sc_core::sc_event>();
+            sc_core::wait(*m_released);
             m_blocked_writers--;
         }
         take();
@@ -81,7 +83,6 @@ class BufferSpace {
             if (w == &e) return;
         m_waiters.push_back(&e);
     }
-    const sc_core::sc_event &released() const { return m_released; }
 
     size_t used() const { return m_used; }
     size_t size() const { return m_used; }
@@ -124,7 +125,9 @@ class BufferSpace {
     StallClock m_stall;
     int *m_total = nullptr;
     StallClock *m_group = nullptr;
-    sc_core::sc_event m_released;
+    // Made when a thread first waits for room: a run makes thousands of buffers (one per class
+    // and channel in use) and most never fill.
+    std::unique_ptr<sc_core::sc_event> m_released;
     std::vector<sc_core::sc_event *> m_waiters;
 };
 

@@ -29,6 +29,7 @@ void CommUnit::end_of_elaboration()
 {
     m_processor_source = static_cast<int>(link_in.size());
     m_held.resize(link_in.size() + 1);
+    m_held_count.assign(link_in.size() + 1, 0);
 }
 
 PacketSinkIf &CommUnit::next_hop(TimedPacket &p, bool &is_local)
@@ -51,12 +52,14 @@ BufferSpace *CommUnit::room_for(const TimedPacket &p)
     return next_hop(q, is_local).room_for(q);
 }
 
-bool CommUnit::processor_held() const
+bool CommUnit::holds(int source, uint32_t buffer) const
 {
-    for (const auto &kv : m_held[processor_source()])
-        if (!kv.second.empty()) return true;
-    return false;
+    if (!m_held_count[source]) return false;
+    auto it = m_held[source].find(buffer);
+    return it != m_held[source].end() && !it->second.empty();
 }
+
+bool CommUnit::processor_held() const { return m_held_count[processor_source()] > 0; }
 
 void CommUnit::accept(const TimedPacket &p)
 {
@@ -69,17 +72,16 @@ void CommUnit::accept(const TimedPacket &p)
     }
     // Called in the processor side's thread: it waits while one of its packets is held.
     while (processor_held()) sc_core::wait(m_processor_room);
-    TimedPacket q = p;
-    q.last_dir = -1;
-    enqueue(q, q.stamp, processor_source(), nullptr);
+    m_arrivals.at(enqueue(p, p.stamp, processor_source(), nullptr)).item.last_dir = -1; // it leaves the processor side
 }
 
-void CommUnit::enqueue(const TimedPacket &p, const sc_core::sc_time &stamp, int source, BufferSpace *credit)
+uint32_t CommUnit::enqueue(const TimedPacket &p, const sc_core::sc_time &stamp, int source, BufferSpace *credit)
 {
     sc_core::sc_time now = sc_core::sc_time_stamp();
     sc_core::sc_time when = stamp > now + m_lookahead ? stamp - m_lookahead : now;
-    m_arrivals.push(when, source, p, stamp, credit);
+    uint32_t h = m_arrivals.push(when, source, p, stamp, credit);
     wake_at(when);
+    return h;
 }
 
 void CommUnit::b_transport(int id, tlm::tlm_generic_payload &trans, sc_core::sc_time &delay)
@@ -132,8 +134,12 @@ void CommUnit::deliver()
         }
         uint32_t h = m_arrivals.pop();
         const ArrivalQueue::Arrival &a = m_arrivals.at(h);
-        auto &held = m_held[a.source][2 * a.item.cls + a.item.vc];
-        if (!held.empty() || !forward(h)) held.push_back(h);
+        int source = a.source;
+        uint32_t buffer = 2 * a.item.cls + a.item.vc;
+        // Behind packets held from the same buffer it waits its turn; else it moves on if it can.
+        if (!holds(source, buffer) && forward(h)) continue;
+        m_held[source][buffer].push_back(h);
+        m_held_count[source]++;
     }
     if (!m_arrivals.empty()) m_due.notify(m_arrivals.next_time() - now);
 }
@@ -143,7 +149,10 @@ void CommUnit::retry()
     for (size_t s = 0; s < m_held.size(); s++) {
         for (auto it = m_held[s].begin(); it != m_held[s].end();) {
             auto &held = it->second;
-            while (!held.empty() && forward(held.front())) held.pop_front();
+            while (!held.empty() && forward(held.front())) {
+                held.pop_front();
+                m_held_count[s]--;
+            }
             it = held.empty() ? m_held[s].erase(it) : std::next(it);
         }
         if (static_cast<int>(s) == processor_source() && m_held[s].empty())
@@ -154,8 +163,7 @@ void CommUnit::retry()
 size_t CommUnit::held() const
 {
     size_t n = 0;
-    for (const auto &source : m_held)
-        for (const auto &kv : source) n += kv.second.size();
+    for (size_t c : m_held_count) n += c;
     return n;
 }
 

@@ -70,9 +70,12 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf {
     // The next hop of `p`, setting its channel when that is a link.
     PacketSinkIf &next_hop(TimedPacket &p, bool &local);
     bool processor_held() const;
+    // Whether packets from `buffer` of `source` are held.
+    bool holds(int source, uint32_t buffer) const;
     bool forward(uint32_t handle);
     void b_transport(int id, tlm::tlm_generic_payload &trans, sc_core::sc_time &delay);
-    void enqueue(const TimedPacket &p, const sc_core::sc_time &stamp, int source, BufferSpace *credit);
+    // Returns the arrival's handle.
+    uint32_t enqueue(const TimedPacket &p, const sc_core::sc_time &stamp, int source, BufferSpace *credit);
     void wake_at(const sc_core::sc_time &when);
     void deliver();
     void retry();
@@ -91,6 +94,8 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf {
     FlowControl m_flow = FlowControl::none;
     // Per source, per incoming buffer (2 x class + channel), arrival handles.
     std::vector<std::map<uint32_t, std::deque<uint32_t>>> m_held;
+    // Per source, packets in m_held (so a check does not walk every class's FIFO).
+    std::vector<size_t> m_held_count;
     sc_core::sc_event m_due, m_run, m_retry, m_processor_room;
 };
 

@@ -17,13 +17,13 @@ void PacketQueue::push_blocking(const TimedPacket &p)
     if (m_reader_waiting) m_not_empty.notify(sc_core::SC_ZERO_TIME);
 }
 
-TimedPacket PacketQueue::remove(size_t index)
+void PacketQueue::remove(size_t index)
 {
-    TimedPacket p = m_items[index];
-    m_items.erase(m_items.begin() + static_cast<std::ptrdiff_t>(index));
+    BufferSpace &space = space_for(m_items[index]);
+    if (index == 0) m_items.pop_front();
+    else m_items.erase(m_items.begin() + static_cast<std::ptrdiff_t>(index));
     m_depth = static_cast<int>(m_items.size());
-    space_for(p).release();
-    return p;
+    space.release();
 }
 
 void PacketQueue::wait_for(sc_core::sc_event *retry)

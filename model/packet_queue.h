@@ -76,7 +76,7 @@ class PacketQueue {
     int &depth_trace() { return m_depth; }
 
   private:
-    TimedPacket remove(size_t index);
+    void remove(size_t index);
     void wait_for(sc_core::sc_event *retry);
 
     std::string m_name;

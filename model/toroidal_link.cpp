@@ -21,15 +21,18 @@ ToroidalLink::ToroidalLink(sc_core::sc_module_name name, const MachineConfig &co
 void ToroidalLink::accept(const TimedPacket &p)
 {
     if (!p.reserved) space_for(p).take_blocking();
-    TimedPacket q = p;
+    // The packet is copied once, into the transaction's extension, after any wait for room.
+    TimedPacket &q = m_ext->item;
+    q = p;
     q.reserved = false;
     // A thread that waited for room sends no earlier than now.
     if (q.stamp < sc_core::sc_time_stamp()) q.stamp = sc_core::sc_time_stamp();
-    send(q);
+    send();
 }
 
-void ToroidalLink::send(const TimedPacket &p)
+void ToroidalLink::send()
 {
+    TimedPacket &p = m_ext->item;
     sc_core::sc_time start = p.stamp > m_free_at ? p.stamp : m_free_at; // cannot start before it was sent
     m_free_at = start + m_packet_time;
     m_busy += m_packet_time;
@@ -39,10 +42,9 @@ void ToroidalLink::send(const TimedPacket &p)
         m_crossings.emplace_back(start, m_free_at);
         m_trace_changed.notify(sc_core::SC_ZERO_TIME);
     }
-    m_ext->item = p;
-    m_ext->item.stamp = m_free_at;
-    m_ext->item.last_dir = static_cast<int8_t>(m_dir);
     m_ext->credit = &space_for(p);
+    p.stamp = m_free_at;
+    p.last_dir = static_cast<int8_t>(m_dir);
     m_trans.set_command(tlm::TLM_WRITE_COMMAND);
     m_trans.set_address(static_cast<uint64_t>(m_to));
     // Data = the packet as held in memory; its size on the wire is a timing parameter.

@@ -60,7 +60,8 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
   private:
     static uint32_t index_of(const TimedPacket &p) { return 2 * p.cls + p.vc; }
     BufferSpace &space_for(const TimedPacket &p) { return m_spaces.at(index_of(p)); }
-    void send(const TimedPacket &p);
+    // Sends the packet in the extension.
+    void send();
     void drive_busy_trace();
 
     sc_core::sc_time m_packet_time; // serialisation time of one packet
