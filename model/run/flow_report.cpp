@@ -12,10 +12,12 @@ namespace torusrt {
 
 namespace {
 
-// Folds one queue's class buffers into the per-class maxima.
-void add_classes(std::vector<size_t> &per_class, const QueueRef &q)
+// Folds one queue's class buffers into the per-class maxima, and the classes it reached into
+// `used` (unbounded buffers are not split: one maximum for every class).
+void add_classes(std::vector<size_t> &per_class, size_t &used, const QueueRef &q)
 {
     const ClassBuffers &b = *q.buffers;
+    used = std::max<size_t>(used, (q.kind == QueueKind::link ? b.top_index() / 2 : b.top_index()) + 1);
     for (uint32_t i = 0; i < b.count(); i++) {
         const BufferSpace *s = b.find(i);
         if (!s) continue;
@@ -30,7 +32,9 @@ void add_classes(std::vector<size_t> &per_class, const QueueRef &q)
 nlohmann::json flow_report_json(const SimConfig &config, TorusSystem &top, const rt_scene *scene)
 {
     std::vector<size_t> per_class;
-    for (const QueueRef &q : top.queues().all()) add_classes(per_class, q);
+    size_t used = 1;
+    for (const QueueRef &q : top.queues().all()) add_classes(per_class, used, q);
+    if (config.flow == FlowControl::none) used = 1;
 
     // Buffers of one class per node: input queues, and a buffer per channel of each outgoing link.
     bool channels = config.flow == FlowControl::classes && config.topology == Topology::torus;
@@ -44,12 +48,12 @@ nlohmann::json flow_report_json(const SimConfig &config, TorusSystem &top, const
     return {{"scheme", flow_name(config.flow)},
             {"capacity_packets", config.queue_capacity},
             {"classes_bound", bound},
-            {"classes_used", per_class.size()},
+            {"classes_used", used},
             {"channels_per_link", channels ? 2 : 1},
             {"buffers_per_ip_per_class", per_ip},
             {"packet_struct_bytes", sizeof(rt_packet)},
             {"bytes_per_ip_per_class", class_bytes},
-            {"bytes_per_ip_used", class_bytes * static_cast<double>(per_class.size())},
+            {"bytes_per_ip_used", class_bytes * static_cast<double>(used)},
             {"bytes_per_ip_bound", class_bytes * static_cast<double>(bound)},
             {"high_water", high},
             {"class_high_water", per_class}};
