@@ -44,7 +44,7 @@ struct CommandLine {
     bool dump_config = false;
     // Animation (run options too: the frames are the workload).
     AnimationOptions anim;
-    std::string remap, frames_csv;
+    std::string remap, remap_pilot, frames_csv;
     std::string config_file;  // the --config file read, if any (no output may replace it)
 };
 
@@ -195,9 +195,11 @@ void declare_run_options(CLI::App &app, CommandLine &cl)
     add_animation_options(app, cl.anim);
     app.add_option("--remap", cl.remap, "mapping across the frames: static (default: the first frame's), every-frame,\n"
                    "adaptive or oracle")->type_name("POLICY");
+    app.add_option("--remap-pilot", cl.remap_pilot, "adaptive's host preview of each frame: this fraction of the pixels\n"
+                   "(default 0: no preview, the load's trend over the last two frames)")->type_name("FRACTION");
     app.add_option("--frames-csv", cl.frames_csv, "write one CSV row per frame of an animation")->type_name("FILE");
     for (const char *name : {"--vcd", "--trace-from", "--trace-to", "--trace-ips", "--t1", "--time-limit", "--remap",
-                             "--frames-csv"})
+                             "--remap-pilot", "--frames-csv"})
         app.get_option(name)->configurable(false);
 }
 
@@ -206,12 +208,18 @@ void check_animation(CommandLine &cl)
 {
     check_animation_options(cl.anim);
     if (!cl.anim.animated()) {
+        if (!cl.remap_pilot.empty())
+            throw UserError("--remap-pilot: only for an animation with --remap adaptive", 2);
         if (!cl.remap.empty() || !cl.frames_csv.empty())
             throw UserError(std::string(cl.remap.empty() ? "--frames-csv" : "--remap") +
                                 ": only for an animation (--frames N with --orbit DEG, or --camera-path FILE)", 2);
         return;
     }
     if (!cl.remap.empty()) parse_remap_policy(cl.remap);
+    if (!cl.remap_pilot.empty()) {
+        parse_remap_pilot(cl.remap_pilot);
+        if (cl.remap != "adaptive") throw UserError("--remap-pilot: only with --remap adaptive", 2);
+    }
     if (!cl.t1.empty()) throw UserError("--t1: not used by an animation (each frame's T(1) is its pilot's work)", 2);
     if (!cl.common.output.empty()) check_frame_pattern("-o", cl.common.output);
 }
@@ -371,7 +379,9 @@ int animate(const CommandLine &cl, SimConfig &config, LoadedScene &loaded, const
     }
     std::string csv = cl.frames_csv.empty() ? "" : outputs.set.add("--frames-csv", cl.frames_csv, cl.common.scene);
     RemapPolicy policy = cl.remap.empty() ? RemapPolicy::static_map : parse_remap_policy(cl.remap);
-    AnimationOutcome out = run_animation(config, scene, loaded.grid.get(), path.get(), files, policy, wall_start);
+    double pilot_fraction = cl.remap_pilot.empty() ? default_remap_pilot : parse_remap_pilot(cl.remap_pilot);
+    AnimationOutcome out =
+        run_animation(config, scene, loaded.grid.get(), path.get(), files, policy, pilot_fraction, wall_start);
     out.report.mapping = mapping_facts;
     out.report.camera_source = cl.anim.orbit.empty() ? "camera-path" : "orbit";
     out.report.output_pattern = cl.common.output;

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Animation study: a full orbit (360 degrees over 32 frames) of paper-image2 and paper-image1 at
-# 64 and 512 nodes under five mapping policies - cyclic (static), cost (static), cost +
-# every-frame remapping, cost + adaptive remapping and oracle - run with GNU parallel; every
+# 64 and 512 nodes under six mapping policies - cyclic (static), cost (static), cost +
+# every-frame remapping, cost + adaptive remapping, cost + adaptive remapping judged on the
+# host's preview of each frame (--remap-pilot) and oracle - run with GNU parallel; every
 # frame is compared with the renderer's byte for byte. Writes experiments/animation/results/
 # (runs.tsv, frames.tsv), docs/animation.md and docs/animation/ (the plot).
 # Image 64x64 with 24^3 cells keeps the whole study near 10 minutes on one core.
@@ -16,6 +17,7 @@ pics="$root/docs/animation"
 work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
 mkdir -p "$res" "$pics"
 frames=32 orbit=360 size=64x64
+preview=0.015625 # the preview row's --remap-pilot: 1/64 of the pixels (8x8 of 64x64)
 scenes=(paper-image2 paper-image1)
 start=$(date +%s)
 for sc in "${scenes[@]}"; do # the renderer's frames: the golden images
@@ -23,35 +25,38 @@ for sc in "${scenes[@]}"; do # the renderer's frames: the golden images
   "$build/torusrt-render" "$root/scenes/$sc.nff" --size "$size" --orbit "$orbit" --frames "$frames" \
     -o "$work/ref-$sc/f_%02d.png" -q
 done
-point() { # SCENE SHAPE POLICY-NAME MAP REMAP
-  local tag="$1_$2_$3" dir="$work/$1_$2_$3"
+point() { # SCENE SHAPE POLICY-NAME MAP REMAP PILOT-FRACTION (- for none)
+  local tag="$1_$2_$3" dir="$work/$1_$2_$3" pilot=()
+  [ "$6" = - ] || pilot=(--remap-pilot "$6")
   mkdir -p "$dir"
   "$build/torusrt-sim" "$root/scenes/$1.nff" --size "$size" --orbit "$orbit" --frames "$frames" \
-    --ips "$2" --map "$4" --remap "$5" -o "$dir/f_%02d.png" --stats "$work/$tag.json" -q
+    --ips "$2" --map "$4" --remap "$5" "${pilot[@]}" -o "$dir/f_%02d.png" --stats "$work/$tag.json" -q
   local same=1
   for f in "$work/ref-$1"/*.png; do cmp -s "$f" "$dir/$(basename "$f")" || same=0; done
   jq -r --arg sc "$1" --arg pol "$3" --arg same "$same" \
     '[$sc, .config.nodes, $pol, .animation.total_s, .animation.image_time_s, .animation.migration_time_s,
       .animation.migration_share, .animation.migration_bytes, .animation.mapping_changes, .animation.efficiency,
-      (.packets.conserved | tostring), $same, .wall_s] | @tsv' "$work/$tag.json" > "$work/$tag.run"
+      (.packets.conserved | tostring), $same, .wall_s, .animation.host_pilot_time_s,
+      .animation.host_pilot_charged_s] | @tsv' "$work/$tag.json" > "$work/$tag.run"
   jq -r --arg sc "$1" --arg pol "$3" \
     '.config.nodes as $n | .frames[] | [$sc, $n, $pol, .index, .image_time_s, .migration_time_s,
       .migration_bytes, .efficiency, .remap.decision] | @tsv' "$work/$tag.json" > "$work/$tag.frames"
   rm -rf "$dir"
 }
 export -f point
-export build root work frames orbit size
+export build root work frames orbit size preview
 for sc in "${scenes[@]}"; do for s in 8x8x8 4x4x4; do
-  echo "$sc $s cyclic cyclic static"
-  echo "$sc $s cost cost static"
-  echo "$sc $s every-frame cost every-frame"
-  echo "$sc $s adaptive cost adaptive"
-  echo "$sc $s oracle cost oracle"
+  echo "$sc $s cyclic cyclic static -"
+  echo "$sc $s cost cost static -"
+  echo "$sc $s every-frame cost every-frame -"
+  echo "$sc $s adaptive cost adaptive -"
+  echo "$sc $s preview cost adaptive $preview"
+  echo "$sc $s oracle cost oracle -"
 done; done > "$work/points"
 echo "animation study: $(wc -l < "$work/points") runs of $frames frames on $jobs jobs" >&2
-parallel -j "$jobs" --colsep ' ' --halt now,fail=1 point {1} {2} {3} {4} {5} :::: "$work/points"
+parallel -j "$jobs" --colsep ' ' --halt now,fail=1 point {1} {2} {3} {4} {5} {6} :::: "$work/points"
 {
-  printf 'scene\tn\tpolicy\ttotal_s\timage_time_s\tmigration_time_s\tmigration_share\tmigration_bytes\tmapping_changes\tefficiency\tconserved\timages_identical\twall_s\n'
+  printf 'scene\tn\tpolicy\ttotal_s\timage_time_s\tmigration_time_s\tmigration_share\tmigration_bytes\tmapping_changes\tefficiency\tconserved\timages_identical\twall_s\thost_pilot_time_s\thost_pilot_charged_s\n'
   cat "$work"/*.run | sort -t$'\t' -k1,1 -k2,2n -k3,3
 } > "$res/runs.tsv"
 {

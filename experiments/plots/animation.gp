@@ -9,7 +9,7 @@ set grid
 set key top right font ',9'
 set xlabel 'frame (360-degree orbit)'
 set ylabel 'image time (s, simulated)'
-policycolor(p) = p eq 'cyclic' ? '#1f77b4' : p eq 'cost' ? '#ff7f0e' : p eq 'every-frame' ? '#2ca02c' : p eq 'adaptive' ? '#d62728' : 'gray30'
+policycolor(p) = p eq 'cyclic' ? '#1f77b4' : p eq 'cost' ? '#ff7f0e' : p eq 'every-frame' ? '#2ca02c' : p eq 'adaptive' ? '#d62728' : p eq 'preview' ? '#9467bd' : 'gray30'
 set multiplot layout 2, 2
 do for [panel in panels] {
   set title panel

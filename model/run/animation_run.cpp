@@ -91,10 +91,9 @@ bool run_frame(const SimConfig &config, Machine &m, size_t k, size_t n)
 }
 
 // Frame k's mapping (k > 0) and its record's mapping fields; the owner table is updated.
-void next_mapping(RemapPolicy policy, const RemapContext &ctx, Machine &m, const FramePilot &previous,
-                  double previous_time_s, const FramePilot *before, const FramePilot &pilot, FrameRecord &rec)
+void next_mapping(RemapPolicy policy, const RemapContext &ctx, Machine &m, const FrameLoads &loads, FrameRecord &rec)
 {
-    RemapDecision d = decide_mapping(policy, ctx, m.owner, previous, previous_time_s, before, pilot);
+    RemapDecision d = decide_mapping(policy, ctx, m.owner, loads);
     std::copy(d.owner.begin(), d.owner.end(), m.owner.begin()); // same storage: the modules' pointer stays
     rec.decision = d.decision;
     rec.reason = d.reason;
@@ -104,11 +103,24 @@ void next_mapping(RemapPolicy policy, const RemapContext &ctx, Machine &m, const
     rec.mapper_wall_s = d.mapper_wall_s;
 }
 
+// Adaptive's host preview of frame k, made while frame k-1 ran for `previous_time_s`: only its
+// modelled host time past that delays frame k.
+std::unique_ptr<FramePilot> host_preview(const SimConfig &config, rt_scene *scene, const rt_grid *grid,
+                                         double fraction, double previous_time_s, FrameRecord &rec)
+{
+    auto preview = std::make_unique<FramePilot>(config, scene, grid, fraction);
+    rec.preview_pixels = preview->pixels();
+    rec.host_pilot_s = preview->host_s();
+    rec.host_pilot_charged_s = std::max(0.0, preview->host_s() - previous_time_s);
+    rec.pilot_wall_s += preview->wall_s();
+    return preview;
+}
+
 }  // namespace
 
 AnimationOutcome run_animation(const SimConfig &config, rt_scene *scene, const rt_grid *grid,
                                const rt_camera_path *path, const std::vector<std::string> &files,
-                               RemapPolicy policy, double wall_start_s)
+                               RemapPolicy policy, double pilot_fraction, double wall_start_s)
 {
     size_t n = rt_camera_path_count(path);
     Machine m;
@@ -127,7 +139,7 @@ AnimationOutcome run_animation(const SimConfig &config, rt_scene *scene, const r
     if (!config.vcd_path.empty()) m.tracer = std::make_unique<Tracer>(config, *m.top);
 
     AnimationOutcome out;
-    std::unique_ptr<FramePilot> previous, before;
+    std::unique_ptr<FramePilot> previous, before, preview;
     double end_s = 0;
     for (size_t k = 0; k < n; k++) {
         FrameRecord rec;
@@ -144,14 +156,17 @@ AnimationOutcome run_animation(const SimConfig &config, rt_scene *scene, const r
             before = std::move(previous);
             previous = std::move(pilot);
             pilot = std::make_unique<FramePilot>(config, scene, grid);
-            next_mapping(policy, ctx, m, *previous, out.frames.back().image_time_s, before.get(), *pilot, rec);
+            double previous_time_s = out.frames.back().image_time_s;
+            if (policy == RemapPolicy::adaptive && pilot_fraction > 0)
+                preview = host_preview(config, scene, grid, pilot_fraction, previous_time_s, rec);
+            next_mapping(policy, ctx, m, FrameLoads{*previous, previous_time_s, *pilot, before.get(), preview.get()}, rec);
             m.fb = new_frame_buffer(scene);
-            start = frame_start(config, end_s + rec.charged_migration_s());
+            start = frame_start(config, end_s + rec.charged_migration_s() + rec.host_pilot_charged_s);
             m.top->start_frame(m.fb.get(), m.owner.data(), start);
         }
         rec.start_s = start.to_seconds();
         rec.t1_s = pilot->work_s();
-        rec.pilot_wall_s = pilot->wall_s();
+        rec.pilot_wall_s += pilot->wall_s();
         if (!run_frame(config, m, k, n)) {
             out.deadlock = true;
             out.report = collect(config, *m.top, m.ledger, scene, grid, m.owner.data(),

@@ -31,22 +31,25 @@ nlohmann::json frame_json(const FrameRecord &f)
               {"busiest_link_bytes", m.busiest_link_bytes},
               {"link_time_s", m.time_s},
               {"charged", f.migration_charged}}},
+            {"host_pilot", {{"pixels", f.preview_pixels}, {"time_s", f.host_pilot_s}, {"charged_s", f.host_pilot_charged_s}}},
             {"pilot_wall_s", f.pilot_wall_s},
             {"mapper_wall_s", f.mapper_wall_s}};
 }
 
 nlohmann::json animation_json(const std::vector<FrameRecord> &frames, const std::string &policy)
 {
-    double image = 0, migration = 0, t1 = 0;
+    double image = 0, migration = 0, t1 = 0, host = 0, host_charged = 0;
     uint64_t bytes = 0, remaps = 0;
     for (const FrameRecord &f : frames) {
         image += f.image_time_s;
         migration += f.charged_migration_s();
         t1 += f.t1_s;
+        host += f.host_pilot_s;
+        host_charged += f.host_pilot_charged_s;
         bytes += f.migration.bytes();
         if (f.migration.cells > 0) remaps++;
     }
-    double total = image + migration;
+    double total = image + migration + host_charged;
     int n = frames.empty() ? 1 : frames.front().processors;
     return {{"frame_count", frames.size()},
             {"policy", policy},
@@ -55,6 +58,8 @@ nlohmann::json animation_json(const std::vector<FrameRecord> &frames, const std:
             {"migration_time_s", migration},
             {"migration_share", total > 0 ? migration / total : 0.0},
             {"migration_bytes", bytes},
+            {"host_pilot_time_s", host},
+            {"host_pilot_charged_s", host_charged},
             {"mapping_changes", remaps},
             {"t1_s", t1},
             {"efficiency", total > 0 ? t1 / (n * total) : 0.0}};
@@ -65,13 +70,14 @@ std::string frames_csv(const std::vector<FrameRecord> &frames)
     std::ostringstream out;
     out.precision(9);
     out << "frame,file,start_s,image_time_s,t1_s,efficiency,packets,decision,migration_bytes,migration_cells,"
-           "migration_objects,migration_max_hops,migration_time_s,migration_charged,predicted_gain_s\n";
+           "migration_objects,migration_max_hops,migration_time_s,migration_charged,predicted_gain_s,host_pilot_pixels,"
+           "host_pilot_s,host_pilot_charged_s\n";
     for (const FrameRecord &f : frames)
         out << f.index << ',' << f.file << ',' << f.start_s << ',' << f.image_time_s << ',' << f.t1_s << ','
             << f.efficiency() << ',' << f.packets << ',' << f.decision << ',' << f.migration.bytes() << ','
             << f.migration.cells << ',' << f.migration.objects << ',' << f.migration.max_hops << ','
-            << f.charged_migration_s() << ',' << (f.migration_charged ? 1 : 0) << ',' << f.predicted_gain_s
-            << '\n';
+            << f.charged_migration_s() << ',' << (f.migration_charged ? 1 : 0) << ',' << f.predicted_gain_s << ','
+            << f.preview_pixels << ',' << f.host_pilot_s << ',' << f.host_pilot_charged_s << '\n';
     return out.str();
 }
 
@@ -79,9 +85,11 @@ void print_frame_table(const std::vector<FrameRecord> &frames, const std::string
 {
     if (frames.empty()) return;
     nlohmann::json a = animation_json(frames, policy);
-    std::fprintf(out, "  animation    %zu frames, remap %s: total %.6f s = images %.6f s + migration %.6f s (%.1f %%)\n",
+    std::fprintf(out, "  animation    %zu frames, remap %s: total %.6f s = images %.6f s + migration %.6f s (%.1f %%)"
+                 " + host pilot %.6f s\n",
                  frames.size(), policy.c_str(), a["total_s"].get<double>(), a["image_time_s"].get<double>(),
-                 a["migration_time_s"].get<double>(), 100 * a["migration_share"].get<double>());
+                 a["migration_time_s"].get<double>(), 100 * a["migration_share"].get<double>(),
+                 a["host_pilot_charged_s"].get<double>());
     std::fprintf(out, "  frame   image s  effic.  migr. bytes  migr. s    decision\n");
     for (const FrameRecord &f : frames)
         std::fprintf(out, "  %5zu %9.5f %6.1f%% %12llu %9.6f  %s\n", f.index, f.image_time_s, 100 * f.efficiency(),

@@ -26,13 +26,17 @@ struct FrameRecord {
     double predicted_gain_s = 0;
     MigrationCost migration;      // before the frame
     bool migration_charged = true;
+    uint64_t preview_pixels = 0;     // adaptive's host preview of the frame (0: none)
+    double host_pilot_s = 0;         // its modelled host time
+    double host_pilot_charged_s = 0; // the part past the previous frame's image time
     double pilot_wall_s = 0, mapper_wall_s = 0;
     double efficiency() const { return image_time_s > 0 ? t1_s / (processors * image_time_s) : 0; }
     double charged_migration_s() const { return migration_charged ? migration.time_s : 0; }
 };
 
 nlohmann::json frame_json(const FrameRecord &frame);
-// Totals: frame_count, policy, total_s = sum of image times + charged migration, and its parts.
+// Totals: frame_count, policy, total_s = sum of image times + charged migration + charged host
+// pilot time, and its parts.
 nlohmann::json animation_json(const std::vector<FrameRecord> &frames, const std::string &policy);
 // One header line and one row per frame (columns as README "Animation in torusrt-sim").
 std::string frames_csv(const std::vector<FrameRecord> &frames);

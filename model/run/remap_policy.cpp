@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <new>
@@ -45,9 +46,26 @@ std::vector<int32_t> remapped(const RemapContext &ctx, const std::vector<int32_t
 
 namespace {
 
-// Adaptive: the every-frame remapping, taken only if its predicted gain exceeds its migration.
-void adaptive_choice(const RemapContext &ctx, const std::vector<int32_t> &current, const FramePilot &previous,
-                     double previous_time_s, RemapDecision &d)
+std::vector<int32_t> fresh_map(const RemapContext &ctx, const FramePilot &pilot)
+{
+    std::vector<int32_t> owner(pilot.get().cells);
+    char msg[RT_MSG_LEN] = "";
+    int fold = ctx.config.mapping == RT_MAP_COST ? ctx.config.block : 1;
+    if (rt_cost_map_folded(&pilot.get(), ctx.config.ips.data(), ctx.config.topology == Topology::torus,
+                           rt_cost_edge_us(&ctx.config.timing), fold, owner.data(), nullptr, msg, sizeof msg) != RT_OK)
+        throw UserError(std::string("--remap: ") + msg);
+    return owner;
+}
+
+struct Candidate {
+    const char *name;
+    std::vector<int32_t> owner;
+};
+
+// Adaptive without a preview: the remapping of the trend (frame k-1's load alone before frame 2),
+// taken only if its predicted gain exceeds its migration.
+void trend_choice(const RemapContext &ctx, const std::vector<int32_t> &current, const FramePilot &previous,
+                  double previous_time_s, RemapDecision &d)
 {
     int nodes = ctx.config.node_count();
     std::vector<int32_t> candidate = remapped(ctx, current, previous);
@@ -62,7 +80,47 @@ void adaptive_choice(const RemapContext &ctx, const std::vector<int32_t> &curren
                "migration " + seconds_text(move);
 }
 
+// Adaptive with a preview: the candidate with the least predicted image time plus migration (keep on a tie).
+void adaptive_choice(const RemapContext &ctx, const std::vector<int32_t> &current, const FrameLoads &loads,
+                     RemapDecision &d)
+{
+    int nodes = ctx.config.node_count();
+    const FramePilot &preview = *loads.preview;
+    std::vector<Candidate> candidates;
+    candidates.push_back({"keep", current});
+    candidates.push_back({"remap of frame k-1", remapped(ctx, current, loads.previous)});
+    if (loads.before) {
+        candidates.push_back({"remap of the trend", remapped(ctx, current, *FramePilot::extrapolated(loads.previous, *loads.before))});
+        candidates.push_back({"remap of frames k-1 and k-2", remapped(ctx, current, *FramePilot::mean(loads.previous, *loads.before))});
+    }
+    double w_prev = loads.previous.busiest_work_s(current, nodes);
+    double a = w_prev > 0 ? loads.previous_time_s / w_prev : 0;
+    double keep_s = a * preview.busiest_work_s(current, nodes);
+    size_t best = 0;
+    double best_s = keep_s, best_move = 0;
+    for (size_t i = 1; i < candidates.size(); i++) {
+        double move = migration_cost(ctx.scene, ctx.grid, ctx.routing, nodes, ctx.config.timing, current,
+                                     candidates[i].owner).time_s;
+        double t = a * preview.busiest_work_s(candidates[i].owner, nodes) + move;
+        if (t < best_s) best = i, best_s = t, best_move = move;
+    }
+    d.predicted_gain_s = keep_s - (best_s - best_move);
+    d.decision = best == 0 ? "keep" : "remap";
+    d.reason = std::string("adaptive: ") + candidates[best].name + ", predicted " + seconds_text(best_s) +
+               " (keep " + seconds_text(keep_s) + "), migration " + seconds_text(best_move);
+    d.owner = std::move(candidates[best].owner);
+}
+
 }  // namespace
+
+double parse_remap_pilot(const std::string &text)
+{
+    char *end = nullptr;
+    double f = std::strtod(text.c_str(), &end);
+    if (text.empty() || *end != '\0' || !(f >= 0 && f <= 1))
+        throw UserError("--remap-pilot '" + text + "': expected a fraction of the pixels in [0, 1] (0: no preview)", 2);
+    return f;
+}
 
 RemapPolicy parse_remap_policy(const std::string &text)
 {
@@ -84,32 +142,61 @@ const char *remap_policy_name(RemapPolicy policy)
     return "?";
 }
 
-FramePilot::FramePilot(const SimConfig &config, const rt_scene *scene, const rt_grid *grid)
+void FramePilot::run(const SimConfig &config, const rt_scene *scene, const rt_grid *grid)
 {
     double t0 = now_s();
     char msg[RT_MSG_LEN] = "";
     if (rt_cost_pilot_run(scene, grid, &config.step, &config.timing, &m_pilot, msg, sizeof msg) != RT_OK)
         throw UserError(std::string("frame pilot run: ") + msg);
     m_wall_s = now_s() - t0;
+    m_host_s = m_pilot.total_us * 1e-6;
+    const rt_camera *cam = rt_scene_camera(scene);
+    m_pixels = static_cast<uint64_t>(cam->width) * cam->height;
 }
 
-FramePilot::FramePilot(const FramePilot &last, const FramePilot &before)
+FramePilot::FramePilot(const SimConfig &config, const rt_scene *scene, const rt_grid *grid)
 {
-    const rt_cost_pilot &a = last.m_pilot, &b = before.m_pilot;
-    m_pilot = a;
-    m_pilot.work_us = static_cast<double *>(std::malloc(a.cells * sizeof(double)));
-    m_pilot.traffic = static_cast<uint64_t *>(std::malloc(a.cells * RT_CELL_FACES * sizeof(uint64_t)));
-    if (!m_pilot.work_us || !m_pilot.traffic) {
-        rt_cost_pilot_release(&m_pilot);
-        throw std::bad_alloc();
+    run(config, scene, grid);
+}
+
+FramePilot::FramePilot(const SimConfig &config, rt_scene *scene, const rt_grid *grid, double fraction)
+{
+    const rt_camera full = *rt_scene_camera(scene);
+    double side = std::sqrt(fraction);
+    auto scaled = [side](uint32_t n) { return std::max<uint32_t>(1, static_cast<uint32_t>(n * side)); };
+    if (rt_scene_set_resolution(scene, scaled(full.width), scaled(full.height)) != RT_OK)
+        throw UserError("--remap-pilot: cannot set the preview's resolution");
+    try {
+        run(config, scene, grid);
+    } catch (...) {
+        rt_scene_set_resolution(scene, full.width, full.height);
+        throw;
     }
-    m_pilot.total_us = 0;
+    rt_scene_set_resolution(scene, full.width, full.height);
+    double scale = static_cast<double>(full.width) * full.height / static_cast<double>(m_pixels);
+    m_pilot.total_us *= scale;
+    for (size_t c = 0; c < m_pilot.cells; c++) m_pilot.work_us[c] *= scale;
+    for (size_t i = 0; i < m_pilot.cells * RT_CELL_FACES; i++)
+        m_pilot.traffic[i] = static_cast<uint64_t>(std::llround(static_cast<double>(m_pilot.traffic[i]) * scale));
+}
+
+std::unique_ptr<FramePilot> FramePilot::combined(const FramePilot &x, const FramePilot &y, double wx, double wy)
+{
+    std::unique_ptr<FramePilot> s(new FramePilot());
+    const rt_cost_pilot &a = x.m_pilot, &b = y.m_pilot;
+    s->m_pilot = a;
+    s->m_pilot.work_us = static_cast<double *>(std::malloc(a.cells * sizeof(double)));
+    s->m_pilot.traffic = static_cast<uint64_t *>(std::malloc(a.cells * RT_CELL_FACES * sizeof(uint64_t)));
+    if (!s->m_pilot.work_us || !s->m_pilot.traffic) throw std::bad_alloc();  // the destructor frees
+    s->m_pilot.total_us = 0;
     for (size_t c = 0; c < a.cells; c++) {
-        m_pilot.work_us[c] = std::max(0.0, 2 * a.work_us[c] - b.work_us[c]);
-        m_pilot.total_us += m_pilot.work_us[c];
+        s->m_pilot.work_us[c] = std::max(0.0, wx * a.work_us[c] + wy * b.work_us[c]);
+        s->m_pilot.total_us += s->m_pilot.work_us[c];
     }
     for (size_t i = 0; i < a.cells * RT_CELL_FACES; i++)
-        m_pilot.traffic[i] = 2 * a.traffic[i] > b.traffic[i] ? 2 * a.traffic[i] - b.traffic[i] : 0;
+        s->m_pilot.traffic[i] = static_cast<uint64_t>(
+            std::llround(std::max(0.0, wx * static_cast<double>(a.traffic[i]) + wy * static_cast<double>(b.traffic[i]))));
+    return s;
 }
 
 double FramePilot::busiest_work_s(const std::vector<int32_t> &owner, int nodes) const
@@ -125,18 +212,11 @@ double FramePilot::busiest_work_s(const std::vector<int32_t> &owner, int nodes) 
 
 std::vector<int32_t> oracle_mapping(const RemapContext &ctx, const FramePilot &pilot)
 {
-    std::vector<int32_t> owner(pilot.get().cells);
-    char msg[RT_MSG_LEN] = "";
-    int fold = ctx.config.mapping == RT_MAP_COST ? ctx.config.block : 1;
-    if (rt_cost_map_folded(&pilot.get(), ctx.config.ips.data(), ctx.config.topology == Topology::torus,
-                           rt_cost_edge_us(&ctx.config.timing), fold, owner.data(), nullptr, msg, sizeof msg) != RT_OK)
-        throw UserError(std::string("--remap oracle: ") + msg);
-    return owner;
+    return fresh_map(ctx, pilot);
 }
 
 RemapDecision decide_mapping(RemapPolicy policy, const RemapContext &ctx, const std::vector<int32_t> &current,
-                             const FramePilot &previous, double previous_time_s, const FramePilot *before,
-                             const FramePilot &pilot)
+                             const FrameLoads &loads)
 {
     RemapDecision d;
     int nodes = ctx.config.node_count();
@@ -145,17 +225,19 @@ RemapDecision decide_mapping(RemapPolicy policy, const RemapContext &ctx, const 
         d.owner = current;
         d.reason = "static: the first frame's mapping";
     } else if (policy == RemapPolicy::oracle) {
-        d.owner = oracle_mapping(ctx, pilot);
+        d.owner = oracle_mapping(ctx, loads.pilot);
         d.decision = "remap";
         d.reason = "oracle: this frame's own pilot, migration free";
         d.migration_charged = false;
     } else if (policy == RemapPolicy::every_frame) {
-        d.owner = remapped(ctx, current, previous);
+        d.owner = remapped(ctx, current, loads.previous);
         d.decision = "remap";
         d.reason = "every-frame: remapped from the previous frame's work";
     } else {
-        if (before) adaptive_choice(ctx, current, FramePilot(previous, *before), previous_time_s, d);
-        else adaptive_choice(ctx, current, previous, previous_time_s, d);
+        if (loads.preview) adaptive_choice(ctx, current, loads, d);
+        else if (loads.before)
+            trend_choice(ctx, current, *FramePilot::extrapolated(loads.previous, *loads.before), loads.previous_time_s, d);
+        else trend_choice(ctx, current, loads.previous, loads.previous_time_s, d);
     }
     d.mapper_wall_s = now_s() - t0;
     d.migration = migration_cost(ctx.scene, ctx.grid, ctx.routing, nodes, ctx.config.timing, current, d.owner);

@@ -4,18 +4,31 @@
 //   every-frame before each frame, SCOTCH_graphRemap from the previous frame's per-cell work
 //               and face traffic, the old table as the old partition, and each cell's move
 //               cost (one hop of its bytes, see migration.h) against keeping it;
-//   adaptive    a SCOTCH_graphRemap as every-frame's, but of the load extrapolated from the
-//               last two frames (per cell max(0, 2 x frame k-1 - frame k-2); frame 0's alone
-//               before frame 1), taken only when its predicted gain in image time exceeds its
-//               migration time;
+//   adaptive    without a preview (--remap-pilot 0, the default): a SCOTCH_graphRemap as
+//               every-frame's, but of the load extrapolated from the last two frames (per cell
+//               max(0, 2 x frame k-1 - frame k-2); frame 0's alone before frame 1), taken only
+//               when its predicted gain in image time exceeds its migration time; the gain is
+//               T x (1 - W(C) / W(current)) with T frame k-1's image time and W below in the
+//               extrapolated load.
+//               With a preview (--remap-pilot FRACTION > 0): the camera path is known in
+//               advance, so the host pilots frame k at FRACTION of the pixels (same view) while
+//               the machine renders frame k-1; that preview, scaled to the full pixel count,
+//               judges the candidate tables for frame k - keep frame k-1's, and
+//               SCOTCH_graphRemap from it of frame k-1's load, of the trend above and of the
+//               mean of frames k-1 and k-2 - by predicted image time plus migration time; the
+//               least is taken (keep on a tie). The candidates are fitted to measured loads and
+//               judged on the preview, so the preview's sampling noise does not favour the one
+//               fitted to it;
 //   oracle      each frame mapped from its own pilot (SCOTCH_graphMap, as --map cost), its
 //               migration free: the bound.
-// Adaptive's predictor: with W(M) the mean work of the busiest tenth of the nodes (at least one)
-// under table M in the extrapolated load, and T the previous frame's measured image time, frame
-// k under M is predicted to take T x W(M) / W(current); the candidate C gains
-// T x (1 - W(C) / W(current)) and is taken when that exceeds C's migration time (migration.h).
-// The busiest tenth rather than the single busiest node: one hot cell can bound the busiest
+// The preview's predictor: with W(M) the mean work of the busiest tenth of the nodes (at least one)
+// under table M in the preview's load, frame k under M is predicted to take a x W(M), where
+// a = T / W'(M') is frame k-1's measured image time T over its own measured W' under its table
+// M'. The busiest tenth rather than the single busiest node: one hot cell can bound the busiest
 // node under every table while the rest of the load still sets the time.
+// The host's pilot is charged: its modelled time (the preview's operations under the timing
+// table, as T(1) is counted, on one processor) overlaps frame k-1's image time, and only the part
+// that exceeds it delays frame k (host_pilot_charged_s, added to the animation's total).
 // Per-cell work and face traffic do not depend on the mapping, so each frame's pilot (the same
 // packet step with every cell its own owner) gives what the machine measured in that frame.
 #pragma once
@@ -40,9 +53,20 @@ const char *remap_policy_name(RemapPolicy policy);
 class FramePilot {
   public:
     FramePilot(const SimConfig &config, const rt_scene *scene, const rt_grid *grid);
+    // The host's preview: the scene's camera at `fraction` of the pixels (each side scaled by
+    // its square root, at least one pixel), its work and traffic scaled to the full pixel count.
+    FramePilot(const SimConfig &config, rt_scene *scene, const rt_grid *grid, double fraction);
+    // Cell by cell max(0, wa x a + wb x b) of two loads, work and traffic.
+    static std::unique_ptr<FramePilot> combined(const FramePilot &a, const FramePilot &b, double wa, double wb);
+    // The next frame's load extrapolated from the last two: 2 x last - before.
+    static std::unique_ptr<FramePilot> extrapolated(const FramePilot &last, const FramePilot &before)
+    {
+        return combined(last, before, 2, -1);
+    }
+    // The mean of two frames' loads (a table fitted to both views).
+    static std::unique_ptr<FramePilot> mean(const FramePilot &a, const FramePilot &b) { return combined(a, b, 0.5, 0.5); }
     // The next frame's load extrapolated from the last two: per cell and face
     // max(0, 2 x last - before) (the load keeps moving as it did).
-    FramePilot(const FramePilot &last, const FramePilot &before);
     ~FramePilot() { rt_cost_pilot_release(&m_pilot); }
     FramePilot(const FramePilot &) = delete;
     FramePilot &operator=(const FramePilot &) = delete;
@@ -51,17 +75,22 @@ class FramePilot {
     // The mean work of the busiest tenth of the nodes (at least one) under `owner`, seconds.
     double busiest_work_s(const std::vector<int32_t> &owner, int nodes) const;
     double wall_s() const { return m_wall_s; }
+    double host_s() const { return m_host_s; }  // modelled host time of the run (unscaled)
+    uint64_t pixels() const { return m_pixels; }
 
   private:
-    rt_cost_pilot m_pilot;
-    double m_wall_s = 0;
+    FramePilot() = default;
+    void run(const SimConfig &config, const rt_scene *scene, const rt_grid *grid);
+    rt_cost_pilot m_pilot{};
+    double m_wall_s = 0, m_host_s = 0;
+    uint64_t m_pixels = 0;
 };
 
 struct RemapDecision {
     std::vector<int32_t> owner;      // the table for the frame
     std::string decision = "keep";   // "first", "keep" or "remap"
     std::string reason;
-    double predicted_gain_s = 0;     // adaptive only
+    double predicted_gain_s = 0;     // adaptive only: predicted time of keeping minus the choice's
     MigrationCost migration;         // from the previous table to `owner`
     bool migration_charged = true;   // false for oracle
     double mapper_wall_s = 0;
@@ -74,12 +103,24 @@ struct RemapContext {
     const Routing &routing;
 };
 
-// The table for frame k > 0: `current` is frame k-1's table, `previous` its pilot and
-// `previous_time_s` its measured image time, `before` frame k-2's pilot (null for k = 1),
-// `pilot` frame k's own pilot (oracle).
+// --remap-pilot's default (chosen by the animation study, docs/animation.md).
+constexpr double default_remap_pilot = 0;
+
+// --remap-pilot: a fraction in [0, 1]; UserError (exit 2) otherwise.
+double parse_remap_pilot(const std::string &text);
+
+// What decide_mapping sees of frames k-1 and k.
+struct FrameLoads {
+    const FramePilot &previous;    // frame k-1's measured load
+    double previous_time_s;        // frame k-1's measured image time
+    const FramePilot &pilot;       // frame k's own full pilot (oracle only)
+    const FramePilot *before;      // frame k-2's measured load (null for k = 1)
+    const FramePilot *preview;     // frame k's host preview (adaptive only)
+};
+
+// The table for frame k > 0; `current` is frame k-1's table.
 RemapDecision decide_mapping(RemapPolicy policy, const RemapContext &ctx, const std::vector<int32_t> &current,
-                             const FramePilot &previous, double previous_time_s, const FramePilot *before,
-                             const FramePilot &pilot);
+                             const FrameLoads &loads);
 
 // Oracle's table for a frame from its own pilot (also frame 0's under oracle).
 std::vector<int32_t> oracle_mapping(const RemapContext &ctx, const FramePilot &pilot);
