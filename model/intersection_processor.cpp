@@ -14,7 +14,8 @@ IntersectionProcessor::IntersectionProcessor(sc_core::sc_module_name name, const
     : sc_module(name), in("in"), out("out"), fetch("fetch"), fb_socket("fb_socket"), m_config(config),
       m_scene(scene), m_grid(grid), m_owner(cell_owner), m_owner_id(owner_id), m_index(index),
       m_ledger(ledger), m_queue(std::string(basename()) + ".queue", config.queue_capacity),
-      m_time(config.style == TimingStyle::lt), m_params(config.step)
+      m_time(config.style == TimingStyle::lt), m_params(config.step),
+      m_reserving(config.flow != FlowControl::none && config.queue_capacity != 0)
 {
     in.bind(*this);
     if (rt_step_result_init(&m_result, scene) != RT_OK) throw std::bad_alloc();
@@ -40,7 +41,7 @@ bool IntersectionProcessor::prepare(TimedPacket &tp)
     if (m_result.fate == RT_FATE_FORWARDED) m_outputs.push_back(TimedPacket{tp.packet, {}});
     for (TimedPacket &o : m_outputs) o.cls = cls;
     // Unbounded buffers always have room: nothing to reserve (the timing is the same either way).
-    return m_config.flow == FlowControl::none || m_config.queue_capacity == 0 || reserve_outputs();
+    return !m_reserving || reserve_outputs();
 }
 
 bool IntersectionProcessor::reserve_outputs()
@@ -68,6 +69,19 @@ bool IntersectionProcessor::reserve_outputs()
     return true;
 }
 
+bool IntersectionProcessor::try_take_up()
+{
+    // Unbounded buffers or --flow none: the oldest packet, stepped once taken.
+    if (!m_reserving) return m_queue.try_take_first(m_current) && prepare(m_current);
+    // Else each candidate is stepped (on a copy: a refused one stays as it is in the queue).
+    return m_queue.try_take(
+        [this](const TimedPacket &c) {
+            m_current = c;
+            return prepare(m_current);
+        },
+        nullptr);
+}
+
 void IntersectionProcessor::run()
 {
     bool fetching = fetch.size() > 0;
@@ -78,7 +92,12 @@ void IntersectionProcessor::run()
     for (;;) {
         if (m_queue.empty()) m_time.sync();
         sc_core::sc_time before = m_time.now();
-        TimedPacket tp = m_queue.take_first([this](TimedPacket &c) { return prepare(c); }, m_room);
+        while (!try_take_up()) {
+            m_queue.wait_reader();
+            if (m_queue.empty()) sc_core::wait(m_queue.not_empty_event());
+            else sc_core::wait(m_queue.not_empty_event() | m_room);
+        }
+        TimedPacket &tp = m_current;
         m_time.settle(before); // it may have waited for room
         m_time.advance_to(tp.stamp); // never start a packet before it arrived
         m_packets_in++;

@@ -67,6 +67,9 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf {
     // reserves their slots and returns false (nothing reserved) if one has no room.
     bool prepare(TimedPacket &tp);
     bool reserve_outputs();
+    // Takes up the next packet into m_current (stepped, its outputs listed and reserved); false:
+    // none can be taken now.
+    bool try_take_up();
     static void on_test(void *ctx, uint32_t object);
 
     const MachineConfig &m_config;
@@ -78,6 +81,8 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf {
     PacketQueue m_queue;
     TimeKeeper m_time;
     rt_step_params m_params;
+    bool m_reserving;       // outputs reserve their slots before a packet is taken up
+    TimedPacket m_current;  // the packet taken up (after its step)
     rt_step_result m_result;
     std::vector<uint32_t> m_tested; // objects tested in the current step (shared data only)
     std::vector<TimedPacket> m_outputs; // the current step's created packets, then the forwarded one
