@@ -1,5 +1,5 @@
 // intersection_processor.cpp - the IP's state machine (one kernel packet step per packet taken
-// up) and its two drivers: an SC_METHOD acting in the update phase, or an SC_THREAD.
+// up) and its two drivers: SC_METHODs (flat) or an SC_THREAD (cluster).
 #include "intersection_processor.h"
 
 #include <stdexcept>
@@ -17,7 +17,7 @@ IntersectionProcessor::IntersectionProcessor(sc_core::sc_module_name name, const
       m_ledger(ledger), m_queue(std::string(basename()) + ".queue", config.queue_capacity),
       m_time(config.style == TimingStyle::lt), m_params(config.step),
       m_reserving(config.flow != FlowControl::none && config.queue_capacity != 0),
-      m_commit("step", [this] { commit(); }), m_threaded(config.cluster > 1)
+      m_threaded(config.cluster > 1)
 {
     in.bind(*this);
     if (rt_step_result_init(&m_result, scene) != RT_OK) throw std::bad_alloc();
@@ -30,6 +30,9 @@ IntersectionProcessor::IntersectionProcessor(sc_core::sc_module_name name, const
     sensitive << m_timer << m_queue.not_empty_event() << m_out_room;
     SC_METHOD(on_room);
     sensitive << m_room;
+    dont_initialize();
+    SC_METHOD(run_method);
+    sensitive << m_act;
     dont_initialize();
 }
 
@@ -206,16 +209,16 @@ void IntersectionProcessor::run_thread()
 void IntersectionProcessor::on_wake()
 {
     m_woken = true;
-    m_commit.request();
+    m_act.notify(); // immediate: run_method runs after the processes runnable now
 }
 
 void IntersectionProcessor::on_room()
 {
     m_room_woken = true;
-    m_commit.request();
+    m_act.notify();
 }
 
-void IntersectionProcessor::commit()
+void IntersectionProcessor::run_method()
 {
     // Only what the machine waits for moves it on (as for a thread): a release of a buffer it
     // once waited on may come while it steps or waits on its queue alone.

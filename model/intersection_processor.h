@@ -7,12 +7,13 @@
 // packet in hand. Under --flow none it takes the oldest packet and waits at each hand-over.
 //
 // Process: one state machine (act(): take up, wait for the arrival, fetch, step, hand over) that
-// runs until it must wait and says what for. On a flat torus an SC_METHOD drives it: woken by its
-// timer, its queue or room for its outputs, it runs the machine in that delta's update phase
-// (DeltaCommit), after every other process of the delta, as a thread would run after the delta's
-// methods; so which packet it takes up never depends on the order SystemC ran the delta's
-// processes in. In a cluster an SC_THREAD drives the same machine, because crossing the cluster
-// bus (packets out, shared-data fetches) waits in b_transport.
+// runs until it must wait and says what for. On a flat torus SC_METHODs drive it: the one woken
+// (by the timer, the queue or room for the outputs) notifies m_act at once, and the method on
+// m_act runs the machine later in the same evaluation phase, after every process that was
+// runnable when it began, where a thread would run (after the delta's methods); so it takes up
+// a packet after every delivery and release of that delta cycle, whichever SystemC ran first.
+// In a cluster an SC_THREAD drives the same machine, because crossing the cluster bus (packets
+// out, shared-data fetches) waits in b_transport.
 #pragma once
 
 #include <string>
@@ -21,7 +22,6 @@
 #include <tlm_utils/simple_initiator_socket.h>
 #include <vector>
 
-#include "delta_commit.h"
 #include "module_stats.h"
 #include "object_fetch_if.h"
 #include "packet_ledger.h"
@@ -84,7 +84,7 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf {
     void run_thread();
     void on_wake();
     void on_room();
-    void commit();
+    void run_method();
     void end_of_elaboration() override;
     // Runs the step of `tp` (updated in place) and lists its outputs; under the class scheme
     // reserves their slots and returns false (nothing reserved) if one has no room.
@@ -112,7 +112,7 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf {
     sc_core::sc_event m_room;           // an output's buffer released a slot
     sc_core::sc_event m_out_room;       // the processor side may hand over again
     sc_core::sc_event m_timer;          // method driver: the owed wait is over
-    DeltaCommit m_commit;               // method driver: act() in the update phase
+    sc_core::sc_event m_act;            // method driver: run the machine (notified at once)
     bool m_threaded;
     Stage m_stage = Stage::top;
     Wake m_wake = Wake::start;
