@@ -44,6 +44,7 @@ bool PacketQueue::try_take_first(TimedPacket &taken)
     if (!m_items.empty()) {
         taken = m_items.front();
         remove(0);
+        prefetch_front();
         return true;
     }
     if (m_source && m_source->pending(m_node)) { // a primary not yet due
