@@ -64,7 +64,7 @@ ClusterDispatcher::ClusterDispatcher(sc_core::sc_module_name name, const Machine
     SC_THREAD(run);
 }
 
-bool ClusterDispatcher::place(TimedPacket &tp)
+bool ClusterDispatcher::place(const TimedPacket &tp)
 {
     m_target = -1; // unbounded or --flow none: chosen once the packet has arrived
     if (m_flow == FlowControl::none || m_inbox.capacity() == 0) return true;
@@ -75,7 +75,6 @@ bool ClusterDispatcher::place(TimedPacket &tp)
         return false;
     }
     room.take();
-    tp.reserved = true;
     m_policy->chosen(k);
     m_target = k;
     return true;
@@ -86,7 +85,8 @@ void ClusterDispatcher::run()
     for (;;) {
         if (m_inbox.empty()) m_time.sync();
         sc_core::sc_time before = m_time.now();
-        TimedPacket tp = m_inbox.take_first([this](TimedPacket &c) { return place(c); }, m_room);
+        TimedPacket tp = m_inbox.take_first([this](const TimedPacket &c) { return place(c); }, m_room);
+        if (m_target >= 0) tp.reserved = true; // place() took its slot
         m_time.settle(before);        // it may have waited for room
         m_time.advance_to(tp.stamp);  // cannot move a packet before it arrived
         int k = m_target >= 0 ? m_target : m_policy->choose(m_processors);

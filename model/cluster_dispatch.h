@@ -74,9 +74,9 @@ class ClusterDispatcher : public sc_core::sc_module, public PacketSinkIf {
 
   private:
     void run();
-    // Picks the processor for `tp`; under the class scheme reserves its slot there or returns
-    // false (waiting for room).
-    bool place(TimedPacket &tp);
+    // Picks the processor for `tp`; under the class scheme reserves its slot there (m_target >=
+    // 0) or returns false (waiting for room).
+    bool place(const TimedPacket &tp);
 
     std::vector<IntersectionProcessor *> m_processors;
     std::unique_ptr<DispatchPolicyIf> m_policy;

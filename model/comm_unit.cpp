@@ -75,6 +75,8 @@ void CommUnit::accept(const TimedPacket &p)
     m_arrivals.at(enqueue(p, p.stamp, processor_source(), nullptr)).item.last_dir = -1; // it leaves the processor side
 }
 
+void CommUnit::on_space(const TimedPacket &, sc_core::sc_event &e) { m_processor_waiters.push_back(&e); }
+
 uint32_t CommUnit::enqueue(const TimedPacket &p, const sc_core::sc_time &stamp, int source, BufferSpace *credit)
 {
     sc_core::sc_time now = sc_core::sc_time_stamp();
@@ -155,8 +157,11 @@ void CommUnit::retry()
             }
             it = held.empty() ? m_held[s].erase(it) : std::next(it);
         }
-        if (static_cast<int>(s) == processor_source() && m_held[s].empty())
+        if (static_cast<int>(s) == processor_source() && m_held[s].empty()) {
             m_processor_room.notify(sc_core::SC_ZERO_TIME);
+            for (sc_core::sc_event *e : m_processor_waiters) e->notify(sc_core::SC_ZERO_TIME);
+            m_processor_waiters.clear();
+        }
     }
 }
 

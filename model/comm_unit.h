@@ -18,7 +18,8 @@
 // came from (class and virtual channel of the incoming link; one per source under --flow none),
 // and later packets from that buffer queue behind it; the next buffer's release wakes the retry
 // method. A held packet keeps its link slot (credit) until it moves on. The processor side
-// waits (in its thread) at its next hand-over while one of its packets is held; under the class
+// waits at its next hand-over while one of its packets is held (a thread in accept(), a method
+// through can_accept() and on_space()); under the class
 // scheme its packets come with their next slot reserved and are never held. A packet going on
 // to a link gets its virtual channel there by the dateline rule (flow_control.h).
 #pragma once
@@ -54,6 +55,10 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf {
              const int32_t *cell_owner, const sc_core::sc_time &lookahead = sc_core::SC_ZERO_TIME);
 
     void accept(const TimedPacket &p) override;
+    // The processor side may hand over now unless one of its packets is held; else on_space()'s
+    // event is notified once none is (a processor that must not wait in accept() waits for it).
+    bool can_accept(const TimedPacket &p) const override { return p.from_host || !processor_held(); }
+    void on_space(const TimedPacket &p, sc_core::sc_event &e) override;
     BufferSpace *room_for(const TimedPacket &p) override;
     // Selects the flow-control scheme (virtual channels; default none).
     void set_flow(FlowControl flow) { m_flow = flow; }
@@ -97,6 +102,7 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf {
     // Per source, packets in m_held (so a check does not walk every class's FIFO).
     std::vector<size_t> m_held_count;
     sc_core::sc_event m_due, m_run, m_retry, m_processor_room;
+    std::vector<sc_core::sc_event *> m_processor_waiters; // on_space(): notified with m_processor_room
 };
 
 }  // namespace torusrt

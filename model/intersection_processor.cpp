@@ -1,4 +1,5 @@
-// intersection_processor.cpp - the IP's process: one kernel packet step per packet taken up.
+// intersection_processor.cpp - the IP's state machine (one kernel packet step per packet taken
+// up) and its two drivers: SC_METHODs (flat) or an SC_THREAD (cluster).
 #include "intersection_processor.h"
 
 #include <stdexcept>
@@ -14,12 +15,34 @@ IntersectionProcessor::IntersectionProcessor(sc_core::sc_module_name name, const
     : sc_module(name), in("in"), out("out"), fetch("fetch"), fb_socket("fb_socket"), m_config(config),
       m_scene(scene), m_grid(grid), m_owner(cell_owner), m_owner_id(owner_id), m_index(index),
       m_ledger(ledger), m_queue(std::string(basename()) + ".queue", config.queue_capacity),
-      m_time(config.style == TimingStyle::lt), m_params(config.step)
+      m_time(config.style == TimingStyle::lt), m_params(config.step),
+      m_reserving(config.flow != FlowControl::none && config.queue_capacity != 0),
+      m_threaded(config.cluster > 1)
 {
     in.bind(*this);
     if (rt_step_result_init(&m_result, scene) != RT_OK) throw std::bad_alloc();
     SC_HAS_PROCESS(IntersectionProcessor);
-    SC_THREAD(run);
+    if (m_threaded) {
+        SC_THREAD(run_thread);
+        return;
+    }
+    SC_METHOD(on_wake); // also runs once at the start
+    sensitive << m_timer << m_queue.not_empty_event() << m_out_room;
+    SC_METHOD(on_room);
+    sensitive << m_room;
+    dont_initialize();
+    SC_METHOD(run_method);
+    sensitive << m_act;
+    dont_initialize();
+}
+
+void IntersectionProcessor::end_of_elaboration()
+{
+    if (fetch.size() > 0) {
+        m_params.on_test = &IntersectionProcessor::on_test;
+        m_params.on_test_ctx = this;
+        if (!m_threaded) SC_REPORT_FATAL(name(), "shared-data fetches wait on the bus: the processor needs its thread");
+    }
 }
 
 IntersectionProcessor::~IntersectionProcessor() { rt_step_result_release(&m_result); }
@@ -40,7 +63,7 @@ bool IntersectionProcessor::prepare(TimedPacket &tp)
     if (m_result.fate == RT_FATE_FORWARDED) m_outputs.push_back(TimedPacket{tp.packet, {}});
     for (TimedPacket &o : m_outputs) o.cls = cls;
     // Unbounded buffers always have room: nothing to reserve (the timing is the same either way).
-    return m_config.flow == FlowControl::none || m_config.queue_capacity == 0 || reserve_outputs();
+    return !m_reserving || reserve_outputs();
 }
 
 bool IntersectionProcessor::reserve_outputs()
@@ -68,50 +91,145 @@ bool IntersectionProcessor::reserve_outputs()
     return true;
 }
 
-void IntersectionProcessor::run()
+bool IntersectionProcessor::try_take_up()
 {
-    bool fetching = fetch.size() > 0;
-    if (fetching) {
-        m_params.on_test = &IntersectionProcessor::on_test;
-        m_params.on_test_ctx = this;
-    }
-    for (;;) {
-        if (m_queue.empty()) m_time.sync();
-        sc_core::sc_time before = m_time.now();
-        TimedPacket tp = m_queue.take_first([this](TimedPacket &c) { return prepare(c); }, m_room);
-        m_time.settle(before); // it may have waited for room
-        m_time.advance_to(tp.stamp); // never start a packet before it arrived
-        m_packets_in++;
-        m_busy_flag = true;
-        rt_ops_add(&m_ops, &m_result.ops);
-        sc_core::sc_time start = m_time.now();
-        for (uint32_t obj : m_tested) fetch->fetch(m_index, obj, m_time);
-        m_time.advance(sc_core::sc_time(rt_timing_step_us(&m_config.timing, &m_result.ops), sc_core::SC_US));
-        m_busy += m_time.now() - start;
-        m_busy_flag = false;
+    // Unbounded buffers or --flow none: the oldest packet, stepped once taken.
+    if (!m_reserving) return m_queue.try_take_first(m_current) && prepare(m_current);
+    // Else each candidate is stepped (on a copy: a refused one stays as it is in the queue).
+    return m_queue.try_take(
+        [this](const TimedPacket &c) {
+            m_current = c;
+            return prepare(m_current);
+        },
+        nullptr);
+}
 
-        if (m_result.contrib_count) {
-            sc_core::sc_time delay = sc_core::SC_ZERO_TIME;
-            m_fb_trans.set_command(tlm::TLM_WRITE_COMMAND);
-            m_fb_trans.set_data_ptr(reinterpret_cast<unsigned char *>(m_result.contrib));
-            m_fb_trans.set_data_length(static_cast<unsigned>(m_result.contrib_count * sizeof(rt_contribution)));
-            m_fb_trans.set_streaming_width(m_fb_trans.get_data_length());
-            m_fb_trans.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
-            fb_socket->b_transport(m_fb_trans, delay);
+bool IntersectionProcessor::owe(const TimeWait &w)
+{
+    m_delay = w.delay;
+    return w.due;
+}
+
+IntersectionProcessor::Wake IntersectionProcessor::act()
+{
+    if (m_wake == Wake::timer) m_time.resumed();
+    for (;;) switch (m_stage) {
+        case Stage::top:
+            m_stage = Stage::take_up_first;
+            if (m_queue.empty() && owe(m_time.sync_nb())) return Wake::timer;
+            break;
+        case Stage::take_up_first:
+            m_before = m_time.now();
+            m_stage = Stage::take_up;
+            break;
+        case Stage::take_up:
+            if (!try_take_up()) {
+                m_queue.wait_reader();
+                return m_queue.empty() ? Wake::queue : Wake::queue_or_room;
+            }
+            m_time.settle(m_before);  // it may have waited for room
+            m_stage = Stage::begin;
+            if (owe(m_time.advance_to_nb(m_current.stamp))) return Wake::timer; // never start before it arrived
+            break;
+        case Stage::begin:
+            begin_step();
+            m_stage = Stage::end;
+            if (owe(m_time.advance_nb(sc_core::sc_time(rt_timing_step_us(&m_config.timing, &m_result.ops), sc_core::SC_US))))
+                return Wake::timer;
+            break;
+        case Stage::end:
+            end_step();
+            m_next_out = 0;
+            m_stage = Stage::hand_over;
+            break;
+        case Stage::hand_over:
+            if (!hand_over()) return Wake::out_room;
+            m_stage = Stage::top;
+            break;
         }
-        // New packets are counted before the input is consumed, so the ledger never sees
-        // zero outstanding while work remains.
-        sc_core::sc_time now = m_time.now();
-        for (size_t i = 0; i < m_result.created_count; i++) m_ledger.created(m_result.created[i].kind);
-        if (m_result.fate == RT_FATE_FORWARDED) m_ledger.forwarded();
-        else m_ledger.consumed(tp.packet.kind, now);
-        for (TimedPacket &o : m_outputs) {
-            o.stamp = now;
-            out->accept(o);
-            m_time.settle(now); // a full queue may have held us (--flow none)
-        }
-        m_packets_out += m_outputs.size();
+}
+
+void IntersectionProcessor::begin_step()
+{
+    m_packets_in++;
+    m_busy_flag = true;
+    rt_ops_add(&m_ops, &m_result.ops);
+    m_start = m_time.now();
+    for (uint32_t obj : m_tested) fetch->fetch(m_index, obj, m_time); // a thread: it may wait
+}
+
+void IntersectionProcessor::end_step()
+{
+    m_busy += m_time.now() - m_start;
+    m_busy_flag = false;
+    if (m_result.contrib_count) {
+        sc_core::sc_time delay = sc_core::SC_ZERO_TIME;
+        m_fb_trans.set_command(tlm::TLM_WRITE_COMMAND);
+        m_fb_trans.set_data_ptr(reinterpret_cast<unsigned char *>(m_result.contrib));
+        m_fb_trans.set_data_length(static_cast<unsigned>(m_result.contrib_count * sizeof(rt_contribution)));
+        m_fb_trans.set_streaming_width(m_fb_trans.get_data_length());
+        m_fb_trans.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
+        fb_socket->b_transport(m_fb_trans, delay);
     }
+    // New packets are counted before the input is consumed, so the ledger never sees
+    // zero outstanding while work remains.
+    m_handed_at = m_time.now();
+    for (size_t i = 0; i < m_result.created_count; i++) m_ledger.created(m_result.created[i].kind);
+    if (m_result.fate == RT_FATE_FORWARDED) m_ledger.forwarded();
+    else m_ledger.consumed(m_current.packet.kind, m_handed_at);
+}
+
+bool IntersectionProcessor::hand_over()
+{
+    for (; m_next_out < m_outputs.size(); m_next_out++) {
+        TimedPacket &o = m_outputs[m_next_out];
+        o.stamp = m_handed_at;
+        if (!out->can_accept(o)) { // a packet of ours is held (--flow none)
+            out->on_space(o, m_out_room);
+            return false;
+        }
+        out->accept(o); // a cluster's bus port waits here for the bus (a thread)
+        m_time.settle(m_handed_at);
+    }
+    m_packets_out += m_outputs.size();
+    return true;
+}
+
+void IntersectionProcessor::run_thread()
+{
+    for (;;) {
+        m_wake = act();
+        if (m_wake == Wake::timer) sc_core::wait(m_delay);
+        else if (m_wake == Wake::queue) sc_core::wait(m_queue.not_empty_event());
+        else if (m_wake == Wake::queue_or_room) sc_core::wait(m_queue.not_empty_event() | m_room);
+        else sc_core::wait(m_out_room);
+    }
+}
+
+void IntersectionProcessor::on_wake()
+{
+    m_woken = true;
+    m_act.notify(); // immediate: run_method runs after the processes runnable now
+}
+
+void IntersectionProcessor::on_room()
+{
+    m_room_woken = true;
+    m_act.notify();
+}
+
+void IntersectionProcessor::run_method()
+{
+    // Only what the machine waits for moves it on (as for a thread): a release of a buffer it
+    // once waited on may come while it steps or waits on its queue alone.
+    bool go = m_woken || (m_room_woken && m_wake == Wake::queue_or_room);
+    if (m_wake == Wake::timer) go = m_woken && sc_core::sc_time_stamp() >= m_due;
+    m_woken = m_room_woken = false;
+    if (!go) return;
+    m_wake = act();
+    if (m_wake != Wake::timer) return;
+    m_due = sc_core::sc_time_stamp() + m_delay;
+    m_timer.notify(m_delay); // zero: the next delta, as wait(SC_ZERO_TIME)
 }
 
 }  // namespace torusrt

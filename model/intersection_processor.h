@@ -5,6 +5,15 @@
 // packet only once it has reserved a slot for each of the packet's outputs in the buffer the
 // output goes to first, trying its waiting packets in queue order; so it never waits with a
 // packet in hand. Under --flow none it takes the oldest packet and waits at each hand-over.
+//
+// Process: one state machine (act(): take up, wait for the arrival, fetch, step, hand over) that
+// runs until it must wait and says what for. On a flat torus SC_METHODs drive it: the one woken
+// (by the timer, the queue or room for the outputs) notifies m_act at once, and the method on
+// m_act runs the machine later in the same evaluation phase, after every process that was
+// runnable when it began, where a thread would run (after the delta's methods); so it takes up
+// a packet after every delivery and release of that delta cycle, whichever SystemC ran first.
+// In a cluster an SC_THREAD drives the same machine, because crossing the cluster bus (packets
+// out, shared-data fetches) waits in b_transport.
 #pragma once
 
 #include <string>
@@ -62,11 +71,28 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf {
     bool &busy_trace() { return m_busy_flag; }
 
   private:
-    void run();
+    // What the machine waits for: its timer (m_delay), its queue, its queue or room for its
+    // outputs, or the processor side of its communication unit (--flow none, a packet held).
+    enum class Wake : uint8_t { start, timer, queue, queue_or_room, out_room };
+    enum class Stage : uint8_t { top, take_up_first, take_up, begin, end, hand_over };
+    // Runs the machine from m_stage until it must wait; returns what for.
+    Wake act();
+    bool owe(const TimeWait &w);
+    void begin_step();
+    void end_step();
+    bool hand_over(); // false: waiting for the processor side (m_out_room)
+    void run_thread();
+    void on_wake();
+    void on_room();
+    void run_method();
+    void end_of_elaboration() override;
     // Runs the step of `tp` (updated in place) and lists its outputs; under the class scheme
     // reserves their slots and returns false (nothing reserved) if one has no room.
     bool prepare(TimedPacket &tp);
     bool reserve_outputs();
+    // Takes up the next packet into m_current (stepped, its outputs listed and reserved); false:
+    // none can be taken now.
+    bool try_take_up();
     static void on_test(void *ctx, uint32_t object);
 
     const MachineConfig &m_config;
@@ -78,10 +104,22 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf {
     PacketQueue m_queue;
     TimeKeeper m_time;
     rt_step_params m_params;
+    bool m_reserving;       // outputs reserve their slots before a packet is taken up
+    TimedPacket m_current;  // the packet taken up (after its step)
     rt_step_result m_result;
     std::vector<uint32_t> m_tested; // objects tested in the current step (shared data only)
     std::vector<TimedPacket> m_outputs; // the current step's created packets, then the forwarded one
     sc_core::sc_event m_room;           // an output's buffer released a slot
+    sc_core::sc_event m_out_room;       // the processor side may hand over again
+    sc_core::sc_event m_timer;          // method driver: the owed wait is over
+    sc_core::sc_event m_act;            // method driver: run the machine (notified at once)
+    bool m_threaded;
+    Stage m_stage = Stage::top;
+    Wake m_wake = Wake::start;
+    bool m_woken = false, m_room_woken = false; // method driver: what woke it this delta
+    sc_core::sc_time m_delay, m_due;    // the owed wait and when it ends
+    sc_core::sc_time m_before, m_start, m_handed_at;
+    size_t m_next_out = 0;              // the next output to hand over
     rt_op_counts m_ops{};
     sc_core::sc_time m_busy = sc_core::SC_ZERO_TIME;
     uint64_t m_packets_in = 0, m_packets_out = 0;

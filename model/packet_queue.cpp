@@ -34,40 +34,31 @@ void PacketQueue::wait_for(sc_core::sc_event *retry)
     m_reader_waiting = false;
 }
 
-TimedPacket PacketQueue::pop_blocking()
+bool PacketQueue::try_take_first(TimedPacket &taken)
 {
-    sc_core::sc_event never; // a reader that takes every packet never waits for room
-    return take_first([](TimedPacket &) { return true; }, never);
+    m_reader_waiting = false;
+    if (m_source && m_source->pending(m_node) && primary_first()) {
+        taken = m_source->take(m_node);
+        return true;
+    }
+    if (!m_items.empty()) {
+        taken = m_items.front();
+        remove(0);
+        prefetch_front();
+        return true;
+    }
+    if (m_source && m_source->pending(m_node)) { // a primary not yet due
+        taken = m_source->take(m_node);
+        return true;
+    }
+    return false;
 }
 
-TimedPacket PacketQueue::take_first(const std::function<bool(TimedPacket &)> &accept, sc_core::sc_event &retry)
+TimedPacket PacketQueue::pop_blocking()
 {
-    for (;;) {
-        bool primary = m_source && m_source->pending(m_node);
-        bool primary_first = primary && (m_items.empty() || m_source->next_time(m_node) <= m_items.front().stamp);
-        if (primary_first) {
-            TimedPacket c = m_source->peek(m_node);
-            if (accept(c)) {
-                m_source->take(m_node);
-                return c;
-            }
-        }
-        for (size_t i = 0; i < m_items.size(); i++) {
-            TimedPacket c = m_items[i];
-            if (accept(c)) {
-                remove(i);
-                return c;
-            }
-        }
-        if (primary && !primary_first) {
-            TimedPacket c = m_source->peek(m_node);
-            if (accept(c)) {
-                m_source->take(m_node);
-                return c;
-            }
-        }
-        wait_for(m_items.empty() && !primary ? nullptr : &retry);
-    }
+    TimedPacket tp;
+    while (!try_take_first(tp)) wait_for(nullptr);
+    return tp;
 }
 
 }  // namespace torusrt

@@ -6,15 +6,17 @@
 // (ties to the primary), so with host_inject = 0 a node works through all its primaries, in
 // pixel order, before the network packets, as if all had been injected at time 0.
 //
-// take_first() offers the packets to the reader in that order (the primary first when due, then
+// try_take() offers the packets to the reader in that order (the primary first when due, then
 // the queued packets oldest first, then a primary not yet due) and removes the first it accepts;
-// a reader that accepts every packet sees a plain FIFO. Under the class scheme the reader
-// accepts a packet only once the buffers its outputs go to have room, so it never waits while
-// holding a packet (flow_control.h).
+// a reader that accepts every packet sees a plain FIFO (try_take_first). Under the class scheme
+// the reader accepts a packet only once the buffers its outputs go to have room, so it never
+// waits while holding a packet (flow_control.h). The reader looks at each candidate in place;
+// only the packet taken is copied out. A process that must not wait (an SC_METHOD) calls the
+// try_ forms and, when nothing was taken, wait_reader() and then waits on not_empty_event() (and,
+// unless empty(), on its own retry event); a thread calls the blocking take_first().
 #pragma once
 
 #include <deque>
-#include <functional>
 #include <string>
 #include <systemc>
 
@@ -42,10 +44,19 @@ class PacketQueue {
     void push_blocking(const TimedPacket &p);
     // Removes the oldest packet, waiting while the queue is empty.
     TimedPacket pop_blocking();
-    // Removes and returns the first packet (in the order above) that `accept` takes, waiting
-    // while there is none: `accept` gets a copy it may change (the returned packet is that
-    // copy) and, when it refuses, registers `retry` with whatever it waits for.
-    TimedPacket take_first(const std::function<bool(TimedPacket &)> &accept, sc_core::sc_event &retry);
+    // Removes the first packet (in the order above) that `accept` (a callable taking a
+    // const TimedPacket &) takes, copying it to `*taken` unless null; false: none taken (nothing
+    // removed). When it refuses, `accept` registers its retry event with whatever it waits for.
+    template <class Accept> bool try_take(Accept &&accept, TimedPacket *taken);
+    // The same for a reader that takes every packet (it never refuses).
+    bool try_take_first(TimedPacket &taken);
+    // Blocking form of try_take: waits (in the calling thread) while there is none, on the queue
+    // and, once one was refused, on `retry`.
+    template <class Accept> TimedPacket take_first(Accept &&accept, sc_core::sc_event &retry);
+    // After a try that took nothing: a push (or wake()) notifies not_empty_event() until the
+    // reader's next try.
+    void wait_reader() { m_reader_waiting = true; }
+    sc_core::sc_event &not_empty_event() { return m_not_empty; }
     // Feeds this queue with `source`'s primaries for entry node `node`.
     void attach(PrimarySource *source, int node)
     {
@@ -78,6 +89,18 @@ class PacketQueue {
   private:
     void remove(size_t index);
     void wait_for(sc_core::sc_event *retry);
+    // The next packet a reader takes has waited long and is cold: fetch it into the cache
+    // while the reader works on this one.
+    void prefetch_front() const
+    {
+        if (m_items.empty()) return;
+        const char *p = reinterpret_cast<const char *>(&m_items.front());
+        for (size_t b = 0; b < sizeof(TimedPacket); b += 64) __builtin_prefetch(p + b);
+    }
+    bool primary_first() const
+    {
+        return m_source->pending(m_node) && (m_items.empty() || m_source->next_time(m_node) <= m_items.front().stamp);
+    }
 
     std::string m_name;
     ClassBuffers m_spaces;
@@ -89,5 +112,42 @@ class PacketQueue {
     PrimarySource *m_source = nullptr;
     int m_node = -1;
 };
+
+template <class Accept> bool PacketQueue::try_take(Accept &&accept, TimedPacket *taken)
+{
+    m_reader_waiting = false;
+    bool primary = m_source && m_source->pending(m_node);
+    bool first = primary && primary_first();
+    if (first) {
+        TimedPacket c = m_source->peek(m_node); // made on demand: a copy either way
+        if (accept(static_cast<const TimedPacket &>(c))) {
+            m_source->drop(m_node);
+            if (taken) *taken = c;
+            return true;
+        }
+    }
+    for (size_t i = 0; i < m_items.size(); i++) {
+        if (!accept(static_cast<const TimedPacket &>(m_items[i]))) continue;
+        if (taken) *taken = m_items[i];
+        remove(i);
+        return true;
+    }
+    if (primary && !first) {
+        TimedPacket c = m_source->peek(m_node);
+        if (accept(static_cast<const TimedPacket &>(c))) {
+            m_source->drop(m_node);
+            if (taken) *taken = c;
+            return true;
+        }
+    }
+    return false;
+}
+
+template <class Accept> TimedPacket PacketQueue::take_first(Accept &&accept, sc_core::sc_event &retry)
+{
+    TimedPacket tp;
+    while (!try_take(accept, &tp)) wait_for(empty() ? nullptr : &retry);
+    return tp;
+}
 
 }  // namespace torusrt

@@ -58,12 +58,17 @@ TimedPacket PrimarySource::peek(int node) const
 TimedPacket PrimarySource::take(int node)
 {
     TimedPacket t = peek(node);
+    drop(node);
+    return t;
+}
+
+void PrimarySource::drop(int node)
+{
     m_next[node]++;
     if (!pending(node)) { // the node's list is spent: give its memory back
         std::vector<uint32_t>().swap(m_pixels[node]);
         m_next[node] = 0;
     }
-    return t;
 }
 
 }  // namespace torusrt

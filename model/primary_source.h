@@ -38,6 +38,8 @@ class PrimarySource {
     TimedPacket take(int node);
     // The packet take() would make, without taking it.
     TimedPacket peek(int node) const;
+    // Takes the node's next primary without making its packet (after a peek).
+    void drop(int node);
 
   private:
     void plan(const int32_t *owner);

@@ -10,27 +10,31 @@ sc_core::sc_time TimeKeeper::now() const
     return m_lt ? m_qk.get_current_time() : sc_core::sc_time_stamp();
 }
 
-void TimeKeeper::advance(const sc_core::sc_time &d)
+TimeWait TimeKeeper::advance_nb(const sc_core::sc_time &d)
 {
-    if (!m_lt) {
-        sc_core::wait(d);
-        return;
-    }
+    if (!m_lt) return {true, d};
     m_qk.inc(d);
-    if (m_qk.need_sync()) sync();
+    return m_qk.need_sync() ? sync_nb() : TimeWait{};
 }
 
-void TimeKeeper::advance_to(const sc_core::sc_time &t)
+TimeWait TimeKeeper::advance_to_nb(const sc_core::sc_time &t)
 {
     sc_core::sc_time n = now();
-    if (t > n) advance(t - n);
+    return t > n ? advance_nb(t - n) : TimeWait{};
 }
 
-void TimeKeeper::sync()
+TimeWait TimeKeeper::sync_nb()
 {
+    if (!m_lt) return {};
     // A zero offset needs no wait: skipping it keeps quantum 0 identical to AT.
-    if (m_lt && m_qk.get_local_time() > sc_core::SC_ZERO_TIME) m_qk.sync();
-    else if (m_lt) m_qk.reset();
+    if (m_qk.get_local_time() > sc_core::SC_ZERO_TIME) return {true, m_qk.get_local_time()};
+    m_qk.reset();
+    return {};
+}
+
+void TimeKeeper::resumed()
+{
+    if (m_lt) m_qk.reset();
 }
 
 void TimeKeeper::settle(const sc_core::sc_time &before)

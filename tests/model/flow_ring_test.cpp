@@ -64,7 +64,7 @@ struct Relay : sc_core::sc_module, PacketSinkIf {
         TimedPacket next;
         for (;;) {
             TimedPacket tp = queue.take_first(
-                [&](TimedPacket &c) {
+                [&](const TimedPacket &c) {
                     if (c.packet.x == 0 || flow == FlowControl::none) return true;
                     next = next_of(c);
                     BufferSpace *b = out->room_for(next);

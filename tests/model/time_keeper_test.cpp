@@ -1,7 +1,8 @@
 // time_keeper_test.cpp - approximately timed, advance() waits exactly the delay; loosely timed,
 // delays accumulate as a local offset and the process synchronises when it reaches the next
 // quantum boundary (a multiple of the global quantum); settle() drops an offset that predates a
-// wait; sync() with no offset does not wait.
+// wait; sync() with no offset does not wait. An SC_METHOD running the same schedule through the
+// _nb calls (each owed wait spent by being triggered that much later) sees the same times.
 #include <systemc>
 #include <tlm>
 #include <vector>
@@ -21,7 +22,7 @@ struct Sample {
 
 // Records a sample after each step; the TESTs compare them with the times worked out by hand.
 struct Samples {
-    std::vector<Sample> at, lt;
+    std::vector<Sample> at, lt, lt_method;
 };
 
 struct AtUser : sc_core::sc_module {
@@ -92,12 +93,56 @@ struct LtUser : sc_core::sc_module {
     }
 };
 
+// LtUser's schedule up to sample 7, from an SC_METHOD.
+struct LtMethodUser : sc_core::sc_module {
+    struct Op {
+        char kind; // a: advance, t: advance_to, s: sync
+        int ns;
+        bool sample;
+    };
+    TimeKeeper time{true};
+    std::vector<Sample> &out;
+    std::vector<Op> ops{{'a', 30, false}, {'a', 30, false}, {'a', 30, true}, {'a', 30, true}, {'a', 50, true},
+                        {'a', 40, true},  {'t', 205, true}, {'t', 250, true}, {'s', 0, true},  {'s', 0, true}};
+    size_t next = 0;
+    bool waiting = false;
+    LtMethodUser(sc_core::sc_module_name n, std::vector<Sample> &out_) : sc_module(n), out(out_)
+    {
+        SC_HAS_PROCESS(LtMethodUser);
+        SC_METHOD(run);
+    }
+    TimeWait apply(const Op &op)
+    {
+        if (op.kind == 'a') return time.advance_nb(ns(op.ns));
+        if (op.kind == 't') return time.advance_to_nb(ns(op.ns));
+        return time.sync_nb();
+    }
+    void run()
+    {
+        if (waiting) { // the owed wait is over
+            time.resumed();
+            waiting = false;
+            if (ops[next++].sample) out.push_back({sc_time_stamp(), time.now()});
+        }
+        for (; next < ops.size(); next++) {
+            TimeWait w = apply(ops[next]);
+            if (w.due) {
+                waiting = true;
+                next_trigger(w.delay);
+                return;
+            }
+            if (ops[next].sample) out.push_back({sc_time_stamp(), time.now()});
+        }
+    }
+};
+
 static Samples simulate()
 {
     Samples s;
     tlm::tlm_global_quantum::instance().set(ns(100));
     AtUser at("at", s.at);
     LtUser lt("lt", s.lt);
+    LtMethodUser ltm("ltm", s.lt_method);
     sc_core::sc_start();
     return s;
 }
@@ -156,4 +201,16 @@ TEST(TimeKeeper, LooselyTimedSettleDropsAnOffsetThatPredatesAWait)
     // Local 290 ns, then a 5 ns wait from 280: simulation 285 is before `before` (290).
     EXPECT_EQ(lt[9].simulation, ns(285)) << "settle after a short wait keeps `before`";
     EXPECT_EQ(lt[9].local, ns(290));
+}
+
+TEST(TimeKeeper, AMethodThroughTheNbCallsSeesTheThreadsTimes)
+{
+    const Samples &s = run();
+    ASSERT_EQ(s.lt.size(), 10u);
+    ASSERT_EQ(s.lt_method.size(), 8u);
+    for (size_t i = 0; i < 8; i++) {
+        EXPECT_EQ(s.lt_method[i].simulation, s.lt[i].simulation) << "sample " << i;
+        EXPECT_EQ(s.lt_method[i].local, s.lt[i].local) << "sample " << i;
+    }
+    EXPECT_EQ(s.lt_method[1].simulation, ns(120)) << "the method waited for the sync, as the thread";
 }
