@@ -40,7 +40,8 @@ point() { # SCENE SHAPE POLICY-NAME MAP REMAP PILOT-FRACTION (- for none)
       .animation.host_pilot_charged_s] | @tsv' "$work/$tag.json" > "$work/$tag.run"
   jq -r --arg sc "$1" --arg pol "$3" \
     '.config.nodes as $n | .frames[] | [$sc, $n, $pol, .index, .image_time_s, .migration_time_s,
-      .migration_bytes, .efficiency, .remap.decision] | @tsv' "$work/$tag.json" > "$work/$tag.frames"
+      .migration_bytes, .efficiency, .remap.decision,
+      ((.remap.reason | match("guess ([a-z-]+)").captures[0].string) // "-")] | @tsv' "$work/$tag.json" > "$work/$tag.frames"
   rm -rf "$dir"
 }
 export -f point
@@ -60,7 +61,7 @@ parallel -j "$jobs" --colsep ' ' --halt now,fail=1 point {1} {2} {3} {4} {5} {6}
   cat "$work"/*.run | sort -t$'\t' -k1,1 -k2,2n -k3,3
 } > "$res/runs.tsv"
 {
-  printf 'scene\tn\tpolicy\tframe\timage_time_s\tmigration_time_s\tmigration_bytes\tefficiency\tdecision\n'
+  printf 'scene\tn\tpolicy\tframe\timage_time_s\tmigration_time_s\tmigration_bytes\tefficiency\tdecision\tguess\n'
   cat "$work"/*.frames | sort -t$'\t' -k1,1 -k2,2n -k3,3 -k4,4n
 } > "$res/frames.tsv"
 elapsed=$(( $(date +%s) - start ))

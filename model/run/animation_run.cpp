@@ -90,6 +90,12 @@ bool run_frame(const SimConfig &config, Machine &m, size_t k, size_t n)
     return run_finished(config, *m.top, m.ledger, m.memory);
 }
 
+// Frame k-2's camera, none for k < 2.
+const rt_camera_pose *pose_before(const rt_camera_path *path, size_t k)
+{
+    return k >= 2 ? rt_camera_path_pose(path, k - 2) : nullptr;
+}
+
 // Frame k's mapping (k > 0) and its record's mapping fields; the owner table is updated.
 void next_mapping(RemapPolicy policy, const RemapContext &ctx, Machine &m, const FrameLoads &loads, FrameRecord &rec)
 {
@@ -139,7 +145,7 @@ AnimationOutcome run_animation(const SimConfig &config, rt_scene *scene, const r
     if (!config.vcd_path.empty()) m.tracer = std::make_unique<Tracer>(config, *m.top);
 
     AnimationOutcome out;
-    std::unique_ptr<FramePilot> previous, before, preview;
+    std::unique_ptr<FramePilot> previous, before, earlier, preview;
     double end_s = 0;
     for (size_t k = 0; k < n; k++) {
         FrameRecord rec;
@@ -153,13 +159,16 @@ AnimationOutcome run_animation(const SimConfig &config, rt_scene *scene, const r
         sc_core::sc_time start = sc_core::SC_ZERO_TIME;
         if (k > 0) {
             set_camera(scene, path, k);
+            earlier = std::move(before);
             before = std::move(previous);
             previous = std::move(pilot);
             pilot = std::make_unique<FramePilot>(config, scene, grid);
             double previous_time_s = out.frames.back().image_time_s;
             if (policy == RemapPolicy::adaptive && pilot_fraction > 0)
                 preview = host_preview(config, scene, grid, pilot_fraction, previous_time_s, rec);
-            next_mapping(policy, ctx, m, FrameLoads{*previous, previous_time_s, *pilot, before.get(), preview.get()}, rec);
+            next_mapping(policy, ctx, m, FrameLoads{*previous, previous_time_s, *pilot, before.get(), earlier.get(),
+                                                    preview.get(), pose_before(path, k), rt_camera_path_pose(path, k - 1),
+                                                    rt_camera_path_pose(path, k)}, rec);
             m.fb = new_frame_buffer(scene);
             start = frame_start(config, end_s + rec.charged_migration_s() + rec.host_pilot_charged_s);
             m.top->start_frame(m.fb.get(), m.owner.data(), start);

@@ -9,6 +9,7 @@
 #include <new>
 #include <functional>
 
+#include "load_motion.h"
 #include "user_error.h"
 
 namespace torusrt {
@@ -62,22 +63,73 @@ struct Candidate {
     std::vector<int32_t> owner;
 };
 
-// Adaptive without a preview: the remapping of the trend (frame k-1's load alone before frame 2),
+// Adaptive's guesses of frame j's load from what frames j-1 (and j-2) measured, each also blurred.
+enum class Guess { last, trend, moved };
+struct GuessKind {
+    Guess guess;
+    bool blurred;
+    const char *name;
+};
+const GuessKind guesses[] = {{Guess::last, false, "frame"},         {Guess::trend, false, "trend"},
+                             {Guess::moved, false, "moved"},        {Guess::last, true, "frame-blurred"},
+                             {Guess::trend, true, "trend-blurred"}, {Guess::moved, true, "moved-blurred"}};
+constexpr double blur_keep = 0.25;  // a blurred guess keeps this share of a cell's work, the rest goes to its face neighbours
+
+// Frame j's load guessed from frame j-1's (`last`) and j-2's (`before`, the trend only), the
+// camera going from pose a (frame j-1) to pose b (frame j).
+std::unique_ptr<FramePilot> guessed_load(const RemapContext &ctx, const GuessKind &g, const FramePilot &last,
+                                         const FramePilot *before, const rt_camera_pose &a, const rt_camera_pose &b)
+{
+    std::unique_ptr<FramePilot> p = g.guess == Guess::trend   ? FramePilot::extrapolated(last, *before)
+                                    : g.guess == Guess::moved ? FramePilot::moved(last, ctx.grid, a, b)
+                                                              : FramePilot::combined(last, last, 1, 0);
+    return g.blurred ? FramePilot::blurred(*p, blur_keep) : std::move(p);
+}
+
+// The guess that, made of frame k-1 from frames k-2 (and k-3), would have given frame k-1 the
+// table (remapped from frame k-1's) with the least measured work on its busiest nodes; the
+// first on a tie. Frame 1 has no pair to test on: frame k-1's load.
+const GuessKind &backtested_guess(const RemapContext &ctx, const std::vector<int32_t> &current,
+                                  const FrameLoads &loads, std::string &why)
+{
+    if (!loads.before) return guesses[0];
+    int nodes = ctx.config.node_count();
+    const GuessKind *best = &guesses[0];
+    double best_w = 0;
+    bool first = true;
+    for (const GuessKind &g : guesses) {
+        if (g.guess == Guess::trend && !loads.earlier) continue;
+        auto p = guessed_load(ctx, g, *loads.before, loads.earlier, *loads.pose_before, *loads.pose_previous);
+        double w = loads.previous.busiest_work_s(remapped(ctx, current, *p), nodes);
+        char buf[64];
+        std::snprintf(buf, sizeof buf, "%s%s %.6f s", first ? "" : ", ", g.name, w);
+        why += buf;
+        if (first || w < best_w) best = &g, best_w = w;
+        first = false;
+    }
+    return *best;
+}
+
+// Adaptive without a preview: the remapping of frame k's load as the back-tested guess has it,
 // taken only if its predicted gain exceeds its migration.
-void trend_choice(const RemapContext &ctx, const std::vector<int32_t> &current, const FramePilot &previous,
-                  double previous_time_s, RemapDecision &d)
+void guess_choice(const RemapContext &ctx, const std::vector<int32_t> &current, const FrameLoads &loads,
+                  RemapDecision &d)
 {
     int nodes = ctx.config.node_count();
-    std::vector<int32_t> candidate = remapped(ctx, current, previous);
-    double w_now = previous.busiest_work_s(current, nodes);
-    double w_new = previous.busiest_work_s(candidate, nodes);
+    std::string tested;
+    const GuessKind &g = backtested_guess(ctx, current, loads, tested);
+    auto predicted = guessed_load(ctx, g, loads.previous, loads.before, *loads.pose_previous, *loads.pose_next);
+    std::vector<int32_t> candidate = remapped(ctx, current, *predicted);
+    double w_now = predicted->busiest_work_s(current, nodes);
+    double w_new = predicted->busiest_work_s(candidate, nodes);
     double move = migration_cost(ctx.scene, ctx.grid, ctx.routing, nodes, ctx.config.timing, current, candidate).time_s;
-    d.predicted_gain_s = w_now > 0 ? previous_time_s * (1 - w_new / w_now) : 0;
+    d.predicted_gain_s = w_now > 0 ? loads.previous_time_s * (1 - w_new / w_now) : 0;
     bool take = d.predicted_gain_s > move;
     d.owner = take ? std::move(candidate) : current;
     d.decision = take ? "remap" : "keep";
-    d.reason = "adaptive: predicted gain " + seconds_text(d.predicted_gain_s) + (take ? " > " : " <= ") +
-               "migration " + seconds_text(move);
+    d.reason = std::string("adaptive: guess ") + g.name + (tested.empty() ? "" : " (back-tested " + tested + ")") +
+               ", predicted gain " + seconds_text(d.predicted_gain_s) + (take ? " > " : " <= ") + "migration " +
+               seconds_text(move);
 }
 
 // Adaptive with a preview: the candidate with the least predicted image time plus migration (keep on a tie).
@@ -180,14 +232,41 @@ FramePilot::FramePilot(const SimConfig &config, rt_scene *scene, const rt_grid *
         m_pilot.traffic[i] = static_cast<uint64_t>(std::llround(static_cast<double>(m_pilot.traffic[i]) * scale));
 }
 
-std::unique_ptr<FramePilot> FramePilot::combined(const FramePilot &x, const FramePilot &y, double wx, double wy)
+std::unique_ptr<FramePilot> FramePilot::blank_like(const FramePilot &x)
 {
     std::unique_ptr<FramePilot> s(new FramePilot());
-    const rt_cost_pilot &a = x.m_pilot, &b = y.m_pilot;
-    s->m_pilot = a;
-    s->m_pilot.work_us = static_cast<double *>(std::malloc(a.cells * sizeof(double)));
-    s->m_pilot.traffic = static_cast<uint64_t *>(std::malloc(a.cells * RT_CELL_FACES * sizeof(uint64_t)));
+    s->m_pilot = x.m_pilot;
+    s->m_pilot.work_us = static_cast<double *>(std::malloc(x.m_pilot.cells * sizeof(double)));
+    s->m_pilot.traffic = static_cast<uint64_t *>(std::malloc(x.m_pilot.cells * RT_CELL_FACES * sizeof(uint64_t)));
     if (!s->m_pilot.work_us || !s->m_pilot.traffic) throw std::bad_alloc();  // the destructor frees
+    return s;
+}
+
+std::unique_ptr<FramePilot> FramePilot::moved(const FramePilot &load, const rt_grid *grid, const rt_camera_pose &a,
+                                              const rt_camera_pose &b)
+{
+    std::unique_ptr<FramePilot> s = blank_like(load);
+    std::vector<char> occupied(load.m_pilot.cells);
+    for (size_t c = 0; c < occupied.size(); c++) {
+        size_t n = 0;
+        rt_grid_cell_objects(grid, c, &n);
+        occupied[c] = n > 0;
+    }
+    move_visits(load.m_pilot, rt_grid_bounds(grid), camera_motion(a, b), occupied, s->m_pilot);
+    return s;
+}
+
+std::unique_ptr<FramePilot> FramePilot::blurred(const FramePilot &load, double keep)
+{
+    std::unique_ptr<FramePilot> s = blank_like(load);
+    blur_load(load.m_pilot, keep, s->m_pilot);
+    return s;
+}
+
+std::unique_ptr<FramePilot> FramePilot::combined(const FramePilot &x, const FramePilot &y, double wx, double wy)
+{
+    std::unique_ptr<FramePilot> s = blank_like(x);
+    const rt_cost_pilot &a = x.m_pilot, &b = y.m_pilot;
     s->m_pilot.total_us = 0;
     for (size_t c = 0; c < a.cells; c++) {
         s->m_pilot.work_us[c] = std::max(0.0, wx * a.work_us[c] + wy * b.work_us[c]);
@@ -235,9 +314,7 @@ RemapDecision decide_mapping(RemapPolicy policy, const RemapContext &ctx, const 
         d.reason = "every-frame: remapped from the previous frame's work";
     } else {
         if (loads.preview) adaptive_choice(ctx, current, loads, d);
-        else if (loads.before)
-            trend_choice(ctx, current, *FramePilot::extrapolated(loads.previous, *loads.before), loads.previous_time_s, d);
-        else trend_choice(ctx, current, loads.previous, loads.previous_time_s, d);
+        else guess_choice(ctx, current, loads, d);
     }
     d.mapper_wall_s = now_s() - t0;
     d.migration = migration_cost(ctx.scene, ctx.grid, ctx.routing, nodes, ctx.config.timing, current, d.owner);

@@ -5,11 +5,18 @@
 //               and face traffic, the old table as the old partition, and each cell's move
 //               cost (one hop of its bytes, see migration.h) against keeping it;
 //   adaptive    without a preview (--remap-pilot 0, the default): a SCOTCH_graphRemap as
-//               every-frame's, but of the load extrapolated from the last two frames (per cell
-//               max(0, 2 x frame k-1 - frame k-2); frame 0's alone before frame 1), taken only
-//               when its predicted gain in image time exceeds its migration time; the gain is
+//               every-frame's, but of a guess of frame k's load, taken only when its predicted
+//               gain in image time exceeds its migration time; the gain is
 //               T x (1 - W(C) / W(current)) with T frame k-1's image time and W below in the
-//               extrapolated load.
+//               guessed load. The guesses, from what earlier frames measured and the camera
+//               path: frame k-1's load (`frame`), the trend max(0, 2 x frame k-1 - frame k-2)
+//               (`trend`), frame k-1's load moved with the camera from pose k-1 to pose k
+//               (`moved`: its rays move, each cell's work per ray stays, load_motion.h), and
+//               each of them blurred (`-blurred`: a quarter of a cell's work stays, the rest
+//               goes to its face neighbours). The guess taken is the one that, made of frame
+//               k-1 from frames k-2 (and k-3), would have given frame k-1 the table (remapped
+//               from frame k-1's) with the least W in frame k-1's measured load (the first in
+//               that order on a tie; `frame` for frame 1, the trend from frame 3 on).
 //               With a preview (--remap-pilot FRACTION > 0): the camera path is known in
 //               advance, so the host pilots frame k at FRACTION of the pixels (same view) while
 //               the machine renders frame k-1; that preview, scaled to the full pixel count,
@@ -38,6 +45,7 @@
 #include <vector>
 
 #include "migration.h"
+#include "rt_camera_path.h"
 #include "rt_cost_map.h"
 #include "sim_config.h"
 
@@ -65,8 +73,13 @@ class FramePilot {
     }
     // The mean of two frames' loads (a table fitted to both views).
     static std::unique_ptr<FramePilot> mean(const FramePilot &a, const FramePilot &b) { return combined(a, b, 0.5, 0.5); }
-    // The next frame's load extrapolated from the last two: per cell and face
-    // max(0, 2 x last - before) (the load keeps moving as it did).
+    // The load blurred: `keep` of each cell's work stays, the rest is shared by its face
+    // neighbours (load_motion.h's blur_load); traffic unchanged.
+    static std::unique_ptr<FramePilot> blurred(const FramePilot &load, double keep);
+    // The load moved with the camera from pose a to pose b: the rays move, each cell's cost per
+    // ray stays (load_motion.h's move_visits; occupied = the cell lists anything).
+    static std::unique_ptr<FramePilot> moved(const FramePilot &load, const rt_grid *grid, const rt_camera_pose &a,
+                                             const rt_camera_pose &b);
     ~FramePilot() { rt_cost_pilot_release(&m_pilot); }
     FramePilot(const FramePilot &) = delete;
     FramePilot &operator=(const FramePilot &) = delete;
@@ -80,6 +93,7 @@ class FramePilot {
 
   private:
     FramePilot() = default;
+    static std::unique_ptr<FramePilot> blank_like(const FramePilot &x);  // same size, arrays allocated
     void run(const SimConfig &config, const rt_scene *scene, const rt_grid *grid);
     rt_cost_pilot m_pilot{};
     double m_wall_s = 0, m_host_s = 0;
@@ -115,7 +129,11 @@ struct FrameLoads {
     double previous_time_s;        // frame k-1's measured image time
     const FramePilot &pilot;       // frame k's own full pilot (oracle only)
     const FramePilot *before;      // frame k-2's measured load (null for k = 1)
+    const FramePilot *earlier;     // frame k-3's measured load (null for k < 3)
     const FramePilot *preview;     // frame k's host preview (adaptive only)
+    const rt_camera_pose *pose_before;    // frame k-2's camera (null for k = 1)
+    const rt_camera_pose *pose_previous;  // frame k-1's camera
+    const rt_camera_pose *pose_next;      // frame k's camera (known in advance)
 };
 
 // The table for frame k > 0; `current` is frame k-1's table.

@@ -91,6 +91,13 @@ sim_ok again "$scene" "${size[@]}" --ips 2x2x2 --map cost --orbit 360 --frames 4
 check "adaptive twice: same frame times and decisions" [ "$(jq -c '[.frames[] | [.image_time_s, .remap.decision, .migration_bytes]]' \
     "$TMP/again.json")" = "$(jq -c '[.frames[] | [.image_time_s, .remap.decision, .migration_bytes]]' \
     "$TMP/adaptive-cost.json")" ]
+# Adaptive names its guess: frame 0's load for frame 1, a back-tested guess from frame 2 on, the
+# trend among them from frame 3 on (4 frames: frames 1..3 decided).
+check "adaptive: frame 1 guesses frame 0's load" \
+    [ "$(jq -r '.frames[1].remap.reason | test("guess frame,")' "$TMP/again.json")" = true ]
+check "adaptive: frames 2 and 3 back-test their guess, the trend from frame 3" \
+    [ "$(jq -c '[.frames[2:][].remap.reason | [test("back-tested frame "), test("trend-blurred ")]]' \
+        "$TMP/again.json")" = '[[true,false],[true,true]]' ]
 
 # Bad input: exit 2, a message naming the option or FILE:LINE, no output at all.
 bad() { # bad NAME PATTERN ARGS...: exit 2, stderr matches PATTERN, $TMP/bad empty
