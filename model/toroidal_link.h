@@ -35,8 +35,9 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
     void accept(const TimedPacket &p) override;
     bool can_accept(const TimedPacket &p) const override
     {
+        if (p.reserved || m_spaces.unbounded()) return true;
         const BufferSpace *s = m_spaces.find(index_of(p));
-        return p.reserved || !s || s->available();
+        return !s || s->available();
     }
     void on_space(const TimedPacket &p, sc_core::sc_event &e) override { space_for(p).on_release(e); }
     BufferSpace *room_for(const TimedPacket &p) override { return &space_for(p); }
