@@ -1,19 +1,11 @@
-// arrival_queue.cpp - a binary min-heap of arrival keys over a pool of packet slots.
+// arrival_queue.cpp - a binary min-heap of arrival keys over a pool of arrival slots.
 #include "arrival_queue.h"
 
 #include <algorithm>
 
 namespace torusrt {
 
-bool ArrivalQueue::later(const Key &a, const Key &b)
-{
-    if (a.when != b.when) return a.when > b.when;
-    if (a.source != b.source) return a.source > b.source;
-    return a.seq > b.seq;
-}
-
-uint32_t ArrivalQueue::push(const sc_core::sc_time &when, int source, const TimedPacket &item,
-                        const sc_core::sc_time &stamp, BufferSpace *credit)
+uint32_t ArrivalQueue::push(const sc_core::sc_time &when, int source, uint32_t packet, BufferSpace *credit)
 {
     uint32_t slot;
     if (m_free.empty()) {
@@ -23,12 +15,9 @@ uint32_t ArrivalQueue::push(const sc_core::sc_time &when, int source, const Time
         slot = m_free.back();
         m_free.pop_back();
     }
-    Arrival &a = m_slots[slot];
-    a.item = item;
-    a.item.stamp = stamp;
-    a.source = source;
-    a.credit = credit;
-    m_heap.push_back(Key{when, source, slot, m_seq++, sc_core::sc_delta_count()});
+    m_slots[slot] = Arrival{packet, source, credit, sc_core::sc_delta_count()};
+    uint64_t order = static_cast<uint64_t>(source) << kSeqBits | m_seq++;
+    m_heap.push_back(Key{when.value(), order, slot});
     std::push_heap(m_heap.begin(), m_heap.end(), later);
     return slot;
 }

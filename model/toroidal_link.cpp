@@ -27,12 +27,23 @@ void ToroidalLink::accept(const TimedPacket &p)
     q.reserved = false;
     // A thread that waited for room sends no earlier than now.
     if (q.stamp < sc_core::sc_time_stamp()) q.stamp = sc_core::sc_time_stamp();
-    send();
+    m_ext->pool = nullptr;
+    send(q);
 }
 
-void ToroidalLink::send()
+void ToroidalLink::accept_pooled(PacketPool &pool, uint32_t handle)
 {
-    TimedPacket &p = m_ext->item;
+    TimedPacket &p = pool.at(handle);
+    if (!p.reserved) space_for(p).take_blocking(); // room was checked: does not wait
+    p.reserved = false;
+    if (p.stamp < sc_core::sc_time_stamp()) p.stamp = sc_core::sc_time_stamp();
+    m_ext->pool = &pool;
+    m_ext->handle = handle;
+    send(p);
+}
+
+void ToroidalLink::send(TimedPacket &p)
+{
     sc_core::sc_time start = p.stamp > m_free_at ? p.stamp : m_free_at; // cannot start before it was sent
     m_free_at = start + m_packet_time;
     m_busy += m_packet_time;
@@ -48,7 +59,7 @@ void ToroidalLink::send()
     m_trans.set_command(tlm::TLM_WRITE_COMMAND);
     m_trans.set_address(static_cast<uint64_t>(m_to));
     // Data = the packet as held in memory; its size on the wire is a timing parameter.
-    m_trans.set_data_ptr(reinterpret_cast<unsigned char *>(&m_ext->item.packet));
+    m_trans.set_data_ptr(reinterpret_cast<unsigned char *>(&p.packet));
     m_trans.set_data_length(sizeof(rt_packet));
     m_trans.set_streaming_width(sizeof(rt_packet));
     m_trans.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);

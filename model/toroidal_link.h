@@ -18,6 +18,7 @@
 
 #include "class_buffers.h"
 #include "module_stats.h"
+#include "packet_pool.h"
 #include "packet_sink_if.h"
 #include "queue_registry.h"
 #include "sim_config.h"
@@ -33,6 +34,9 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
 
     // Waits (in a thread) for room, then sends. A method caller checks can_accept() first.
     void accept(const TimedPacket &p) override;
+    // The same for a packet of `pool`, which crosses by handle (a method caller, after
+    // can_accept(); the receiver takes the handle on).
+    void accept_pooled(PacketPool &pool, uint32_t handle);
     bool can_accept(const TimedPacket &p) const override
     {
         if (p.reserved || m_spaces.unbounded()) return true;
@@ -61,8 +65,8 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
   private:
     static uint32_t index_of(const TimedPacket &p) { return 2 * p.cls + p.vc; }
     BufferSpace &space_for(const TimedPacket &p) { return m_spaces.at(index_of(p)); }
-    // Sends the packet in the extension.
-    void send();
+    // Sends `p` (the extension's packet), ready to go (slot taken, stamp no earlier than now).
+    void send(TimedPacket &p);
     void drive_busy_trace();
 
     sc_core::sc_time m_packet_time; // serialisation time of one packet
