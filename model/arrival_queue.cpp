@@ -1,33 +1,29 @@
-// arrival_queue.cpp - a binary min-heap of arrival keys over a pool of arrival slots.
+// arrival_queue.cpp - a binary min-heap of arrival keys.
 #include "arrival_queue.h"
 
 #include <algorithm>
 
 namespace torusrt {
 
-uint32_t ArrivalQueue::push(const sc_core::sc_time &when, int source, uint32_t packet, BufferSpace *credit)
+void ArrivalQueue::push(const sc_core::sc_time &when, int source, uint32_t packet)
 {
-    uint32_t slot;
-    if (m_free.empty()) {
-        slot = static_cast<uint32_t>(m_slots.size());
-        m_slots.emplace_back();
-    } else {
-        slot = m_free.back();
-        m_free.pop_back();
+    sc_dt::uint64 delta = sc_core::sc_delta_count();
+    if (delta != m_push_delta) {
+        m_push_delta = delta;
+        m_delta_first_seq = m_seq;
     }
-    m_slots[slot] = Arrival{packet, source, credit, sc_core::sc_delta_count()};
     uint64_t order = static_cast<uint64_t>(source) << kSeqBits | m_seq++;
-    m_heap.push_back(Key{when.value(), order, slot});
+    m_heap.push_back(Key{when.value(), order, packet});
     std::push_heap(m_heap.begin(), m_heap.end(), later);
-    return slot;
 }
 
-uint32_t ArrivalQueue::pop()
+ArrivalQueue::Arrival ArrivalQueue::pop()
 {
     std::pop_heap(m_heap.begin(), m_heap.end(), later);
-    uint32_t slot = m_heap.back().slot;
+    const Key &k = m_heap.back();
+    Arrival a{k.packet, static_cast<int>(k.order >> kSeqBits)};
     m_heap.pop_back();
-    return slot;
+    return a;
 }
 
 }  // namespace torusrt

@@ -41,7 +41,8 @@ CommUnit::Hop CommUnit::next_hop(TimedPacket &p)
     int port = dir >= 0 ? m_port_of_dir[dir] : -1;
     if (port < 0) SC_REPORT_FATAL(name(), "no link toward the packet's owner");
     p.vc = link_channel(m_flow, m_routing, p, m_node, dir);
-    return {link_out[port], m_link_of_dir[dir], false};
+    if (ToroidalLink *link = m_link_of_dir[dir]) return {link, link, false}; // the port's own link
+    return {link_out[port], nullptr, false};
 }
 
 BufferSpace *CommUnit::room_for(const TimedPacket &p)
@@ -53,12 +54,12 @@ BufferSpace *CommUnit::room_for(const TimedPacket &p)
 
 bool CommUnit::holds(int source, uint32_t buffer) const
 {
-    if (!m_held_count[source]) return false;
+    if (!m_held_total || !m_held_count[source]) return false;
     auto it = m_held[source].find(buffer);
     return it != m_held[source].end() && !it->second.empty();
 }
 
-bool CommUnit::processor_held() const { return m_held_count[processor_source()] > 0; }
+bool CommUnit::processor_held() const { return m_held_total && m_held_count[processor_source()] > 0; }
 
 void CommUnit::accept(const TimedPacket &p)
 {
@@ -75,14 +76,14 @@ void CommUnit::accept(const TimedPacket &p)
     enqueue(packet, p.stamp, processor_source(), nullptr);
 }
 
-uint32_t CommUnit::enqueue(uint32_t packet, const sc_core::sc_time &stamp, int source, BufferSpace *credit)
+void CommUnit::enqueue(uint32_t packet, const sc_core::sc_time &stamp, int source, BufferSpace *credit)
 {
     sc_core::sc_time now = sc_core::sc_time_stamp();
     sc_core::sc_time when = stamp > now + m_lookahead ? stamp - m_lookahead : now;
     m_pool->at(packet).stamp = stamp;
-    uint32_t h = m_arrivals.push(when, source, packet, credit);
+    m_pool->credit(packet) = credit;
+    m_arrivals.push(when, source, packet);
     wake_at(when);
-    return h;
 }
 
 void CommUnit::b_transport(int id, tlm::tlm_generic_payload &trans, sc_core::sc_time &delay)
@@ -116,27 +117,24 @@ void CommUnit::wake_at(const sc_core::sc_time &when)
     else m_due.notify(when - now);
 }
 
-bool CommUnit::forward(uint32_t handle)
+bool CommUnit::forward(uint32_t packet)
 {
-    ArrivalQueue::Arrival &a = m_arrivals.at(handle);
-    TimedPacket &p = m_pool->at(a.packet);
+    TimedPacket &p = m_pool->at(packet);
     sc_core::sc_time now = sc_core::sc_time_stamp();
     if (p.stamp < now) p.stamp = now; // held packets move on no earlier than now
     Hop next = next_hop(p);
-    if (!next.sink->can_accept(p)) {
+    if (!(next.link ? next.link->ToroidalLink::can_accept(p) : next.sink->can_accept(p))) {
         next.sink->on_space(p, m_retry);
         return false;
     }
     (next.local ? m_local : m_transit)++;
-    BufferSpace *credit = a.credit;
-    uint32_t packet = a.packet;
+    BufferSpace *credit = m_pool->credit(packet);
     if (next.link) { // the packet goes on by handle
         next.link->accept_pooled(*m_pool, packet);
     } else {
         next.sink->accept(p);
         m_pool->release(packet);
     }
-    m_arrivals.release(handle);
     if (credit) credit->release();
     return true;
 }
@@ -149,15 +147,16 @@ void CommUnit::deliver()
             m_run.notify(sc_core::SC_ZERO_TIME);
             return;
         }
-        uint32_t h = m_arrivals.pop();
-        const ArrivalQueue::Arrival &a = m_arrivals.at(h);
+        ArrivalQueue::Arrival a = m_arrivals.pop();
         int source = a.source;
-        const TimedPacket &p = m_pool->at(a.packet);
+        uint32_t h = a.packet;
+        const TimedPacket &p = m_pool->at(h);
         uint32_t buffer = 2 * p.cls + p.vc;
         // Behind packets held from the same buffer it waits its turn; else it moves on if it can.
         if (!holds(source, buffer) && forward(h)) continue;
         m_held[source][buffer].push_back(h);
         m_held_count[source]++;
+        m_held_total++;
     }
     if (!m_arrivals.empty()) m_due.notify(m_arrivals.next_time() - now);
 }
@@ -170,6 +169,7 @@ void CommUnit::retry()
             while (!held.empty() && forward(held.front())) {
                 held.pop_front();
                 m_held_count[s]--;
+                m_held_total--;
             }
             it = held.empty() ? m_held[s].erase(it) : std::next(it);
         }

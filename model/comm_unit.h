@@ -85,10 +85,10 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf {
     bool processor_held() const;
     // Whether packets from `buffer` of `source` are held.
     bool holds(int source, uint32_t buffer) const;
-    bool forward(uint32_t handle);
+    // Moves pool packet `packet` on if its next buffer has room.
+    bool forward(uint32_t packet);
     void b_transport(int id, tlm::tlm_generic_payload &trans, sc_core::sc_time &delay);
-    // Returns the arrival's handle.
-    uint32_t enqueue(uint32_t packet, const sc_core::sc_time &stamp, int source, BufferSpace *credit);
+    void enqueue(uint32_t packet, const sc_core::sc_time &stamp, int source, BufferSpace *credit);
     void wake_at(const sc_core::sc_time &when);
     void deliver();
     void retry();
@@ -108,10 +108,11 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf {
     sc_core::sc_time m_lookahead; // the quantum when loosely timed, else 0
     ArrivalQueue m_arrivals;
     FlowControl m_flow = FlowControl::none;
-    // Per source, per incoming buffer (2 x class + channel), arrival handles.
+    // Per source, per incoming buffer (2 x class + channel), pool handles.
     std::vector<std::map<uint32_t, std::deque<uint32_t>>> m_held;
     // Per source, packets in m_held (so a check does not walk every class's FIFO).
     std::vector<size_t> m_held_count;
+    size_t m_held_total = 0; // all of them (checked first: usually none)
     sc_core::sc_event m_due, m_run, m_retry, m_processor_room;
 };
 

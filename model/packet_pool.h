@@ -22,22 +22,32 @@ class PacketPool {
         uint32_t h;
         if (m_free.empty()) {
             h = m_size++;
-            if ((h >> kChunkBits) >= m_chunks.size()) m_chunks.push_back(std::make_unique<TimedPacket[]>(kChunk));
+            if ((h >> kChunkBits) >= m_chunks.size()) m_chunks.push_back(std::make_unique<Slot[]>(kChunk));
         } else {
             h = m_free.back();
             m_free.pop_back();
         }
-        at(h) = p;
+        Slot &s = slot(h);
+        s.item = p;
+        s.credit = nullptr;
         return h;
     }
-    TimedPacket &at(uint32_t h) { return m_chunks[h >> kChunkBits][h & (kChunk - 1)]; }
+    TimedPacket &at(uint32_t h) { return slot(h).item; }
+    // The buffer slot the packet holds while it waits at a communication unit (null: none):
+    // given back once the packet is taken on.
+    BufferSpace *&credit(uint32_t h) { return slot(h).credit; }
     void release(uint32_t h) { m_free.push_back(h); }
     // Packets in the pool now.
     size_t in_use() const { return m_size - m_free.size(); }
 
   private:
+    struct Slot {
+        TimedPacket item;
+        BufferSpace *credit = nullptr;
+    };
     static constexpr uint32_t kChunkBits = 8, kChunk = 1u << kChunkBits;
-    std::vector<std::unique_ptr<TimedPacket[]>> m_chunks;
+    Slot &slot(uint32_t h) { return m_chunks[h >> kChunkBits][h & (kChunk - 1)]; }
+    std::vector<std::unique_ptr<Slot[]>> m_chunks;
     std::vector<uint32_t> m_free;
     uint32_t m_size = 0;
 };

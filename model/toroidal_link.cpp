@@ -6,12 +6,17 @@ namespace torusrt {
 ToroidalLink::ToroidalLink(sc_core::sc_module_name name, const MachineConfig &config, int from, int to, int dir)
     : sc_module(name), socket("socket"), in("in"),
       m_packet_time(rt_timing_link_packet_us(&config.timing), sc_core::SC_US),
-      m_packet_bytes(config.timing.packet_bytes), m_from(from), m_to(to), m_dir(dir),
-      m_spaces(config.queue_capacity)
+      m_packet_bytes(config.timing.packet_bytes), m_dir(dir), m_spaces(config.queue_capacity), m_from(from), m_to(to)
 {
     in.bind(*this);
     m_ext = new PacketExtension;
     m_trans.set_extension(m_ext);
+    // Fixed for every packet: a write to the receiving node, data = a packet as held in memory
+    // (its size on the wire is a timing parameter).
+    m_trans.set_command(tlm::TLM_WRITE_COMMAND);
+    m_trans.set_address(static_cast<uint64_t>(m_to));
+    m_trans.set_data_length(sizeof(rt_packet));
+    m_trans.set_streaming_width(sizeof(rt_packet));
     SC_HAS_PROCESS(ToroidalLink);
     SC_METHOD(drive_busy_trace);
     sensitive << m_trace_changed;
@@ -56,12 +61,7 @@ void ToroidalLink::send(TimedPacket &p)
     m_ext->credit = &space_for(p);
     p.stamp = m_free_at;
     p.last_dir = static_cast<int8_t>(m_dir);
-    m_trans.set_command(tlm::TLM_WRITE_COMMAND);
-    m_trans.set_address(static_cast<uint64_t>(m_to));
-    // Data = the packet as held in memory; its size on the wire is a timing parameter.
     m_trans.set_data_ptr(reinterpret_cast<unsigned char *>(&p.packet));
-    m_trans.set_data_length(sizeof(rt_packet));
-    m_trans.set_streaming_width(sizeof(rt_packet));
     m_trans.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
     // Annotated delay: queueing behind earlier packets plus serialisation.
     sc_core::sc_time delay = m_free_at - sc_core::sc_time_stamp();

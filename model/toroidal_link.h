@@ -39,7 +39,7 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
     void accept_pooled(PacketPool &pool, uint32_t handle);
     bool can_accept(const TimedPacket &p) const override
     {
-        if (p.reserved || m_spaces.unbounded()) return true;
+        if (m_spaces.unbounded() || p.reserved) return true;
         const BufferSpace *s = m_spaces.find(index_of(p));
         return !s || s->available();
     }
@@ -69,18 +69,20 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
     void send(TimedPacket &p);
     void drive_busy_trace();
 
-    sc_core::sc_time m_packet_time; // serialisation time of one packet
-    double m_packet_bytes;
-    int m_from, m_to, m_dir;
-    ClassBuffers m_spaces;
+    // What every packet touches, side by side (a hop finds the link cold at 512 nodes).
     sc_core::sc_time m_free_at = sc_core::SC_ZERO_TIME; // busy until
+    sc_core::sc_time m_packet_time;                     // serialisation time of one packet
+    sc_core::sc_time m_busy = sc_core::SC_ZERO_TIME;
     uint64_t m_packets = 0;
     double m_bytes = 0;
-    sc_core::sc_time m_busy = sc_core::SC_ZERO_TIME;
-    tlm::tlm_generic_payload m_trans;
+    double m_packet_bytes;
     PacketExtension *m_ext; // owned by m_trans
-    // Busy trace (only when traced): crossings not yet over, and the event that re-evaluates.
+    int m_dir;
     bool m_tracing = false, m_busy_flag = false;
+    ClassBuffers m_spaces;
+    int m_from, m_to;
+    tlm::tlm_generic_payload m_trans;
+    // Busy trace (only when traced): crossings not yet over, and the event that re-evaluates.
     std::deque<std::pair<sc_core::sc_time, sc_core::sc_time>> m_crossings;
     sc_core::sc_event m_trace_changed;
 };
