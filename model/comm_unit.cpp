@@ -2,6 +2,8 @@
 // queue, and holding packets while the next buffer is full.
 #include "comm_unit.h"
 
+#include <algorithm>
+
 #include "flow_control.h"
 #include "rt_step.h"
 #include "timed_packet.h"
@@ -55,8 +57,27 @@ BufferSpace *CommUnit::room_for(const TimedPacket &p)
 bool CommUnit::holds(int source, uint32_t buffer) const
 {
     if (!m_held_total || !m_held_count[source]) return false;
-    auto it = m_held[source].find(buffer);
-    return it != m_held[source].end() && !it->second.empty();
+    const HeldFifo *f = held_fifo(source, buffer);
+    return f && !f->packets.empty();
+}
+
+const CommUnit::HeldFifo *CommUnit::held_fifo(int source, uint32_t buffer) const
+{
+    const auto &fifos = m_held[source];
+    auto it = std::lower_bound(fifos.begin(), fifos.end(), buffer,
+                               [](const HeldFifo &f, uint32_t b) { return f.buffer < b; });
+    return it != fifos.end() && it->buffer == buffer ? &*it : nullptr;
+}
+
+void CommUnit::hold(int source, uint32_t buffer, uint32_t packet)
+{
+    auto &fifos = m_held[source];
+    auto it = std::lower_bound(fifos.begin(), fifos.end(), buffer,
+                               [](const HeldFifo &f, uint32_t b) { return f.buffer < b; });
+    if (it == fifos.end() || it->buffer != buffer) it = fifos.insert(it, HeldFifo{buffer, {}});
+    it->packets.push_back(packet);
+    m_held_count[source]++;
+    m_held_total++;
 }
 
 bool CommUnit::processor_held() const { return m_held_total && m_held_count[processor_source()] > 0; }
@@ -154,9 +175,7 @@ void CommUnit::deliver()
         uint32_t buffer = 2 * p.cls + p.vc;
         // Behind packets held from the same buffer it waits its turn; else it moves on if it can.
         if (!holds(source, buffer) && forward(h)) continue;
-        m_held[source][buffer].push_back(h);
-        m_held_count[source]++;
-        m_held_total++;
+        hold(source, buffer, h);
     }
     if (!m_arrivals.empty()) m_due.notify(m_arrivals.next_time() - now);
 }
@@ -165,7 +184,7 @@ void CommUnit::retry()
 {
     for (size_t s = 0; s < m_held.size(); s++) {
         for (auto it = m_held[s].begin(); it != m_held[s].end();) {
-            auto &held = it->second;
+            auto &held = it->packets;
             while (!held.empty() && forward(held.front())) {
                 held.pop_front();
                 m_held_count[s]--;

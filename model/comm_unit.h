@@ -25,7 +25,6 @@
 
 #include <array>
 #include <deque>
-#include <map>
 #include <systemc>
 #include <tlm>
 #include <tlm_utils/multi_passthrough_target_socket.h>
@@ -85,6 +84,10 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf {
     bool processor_held() const;
     // Whether packets from `buffer` of `source` are held.
     bool holds(int source, uint32_t buffer) const;
+    struct HeldFifo;
+    const HeldFifo *held_fifo(int source, uint32_t buffer) const;
+    // Holds `packet` at the back of its source and buffer's FIFO.
+    void hold(int source, uint32_t buffer, uint32_t packet);
     // Moves pool packet `packet` on if its next buffer has room.
     bool forward(uint32_t packet);
     void b_transport(int id, tlm::tlm_generic_payload &trans, sc_core::sc_time &delay);
@@ -109,7 +112,12 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf {
     ArrivalQueue m_arrivals;
     FlowControl m_flow = FlowControl::none;
     // Per source, per incoming buffer (2 x class + channel), pool handles.
-    std::vector<std::map<uint32_t, std::deque<uint32_t>>> m_held;
+    // Sorted by buffer; retry() visits them in that order.
+    struct HeldFifo {
+        uint32_t buffer;
+        std::deque<uint32_t> packets;
+    };
+    std::vector<std::vector<HeldFifo>> m_held;
     // Per source, packets in m_held (so a check does not walk every class's FIFO).
     std::vector<size_t> m_held_count;
     size_t m_held_total = 0; // all of them (checked first: usually none)
