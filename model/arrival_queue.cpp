@@ -1,44 +1,29 @@
-// arrival_queue.cpp - a binary min-heap of arrival keys over a pool of packet slots.
+// arrival_queue.cpp - a binary min-heap of arrival keys.
 #include "arrival_queue.h"
 
 #include <algorithm>
 
 namespace torusrt {
 
-bool ArrivalQueue::later(const Key &a, const Key &b)
+void ArrivalQueue::push(const sc_core::sc_time &when, int source, uint32_t packet)
 {
-    if (a.when != b.when) return a.when > b.when;
-    if (a.source != b.source) return a.source > b.source;
-    return a.seq > b.seq;
-}
-
-uint32_t ArrivalQueue::push(const sc_core::sc_time &when, int source, const TimedPacket &item,
-                        const sc_core::sc_time &stamp, BufferSpace *credit)
-{
-    uint32_t slot;
-    if (m_free.empty()) {
-        slot = static_cast<uint32_t>(m_slots.size());
-        m_slots.emplace_back();
-    } else {
-        slot = m_free.back();
-        m_free.pop_back();
+    sc_dt::uint64 delta = sc_core::sc_delta_count();
+    if (delta != m_push_delta) {
+        m_push_delta = delta;
+        m_delta_first_seq = m_seq;
     }
-    Arrival &a = m_slots[slot];
-    a.item = item;
-    a.item.stamp = stamp;
-    a.source = source;
-    a.credit = credit;
-    m_heap.push_back(Key{when, source, slot, m_seq++, sc_core::sc_delta_count()});
+    uint64_t order = static_cast<uint64_t>(source) << kSeqBits | m_seq++;
+    m_heap.push_back(Key{when.value(), order, packet});
     std::push_heap(m_heap.begin(), m_heap.end(), later);
-    return slot;
 }
 
-uint32_t ArrivalQueue::pop()
+ArrivalQueue::Arrival ArrivalQueue::pop()
 {
     std::pop_heap(m_heap.begin(), m_heap.end(), later);
-    uint32_t slot = m_heap.back().slot;
+    const Key &k = m_heap.back();
+    Arrival a{k.packet, static_cast<int>(k.order >> kSeqBits)};
     m_heap.pop_back();
-    return slot;
+    return a;
 }
 
 }  // namespace torusrt

@@ -2,54 +2,56 @@
 // link (or left the local processor side) wait here, by handle, until their annotated arrival
 // time. Simultaneous arrivals leave in a fixed order: time, then source (the receiving port),
 // then sequence (the order the source sent them in), whatever order the SystemC kernel ran the
-// senders in. The packet bodies stay in a slot pool; the heap moves only 24-byte keys.
+// senders in. The packet bodies (and the credits they hold) stay in the machine's packet pool;
+// the heap holds 24-byte keys compared as two 64-bit words (time; source and sequence packed)
+// and the packet's pool handle, nothing else.
 #pragma once
 
 #include <cstdint>
 #include <systemc>
 #include <vector>
 
-#include "buffer_space.h"
-#include "timed_packet.h"
-
 namespace torusrt {
 
 class ArrivalQueue {
   public:
     struct Arrival {
-        TimedPacket item;
+        uint32_t packet; // handle in the packet pool
         int source;
-        BufferSpace *credit; // returned once the packet is taken on (null: nothing to return)
     };
 
-    // Holds `item` (stamped `stamp`) until `when` (>= simulation time); returns its handle.
-    uint32_t push(const sc_core::sc_time &when, int source, const TimedPacket &item, const sc_core::sc_time &stamp,
-              BufferSpace *credit);
+    // Holds pool packet `packet` from `source` until `when` (>= simulation time).
+    void push(const sc_core::sc_time &when, int source, uint32_t packet);
     bool empty() const { return m_heap.empty(); }
-    const sc_core::sc_time &next_time() const { return m_heap.front().when; }
-    // Whether the earliest arrival was pushed in the current delta cycle.
-    bool next_is_new() const { return m_heap.front().delta == sc_core::sc_delta_count(); }
-    // Takes the earliest arrival (in the order above) off the heap; returns its handle, which
-    // stays valid until release().
-    uint32_t pop();
-    Arrival &at(uint32_t handle) { return m_slots[handle]; }
-    void release(uint32_t handle) { m_free.push_back(handle); }
+    sc_core::sc_time next_time() const { return sc_core::sc_time::from_value(m_heap.front().when); }
+    // Whether the earliest arrival was pushed in the current delta cycle (sequence numbers grow
+    // with every push: this delta's pushes are those from the first one it made).
+    bool next_is_new() const
+    {
+        return m_push_delta == sc_core::sc_delta_count() && (m_heap.front().order & kSeqMask) >= m_delta_first_seq;
+    }
+    // Takes the earliest arrival (in the order above) off the heap.
+    Arrival pop();
     size_t size() const { return m_heap.size(); }
 
   private:
+    // Sources below 64 (32 link ports and the processor side); 58 bits of sequence.
+    static constexpr int kSeqBits = 58;
+    static constexpr uint64_t kSeqMask = (uint64_t{1} << kSeqBits) - 1;
     struct Key {
-        sc_core::sc_time when;
-        int source;
-        uint32_t slot;
-        uint64_t seq;
-        sc_dt::uint64 delta; // delta cycle of the push
+        sc_dt::uint64 when; // sc_time value
+        uint64_t order;     // source << kSeqBits | sequence
+        uint32_t packet;
     };
-    static bool later(const Key &a, const Key &b);
+    static bool later(const Key &a, const Key &b)
+    {
+        return a.when != b.when ? a.when > b.when : a.order > b.order;
+    }
 
     std::vector<Key> m_heap;
-    std::vector<Arrival> m_slots;
-    std::vector<uint32_t> m_free;
     uint64_t m_seq = 0;
+    uint64_t m_delta_first_seq = 0;         // sequence of the first push in delta m_push_delta
+    sc_dt::uint64 m_push_delta = ~sc_dt::uint64{0};
 };
 
 }  // namespace torusrt

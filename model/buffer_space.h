@@ -117,14 +117,15 @@ class BufferSpace {
         if (m_group) m_group->end();
     }
 
+    // take() and release() touch the first 48 bytes only.
     unsigned m_capacity;
-    size_t m_used = 0, m_high_water = 0;
-    unsigned m_blocked_writers = 0;
     int m_depth = 0;
-    bool m_stalling = false;  // a writer waits for room
-    StallClock m_stall;
+    size_t m_used = 0, m_high_water = 0;
     int *m_total = nullptr;
     StallClock *m_group = nullptr;
+    unsigned m_blocked_writers = 0;
+    bool m_stalling = false;  // a writer waits for room
+    StallClock m_stall;
     // Made when a thread first waits for room: a run makes thousands of buffers (one per class
     // and channel in use) and most never fill.
     std::unique_ptr<sc_core::sc_event> m_released;

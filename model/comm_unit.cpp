@@ -2,9 +2,12 @@
 // queue, and holding packets while the next buffer is full.
 #include "comm_unit.h"
 
+#include <algorithm>
+
 #include "flow_control.h"
 #include "rt_step.h"
 #include "timed_packet.h"
+#include "toroidal_link.h"
 
 namespace torusrt {
 
@@ -32,58 +35,78 @@ void CommUnit::end_of_elaboration()
     m_held_count.assign(link_in.size() + 1, 0);
 }
 
-PacketSinkIf &CommUnit::next_hop(TimedPacket &p, bool &is_local)
+CommUnit::Hop CommUnit::next_hop(TimedPacket &p)
 {
     int owner = m_owner[rt_packet_cell(m_grid, &p.packet)];
-    is_local = owner == m_node;
-    if (is_local) return *local.operator->();
+    if (owner == m_node) return {local.operator->(), nullptr, true};
     int dir = m_routing.next_direction(m_node, owner);
     int port = dir >= 0 ? m_port_of_dir[dir] : -1;
     if (port < 0) SC_REPORT_FATAL(name(), "no link toward the packet's owner");
     p.vc = link_channel(m_flow, m_routing, p, m_node, dir);
-    return *link_out[port];
+    if (ToroidalLink *link = m_link_of_dir[dir]) return {link, link, false}; // the port's own link
+    return {link_out[port], nullptr, false};
 }
 
 BufferSpace *CommUnit::room_for(const TimedPacket &p)
 {
     TimedPacket q = p;
     q.last_dir = -1; // it leaves the processor side
-    bool is_local = false;
-    return next_hop(q, is_local).room_for(q);
+    return next_hop(q).sink->room_for(q);
 }
 
 bool CommUnit::holds(int source, uint32_t buffer) const
 {
-    if (!m_held_count[source]) return false;
-    auto it = m_held[source].find(buffer);
-    return it != m_held[source].end() && !it->second.empty();
+    if (!m_held_total || !m_held_count[source]) return false;
+    const HeldFifo *f = held_fifo(source, buffer);
+    return f && !f->packets.empty();
 }
 
-bool CommUnit::processor_held() const { return m_held_count[processor_source()] > 0; }
+const CommUnit::HeldFifo *CommUnit::held_fifo(int source, uint32_t buffer) const
+{
+    const auto &fifos = m_held[source];
+    auto it = std::lower_bound(fifos.begin(), fifos.end(), buffer,
+                               [](const HeldFifo &f, uint32_t b) { return f.buffer < b; });
+    return it != fifos.end() && it->buffer == buffer ? &*it : nullptr;
+}
+
+void CommUnit::hold(int source, uint32_t buffer, uint32_t packet)
+{
+    auto &fifos = m_held[source];
+    auto it = std::lower_bound(fifos.begin(), fifos.end(), buffer,
+                               [](const HeldFifo &f, uint32_t b) { return f.buffer < b; });
+    if (it == fifos.end() || it->buffer != buffer) it = fifos.insert(it, HeldFifo{buffer, {}});
+    it->packets.push_back(packet);
+    m_held_count[source]++;
+    m_held_total++;
+}
+
+bool CommUnit::processor_held() const { return m_held_total && m_held_count[processor_source()] > 0; }
 
 void CommUnit::accept(const TimedPacket &p)
 {
     if (p.from_host) { // a primary at its entry node: straight to the processor side
         TimedPacket q = p;
-        bool is_local = false;
-        next_hop(q, is_local).accept(q);
+        next_hop(q).sink->accept(q);
         m_local++;
         return;
     }
     // Called in the processor side's thread: it waits while one of its packets is held.
     while (processor_held()) sc_core::wait(m_processor_room);
-    m_arrivals.at(enqueue(p, p.stamp, processor_source(), nullptr)).item.last_dir = -1; // it leaves the processor side
+    uint32_t packet = m_pool->add(p);
+    m_pool->at(packet).last_dir = -1; // it leaves the processor side
+    enqueue(packet, p.stamp, processor_source(), nullptr);
 }
 
 void CommUnit::on_space(const TimedPacket &, sc_core::sc_event &e) { m_processor_waiters.push_back(&e); }
 
-uint32_t CommUnit::enqueue(const TimedPacket &p, const sc_core::sc_time &stamp, int source, BufferSpace *credit)
+void CommUnit::enqueue(uint32_t packet, const sc_core::sc_time &stamp, int source, BufferSpace *credit)
 {
     sc_core::sc_time now = sc_core::sc_time_stamp();
     sc_core::sc_time when = stamp > now + m_lookahead ? stamp - m_lookahead : now;
-    uint32_t h = m_arrivals.push(when, source, p, stamp, credit);
+    m_pool->at(packet).stamp = stamp;
+    m_pool->credit(packet) = credit;
+    m_arrivals.push(when, source, packet);
     wake_at(when);
-    return h;
 }
 
 void CommUnit::b_transport(int id, tlm::tlm_generic_payload &trans, sc_core::sc_time &delay)
@@ -93,8 +116,18 @@ void CommUnit::b_transport(int id, tlm::tlm_generic_payload &trans, sc_core::sc_
         trans.set_response_status(tlm::TLM_GENERIC_ERROR_RESPONSE);
         return;
     }
+    // By handle from a link of this machine; else the packet is copied in.
+    uint32_t packet;
+    if (ext->pool == m_pool) {
+        packet = ext->handle;
+    } else if (ext->pool) {
+        packet = m_pool->add(ext->pool->at(ext->handle));
+        ext->pool->release(ext->handle);
+    } else {
+        packet = m_pool->add(ext->item);
+    }
     // Arrival in the sender's local time.
-    enqueue(ext->item, sc_core::sc_time_stamp() + delay, id, ext->credit);
+    enqueue(packet, sc_core::sc_time_stamp() + delay, id, ext->credit);
     trans.set_response_status(tlm::TLM_OK_RESPONSE);
 }
 
@@ -107,21 +140,24 @@ void CommUnit::wake_at(const sc_core::sc_time &when)
     else m_due.notify(when - now);
 }
 
-bool CommUnit::forward(uint32_t handle)
+bool CommUnit::forward(uint32_t packet)
 {
-    ArrivalQueue::Arrival &a = m_arrivals.at(handle);
+    TimedPacket &p = m_pool->at(packet);
     sc_core::sc_time now = sc_core::sc_time_stamp();
-    if (a.item.stamp < now) a.item.stamp = now; // held packets move on no earlier than now
-    bool is_local = false;
-    PacketSinkIf &next = next_hop(a.item, is_local);
-    if (!next.can_accept(a.item)) {
-        next.on_space(a.item, m_retry);
+    if (p.stamp < now) p.stamp = now; // held packets move on no earlier than now
+    Hop next = next_hop(p);
+    if (!(next.link ? next.link->ToroidalLink::can_accept(p) : next.sink->can_accept(p))) {
+        next.sink->on_space(p, m_retry);
         return false;
     }
-    (is_local ? m_local : m_transit)++;
-    BufferSpace *credit = a.credit;
-    next.accept(a.item);
-    m_arrivals.release(handle);
+    (next.local ? m_local : m_transit)++;
+    BufferSpace *credit = m_pool->credit(packet);
+    if (next.link) { // the packet goes on by handle
+        next.link->accept_pooled(*m_pool, packet);
+    } else {
+        next.sink->accept(p);
+        m_pool->release(packet);
+    }
     if (credit) credit->release();
     return true;
 }
@@ -134,14 +170,14 @@ void CommUnit::deliver()
             m_run.notify(sc_core::SC_ZERO_TIME);
             return;
         }
-        uint32_t h = m_arrivals.pop();
-        const ArrivalQueue::Arrival &a = m_arrivals.at(h);
+        ArrivalQueue::Arrival a = m_arrivals.pop();
         int source = a.source;
-        uint32_t buffer = 2 * a.item.cls + a.item.vc;
+        uint32_t h = a.packet;
+        const TimedPacket &p = m_pool->at(h);
+        uint32_t buffer = 2 * p.cls + p.vc;
         // Behind packets held from the same buffer it waits its turn; else it moves on if it can.
         if (!holds(source, buffer) && forward(h)) continue;
-        m_held[source][buffer].push_back(h);
-        m_held_count[source]++;
+        hold(source, buffer, h);
     }
     if (!m_arrivals.empty()) m_due.notify(m_arrivals.next_time() - now);
 }
@@ -150,10 +186,11 @@ void CommUnit::retry()
 {
     for (size_t s = 0; s < m_held.size(); s++) {
         for (auto it = m_held[s].begin(); it != m_held[s].end();) {
-            auto &held = it->second;
+            auto &held = it->packets;
             while (!held.empty() && forward(held.front())) {
                 held.pop_front();
                 m_held_count[s]--;
+                m_held_total--;
             }
             it = held.empty() ? m_held[s].erase(it) : std::next(it);
         }

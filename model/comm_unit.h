@@ -26,7 +26,6 @@
 
 #include <array>
 #include <deque>
-#include <map>
 #include <systemc>
 #include <tlm>
 #include <tlm_utils/multi_passthrough_target_socket.h>
@@ -34,12 +33,15 @@
 
 #include "arrival_queue.h"
 #include "module_stats.h"
+#include "packet_pool.h"
 #include "packet_sink_if.h"
 #include "rt_grid.h"
 #include "routing.h"
 #include "sim_config.h"
 
 namespace torusrt {
+
+class ToroidalLink;
 
 class CommUnit : public sc_core::sc_module, public PacketSinkIf {
   public:
@@ -64,6 +66,11 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf {
     void set_flow(FlowControl flow) { m_flow = flow; }
     // Records which link_out port index serves direction `dir` (call at elaboration).
     void set_link_port(int dir, int port_index) { m_port_of_dir[dir] = port_index; }
+    // The link behind direction `dir`: packets go on to it by handle (call at elaboration).
+    void set_link(int dir, ToroidalLink &link) { m_link_of_dir[dir] = &link; }
+    // The machine's packet pool, shared by every unit so a packet crosses by handle (call at
+    // elaboration; a unit alone uses its own).
+    void use_pool(PacketPool &pool) { m_pool = &pool; }
 
     uint64_t routed_local() const { return m_local; }
     uint64_t routed_transit() const { return m_transit; }
@@ -72,15 +79,24 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf {
     CommUnitStats stats() const { return {m_local, m_transit, held()}; }
 
   private:
+    struct Hop {
+        PacketSinkIf *sink;
+        ToroidalLink *link; // the sink as a link of this machine (takes pool handles), or null
+        bool local;
+    };
     // The next hop of `p`, setting its channel when that is a link.
-    PacketSinkIf &next_hop(TimedPacket &p, bool &local);
+    Hop next_hop(TimedPacket &p);
     bool processor_held() const;
     // Whether packets from `buffer` of `source` are held.
     bool holds(int source, uint32_t buffer) const;
-    bool forward(uint32_t handle);
+    struct HeldFifo;
+    const HeldFifo *held_fifo(int source, uint32_t buffer) const;
+    // Holds `packet` at the back of its source and buffer's FIFO.
+    void hold(int source, uint32_t buffer, uint32_t packet);
+    // Moves pool packet `packet` on if its next buffer has room.
+    bool forward(uint32_t packet);
     void b_transport(int id, tlm::tlm_generic_payload &trans, sc_core::sc_time &delay);
-    // Returns the arrival's handle.
-    uint32_t enqueue(const TimedPacket &p, const sc_core::sc_time &stamp, int source, BufferSpace *credit);
+    void enqueue(uint32_t packet, const sc_core::sc_time &stamp, int source, BufferSpace *credit);
     void wake_at(const sc_core::sc_time &when);
     void deliver();
     void retry();
@@ -92,15 +108,24 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf {
     const rt_grid *m_grid;
     const int32_t *m_owner;
     std::array<int, kDirections> m_port_of_dir;
+    std::array<ToroidalLink *, kDirections> m_link_of_dir{};
+    PacketPool m_own_pool;
+    PacketPool *m_pool = &m_own_pool;
     int m_processor_source = 0; // = the number of incoming links, known after elaboration
     uint64_t m_local = 0, m_transit = 0;
     sc_core::sc_time m_lookahead; // the quantum when loosely timed, else 0
     ArrivalQueue m_arrivals;
     FlowControl m_flow = FlowControl::none;
-    // Per source, per incoming buffer (2 x class + channel), arrival handles.
-    std::vector<std::map<uint32_t, std::deque<uint32_t>>> m_held;
+    // Per source, per incoming buffer (2 x class + channel), pool handles.
+    // Sorted by buffer; retry() visits them in that order.
+    struct HeldFifo {
+        uint32_t buffer;
+        std::deque<uint32_t> packets;
+    };
+    std::vector<std::vector<HeldFifo>> m_held;
     // Per source, packets in m_held (so a check does not walk every class's FIFO).
     std::vector<size_t> m_held_count;
+    size_t m_held_total = 0; // all of them (checked first: usually none)
     sc_core::sc_event m_due, m_run, m_retry, m_processor_room;
     std::vector<sc_core::sc_event *> m_processor_waiters; // on_space(): notified with m_processor_room
 };

@@ -10,6 +10,8 @@
 
 namespace torusrt {
 
+class PacketPool;
+
 struct TimedPacket {
     rt_packet packet;       // the kernel's packet
     sc_core::sc_time stamp; // send time; after a link, arrival time (loosely-timed runs use it)
@@ -26,16 +28,23 @@ struct TimedPacket {
 
 // Packets cross links and the cluster bus as a generic payload (command WRITE, data = the packet's
 // bytes on the wire) with this extension holding the packet itself and the slot it occupies in
-// the sender's buffer, which the receiver gives back once it has taken the packet on.
+// the sender's buffer, which the receiver gives back once it has taken the packet on. Between
+// the communication units of one machine the packet travels by handle instead: `pool` is set
+// and the packet is pool slot `handle` (packet_pool.h), `item` unused.
 class PacketExtension : public tlm::tlm_extension<PacketExtension> {
   public:
     TimedPacket item;
     BufferSpace *credit = nullptr;
+    PacketPool *pool = nullptr;
+    uint32_t handle = 0;
     tlm::tlm_extension_base *clone() const override { return new PacketExtension(*this); }
     void copy_from(const tlm::tlm_extension_base &other) override
     {
-        item = static_cast<const PacketExtension &>(other).item;
-        credit = static_cast<const PacketExtension &>(other).credit;
+        const auto &o = static_cast<const PacketExtension &>(other);
+        item = o.item;
+        credit = o.credit;
+        pool = o.pool;
+        handle = o.handle;
     }
 };
 

@@ -6,12 +6,17 @@ namespace torusrt {
 ToroidalLink::ToroidalLink(sc_core::sc_module_name name, const MachineConfig &config, int from, int to, int dir)
     : sc_module(name), socket("socket"), in("in"),
       m_packet_time(rt_timing_link_packet_us(&config.timing), sc_core::SC_US),
-      m_packet_bytes(config.timing.packet_bytes), m_from(from), m_to(to), m_dir(dir),
-      m_spaces(config.queue_capacity)
+      m_packet_bytes(config.timing.packet_bytes), m_dir(dir), m_spaces(config.queue_capacity), m_from(from), m_to(to)
 {
     in.bind(*this);
     m_ext = new PacketExtension;
     m_trans.set_extension(m_ext);
+    // Fixed for every packet: a write to the receiving node, data = a packet as held in memory
+    // (its size on the wire is a timing parameter).
+    m_trans.set_command(tlm::TLM_WRITE_COMMAND);
+    m_trans.set_address(static_cast<uint64_t>(m_to));
+    m_trans.set_data_length(sizeof(rt_packet));
+    m_trans.set_streaming_width(sizeof(rt_packet));
     SC_HAS_PROCESS(ToroidalLink);
     SC_METHOD(drive_busy_trace);
     sensitive << m_trace_changed;
@@ -27,12 +32,23 @@ void ToroidalLink::accept(const TimedPacket &p)
     q.reserved = false;
     // A thread that waited for room sends no earlier than now.
     if (q.stamp < sc_core::sc_time_stamp()) q.stamp = sc_core::sc_time_stamp();
-    send();
+    m_ext->pool = nullptr;
+    send(q);
 }
 
-void ToroidalLink::send()
+void ToroidalLink::accept_pooled(PacketPool &pool, uint32_t handle)
 {
-    TimedPacket &p = m_ext->item;
+    TimedPacket &p = pool.at(handle);
+    if (!p.reserved) space_for(p).take_blocking(); // room was checked: does not wait
+    p.reserved = false;
+    if (p.stamp < sc_core::sc_time_stamp()) p.stamp = sc_core::sc_time_stamp();
+    m_ext->pool = &pool;
+    m_ext->handle = handle;
+    send(p);
+}
+
+void ToroidalLink::send(TimedPacket &p)
+{
     sc_core::sc_time start = p.stamp > m_free_at ? p.stamp : m_free_at; // cannot start before it was sent
     m_free_at = start + m_packet_time;
     m_busy += m_packet_time;
@@ -45,12 +61,7 @@ void ToroidalLink::send()
     m_ext->credit = &space_for(p);
     p.stamp = m_free_at;
     p.last_dir = static_cast<int8_t>(m_dir);
-    m_trans.set_command(tlm::TLM_WRITE_COMMAND);
-    m_trans.set_address(static_cast<uint64_t>(m_to));
-    // Data = the packet as held in memory; its size on the wire is a timing parameter.
-    m_trans.set_data_ptr(reinterpret_cast<unsigned char *>(&m_ext->item.packet));
-    m_trans.set_data_length(sizeof(rt_packet));
-    m_trans.set_streaming_width(sizeof(rt_packet));
+    m_trans.set_data_ptr(reinterpret_cast<unsigned char *>(&p.packet));
     m_trans.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
     // Annotated delay: queueing behind earlier packets plus serialisation.
     sc_core::sc_time delay = m_free_at - sc_core::sc_time_stamp();

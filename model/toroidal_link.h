@@ -18,6 +18,7 @@
 
 #include "class_buffers.h"
 #include "module_stats.h"
+#include "packet_pool.h"
 #include "packet_sink_if.h"
 #include "queue_registry.h"
 #include "sim_config.h"
@@ -33,10 +34,14 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
 
     // Waits (in a thread) for room, then sends. A method caller checks can_accept() first.
     void accept(const TimedPacket &p) override;
+    // The same for a packet of `pool`, which crosses by handle (a method caller, after
+    // can_accept(); the receiver takes the handle on).
+    void accept_pooled(PacketPool &pool, uint32_t handle);
     bool can_accept(const TimedPacket &p) const override
     {
+        if (m_spaces.unbounded() || p.reserved) return true;
         const BufferSpace *s = m_spaces.find(index_of(p));
-        return p.reserved || !s || s->available();
+        return !s || s->available();
     }
     void on_space(const TimedPacket &p, sc_core::sc_event &e) override { space_for(p).on_release(e); }
     BufferSpace *room_for(const TimedPacket &p) override { return &space_for(p); }
@@ -60,22 +65,24 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
   private:
     static uint32_t index_of(const TimedPacket &p) { return 2 * p.cls + p.vc; }
     BufferSpace &space_for(const TimedPacket &p) { return m_spaces.at(index_of(p)); }
-    // Sends the packet in the extension.
-    void send();
+    // Sends `p` (the extension's packet), ready to go (slot taken, stamp no earlier than now).
+    void send(TimedPacket &p);
     void drive_busy_trace();
 
-    sc_core::sc_time m_packet_time; // serialisation time of one packet
-    double m_packet_bytes;
-    int m_from, m_to, m_dir;
-    ClassBuffers m_spaces;
+    // What every packet touches, side by side (a hop finds the link cold at 512 nodes).
     sc_core::sc_time m_free_at = sc_core::SC_ZERO_TIME; // busy until
+    sc_core::sc_time m_packet_time;                     // serialisation time of one packet
+    sc_core::sc_time m_busy = sc_core::SC_ZERO_TIME;
     uint64_t m_packets = 0;
     double m_bytes = 0;
-    sc_core::sc_time m_busy = sc_core::SC_ZERO_TIME;
-    tlm::tlm_generic_payload m_trans;
+    double m_packet_bytes;
     PacketExtension *m_ext; // owned by m_trans
-    // Busy trace (only when traced): crossings not yet over, and the event that re-evaluates.
+    int m_dir;
     bool m_tracing = false, m_busy_flag = false;
+    ClassBuffers m_spaces;
+    int m_from, m_to;
+    tlm::tlm_generic_payload m_trans;
+    // Busy trace (only when traced): crossings not yet over, and the event that re-evaluates.
     std::deque<std::pair<sc_core::sc_time, sc_core::sc_time>> m_crossings;
     sc_core::sc_event m_trace_changed;
 };

@@ -23,6 +23,7 @@ TorusSystem::TorusSystem(sc_core::sc_module_name name, const MachineConfig &conf
         m_comm.push_back(std::make_unique<CommUnit>(("cu_" + std::to_string(n)).c_str(), n, m_routing, grid, cell_owner,
                                                     lookahead));
         m_comm[n]->set_flow(config.flow);
+        m_comm[n]->use_pool(m_pool);
         if (config.cluster == 1) {
             auto ip = std::make_unique<IntersectionProcessor>(("ip_" + std::to_string(n)).c_str(), config, scene,
                                                               grid, cell_owner, n, n, ledger);
@@ -51,6 +52,7 @@ TorusSystem::TorusSystem(sc_core::sc_module_name name, const MachineConfig &conf
             auto link = std::make_unique<ToroidalLink>(lname.c_str(), config, n, to, dir);
             m_comm[n]->link_out.bind(link->in);
             m_comm[n]->set_link_port(dir, port++);
+            m_comm[n]->set_link(dir, *link);
             link->socket.bind(m_comm[to]->link_in);
             m_links.push_back(std::move(link));
         }

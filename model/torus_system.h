@@ -13,6 +13,7 @@
 #include "host.h"
 #include "intersection_processor.h"
 #include "packet_ledger.h"
+#include "packet_pool.h"
 #include "queue_registry.h"
 #include "routing.h"
 #include "sim_config.h"
@@ -44,6 +45,7 @@ class TorusSystem : public sc_core::sc_module {
 
   private:
     Routing m_routing;
+    PacketPool m_pool; // every packet on the network, by handle (comm units and links)
     std::unique_ptr<FrameBuffer> m_fb;
     std::unique_ptr<Host> m_host;
     std::vector<std::unique_ptr<CommUnit>> m_comm;

@@ -1,0 +1,55 @@
+// packet_pool.h - the packets crossing the network, by handle. A packet enters the pool when it
+// leaves a processor side, moves from communication unit to link to communication unit as a
+// 32-bit handle (in the arrival queue, the held FIFOs and the link transaction's extension) and
+// leaves it at the processor side of its cell's owner: its body is written once per hop where it
+// changes (stamp, channel, last link), never copied. One pool serves the whole machine; a freed
+// slot is the next one used, so the packets in flight stay in few, warm cache lines. Slots live
+// in fixed chunks: a packet never moves while it is in the pool.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "timed_packet.h"
+
+namespace torusrt {
+
+class PacketPool {
+  public:
+    uint32_t add(const TimedPacket &p)
+    {
+        uint32_t h;
+        if (m_free.empty()) {
+            h = m_size++;
+            if ((h >> kChunkBits) >= m_chunks.size()) m_chunks.push_back(std::make_unique<Slot[]>(kChunk));
+        } else {
+            h = m_free.back();
+            m_free.pop_back();
+        }
+        Slot &s = slot(h);
+        s.item = p;
+        s.credit = nullptr;
+        return h;
+    }
+    TimedPacket &at(uint32_t h) { return slot(h).item; }
+    // The buffer slot the packet holds while it waits at a communication unit (null: none):
+    // given back once the packet is taken on.
+    BufferSpace *&credit(uint32_t h) { return slot(h).credit; }
+    void release(uint32_t h) { m_free.push_back(h); }
+    // Packets in the pool now.
+    size_t in_use() const { return m_size - m_free.size(); }
+
+  private:
+    struct Slot {
+        TimedPacket item;
+        BufferSpace *credit = nullptr;
+    };
+    static constexpr uint32_t kChunkBits = 8, kChunk = 1u << kChunkBits;
+    Slot &slot(uint32_t h) { return m_chunks[h >> kChunkBits][h & (kChunk - 1)]; }
+    std::vector<std::unique_ptr<Slot[]>> m_chunks;
+    std::vector<uint32_t> m_free;
+    uint32_t m_size = 0;
+};
+
+}  // namespace torusrt
