@@ -61,19 +61,25 @@ bool CommUnit::holds(int source, uint32_t buffer) const
     return f && !f->packets.empty();
 }
 
+namespace {
+// The first FIFO of `fifos` (sorted by buffer) whose buffer is not below `buffer`.
+template <class Fifos> auto fifo_at_or_after(Fifos &fifos, uint32_t buffer)
+{
+    return std::lower_bound(fifos.begin(), fifos.end(), buffer, [](const auto &f, uint32_t b) { return f.buffer < b; });
+}
+}  // namespace
+
 const CommUnit::HeldFifo *CommUnit::held_fifo(int source, uint32_t buffer) const
 {
     const auto &fifos = m_held[source];
-    auto it = std::lower_bound(fifos.begin(), fifos.end(), buffer,
-                               [](const HeldFifo &f, uint32_t b) { return f.buffer < b; });
+    auto it = fifo_at_or_after(fifos, buffer);
     return it != fifos.end() && it->buffer == buffer ? &*it : nullptr;
 }
 
 void CommUnit::hold(int source, uint32_t buffer, uint32_t packet)
 {
     auto &fifos = m_held[source];
-    auto it = std::lower_bound(fifos.begin(), fifos.end(), buffer,
-                               [](const HeldFifo &f, uint32_t b) { return f.buffer < b; });
+    auto it = fifo_at_or_after(fifos, buffer);
     if (it == fifos.end() || it->buffer != buffer) it = fifos.insert(it, HeldFifo{buffer, {}});
     it->packets.push_back(packet);
     m_held_count[source]++;
