@@ -140,9 +140,10 @@ void CommUnit::b_transport(int id, tlm::tlm_generic_payload &trans, sc_core::sc_
 void CommUnit::wake_at(const sc_core::sc_time &when)
 {
     sc_core::sc_time now = sc_core::sc_time_stamp();
-    // Due now: deliver one delta on. Later: a timed notification (an earlier one pending is
-    // kept; deliver() re-arms for the rest).
+    // Due now: deliver one delta on. Later: the calendar's wake or a timed notification (an
+    // earlier one pending is kept; deliver() asks again for the rest).
     if (when <= now) m_run.notify(sc_core::SC_ZERO_TIME);
+    else if (m_calendar) m_calendar->wake_at(m_calendar_id, when);
     else m_due.notify(when - now);
 }
 
@@ -185,7 +186,7 @@ void CommUnit::deliver()
         if (!holds(source, buffer) && forward(h)) continue;
         hold(source, buffer, h);
     }
-    if (!m_arrivals.empty()) m_due.notify(m_arrivals.next_time() - now);
+    if (!m_arrivals.empty()) wake_at(m_arrivals.next_time());
 }
 
 void CommUnit::retry()

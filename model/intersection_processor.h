@@ -34,10 +34,11 @@
 #include "rt_step.h"
 #include "sim_config.h"
 #include "time_keeper.h"
+#include "wake_calendar.h"
 
 namespace torusrt {
 
-class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf {
+class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf, public WakeCalendar::Client {
   public:
     sc_core::sc_export<PacketSinkIf> in;                                      // packets to process
     sc_core::sc_port<PacketSinkIf> out;                                       // new and forwarded packets
@@ -68,6 +69,13 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf {
                 std::string(name()) + ".queue_depth");
     }
     int index() const { return m_index; }
+    // The machine's wake calendar, which then ends the method driver's timed waits (call at
+    // elaboration; without it, and for a zero wait, the processor notifies its own timer).
+    void use_calendar(WakeCalendar &calendar)
+    {
+        m_calendar = &calendar;
+        m_calendar_id = calendar.add(*this);
+    }
     bool &busy_trace() { return m_busy_flag; }
 
   private:
@@ -83,6 +91,7 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf {
     bool hand_over(); // false: waiting for the processor side (m_out_room)
     void run_thread();
     void on_wake();
+    void wake_due() override { on_wake(); } // the calendar's timer
     void on_room();
     void run_method();
     void end_of_elaboration() override;
@@ -114,6 +123,8 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf {
     sc_core::sc_event m_timer;          // method driver: the owed wait is over
     sc_core::sc_event m_act;            // method driver: run the machine (notified at once)
     bool m_threaded;
+    WakeCalendar *m_calendar = nullptr;
+    int m_calendar_id = -1;
     Stage m_stage = Stage::top;
     Wake m_wake = Wake::start;
     bool m_woken = false, m_room_woken = false; // method driver: what woke it this delta
