@@ -97,8 +97,10 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf, public WakeCale
         ToroidalLink *link; // the sink as a link of this machine (takes pool handles), or null
         bool local;
     };
-    // The next hop of `p`, setting its channel when that is a link.
-    Hop next_hop(TimedPacket &p);
+    // The node owning the cell `p` is in.
+    int owner_of(const TimedPacket &p) const;
+    // The next hop of `p` toward node `owner`, setting its channel when that is a link.
+    Hop next_hop(TimedPacket &p, int owner);
     bool processor_held() const;
     // Whether packets from `buffer` of `source` are held.
     bool holds(int source, uint32_t buffer) const;
