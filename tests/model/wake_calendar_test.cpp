@@ -3,7 +3,8 @@
 // earlier time replaces a client's later wake (lazy deletion: the later key is skipped, and no
 // simulated time is spent on it), asking for a later one while an earlier is pending changes
 // nothing; a client woken may ask again (the calendar re-arms for it), also for a time earlier
-// than the one the calendar is already notified for.
+// than the one the calendar is already notified for. Many clients asking again and again, with
+// earlier asks replacing later ones, are woken in (time, client) order, each at its earliest ask.
 #include <systemc>
 #include <utility>
 #include <vector>
@@ -43,7 +44,25 @@ struct Outcome {
     bool due_after_ask = false, due_after_wake = true;
     sc_time due_seen;
     std::vector<int> ids; // what add() returned, in the order the clients were added
+    std::vector<Wake> crowd; // the wakes of the crowd below
+    std::vector<std::vector<sc_time>> crowd_want; // per crowd client, the times it must be woken at
 };
+
+// A crowd of clients (ids 4..): each asks, from time 0, for a later time and then an earlier one
+// (which replaces it), and from each wake for the next of its times, 3 in all; times are
+// pseudo-random multiples of 1 us in [100, 400) us, so many coincide.
+constexpr int kCrowd = 300;
+static void plan_crowd(std::vector<RecordingClient> &crowd, Outcome &out)
+{
+    uint32_t x = 12345;
+    auto next = [&x] { return x = x * 1103515245u + 12345u, (x >> 8) % 100; };
+    out.crowd_want.resize(crowd.size());
+    for (size_t i = 0; i < crowd.size(); i++) {
+        sc_time t = us(100 + static_cast<double>(next()));
+        for (int k = 0; k < 3; k++, t += us(1 + static_cast<double>(next()))) out.crowd_want[i].push_back(t);
+        crowd[i].next = {out.crowd_want[i][1], out.crowd_want[i][2]};
+    }
+}
 
 // Asks for wakes at time 0 and at 5 us.
 struct Asker : sc_core::sc_module {
@@ -85,6 +104,17 @@ static Outcome simulate()
     clients[0].next = {us(15), us(30)};
     // Client 2 asks from its wake at 10 us for 12 us: earlier than the 15 us asked just before.
     clients[2].next = {us(12)};
+    std::vector<RecordingClient> crowd(kCrowd);
+    for (RecordingClient &c : crowd) {
+        c.calendar = &calendar;
+        c.id = calendar.add(c);
+        c.log = &out.crowd;
+    }
+    plan_crowd(crowd, out);
+    for (size_t i = 0; i < crowd.size(); i++) {
+        calendar.wake_at(crowd[i].id, out.crowd_want[i][0] + us(500)); // replaced just below
+        calendar.wake_at(crowd[i].id, out.crowd_want[i][0]);
+    }
     Asker asker("asker", calendar, out);
     sc_core::sc_start();
     out.end = sc_core::sc_time_stamp();
@@ -148,8 +178,24 @@ TEST(WakeCalendar, EarlierWakeReplacesLaterOne)
 
 TEST(WakeCalendar, StaleKeySpendsNoTime)
 {
-    // The replaced 60 us key is skipped without an event: the run ends at the last wake, 30 us,
-    // with the heap empty.
-    EXPECT_EQ(run().end, us(30));
+    // The replaced 60 us key (and the crowd's replaced ones, 500 us later than their first) are
+    // skipped without an event: the run ends at the last wake, with the heap empty.
+    sc_time last = run().wakes.back().at;
+    for (const Wake &w : run().crowd) last = w.at > last ? w.at : last;
+    EXPECT_EQ(run().end, last);
     EXPECT_EQ(run().heap_left, 0u);
+}
+
+TEST(WakeCalendar, CrowdWokenInTimeThenClientOrder)
+{
+    const auto &c = run().crowd;
+    ASSERT_EQ(c.size(), static_cast<size_t>(3 * kCrowd));
+    for (size_t i = 1; i < c.size(); i++) {
+        bool ordered = c[i - 1].at < c[i].at || (c[i - 1].at == c[i].at && c[i - 1].client < c[i].client);
+        EXPECT_TRUE(ordered) << "wake " << i;
+    }
+    // Each client woken at exactly the times it asked for (the first ask's replacement included).
+    std::vector<std::vector<sc_time>> got(kCrowd);
+    for (const Wake &w : c) got[static_cast<size_t>(w.client - 4)].push_back(w.at);
+    EXPECT_EQ(got, run().crowd_want);
 }
