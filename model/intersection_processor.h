@@ -12,6 +12,8 @@
 // m_act runs the machine later in the same evaluation phase, after every process that was
 // runnable when it began, where a thread would run (after the delta's methods); so it takes up
 // a packet after every delivery and release of that delta cycle, whichever SystemC ran first.
+// Its timed waits end through the machine's wake calendar (wake_calendar.h) where the machine has
+// one, which calls on_wake's work in the first delta of the time, as the timer event would.
 // In a cluster an SC_THREAD drives the same machine, because crossing the cluster bus (packets
 // out, shared-data fetches) waits in b_transport.
 #pragma once

@@ -62,6 +62,9 @@ void WakeCalendar::run()
         if (stale(k)) continue;
         Slot &s = m_slots[k.order >> kSeqBits];
         s.when = s.order = kNone;
+        // The next client due is cold (a node's unit): fetch it while this one runs.
+        if (!m_heap.empty() && m_heap.front().when <= now)
+            __builtin_prefetch(m_slots[m_heap.front().order >> kSeqBits].client);
         s.client->wake_due();
     }
     arm(now);
