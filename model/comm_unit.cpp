@@ -35,9 +35,10 @@ void CommUnit::end_of_elaboration()
     m_held_count.assign(link_in.size() + 1, 0);
 }
 
-CommUnit::Hop CommUnit::next_hop(TimedPacket &p)
+int CommUnit::owner_of(const TimedPacket &p) const { return m_owner[rt_packet_cell(m_grid, &p.packet)]; }
+
+CommUnit::Hop CommUnit::next_hop(TimedPacket &p, int owner)
 {
-    int owner = m_owner[rt_packet_cell(m_grid, &p.packet)];
     if (owner == m_node) return {local.operator->(), nullptr, true};
     int dir = m_routing.next_direction(m_node, owner);
     int port = dir >= 0 ? m_port_of_dir[dir] : -1;
@@ -51,7 +52,7 @@ BufferSpace *CommUnit::room_for(const TimedPacket &p)
 {
     TimedPacket q = p;
     q.last_dir = -1; // it leaves the processor side
-    return next_hop(q).sink->room_for(q);
+    return next_hop(q, owner_of(q)).sink->room_for(q);
 }
 
 bool CommUnit::holds(int source, uint32_t buffer) const
@@ -92,13 +93,13 @@ void CommUnit::accept(const TimedPacket &p)
 {
     if (p.from_host) { // a primary at its entry node: straight to the processor side
         TimedPacket q = p;
-        next_hop(q).sink->accept(q);
+        next_hop(q, owner_of(q)).sink->accept(q);
         m_local++;
         return;
     }
     // Called in the processor side's thread: it waits while one of its packets is held.
     while (processor_held()) sc_core::wait(m_processor_room);
-    uint32_t packet = m_pool->add(p);
+    uint32_t packet = m_pool->add(p, owner_of(p));
     m_pool->at(packet).last_dir = -1; // it leaves the processor side
     enqueue(packet, p.stamp, processor_source(), nullptr);
 }
@@ -127,10 +128,10 @@ void CommUnit::b_transport(int id, tlm::tlm_generic_payload &trans, sc_core::sc_
     if (ext->pool == m_pool) {
         packet = ext->handle;
     } else if (ext->pool) {
-        packet = m_pool->add(ext->pool->at(ext->handle));
+        packet = m_pool->add(ext->pool->at(ext->handle), ext->pool->owner(ext->handle));
         ext->pool->release(ext->handle);
     } else {
-        packet = m_pool->add(ext->item);
+        packet = m_pool->add(ext->item, owner_of(ext->item));
     }
     // Arrival in the sender's local time.
     enqueue(packet, sc_core::sc_time_stamp() + delay, id, ext->credit);
@@ -140,9 +141,10 @@ void CommUnit::b_transport(int id, tlm::tlm_generic_payload &trans, sc_core::sc_
 void CommUnit::wake_at(const sc_core::sc_time &when)
 {
     sc_core::sc_time now = sc_core::sc_time_stamp();
-    // Due now: deliver one delta on. Later: a timed notification (an earlier one pending is
-    // kept; deliver() re-arms for the rest).
+    // Due now: deliver one delta on. Later: the calendar's wake or a timed notification (an
+    // earlier one pending is kept; deliver() asks again for the rest).
     if (when <= now) m_run.notify(sc_core::SC_ZERO_TIME);
+    else if (m_calendar) m_calendar->wake_at(m_calendar_id, when);
     else m_due.notify(when - now);
 }
 
@@ -151,7 +153,7 @@ bool CommUnit::forward(uint32_t packet)
     TimedPacket &p = m_pool->at(packet);
     sc_core::sc_time now = sc_core::sc_time_stamp();
     if (p.stamp < now) p.stamp = now; // held packets move on no earlier than now
-    Hop next = next_hop(p);
+    Hop next = next_hop(p, m_pool->owner(packet));
     if (!(next.link ? next.link->ToroidalLink::can_accept(p) : next.sink->can_accept(p))) {
         next.sink->on_space(p, m_retry);
         return false;
@@ -185,7 +187,7 @@ void CommUnit::deliver()
         if (!holds(source, buffer) && forward(h)) continue;
         hold(source, buffer, h);
     }
-    if (!m_arrivals.empty()) m_due.notify(m_arrivals.next_time() - now);
+    if (!m_arrivals.empty()) wake_at(m_arrivals.next_time());
 }
 
 void CommUnit::retry()

@@ -9,6 +9,11 @@
 // delivery method does not matter. Sources: incoming link ports 0..L-1, then the processor side
 // (L). Host primaries go straight to the local processor side (they never wait).
 //
+// Timed wake-up: in a machine that has one (use_calendar), the unit asks the machine's wake
+// calendar (wake_calendar.h) to wake it at its earliest arrival time, and the calendar calls
+// deliver() then, units due at one time in node order; alone, the unit notifies its own timed
+// event. Either way an arrival due now (or pushed in this delta) waits for m_run, one delta on.
+//
 // Loosely timed (temporal decoupling with quantum Q): an arrival is handled as soon as it lies
 // no more than Q ahead of simulation time, keeping its annotated time as its stamp; the next
 // link books it in the order it is handled, which is where the style's timing error comes from.
@@ -38,12 +43,13 @@
 #include "rt_grid.h"
 #include "routing.h"
 #include "sim_config.h"
+#include "wake_calendar.h"
 
 namespace torusrt {
 
 class ToroidalLink;
 
-class CommUnit : public sc_core::sc_module, public PacketSinkIf {
+class CommUnit : public sc_core::sc_module, public PacketSinkIf, public WakeCalendar::Client {
   public:
     // Packets from incoming links (none when the node has no neighbours).
     tlm_utils::multi_passthrough_target_socket<CommUnit, 32, tlm::tlm_base_protocol_types, 0,
@@ -71,6 +77,13 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf {
     // The machine's packet pool, shared by every unit so a packet crosses by handle (call at
     // elaboration; a unit alone uses its own).
     void use_pool(PacketPool &pool) { m_pool = &pool; }
+    // The machine's wake calendar, which then wakes this unit for its timed deliveries (call at
+    // elaboration; a unit alone notifies an event of its own).
+    void use_calendar(WakeCalendar &calendar)
+    {
+        m_calendar = &calendar;
+        m_calendar_id = calendar.add(*this);
+    }
 
     uint64_t routed_local() const { return m_local; }
     uint64_t routed_transit() const { return m_transit; }
@@ -84,8 +97,10 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf {
         ToroidalLink *link; // the sink as a link of this machine (takes pool handles), or null
         bool local;
     };
-    // The next hop of `p`, setting its channel when that is a link.
-    Hop next_hop(TimedPacket &p);
+    // The node owning the cell `p` is in.
+    int owner_of(const TimedPacket &p) const;
+    // The next hop of `p` toward node `owner`, setting its channel when that is a link.
+    Hop next_hop(TimedPacket &p, int owner);
     bool processor_held() const;
     // Whether packets from `buffer` of `source` are held.
     bool holds(int source, uint32_t buffer) const;
@@ -99,6 +114,7 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf {
     void enqueue(uint32_t packet, const sc_core::sc_time &stamp, int source, BufferSpace *credit);
     void wake_at(const sc_core::sc_time &when);
     void deliver();
+    void wake_due() override { deliver(); }
     void retry();
     int processor_source() const { return m_processor_source; }
     void end_of_elaboration() override;
@@ -111,6 +127,8 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf {
     std::array<ToroidalLink *, kDirections> m_link_of_dir{};
     PacketPool m_own_pool;
     PacketPool *m_pool = &m_own_pool;
+    WakeCalendar *m_calendar = nullptr;
+    int m_calendar_id = -1;
     int m_processor_source = 0; // = the number of incoming links, known after elaboration
     uint64_t m_local = 0, m_transit = 0;
     sc_core::sc_time m_lookahead; // the quantum when loosely timed, else 0

@@ -229,7 +229,8 @@ void IntersectionProcessor::run_method()
     m_wake = act();
     if (m_wake != Wake::timer) return;
     m_due = sc_core::sc_time_stamp() + m_delay;
-    m_timer.notify(m_delay); // zero: the next delta, as wait(SC_ZERO_TIME)
+    if (m_calendar && m_delay != sc_core::SC_ZERO_TIME) m_calendar->wake_at(m_calendar_id, m_due);
+    else m_timer.notify(m_delay); // zero: the next delta, as wait(SC_ZERO_TIME)
 }
 
 }  // namespace torusrt

@@ -12,6 +12,8 @@
 // m_act runs the machine later in the same evaluation phase, after every process that was
 // runnable when it began, where a thread would run (after the delta's methods); so it takes up
 // a packet after every delivery and release of that delta cycle, whichever SystemC ran first.
+// Its timed waits end through the machine's wake calendar (wake_calendar.h) where the machine has
+// one, which calls on_wake's work in the first delta of the time, as the timer event would.
 // In a cluster an SC_THREAD drives the same machine, because crossing the cluster bus (packets
 // out, shared-data fetches) waits in b_transport.
 #pragma once
@@ -34,10 +36,11 @@
 #include "rt_step.h"
 #include "sim_config.h"
 #include "time_keeper.h"
+#include "wake_calendar.h"
 
 namespace torusrt {
 
-class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf {
+class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf, public WakeCalendar::Client {
   public:
     sc_core::sc_export<PacketSinkIf> in;                                      // packets to process
     sc_core::sc_port<PacketSinkIf> out;                                       // new and forwarded packets
@@ -68,6 +71,13 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf {
                 std::string(name()) + ".queue_depth");
     }
     int index() const { return m_index; }
+    // The machine's wake calendar, which then ends the method driver's timed waits (call at
+    // elaboration; without it, and for a zero wait, the processor notifies its own timer).
+    void use_calendar(WakeCalendar &calendar)
+    {
+        m_calendar = &calendar;
+        m_calendar_id = calendar.add(*this);
+    }
     bool &busy_trace() { return m_busy_flag; }
 
   private:
@@ -83,6 +93,7 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf {
     bool hand_over(); // false: waiting for the processor side (m_out_room)
     void run_thread();
     void on_wake();
+    void wake_due() override { on_wake(); } // the calendar's timer
     void on_room();
     void run_method();
     void end_of_elaboration() override;
@@ -114,6 +125,8 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf {
     sc_core::sc_event m_timer;          // method driver: the owed wait is over
     sc_core::sc_event m_act;            // method driver: run the machine (notified at once)
     bool m_threaded;
+    WakeCalendar *m_calendar = nullptr;
+    int m_calendar_id = -1;
     Stage m_stage = Stage::top;
     Wake m_wake = Wake::start;
     bool m_woken = false, m_room_woken = false; // method driver: what woke it this delta

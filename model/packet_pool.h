@@ -4,7 +4,10 @@
 // leaves it at the processor side of its cell's owner: its body is written once per hop where it
 // changes (stamp, channel, last link), never copied. One pool serves the whole machine; a freed
 // slot is the next one used, so the packets in flight stay in few, warm cache lines. Slots live
-// in fixed chunks: a packet never moves while it is in the pool.
+// in fixed chunks: a packet never moves while it is in the pool. A slot starts on a cache line
+// with what a hop uses: the credit, the node the packet is heading for (its cell's owner, found
+// once when it enters the pool: the cell does not change on the way) and the packet's hop
+// fields (timed_packet.h); the kernel's packet behind them is read again only at the owner.
 #pragma once
 
 #include <cstdint>
@@ -17,7 +20,8 @@ namespace torusrt {
 
 class PacketPool {
   public:
-    uint32_t add(const TimedPacket &p)
+    // Adds `p`, heading for node `owner`.
+    uint32_t add(const TimedPacket &p, int32_t owner)
     {
         uint32_t h;
         if (m_free.empty()) {
@@ -30,9 +34,12 @@ class PacketPool {
         Slot &s = slot(h);
         s.item = p;
         s.credit = nullptr;
+        s.owner = owner;
         return h;
     }
     TimedPacket &at(uint32_t h) { return slot(h).item; }
+    // The node owning the cell the packet is in (where it is going).
+    int32_t owner(uint32_t h) { return slot(h).owner; }
     // The buffer slot the packet holds while it waits at a communication unit (null: none):
     // given back once the packet is taken on.
     BufferSpace *&credit(uint32_t h) { return slot(h).credit; }
@@ -41,9 +48,10 @@ class PacketPool {
     size_t in_use() const { return m_size - m_free.size(); }
 
   private:
-    struct Slot {
-        TimedPacket item;
+    struct alignas(64) Slot {
         BufferSpace *credit = nullptr;
+        int32_t owner = -1;
+        TimedPacket item;
     };
     static constexpr uint32_t kChunkBits = 8, kChunk = 1u << kChunkBits;
     Slot &slot(uint32_t h) { return m_chunks[h >> kChunkBits][h & (kChunk - 1)]; }

@@ -12,10 +12,13 @@ namespace torusrt {
 
 class PacketPool;
 
+// The fields a hop reads and writes come first, the kernel's packet (read only by processors)
+// last, so a packet crossing the network touches its first cache line only (packet_pool.h).
 struct TimedPacket {
-    rt_packet packet;       // the kernel's packet
+    TimedPacket() = default;
+    TimedPacket(const rt_packet &p, const sc_core::sc_time &sent = sc_core::SC_ZERO_TIME) : stamp(sent), packet(p) {}
+
     sc_core::sc_time stamp; // send time; after a link, arrival time (loosely-timed runs use it)
-    bool from_host = false; // a primary packet from the host, not yet in any buffer
     // Flow control (flow_control.h): the packet's class, its virtual channel on the link it is
     // on, the direction of the last link it crossed (-1: none since it left a processor), and
     // whether its slot in the next buffer was already taken when its processor took up its
@@ -24,6 +27,8 @@ struct TimedPacket {
     uint8_t vc = 0;
     int8_t last_dir = -1;
     bool reserved = false;
+    bool from_host = false; // a primary packet from the host, not yet in any buffer
+    rt_packet packet{};     // the kernel's packet
 };
 
 // Packets cross links and the cluster bus as a generic payload (command WRITE, data = the packet's

@@ -16,6 +16,10 @@ TorusSystem::TorusSystem(sc_core::sc_module_name name, const MachineConfig &conf
     int nodes = config.node_count();
     sc_core::sc_time lookahead = config.style == TimingStyle::lt ? sc_core::sc_time(config.quantum_us, sc_core::SC_US)
                                                                  : sc_core::SC_ZERO_TIME;
+    // Where the outcome depends on which of two simultaneous processes runs first, the calendar
+    // would change it (wake_calendar.h): those machines keep their per-unit timed events.
+    if (config.cluster == 1 && lookahead == sc_core::SC_ZERO_TIME && rt_timing_link_packet_us(&config.timing) > 0)
+        m_calendar = std::make_unique<WakeCalendar>("wake_calendar");
     m_fb = std::make_unique<FrameBuffer>("fb", fb);
     m_host = std::make_unique<Host>("host", config, scene, grid, cell_owner, ledger);
     m_host->fb_socket.bind(m_fb->socket);
@@ -24,9 +28,11 @@ TorusSystem::TorusSystem(sc_core::sc_module_name name, const MachineConfig &conf
                                                     lookahead));
         m_comm[n]->set_flow(config.flow);
         m_comm[n]->use_pool(m_pool);
+        if (m_calendar) m_comm[n]->use_calendar(*m_calendar); // node by node: the order of simultaneous wakes
         if (config.cluster == 1) {
             auto ip = std::make_unique<IntersectionProcessor>(("ip_" + std::to_string(n)).c_str(), config, scene,
                                                               grid, cell_owner, n, n, ledger);
+            if (m_calendar) ip->use_calendar(*m_calendar); // after its node's comm unit
             ip->out.bind(m_comm[n]->in);
             ip->fb_socket.bind(m_fb->socket);
             m_comm[n]->local.bind(ip->in);

@@ -18,6 +18,7 @@
 #include "routing.h"
 #include "sim_config.h"
 #include "toroidal_link.h"
+#include "wake_calendar.h"
 
 namespace torusrt {
 
@@ -46,6 +47,7 @@ class TorusSystem : public sc_core::sc_module {
   private:
     Routing m_routing;
     PacketPool m_pool; // every packet on the network, by handle (comm units and links)
+    std::unique_ptr<WakeCalendar> m_calendar; // the comm units' timed deliveries
     std::unique_ptr<FrameBuffer> m_fb;
     std::unique_ptr<Host> m_host;
     std::vector<std::unique_ptr<CommUnit>> m_comm;
