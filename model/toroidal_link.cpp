@@ -1,6 +1,8 @@
 // toroidal_link.cpp - busy-until serialisation of one link direction.
 #include "toroidal_link.h"
 
+#include <algorithm>
+
 namespace torusrt {
 
 ToroidalLink::ToroidalLink(sc_core::sc_module_name name, const MachineConfig &config, int from, int to, int dir)
@@ -31,27 +33,27 @@ void ToroidalLink::accept(const TimedPacket &p)
     q = p;
     q.reserved = false;
     // A thread that waited for room sends no earlier than now.
-    if (q.stamp < sc_core::sc_time_stamp()) q.stamp = sc_core::sc_time_stamp();
+    sc_core::sc_time now = sc_core::sc_time_stamp();
+    if (q.stamp < now) q.stamp = now;
     m_ext->pool = nullptr;
-    send(q);
+    send(q, now);
 }
 
-void ToroidalLink::accept_pooled(PacketPool &pool, uint32_t handle)
+void ToroidalLink::accept_pooled(PacketPool &pool, uint32_t handle, const sc_core::sc_time &now)
 {
     TimedPacket &p = pool.at(handle);
     if (!p.reserved) space_for(p).take_blocking(); // room was checked: does not wait
     p.reserved = false;
-    if (p.stamp < sc_core::sc_time_stamp()) p.stamp = sc_core::sc_time_stamp();
+    if (p.stamp < now) p.stamp = now;
     m_ext->pool = &pool;
     m_ext->handle = handle;
-    send(p);
+    send(p, now);
 }
 
-void ToroidalLink::send(TimedPacket &p)
+void ToroidalLink::send(TimedPacket &p, const sc_core::sc_time &now)
 {
     sc_core::sc_time start = p.stamp > m_free_at ? p.stamp : m_free_at; // cannot start before it was sent
     m_free_at = start + m_packet_time;
-    m_busy += m_packet_time;
     m_packets++;
     m_bytes += m_packet_bytes;
     if (m_tracing) {
@@ -64,7 +66,7 @@ void ToroidalLink::send(TimedPacket &p)
     m_trans.set_data_ptr(reinterpret_cast<unsigned char *>(&p.packet));
     m_trans.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
     // Annotated delay: queueing behind earlier packets plus serialisation.
-    sc_core::sc_time delay = m_free_at - sc_core::sc_time_stamp();
+    sc_core::sc_time delay = m_free_at - now;
     socket->b_transport(m_trans, delay);
     if (m_trans.is_response_error()) SC_REPORT_FATAL(name(), "the receiving communication unit refused a packet");
 }
@@ -73,6 +75,13 @@ bool &ToroidalLink::busy_trace()
 {
     m_tracing = true;
     return m_busy_flag;
+}
+
+void ToroidalLink::hop_lines(const void *(&lines)[kHopLines])
+{
+    const char *hot = reinterpret_cast<const char *>(&m_free_at), *trans = reinterpret_cast<const char *>(&m_trans);
+    const void *all[kHopLines] = {hot, hot + 64, trans, trans + 64, m_ext, socket.operator->()};
+    std::copy(all, all + kHopLines, lines);
 }
 
 void ToroidalLink::drive_busy_trace()
