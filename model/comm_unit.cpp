@@ -35,30 +35,23 @@ void CommUnit::end_of_elaboration()
     m_held_count.assign(link_in.size() + 1, 0);
 }
 
-void CommUnit::start_of_simulation()
+void CommUnit::set_link(int dir, ToroidalLink &link, const CommUnit &receiver)
 {
-    static_assert(kOutLines == ToroidalLink::kHopLines, "one line pointer per line a crossing touches");
-    for (OutLink &out : m_out)
-        if (out.link) out.link->hop_lines(out.lines);
-}
-
-void CommUnit::prefetch(const OutLink &out)
-{
-    for (const void *line : out.lines) __builtin_prefetch(line, 1);
-    __builtin_prefetch(&out.receiver->m_pool, 1);
+    m_link_of_dir[dir] = &link;
+    link.set_receiver_line(&receiver.m_pool);
 }
 
 int CommUnit::owner_of(const TimedPacket &p) const { return m_owner[rt_packet_cell(m_grid, &p.packet)]; }
 
 CommUnit::Hop CommUnit::next_hop(TimedPacket &p, int owner)
 {
-    if (owner == m_node) return {local.operator->(), nullptr, true, nullptr};
+    if (owner == m_node) return {local.operator->(), nullptr, true};
     int dir = m_routing.next_direction(m_node, owner);
     int port = dir >= 0 ? m_port_of_dir[dir] : -1;
     if (port < 0) SC_REPORT_FATAL(name(), "no link toward the packet's owner");
     p.vc = link_channel(m_flow, m_routing, p, m_node, dir);
-    if (ToroidalLink *link = m_out[dir].link) return {link, link, false, &m_out[dir]}; // the port's own link
-    return {link_out[port], nullptr, false, nullptr};
+    if (ToroidalLink *link = m_link_of_dir[dir]) return {link, link, false}; // the port's own link
+    return {link_out[port], nullptr, false};
 }
 
 BufferSpace *CommUnit::room_for(const TimedPacket &p)
@@ -167,7 +160,7 @@ bool CommUnit::forward(uint32_t packet)
     sc_core::sc_time now = sc_core::sc_time_stamp();
     if (p.stamp < now) p.stamp = now; // held packets move on no earlier than now
     Hop next = next_hop(p, m_pool->owner(packet));
-    if (next.out) prefetch(*next.out);
+    if (next.link) next.link->prefetch_hop();
     if (!(next.link ? next.link->ToroidalLink::can_accept(p) : next.sink->can_accept(p))) {
         next.sink->on_space(p, m_retry);
         return false;

@@ -50,8 +50,6 @@ namespace torusrt {
 class ToroidalLink;
 
 class CommUnit : public sc_core::sc_module, public PacketSinkIf, public WakeCalendar::Client {
-    static constexpr int kOutLines = 6; // = ToroidalLink::kHopLines
-
   public:
     // Packets from incoming links (none when the node has no neighbours).
     tlm_utils::multi_passthrough_target_socket<CommUnit, 32, tlm::tlm_base_protocol_types, 0,
@@ -76,11 +74,7 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf, public WakeCale
     void set_link_port(int dir, int port_index) { m_port_of_dir[dir] = port_index; }
     // The link behind direction `dir` and the unit it leads to: packets go on to it by handle
     // (call at elaboration).
-    void set_link(int dir, ToroidalLink &link, const CommUnit &receiver)
-    {
-        m_out[dir].link = &link;
-        m_out[dir].receiver = &receiver;
-    }
+    void set_link(int dir, ToroidalLink &link, const CommUnit &receiver);
     // The machine's packet pool, shared by every unit so a packet crosses by handle (call at
     // elaboration; a unit alone uses its own).
     void use_pool(PacketPool &pool) { m_pool = &pool; }
@@ -99,22 +93,11 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf, public WakeCale
     CommUnitStats stats() const { return {m_local, m_transit, held()}; }
 
   private:
-    // A link of this machine and the cache lines a crossing touches (the link's, then the
-    // receiving unit's): at 512 nodes each is cold, and fetched together they cost about one miss
-    // instead of one after the other.
-    struct alignas(64) OutLink {
-        ToroidalLink *link = nullptr;
-        const CommUnit *receiver = nullptr;
-        const void *lines[kOutLines] = {};
-    };
     struct Hop {
         PacketSinkIf *sink;
         ToroidalLink *link; // the sink as a link of this machine (takes pool handles), or null
         bool local;
-        const OutLink *out; // with link
     };
-    static void prefetch(const OutLink &out);
-    void start_of_simulation() override;
     // The node owning the cell `p` is in.
     int owner_of(const TimedPacket &p) const;
     // The next hop of `p` toward node `owner`, setting its channel when that is a link.
@@ -142,9 +125,9 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf, public WakeCale
     const rt_grid *m_grid;
     const int32_t *m_owner;
     std::array<int, kDirections> m_port_of_dir;
-    std::array<OutLink, kDirections> m_out{};
+    std::array<ToroidalLink *, kDirections> m_link_of_dir{};
     PacketPool m_own_pool;
-    // What a packet arriving from a link touches first (a sender prefetches it).
+    // What a packet arriving from a link touches first, on a line of its own (senders prefetch it).
     alignas(64) PacketPool *m_pool = &m_own_pool;
     WakeCalendar *m_calendar = nullptr;
     int m_calendar_id = -1;

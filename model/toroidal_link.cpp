@@ -1,14 +1,12 @@
 // toroidal_link.cpp - busy-until serialisation of one link direction.
 #include "toroidal_link.h"
 
-#include <algorithm>
-
 namespace torusrt {
 
 ToroidalLink::ToroidalLink(sc_core::sc_module_name name, const MachineConfig &config, int from, int to, int dir)
     : sc_module(name), socket("socket"), in("in"),
       m_packet_time(rt_timing_link_packet_us(&config.timing), sc_core::SC_US),
-      m_packet_bytes(config.timing.packet_bytes), m_dir(dir), m_spaces(config.queue_capacity), m_from(from), m_to(to)
+      m_dir(dir), m_packet_bytes(config.timing.packet_bytes), m_spaces(config.queue_capacity), m_from(from), m_to(to)
 {
     in.bind(*this);
     m_ext = new PacketExtension;
@@ -67,7 +65,7 @@ void ToroidalLink::send(TimedPacket &p, const sc_core::sc_time &now)
     m_trans.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
     // Annotated delay: queueing behind earlier packets plus serialisation.
     sc_core::sc_time delay = m_free_at - now;
-    socket->b_transport(m_trans, delay);
+    m_fw->b_transport(m_trans, delay);
     if (m_trans.is_response_error()) SC_REPORT_FATAL(name(), "the receiving communication unit refused a packet");
 }
 
@@ -75,13 +73,6 @@ bool &ToroidalLink::busy_trace()
 {
     m_tracing = true;
     return m_busy_flag;
-}
-
-void ToroidalLink::hop_lines(const void *(&lines)[kHopLines])
-{
-    const char *hot = reinterpret_cast<const char *>(&m_free_at), *trans = reinterpret_cast<const char *>(&m_trans);
-    const void *all[kHopLines] = {hot, hot + 64, trans, trans + 64, m_ext, socket.operator->()};
-    std::copy(all, all + kHopLines, lines);
 }
 
 void ToroidalLink::drive_busy_trace()
