@@ -62,7 +62,7 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
     }
     // Traced busy line; asking for it turns on the (otherwise idle) process that drives it.
     bool &busy_trace();
-    // The receiving side's first line a crossing touches (prefetched with the link's).
+    // The receiving side's first two lines a crossing touches (prefetched with the link's).
     void set_receiver_line(const void *line) { m_receiver_line = line; }
     // Asks for every other line a crossing touches (here, the transaction, its extension, the
     // bound target's interface, the receiver) at once: a sender calls it as it picks the link, so
@@ -70,7 +70,8 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
     void prefetch_hop() const
     {
         const char *hot = reinterpret_cast<const char *>(&m_free_at), *trans = reinterpret_cast<const char *>(&m_trans);
-        const void *lines[] = {hot + 64, trans, trans + 64, m_ext, m_fw, m_receiver_line};
+        const char *receiver = static_cast<const char *>(m_receiver_line);
+        const void *lines[] = {hot + 64, trans, trans + 64, m_ext, m_fw, receiver, receiver + 64};
         for (const void *line : lines) __builtin_prefetch(line, 1);
     }
 
