@@ -116,7 +116,6 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf, public WakeCale
     void wake_at(const sc_core::sc_time &when);
     void deliver();
     void wake_due() override { deliver(); }
-    const void *wake_lines() const override { return &m_pool; }
     void retry();
     int processor_source() const { return m_processor_source; }
     void end_of_elaboration() override;

@@ -17,7 +17,7 @@ WakeCalendar::WakeCalendar(sc_core::sc_module_name name) : sc_module(name)
 int WakeCalendar::add(Client &client)
 {
     if (m_slots.size() >= (size_t{1} << (64 - kSeqBits))) SC_REPORT_FATAL(name(), "too many clients");
-    m_slots.push_back(Slot{&client, static_cast<const char *>(client.wake_lines()), kNone, kNone});
+    m_slots.push_back(Slot{&client, kNone, kNone});
     return static_cast<int>(m_slots.size() - 1);
 }
 
@@ -63,14 +63,8 @@ void WakeCalendar::run()
         Slot &s = m_slots[k.order >> kSeqBits];
         s.when = s.order = kNone;
         // The next client due is cold (a node's unit): fetch it while this one runs.
-        if (!m_heap.empty() && m_heap.front().when <= now) {
-            const Slot &next = m_slots[m_heap.front().order >> kSeqBits];
-            __builtin_prefetch(next.client);
-            if (next.lines) {
-                __builtin_prefetch(next.lines);
-                __builtin_prefetch(next.lines + 64);
-            }
-        }
+        if (!m_heap.empty() && m_heap.front().when <= now)
+            __builtin_prefetch(m_slots[m_heap.front().order >> kSeqBits].client);
         s.client->wake_due();
     }
     arm(now);

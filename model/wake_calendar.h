@@ -25,9 +25,6 @@ class WakeCalendar : public sc_core::sc_module {
     class Client {
       public:
         virtual void wake_due() = 0;
-        // The two cache lines a wake touches first, if the client lays them out so (else null):
-        // fetched with the client while the one due before it runs.
-        virtual const void *wake_lines() const { return nullptr; }
 
       protected:
         ~Client() = default;
@@ -54,7 +51,6 @@ class WakeCalendar : public sc_core::sc_module {
     };
     struct Slot {
         Client *client;
-        const char *lines; // its wake_lines()
         uint64_t when;  // its live wake, or kNone
         uint64_t order; // the live wake's key order (the older keys of the client are stale)
     };
