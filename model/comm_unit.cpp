@@ -13,8 +13,8 @@ namespace torusrt {
 
 CommUnit::CommUnit(sc_core::sc_module_name name, int node, const Routing &routing, const rt_grid *grid,
                    const int32_t *cell_owner, const sc_core::sc_time &lookahead)
-    : sc_module(name), link_in("link_in"), in("in"), local("local"), link_out("link_out"), m_node(node),
-      m_routing(routing), m_grid(grid), m_owner(cell_owner), m_lookahead(lookahead)
+    : sc_module(name), link_in("link_in"), in("in"), local("local"), link_out("link_out"), m_lookahead(lookahead),
+      m_node(node), m_routing(routing), m_grid(grid), m_owner(cell_owner)
 {
     m_port_of_dir.fill(-1);
     in.bind(*this);
@@ -33,6 +33,12 @@ void CommUnit::end_of_elaboration()
     m_processor_source = static_cast<int>(link_in.size());
     m_held.resize(link_in.size() + 1);
     m_held_count.assign(link_in.size() + 1, 0);
+}
+
+void CommUnit::set_link(int dir, ToroidalLink &link, const CommUnit &receiver)
+{
+    m_link_of_dir[dir] = &link;
+    link.set_receiver_line(&receiver.m_pool);
 }
 
 int CommUnit::owner_of(const TimedPacket &p) const { return m_owner[rt_packet_cell(m_grid, &p.packet)]; }
@@ -154,6 +160,7 @@ bool CommUnit::forward(uint32_t packet)
     sc_core::sc_time now = sc_core::sc_time_stamp();
     if (p.stamp < now) p.stamp = now; // held packets move on no earlier than now
     Hop next = next_hop(p, m_pool->owner(packet));
+    if (next.link) next.link->prefetch_hop();
     if (!(next.link ? next.link->ToroidalLink::can_accept(p) : next.sink->can_accept(p))) {
         next.sink->on_space(p, m_retry);
         return false;
@@ -161,7 +168,7 @@ bool CommUnit::forward(uint32_t packet)
     (next.local ? m_local : m_transit)++;
     BufferSpace *credit = m_pool->credit(packet);
     if (next.link) { // the packet goes on by handle
-        next.link->accept_pooled(*m_pool, packet);
+        next.link->accept_pooled(*m_pool, packet, now);
     } else {
         next.sink->accept(p);
         m_pool->release(packet);

@@ -72,8 +72,9 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf, public WakeCale
     void set_flow(FlowControl flow) { m_flow = flow; }
     // Records which link_out port index serves direction `dir` (call at elaboration).
     void set_link_port(int dir, int port_index) { m_port_of_dir[dir] = port_index; }
-    // The link behind direction `dir`: packets go on to it by handle (call at elaboration).
-    void set_link(int dir, ToroidalLink &link) { m_link_of_dir[dir] = &link; }
+    // The link behind direction `dir` and the unit it leads to: packets go on to it by handle
+    // (call at elaboration).
+    void set_link(int dir, ToroidalLink &link, const CommUnit &receiver);
     // The machine's packet pool, shared by every unit so a packet crosses by handle (call at
     // elaboration; a unit alone uses its own).
     void use_pool(PacketPool &pool) { m_pool = &pool; }
@@ -119,21 +120,25 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf, public WakeCale
     int processor_source() const { return m_processor_source; }
     void end_of_elaboration() override;
 
+    PacketPool m_own_pool;
+    // What a hop touches here, on three cache lines of their own: the first two when a packet
+    // arrives from a link (a sender prefetches them) and when delivery starts, the third when a
+    // packet is routed on.
+    alignas(64) PacketPool *m_pool = &m_own_pool;
+    WakeCalendar *m_calendar = nullptr;
+    int m_calendar_id = -1;
+    int m_processor_source = 0; // = the number of incoming links, known after elaboration
+    sc_core::sc_time m_lookahead; // the quantum when loosely timed, else 0
+    size_t m_held_total = 0; // packets held (checked first: usually none)
+    uint64_t m_local = 0, m_transit = 0;
     int m_node;
+    FlowControl m_flow = FlowControl::none;
+    ArrivalQueue m_arrivals;
     const Routing &m_routing;
     const rt_grid *m_grid;
     const int32_t *m_owner;
     std::array<int, kDirections> m_port_of_dir;
     std::array<ToroidalLink *, kDirections> m_link_of_dir{};
-    PacketPool m_own_pool;
-    PacketPool *m_pool = &m_own_pool;
-    WakeCalendar *m_calendar = nullptr;
-    int m_calendar_id = -1;
-    int m_processor_source = 0; // = the number of incoming links, known after elaboration
-    uint64_t m_local = 0, m_transit = 0;
-    sc_core::sc_time m_lookahead; // the quantum when loosely timed, else 0
-    ArrivalQueue m_arrivals;
-    FlowControl m_flow = FlowControl::none;
     // Per source, per incoming buffer (2 x class + channel), pool handles.
     // Sorted by buffer; retry() visits them in that order.
     struct HeldFifo {
@@ -143,7 +148,6 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf, public WakeCale
     std::vector<std::vector<HeldFifo>> m_held;
     // Per source, packets in m_held (so a check does not walk every class's FIFO).
     std::vector<size_t> m_held_count;
-    size_t m_held_total = 0; // all of them (checked first: usually none)
     sc_core::sc_event m_due, m_run, m_retry, m_processor_room;
     std::vector<sc_core::sc_event *> m_processor_waiters; // on_space(): notified with m_processor_room
 };

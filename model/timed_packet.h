@@ -38,10 +38,11 @@ struct TimedPacket {
 // and the packet is pool slot `handle` (packet_pool.h), `item` unused.
 class PacketExtension : public tlm::tlm_extension<PacketExtension> {
   public:
-    TimedPacket item;
+    // What a hop by handle reads, on the object's first cache line; the copied packet after.
     BufferSpace *credit = nullptr;
     PacketPool *pool = nullptr;
     uint32_t handle = 0;
+    TimedPacket item;
     tlm::tlm_extension_base *clone() const override { return new PacketExtension(*this); }
     void copy_from(const tlm::tlm_extension_base &other) override
     {

@@ -6,7 +6,7 @@ namespace torusrt {
 ToroidalLink::ToroidalLink(sc_core::sc_module_name name, const MachineConfig &config, int from, int to, int dir)
     : sc_module(name), socket("socket"), in("in"),
       m_packet_time(rt_timing_link_packet_us(&config.timing), sc_core::SC_US),
-      m_packet_bytes(config.timing.packet_bytes), m_dir(dir), m_spaces(config.queue_capacity), m_from(from), m_to(to)
+      m_dir(dir), m_packet_bytes(config.timing.packet_bytes), m_spaces(config.queue_capacity), m_from(from), m_to(to)
 {
     in.bind(*this);
     m_ext = new PacketExtension;
@@ -31,27 +31,27 @@ void ToroidalLink::accept(const TimedPacket &p)
     q = p;
     q.reserved = false;
     // A thread that waited for room sends no earlier than now.
-    if (q.stamp < sc_core::sc_time_stamp()) q.stamp = sc_core::sc_time_stamp();
+    sc_core::sc_time now = sc_core::sc_time_stamp();
+    if (q.stamp < now) q.stamp = now;
     m_ext->pool = nullptr;
-    send(q);
+    send(q, now);
 }
 
-void ToroidalLink::accept_pooled(PacketPool &pool, uint32_t handle)
+void ToroidalLink::accept_pooled(PacketPool &pool, uint32_t handle, const sc_core::sc_time &now)
 {
     TimedPacket &p = pool.at(handle);
     if (!p.reserved) space_for(p).take_blocking(); // room was checked: does not wait
     p.reserved = false;
-    if (p.stamp < sc_core::sc_time_stamp()) p.stamp = sc_core::sc_time_stamp();
+    if (p.stamp < now) p.stamp = now;
     m_ext->pool = &pool;
     m_ext->handle = handle;
-    send(p);
+    send(p, now);
 }
 
-void ToroidalLink::send(TimedPacket &p)
+void ToroidalLink::send(TimedPacket &p, const sc_core::sc_time &now)
 {
     sc_core::sc_time start = p.stamp > m_free_at ? p.stamp : m_free_at; // cannot start before it was sent
     m_free_at = start + m_packet_time;
-    m_busy += m_packet_time;
     m_packets++;
     m_bytes += m_packet_bytes;
     if (m_tracing) {
@@ -64,8 +64,8 @@ void ToroidalLink::send(TimedPacket &p)
     m_trans.set_data_ptr(reinterpret_cast<unsigned char *>(&p.packet));
     m_trans.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
     // Annotated delay: queueing behind earlier packets plus serialisation.
-    sc_core::sc_time delay = m_free_at - sc_core::sc_time_stamp();
-    socket->b_transport(m_trans, delay);
+    sc_core::sc_time delay = m_free_at - now;
+    m_fw->b_transport(m_trans, delay);
     if (m_trans.is_response_error()) SC_REPORT_FATAL(name(), "the receiving communication unit refused a packet");
 }
 

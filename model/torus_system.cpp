@@ -58,7 +58,7 @@ TorusSystem::TorusSystem(sc_core::sc_module_name name, const MachineConfig &conf
             auto link = std::make_unique<ToroidalLink>(lname.c_str(), config, n, to, dir);
             m_comm[n]->link_out.bind(link->in);
             m_comm[n]->set_link_port(dir, port++);
-            m_comm[n]->set_link(dir, *link);
+            m_comm[n]->set_link(dir, *link, *m_comm[to]);
             link->socket.bind(m_comm[to]->link_in);
             m_links.push_back(std::move(link));
         }
