@@ -21,7 +21,7 @@ void PacketQueue::remove(size_t index)
 {
     BufferSpace &space = space_for(m_items[index]);
     if (index == 0) m_items.pop_front();
-    else m_items.erase(index);
+    else m_items.erase(m_items.begin() + static_cast<std::ptrdiff_t>(index));
     m_depth = static_cast<int>(m_items.size());
     space.release();
 }

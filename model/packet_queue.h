@@ -16,11 +16,11 @@
 // unless empty(), on its own retry event); a thread calls the blocking take_first().
 #pragma once
 
+#include <deque>
 #include <string>
 #include <systemc>
 
 #include "class_buffers.h"
-#include "packet_ring.h"
 #include "primary_source.h"
 #include "timed_packet.h"
 
@@ -104,7 +104,7 @@ class PacketQueue {
 
     std::string m_name;
     ClassBuffers m_spaces;
-    PacketRing<TimedPacket> m_items;
+    std::deque<TimedPacket> m_items;
     sc_core::sc_event m_not_empty;
     size_t m_high_water = 0;
     int m_depth = 0;
