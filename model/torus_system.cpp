@@ -17,8 +17,11 @@ TorusSystem::TorusSystem(sc_core::sc_module_name name, const MachineConfig &conf
     sc_core::sc_time lookahead = config.style == TimingStyle::lt ? sc_core::sc_time(config.quantum_us, sc_core::SC_US)
                                                                  : sc_core::SC_ZERO_TIME;
     // Where the outcome depends on which of two simultaneous processes runs first, the calendar
-    // would change it (wake_calendar.h): those machines keep their per-unit timed events.
-    if (config.cluster == 1 && lookahead == sc_core::SC_ZERO_TIME && rt_timing_link_packet_us(&config.timing) > 0)
+    // would change it (wake_calendar.h): those machines keep their per-unit timed events. Below
+    // kCalendarMinNodes the per-unit events stay warm and cost less than the calendar's heap;
+    // both give the same times there.
+    if (config.cluster == 1 && lookahead == sc_core::SC_ZERO_TIME && rt_timing_link_packet_us(&config.timing) > 0 &&
+        nodes >= kCalendarMinNodes)
         m_calendar = std::make_unique<WakeCalendar>("wake_calendar");
     m_fb = std::make_unique<FrameBuffer>("fb", fb);
     m_host = std::make_unique<Host>("host", config, scene, grid, cell_owner, ledger);
