@@ -30,11 +30,8 @@ void ToroidalLink::accept(const TimedPacket &p)
     TimedPacket &q = m_ext->item;
     q = p;
     q.reserved = false;
-    // A thread that waited for room sends no earlier than now.
-    sc_core::sc_time now = sc_core::sc_time_stamp();
-    if (q.stamp < now) q.stamp = now;
     m_ext->pool = nullptr;
-    send(q, now);
+    send(q, sc_core::sc_time_stamp());
 }
 
 void ToroidalLink::accept_pooled(PacketPool &pool, uint32_t handle, const sc_core::sc_time &now)
@@ -42,7 +39,6 @@ void ToroidalLink::accept_pooled(PacketPool &pool, uint32_t handle, const sc_cor
     TimedPacket &p = pool.at(handle);
     if (!p.reserved) space_for(p).take_blocking(); // room was checked: does not wait
     p.reserved = false;
-    if (p.stamp < now) p.stamp = now;
     m_ext->pool = &pool;
     m_ext->handle = handle;
     send(p, now);
@@ -50,7 +46,10 @@ void ToroidalLink::accept_pooled(PacketPool &pool, uint32_t handle, const sc_cor
 
 void ToroidalLink::send(TimedPacket &p, const sc_core::sc_time &now)
 {
-    sc_core::sc_time start = p.stamp > m_free_at ? p.stamp : m_free_at; // cannot start before it was sent
+    // A packet that waited for room is sent no earlier than now; a crossing cannot start before
+    // the packet was sent, nor before the previous crossing ends.
+    if (p.stamp < now) p.stamp = now;
+    sc_core::sc_time start = p.stamp > m_free_at ? p.stamp : m_free_at;
     m_free_at = start + m_packet_time;
     m_packets++;
     m_bytes += m_packet_bytes;

@@ -78,7 +78,7 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
   private:
     static uint32_t index_of(const TimedPacket &p) { return 2 * p.cls + p.vc; }
     BufferSpace &space_for(const TimedPacket &p) { return m_spaces.at(index_of(p)); }
-    // Sends `p` (the extension's packet), ready to go (slot taken, stamp no earlier than now).
+    // Sends `p` (the extension's packet), its slot taken, at `now` or later (now = sc_time_stamp()).
     void send(TimedPacket &p, const sc_core::sc_time &now);
     void drive_busy_trace();
     void start_of_simulation() override { m_fw = socket.operator->(); }
