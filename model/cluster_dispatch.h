@@ -58,6 +58,7 @@ class ClusterDispatcher : public sc_core::sc_module, public PacketSinkIf {
                       std::vector<IntersectionProcessor *> processors);
 
     void accept(const TimedPacket &p) override { m_inbox.push_blocking(p); }
+    void accept_pooled(PacketPool &pool, uint32_t handle) override { m_inbox.push_pooled(pool, handle); }
     bool can_accept(const TimedPacket &p) const override { return m_inbox.has_room(p); }
     void on_space(const TimedPacket &p, sc_core::sc_event &e) override { m_inbox.space_for(p).on_release(e); }
     BufferSpace *room_for(const TimedPacket &p) override { return &m_inbox.space_for(p); }

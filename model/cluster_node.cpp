@@ -49,9 +49,16 @@ ClusterNode::ClusterNode(sc_core::sc_module_name name, const MachineConfig &conf
 ClusterNode::~ClusterNode() = default;
 
 void ClusterNode::accept(const TimedPacket &p) { m_dispatcher->accept(p); }
+void ClusterNode::accept_pooled(PacketPool &pool, uint32_t handle) { m_dispatcher->accept_pooled(pool, handle); }
 bool ClusterNode::can_accept(const TimedPacket &p) const { return m_dispatcher->can_accept(p); }
 void ClusterNode::on_space(const TimedPacket &p, sc_core::sc_event &e) { m_dispatcher->on_space(p, e); }
 BufferSpace *ClusterNode::room_for(const TimedPacket &p) { return m_dispatcher->room_for(p); }
+
+void ClusterNode::use_pool(PacketPool &pool)
+{
+    m_dispatcher->inbox().use_pool(pool);
+    for (auto &p : m_processors) p->queue().use_pool(pool);
+}
 
 void ClusterNode::register_queues(QueueRegistry &reg)
 {

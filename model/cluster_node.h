@@ -39,10 +39,14 @@ class ClusterNode : public sc_core::sc_module, public PacketSinkIf {
     ~ClusterNode() override;
 
     void accept(const TimedPacket &p) override;
+    void accept_pooled(PacketPool &pool, uint32_t handle) override;
     bool can_accept(const TimedPacket &p) const override;
     void on_space(const TimedPacket &p, sc_core::sc_event &e) override;
     BufferSpace *room_for(const TimedPacket &p) override;
     std::vector<IntersectionProcessor *> processors() const;
+    // The machine's packet pool, for the dispatcher's and the processors' input queues (call at
+    // elaboration).
+    void use_pool(PacketPool &pool);
     void register_queues(QueueRegistry &reg);  // the processors' and the dispatcher's
 
     int node() const { return m_node; }

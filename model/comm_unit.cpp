@@ -167,12 +167,9 @@ bool CommUnit::forward(uint32_t packet)
     }
     (next.local ? m_local : m_transit)++;
     BufferSpace *credit = m_pool->credit(packet);
-    if (next.link) { // the packet goes on by handle
-        next.link->accept_pooled(*m_pool, packet, now);
-    } else {
-        next.sink->accept(p);
-        m_pool->release(packet);
-    }
+    // The packet goes on by handle: into a link, or into the processor side's input queue.
+    if (next.link) next.link->accept_pooled(*m_pool, packet, now);
+    else next.sink->accept_pooled(*m_pool, packet);
     if (credit) credit->release();
     return true;
 }

@@ -54,6 +54,7 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf, pu
     ~IntersectionProcessor() override;
 
     void accept(const TimedPacket &p) override { m_queue.push_blocking(p); }
+    void accept_pooled(PacketPool &pool, uint32_t handle) override { m_queue.push_pooled(pool, handle); }
     bool can_accept(const TimedPacket &p) const override { return m_queue.has_room(p); }
     void on_space(const TimedPacket &p, sc_core::sc_event &e) override { m_queue.space_for(p).on_release(e); }
     BufferSpace *room_for(const TimedPacket &p) override { return &m_queue.space_for(p); }

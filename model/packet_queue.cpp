@@ -1,5 +1,5 @@
-// packet_queue.cpp - FIFO with blocking push/pop on SystemC events, and the ordered offer of
-// packets to a reader that may refuse them.
+// packet_queue.cpp - FIFO of pool handles with blocking push/pop on SystemC events, and the
+// ordered offer of packets to a reader that may refuse them.
 #include "packet_queue.h"
 
 namespace torusrt {
@@ -9,9 +9,27 @@ PacketQueue::PacketQueue(std::string name, unsigned capacity) : m_name(std::move
 void PacketQueue::push_blocking(const TimedPacket &p)
 {
     if (!p.reserved) space_for(p).take_blocking();
-    m_items.push_back(p);
-    m_items.back().reserved = false;
-    m_items.back().from_host = false; // it is in this queue now, holding a slot
+    append(m_pool->add(p, -1));
+}
+
+void PacketQueue::push_pooled(PacketPool &pool, uint32_t handle)
+{
+    if (&pool != m_pool) {
+        push_blocking(pool.at(handle));
+        pool.release(handle);
+        return;
+    }
+    const TimedPacket &p = pool.at(handle);
+    if (!p.reserved) space_for(p).take_blocking();
+    append(handle);
+}
+
+void PacketQueue::append(uint32_t handle)
+{
+    TimedPacket &p = m_pool->at(handle);
+    p.reserved = false;
+    p.from_host = false; // it is in this queue now, holding a slot
+    m_items.push_back(handle);
     m_depth = static_cast<int>(m_items.size());
     if (m_items.size() > m_high_water) m_high_water = m_items.size();
     if (m_reader_waiting) m_not_empty.notify(sc_core::SC_ZERO_TIME);
@@ -19,10 +37,12 @@ void PacketQueue::push_blocking(const TimedPacket &p)
 
 void PacketQueue::remove(size_t index)
 {
-    BufferSpace &space = space_for(m_items[index]);
+    uint32_t handle = m_items[index];
+    BufferSpace &space = space_for(m_pool->at(handle));
     if (index == 0) m_items.pop_front();
     else m_items.erase(m_items.begin() + static_cast<std::ptrdiff_t>(index));
     m_depth = static_cast<int>(m_items.size());
+    m_pool->release(handle);
     space.release();
 }
 
@@ -42,7 +62,7 @@ bool PacketQueue::try_take_first(TimedPacket &taken)
         return true;
     }
     if (!m_items.empty()) {
-        taken = m_items.front();
+        taken = m_pool->at(m_items.front());
         remove(0);
         prefetch_front();
         return true;

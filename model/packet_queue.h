@@ -6,14 +6,20 @@
 // (ties to the primary), so with host_inject = 0 a node works through all its primaries, in
 // pixel order, before the network packets, as if all had been injected at time 0.
 //
+// Storage: the queue holds 32-bit handles into a packet pool (packet_pool.h), the machine's one
+// (use_pool) or, for a queue alone, its own. A packet delivered from the network by handle
+// (push_pooled, from the same pool) stays in its slot: a push copies nothing and allocates
+// nothing; a packet pushed by value (push_blocking) is copied into a slot once. The slot is
+// freed when a reader takes the packet.
+//
 // try_take() offers the packets to the reader in that order (the primary first when due, then
 // the queued packets oldest first, then a primary not yet due) and removes the first it accepts;
 // a reader that accepts every packet sees a plain FIFO (try_take_first). Under the class scheme
 // the reader accepts a packet only once the buffers its outputs go to have room, so it never
-// waits while holding a packet (flow_control.h). The reader looks at each candidate in place;
-// only the packet taken is copied out. A process that must not wait (an SC_METHOD) calls the
-// try_ forms and, when nothing was taken, wait_reader() and then waits on not_empty_event() (and,
-// unless empty(), on its own retry event); a thread calls the blocking take_first().
+// waits while holding a packet (flow_control.h). The reader looks at each candidate in its pool
+// slot; only the packet taken is copied out. A process that must not wait (an SC_METHOD) calls
+// the try_ forms and, when nothing was taken, wait_reader() and then waits on not_empty_event()
+// (and, unless empty(), on its own retry event); a thread calls the blocking take_first().
 #pragma once
 
 #include <deque>
@@ -21,6 +27,7 @@
 #include <systemc>
 
 #include "class_buffers.h"
+#include "packet_pool.h"
 #include "primary_source.h"
 #include "timed_packet.h"
 
@@ -30,6 +37,11 @@ class PacketQueue {
   public:
     // capacity 0 = unbounded.
     PacketQueue(std::string name, unsigned capacity);
+    PacketQueue(const PacketQueue &) = delete;
+    PacketQueue &operator=(const PacketQueue &) = delete;
+
+    // Keeps the packets in `pool`, the machine's (call at elaboration, while empty).
+    void use_pool(PacketPool &pool) { m_pool = &pool; }
 
     // The buffer `p` takes a slot in.
     BufferSpace &space_for(const TimedPacket &p) { return m_spaces.at(p.cls); }
@@ -42,6 +54,9 @@ class PacketQueue {
     // Appends, waiting (in the calling thread) while its class is full; a reserved packet
     // already holds its slot.
     void push_blocking(const TimedPacket &p);
+    // The same for packet `handle` of `pool`: from this queue's pool it stays in its slot, which
+    // the queue now owns; from another it is copied in and released there.
+    void push_pooled(PacketPool &pool, uint32_t handle);
     // Removes the oldest packet, waiting while the queue is empty.
     TimedPacket pop_blocking();
     // Removes the first packet (in the order above) that `accept` (a callable taking a
@@ -87,6 +102,9 @@ class PacketQueue {
     int &depth_trace() { return m_depth; }
 
   private:
+    // Appends pool packet `handle`, its buffer slot taken.
+    void append(uint32_t handle);
+    // Removes the packet at `index`, freeing its buffer slot and its pool slot.
     void remove(size_t index);
     void wait_for(sc_core::sc_event *retry);
     // The next packet a reader takes has waited long and is cold: fetch it into the cache
@@ -94,17 +112,21 @@ class PacketQueue {
     void prefetch_front() const
     {
         if (m_items.empty()) return;
-        const char *p = reinterpret_cast<const char *>(&m_items.front());
+        const char *p = reinterpret_cast<const char *>(&m_pool->at(m_items.front()));
         for (size_t b = 0; b < sizeof(TimedPacket); b += 64) __builtin_prefetch(p + b);
+        __builtin_prefetch(p + sizeof(TimedPacket) - 1); // the slot need not start a line
     }
     bool primary_first() const
     {
-        return m_source->pending(m_node) && (m_items.empty() || m_source->next_time(m_node) <= m_items.front().stamp);
+        return m_source->pending(m_node) &&
+               (m_items.empty() || m_source->next_time(m_node) <= m_pool->at(m_items.front()).stamp);
     }
 
     std::string m_name;
     ClassBuffers m_spaces;
-    std::deque<TimedPacket> m_items;
+    PacketPool m_own_pool; // a queue alone (tests); the machine's queues share its pool
+    PacketPool *m_pool = &m_own_pool;
+    std::deque<uint32_t> m_items; // pool handles, oldest first
     sc_core::sc_event m_not_empty;
     size_t m_high_water = 0;
     int m_depth = 0;
@@ -127,8 +149,9 @@ template <class Accept> bool PacketQueue::try_take(Accept &&accept, TimedPacket 
         }
     }
     for (size_t i = 0; i < m_items.size(); i++) {
-        if (!accept(static_cast<const TimedPacket &>(m_items[i]))) continue;
-        if (taken) *taken = m_items[i];
+        const TimedPacket &c = m_pool->at(m_items[i]);
+        if (!accept(c)) continue;
+        if (taken) *taken = c;
         remove(i);
         return true;
     }

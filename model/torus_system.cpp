@@ -39,6 +39,7 @@ TorusSystem::TorusSystem(sc_core::sc_module_name name, const MachineConfig &conf
             ip->out.bind(m_comm[n]->in);
             ip->fb_socket.bind(m_fb->socket);
             m_comm[n]->local.bind(ip->in);
+            ip->queue().use_pool(m_pool);
             ip->queue().attach(&m_host->primaries(), n);
             m_ips.push_back(std::move(ip));
         } else {
@@ -47,6 +48,7 @@ TorusSystem::TorusSystem(sc_core::sc_module_name name, const MachineConfig &conf
             cl->to_comm_unit.bind(m_comm[n]->in);
             for (auto *p : cl->processors()) p->fb_socket.bind(m_fb->socket);
             m_comm[n]->local.bind(cl->from_comm_unit);
+            cl->use_pool(m_pool);
             cl->dispatcher().inbox().attach(&m_host->primaries(), n);
             m_clusters.push_back(std::move(cl));
         }
