@@ -6,11 +6,7 @@ namespace torusrt {
 
 PacketQueue::PacketQueue(std::string name, unsigned capacity) : m_name(std::move(name)), m_spaces(capacity) {}
 
-void PacketQueue::push_blocking(const TimedPacket &p)
-{
-    if (!p.reserved) space_for(p).take_blocking();
-    append(m_pool->add(p, -1));
-}
+void PacketQueue::push_blocking(const TimedPacket &p) { push_pooled(*m_pool, m_pool->add(p, -1)); }
 
 void PacketQueue::push_pooled(PacketPool &pool, uint32_t handle)
 {

@@ -44,14 +44,6 @@ void ToroidalLink::accept_pooled(PacketPool &pool, uint32_t handle, const sc_cor
     send(p, now);
 }
 
-void ToroidalLink::accept_pooled(PacketPool &pool, uint32_t handle)
-{
-    TimedPacket &p = pool.at(handle);
-    if (!p.reserved) space_for(p).take_blocking();
-    p.reserved = true; // its slot is taken now
-    accept_pooled(pool, handle, sc_core::sc_time_stamp());
-}
-
 void ToroidalLink::send(TimedPacket &p, const sc_core::sc_time &now)
 {
     // A packet that waited for room is sent no earlier than now; a crossing cannot start before

@@ -37,8 +37,8 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
     // The same for a packet of `pool`, which crosses by handle (a method caller, after
     // can_accept(); the receiver takes the handle on). `now` = sc_time_stamp(), read once a hop.
     void accept_pooled(PacketPool &pool, uint32_t handle, const sc_core::sc_time &now);
-    // Any caller (a thread may wait for room).
-    void accept_pooled(PacketPool &pool, uint32_t handle) override;
+    // Any other caller of the sink interface (a thread may wait for room): copies the packet in.
+    using PacketSinkIf::accept_pooled;
     bool can_accept(const TimedPacket &p) const override
     {
         if (m_spaces.unbounded() || p.reserved) return true;
