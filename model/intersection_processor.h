@@ -40,7 +40,8 @@
 
 namespace torusrt {
 
-class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf, public WakeCalendar::Client {
+class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf, public WakeCalendar::Client,
+                              public PacketQueue::Reader {
   public:
     sc_core::sc_export<PacketSinkIf> in;                                      // packets to process
     sc_core::sc_port<PacketSinkIf> out;                                       // new and forwarded packets
@@ -95,6 +96,7 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf, pu
     void run_thread();
     void on_wake();
     void wake_due() override { on_wake(); } // the calendar's timer
+    void queue_ready() override { on_wake(); } // a packet joined the empty queue (told at once)
     void on_room();
     void run_method();
     void end_of_elaboration() override;

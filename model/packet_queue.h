@@ -72,6 +72,16 @@ class PacketQueue {
     // reader's next try.
     void wait_reader() { m_reader_waiting = true; }
     sc_core::sc_event &not_empty_event() { return m_not_empty; }
+    // A reader told at once, in the writer's delta, instead of through not_empty_event() one
+    // delta on: it must itself run only after the processes runnable now (a flat processor).
+    class Reader {
+      public:
+        virtual void queue_ready() = 0;
+
+      protected:
+        ~Reader() = default;
+    };
+    void tell_reader_at_once(Reader *reader) { m_ready_reader = reader; }
     // Feeds this queue with `source`'s primaries for entry node `node`.
     void attach(PrimarySource *source, int node)
     {
@@ -131,6 +141,7 @@ class PacketQueue {
     size_t m_high_water = 0;
     int m_depth = 0;
     bool m_reader_waiting = false;
+    Reader *m_ready_reader = nullptr;
     PrimarySource *m_source = nullptr;
     int m_node = -1;
 };

@@ -23,6 +23,12 @@ TorusSystem::TorusSystem(sc_core::sc_module_name name, const MachineConfig &conf
     if (config.cluster == 1 && lookahead == sc_core::SC_ZERO_TIME && rt_timing_link_packet_us(&config.timing) > 0 &&
         nodes >= kCalendarMinNodes)
         m_calendar = std::make_unique<WakeCalendar>("wake_calendar");
+    // A flat approximately-timed machine with a positive link time and unbounded buffers routes
+    // a processor's packets for other nodes as they are handed over, and wakes a waiting
+    // processor in the delta its packet arrives: the order of what is routed and taken up at
+    // each time is the same as one delta later, so are the times.
+    bool at_once = config.cluster == 1 && lookahead == sc_core::SC_ZERO_TIME &&
+                   rt_timing_link_packet_us(&config.timing) > 0 && config.queue_capacity == 0;
     m_fb = std::make_unique<FrameBuffer>("fb", fb);
     m_host = std::make_unique<Host>("host", config, scene, grid, cell_owner, ledger);
     m_host->fb_socket.bind(m_fb->socket);
@@ -31,6 +37,7 @@ TorusSystem::TorusSystem(sc_core::sc_module_name name, const MachineConfig &conf
                                                     lookahead));
         m_comm[n]->set_flow(config.flow);
         m_comm[n]->use_pool(m_pool);
+        m_comm[n]->route_at_once(at_once);
         if (m_calendar) m_comm[n]->use_calendar(*m_calendar); // node by node: the order of simultaneous wakes
         if (config.cluster == 1) {
             auto ip = std::make_unique<IntersectionProcessor>(("ip_" + std::to_string(n)).c_str(), config, scene,
@@ -40,6 +47,7 @@ TorusSystem::TorusSystem(sc_core::sc_module_name name, const MachineConfig &conf
             ip->fb_socket.bind(m_fb->socket);
             m_comm[n]->local.bind(ip->in);
             ip->queue().use_pool(m_pool);
+            if (at_once) ip->queue().tell_reader_at_once(ip.get());
             ip->queue().attach(&m_host->primaries(), n);
             m_ips.push_back(std::move(ip));
         } else {
