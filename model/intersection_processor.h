@@ -34,6 +34,7 @@
 #include "rt_ops.h"
 #include "rt_scene.h"
 #include "rt_step.h"
+#include "activation_queue.h"
 #include "sim_config.h"
 #include "time_keeper.h"
 #include "wake_calendar.h"
@@ -41,7 +42,8 @@
 namespace torusrt {
 
 class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf, public WakeCalendar::Client,
-                              public PacketQueue::Reader {
+                              public PacketQueue::Reader,
+                              public ActivationQueue::Client {
   public:
     sc_core::sc_export<PacketSinkIf> in;                                      // packets to process
     sc_core::sc_port<PacketSinkIf> out;                                       // new and forwarded packets
@@ -75,6 +77,9 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf, pu
     int index() const { return m_index; }
     // The machine's wake calendar, which then ends the method driver's timed waits (call at
     // elaboration; without it, and for a zero wait, the processor notifies its own timer).
+    // The machine's activation queue, which then runs this processor's state machine when it is
+    // woken (call at elaboration; a processor alone notifies an event of its own).
+    void use_activations(ActivationQueue &activations) { m_activations = &activations; }
     void use_calendar(WakeCalendar &calendar)
     {
         m_calendar = &calendar;
@@ -98,6 +103,13 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf, pu
     void wake_due() override { on_wake(); } // the calendar's timer
     void queue_ready() override { on_wake(); } // a packet joined the empty queue (told at once)
     void on_room();
+    // Runs the machine after the processes runnable now (once however often it is asked).
+    void ask_to_act();
+    void activate() override
+    {
+        m_act_asked = false;
+        run_method();
+    }
     void run_method();
     void end_of_elaboration() override;
     // Runs the step of `tp` (updated in place) and lists its outputs; under the class scheme
@@ -128,6 +140,8 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf, pu
     sc_core::sc_event m_timer;          // method driver: the owed wait is over
     sc_core::sc_event m_act;            // method driver: run the machine (notified at once)
     bool m_threaded;
+    ActivationQueue *m_activations = nullptr;
+    bool m_act_asked = false;
     WakeCalendar *m_calendar = nullptr;
     int m_calendar_id = -1;
     Stage m_stage = Stage::top;

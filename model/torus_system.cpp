@@ -29,6 +29,7 @@ TorusSystem::TorusSystem(sc_core::sc_module_name name, const MachineConfig &conf
     // each time is the same as one delta later, so are the times.
     bool at_once = config.cluster == 1 && lookahead == sc_core::SC_ZERO_TIME &&
                    rt_timing_link_packet_us(&config.timing) > 0 && config.queue_capacity == 0;
+    if (config.cluster == 1) m_activations = std::make_unique<ActivationQueue>("activations");
     m_fb = std::make_unique<FrameBuffer>("fb", fb);
     m_host = std::make_unique<Host>("host", config, scene, grid, cell_owner, ledger);
     m_host->fb_socket.bind(m_fb->socket);
@@ -43,6 +44,7 @@ TorusSystem::TorusSystem(sc_core::sc_module_name name, const MachineConfig &conf
             auto ip = std::make_unique<IntersectionProcessor>(("ip_" + std::to_string(n)).c_str(), config, scene,
                                                               grid, cell_owner, n, n, ledger);
             if (m_calendar) ip->use_calendar(*m_calendar); // after its node's comm unit
+            ip->use_activations(*m_activations);
             ip->out.bind(m_comm[n]->in);
             ip->fb_socket.bind(m_fb->socket);
             m_comm[n]->local.bind(ip->in);
