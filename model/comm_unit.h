@@ -7,7 +7,10 @@
 // arrival queue's fixed order (time, source, sequence), but never one pushed in the same delta
 // cycle: that one waits for the next delta, so whether its sender ran before or after the
 // delivery method does not matter. Sources: incoming link ports 0..L-1, then the processor side
-// (L). Host primaries go straight to the local processor side (they never wait).
+// (L). Host primaries go straight to the local processor side (they never wait). With
+// route_at_once (flat, approximately timed, positive link time, unbounded buffers) a packet from
+// the processor side for another node is routed as it is handed over when no arrival is due:
+// the processor runs after the delta's deliveries, so this is the order of one delta later.
 //
 // Timed wake-up: in a machine that has one (use_calendar), the unit asks the machine's wake
 // calendar (wake_calendar.h) to wake it at its earliest arrival time, and the calendar calls

@@ -8,10 +8,11 @@
 //
 // Process: one state machine (act(): take up, wait for the arrival, fetch, step, hand over) that
 // runs until it must wait and says what for. On a flat torus SC_METHODs drive it: the one woken
-// (by the timer, the queue or room for the outputs) notifies m_act at once, and the method on
-// m_act runs the machine later in the same evaluation phase, after every process that was
-// runnable when it began, where a thread would run (after the delta's methods); so it takes up
-// a packet after every delivery and release of that delta cycle, whichever SystemC ran first.
+// (by the timer, the queue or room for the outputs) asks the machine's activation queue
+// (activation_queue.h) to run the machine later in the same evaluation phase, after every
+// process that was runnable when it began, where a thread would run (after the delta's methods);
+// so it takes up a packet after every delivery and release of that delta cycle, whichever
+// SystemC ran first. (A processor alone notifies its own m_act at once, to the same effect.)
 // Its timed waits end through the machine's wake calendar (wake_calendar.h) where the machine has
 // one, which calls on_wake's work in the first delta of the time, as the timer event would.
 // In a cluster an SC_THREAD drives the same machine, because crossing the cluster bus (packets

@@ -10,7 +10,7 @@ namespace torusrt {
 
 TorusSystem::TorusSystem(sc_core::sc_module_name name, const MachineConfig &config, const rt_scene *scene,
                          const rt_grid *grid, const int32_t *cell_owner, PacketLedger &ledger,
-                         rt_framebuffer *fb)
+                         rt_framebuffer *fb, HandOverTiming hand_over)
     : sc_module(name), m_routing(config.ips, config.topology == Topology::torus)
 {
     int nodes = config.node_count();
@@ -27,7 +27,7 @@ TorusSystem::TorusSystem(sc_core::sc_module_name name, const MachineConfig &conf
     // a processor's packets for other nodes as they are handed over, and wakes a waiting
     // processor in the delta its packet arrives: the order of what is routed and taken up at
     // each time is the same as one delta later, so are the times.
-    bool at_once = config.cluster == 1 && lookahead == sc_core::SC_ZERO_TIME &&
+    bool at_once = hand_over == HandOverTiming::at_once && config.cluster == 1 && lookahead == sc_core::SC_ZERO_TIME &&
                    rt_timing_link_packet_us(&config.timing) > 0 && config.queue_capacity == 0;
     if (config.cluster == 1) m_activations = std::make_unique<ActivationQueue>("activations");
     m_fb = std::make_unique<FrameBuffer>("fb", fb);

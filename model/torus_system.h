@@ -25,10 +25,17 @@ namespace torusrt {
 
 class ClusterNode;
 
+// Whether a flat approximately-timed machine with a positive link time and unbounded buffers
+// takes a processor's packets for other nodes on as they are handed over and tells a waiting
+// processor of a packet in the delta it arrives (at_once, what every run uses), or one delta
+// later as every other machine does (next_delta: for the test that both give the same times).
+enum class HandOverTiming { at_once, next_delta };
+
 class TorusSystem : public sc_core::sc_module {
   public:
     TorusSystem(sc_core::sc_module_name name, const MachineConfig &config, const rt_scene *scene,
-                const rt_grid *grid, const int32_t *cell_owner, PacketLedger &ledger, rt_framebuffer *fb);
+                const rt_grid *grid, const int32_t *cell_owner, PacketLedger &ledger, rt_framebuffer *fb,
+                HandOverTiming hand_over = HandOverTiming::at_once);
     ~TorusSystem() override;
 
     const Routing &routing() const { return m_routing; }
