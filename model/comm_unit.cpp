@@ -107,6 +107,15 @@ void CommUnit::accept(const TimedPacket &p)
     while (processor_held()) sc_core::wait(m_processor_room);
     uint32_t packet = m_pool->add(p, owner_of(p));
     m_pool->at(packet).last_dir = -1; // it leaves the processor side
+    sc_core::sc_time now = sc_core::sc_time_stamp();
+    // Bound for a link: routed now, as it would be one delta on (nothing else is routed at this
+    // time any more). Bound for this node's own processor, it waits for that delta, so the
+    // processor takes up its next packet before this one joins its queue.
+    if (m_route_at_once && p.stamp <= now && m_pool->owner(packet) != m_node &&
+        (m_arrivals.empty() || m_arrivals.next_time() > now)) {
+        m_pool->credit(packet) = nullptr;
+        if (forward(packet)) return; // unbounded buffers: it always moves on
+    }
     enqueue(packet, p.stamp, processor_source(), nullptr);
 }
 

@@ -7,7 +7,10 @@
 // arrival queue's fixed order (time, source, sequence), but never one pushed in the same delta
 // cycle: that one waits for the next delta, so whether its sender ran before or after the
 // delivery method does not matter. Sources: incoming link ports 0..L-1, then the processor side
-// (L). Host primaries go straight to the local processor side (they never wait).
+// (L). Host primaries go straight to the local processor side (they never wait). With
+// route_at_once (flat, approximately timed, positive link time, unbounded buffers) a packet from
+// the processor side for another node is routed as it is handed over when no arrival is due:
+// the processor runs after the delta's deliveries, so this is the order of one delta later.
 //
 // Timed wake-up: in a machine that has one (use_calendar), the unit asks the machine's wake
 // calendar (wake_calendar.h) to wake it at its earliest arrival time, and the calendar calls
@@ -68,6 +71,11 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf, public WakeCale
     bool can_accept(const TimedPacket &p) const override { return p.from_host || !processor_held(); }
     void on_space(const TimedPacket &p, sc_core::sc_event &e) override;
     BufferSpace *room_for(const TimedPacket &p) override;
+    // Packets from the processor side are routed as they are handed over, not one delta later
+    // (call at elaboration, for a flat approximately-timed machine with a positive link time and
+    // unbounded buffers: there the processor hands over after the deliveries of its time, so
+    // the order is the same).
+    void route_at_once(bool on) { m_route_at_once = on; }
     // Selects the flow-control scheme (virtual channels; default none).
     void set_flow(FlowControl flow) { m_flow = flow; }
     // Records which link_out port index serves direction `dir` (call at elaboration).
@@ -130,6 +138,7 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf, public WakeCale
     int m_processor_source = 0; // = the number of incoming links, known after elaboration
     sc_core::sc_time m_lookahead; // the quantum when loosely timed, else 0
     size_t m_held_total = 0; // packets held (checked first: usually none)
+    bool m_route_at_once = false;
     uint64_t m_local = 0, m_transit = 0;
     int m_node;
     FlowControl m_flow = FlowControl::none;

@@ -209,13 +209,24 @@ void IntersectionProcessor::run_thread()
 void IntersectionProcessor::on_wake()
 {
     m_woken = true;
-    m_act.notify(); // immediate: run_method runs after the processes runnable now
+    ask_to_act();
 }
 
 void IntersectionProcessor::on_room()
 {
     m_room_woken = true;
-    m_act.notify();
+    ask_to_act();
+}
+
+void IntersectionProcessor::ask_to_act()
+{
+    if (!m_activations) {
+        m_act.notify(); // immediate: run_method runs after the processes runnable now
+        return;
+    }
+    if (m_act_asked) return;
+    m_act_asked = true;
+    m_activations->request(*this);
 }
 
 void IntersectionProcessor::run_method()

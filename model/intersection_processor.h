@@ -8,10 +8,11 @@
 //
 // Process: one state machine (act(): take up, wait for the arrival, fetch, step, hand over) that
 // runs until it must wait and says what for. On a flat torus SC_METHODs drive it: the one woken
-// (by the timer, the queue or room for the outputs) notifies m_act at once, and the method on
-// m_act runs the machine later in the same evaluation phase, after every process that was
-// runnable when it began, where a thread would run (after the delta's methods); so it takes up
-// a packet after every delivery and release of that delta cycle, whichever SystemC ran first.
+// (by the timer, the queue or room for the outputs) asks the machine's activation queue
+// (activation_queue.h) to run the machine later in the same evaluation phase, after every
+// process that was runnable when it began, where a thread would run (after the delta's methods);
+// so it takes up a packet after every delivery and release of that delta cycle, whichever
+// SystemC ran first. (A processor alone notifies its own m_act at once, to the same effect.)
 // Its timed waits end through the machine's wake calendar (wake_calendar.h) where the machine has
 // one, which calls on_wake's work in the first delta of the time, as the timer event would.
 // In a cluster an SC_THREAD drives the same machine, because crossing the cluster bus (packets
@@ -34,13 +35,16 @@
 #include "rt_ops.h"
 #include "rt_scene.h"
 #include "rt_step.h"
+#include "activation_queue.h"
 #include "sim_config.h"
 #include "time_keeper.h"
 #include "wake_calendar.h"
 
 namespace torusrt {
 
-class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf, public WakeCalendar::Client {
+class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf, public WakeCalendar::Client,
+                              public PacketQueue::Reader,
+                              public ActivationQueue::Client {
   public:
     sc_core::sc_export<PacketSinkIf> in;                                      // packets to process
     sc_core::sc_port<PacketSinkIf> out;                                       // new and forwarded packets
@@ -74,6 +78,9 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf, pu
     int index() const { return m_index; }
     // The machine's wake calendar, which then ends the method driver's timed waits (call at
     // elaboration; without it, and for a zero wait, the processor notifies its own timer).
+    // The machine's activation queue, which then runs this processor's state machine when it is
+    // woken (call at elaboration; a processor alone notifies an event of its own).
+    void use_activations(ActivationQueue &activations) { m_activations = &activations; }
     void use_calendar(WakeCalendar &calendar)
     {
         m_calendar = &calendar;
@@ -95,7 +102,15 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf, pu
     void run_thread();
     void on_wake();
     void wake_due() override { on_wake(); } // the calendar's timer
+    void queue_ready() override { on_wake(); } // a packet joined the empty queue (told at once)
     void on_room();
+    // Runs the machine after the processes runnable now (once however often it is asked).
+    void ask_to_act();
+    void activate() override
+    {
+        m_act_asked = false;
+        run_method();
+    }
     void run_method();
     void end_of_elaboration() override;
     // Runs the step of `tp` (updated in place) and lists its outputs; under the class scheme
@@ -126,6 +141,8 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf, pu
     sc_core::sc_event m_timer;          // method driver: the owed wait is over
     sc_core::sc_event m_act;            // method driver: run the machine (notified at once)
     bool m_threaded;
+    ActivationQueue *m_activations = nullptr;
+    bool m_act_asked = false;
     WakeCalendar *m_calendar = nullptr;
     int m_calendar_id = -1;
     Stage m_stage = Stage::top;

@@ -28,7 +28,9 @@ void PacketQueue::append(uint32_t handle)
     m_items.push_back(handle);
     m_depth = static_cast<int>(m_items.size());
     if (m_items.size() > m_high_water) m_high_water = m_items.size();
-    if (m_reader_waiting) m_not_empty.notify(sc_core::SC_ZERO_TIME);
+    if (!m_reader_waiting) return;
+    if (m_ready_reader) m_ready_reader->queue_ready();
+    else m_not_empty.notify(sc_core::SC_ZERO_TIME);
 }
 
 void PacketQueue::remove(size_t index)

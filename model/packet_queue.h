@@ -19,7 +19,8 @@
 // waits while holding a packet (flow_control.h). The reader looks at each candidate in its pool
 // slot; only the packet taken is copied out. A process that must not wait (an SC_METHOD) calls
 // the try_ forms and, when nothing was taken, wait_reader() and then waits on not_empty_event()
-// (and, unless empty(), on its own retry event); a thread calls the blocking take_first().
+// (and, unless empty(), on its own retry event); a thread calls the blocking take_first(). A
+// reader set with tell_reader_at_once() is called instead, in the pushing delta.
 #pragma once
 
 #include <deque>
@@ -68,10 +69,20 @@ class PacketQueue {
     // Blocking form of try_take: waits (in the calling thread) while there is none, on the queue
     // and, once one was refused, on `retry`.
     template <class Accept> TimedPacket take_first(Accept &&accept, sc_core::sc_event &retry);
-    // After a try that took nothing: a push (or wake()) notifies not_empty_event() until the
-    // reader's next try.
+    // After a try that took nothing: a push (or wake()) notifies not_empty_event() (or, for a
+    // push, tells the reader set below) until the reader's next try.
     void wait_reader() { m_reader_waiting = true; }
     sc_core::sc_event &not_empty_event() { return m_not_empty; }
+    // A reader told at once, in the writer's delta, instead of through not_empty_event() one
+    // delta on: it must itself run only after the processes runnable now (a flat processor).
+    class Reader {
+      public:
+        virtual void queue_ready() = 0;
+
+      protected:
+        ~Reader() = default;
+    };
+    void tell_reader_at_once(Reader *reader) { m_ready_reader = reader; }
     // Feeds this queue with `source`'s primaries for entry node `node`.
     void attach(PrimarySource *source, int node)
     {
@@ -131,6 +142,7 @@ class PacketQueue {
     size_t m_high_water = 0;
     int m_depth = 0;
     bool m_reader_waiting = false;
+    Reader *m_ready_reader = nullptr;
     PrimarySource *m_source = nullptr;
     int m_node = -1;
 };

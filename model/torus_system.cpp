@@ -10,7 +10,7 @@ namespace torusrt {
 
 TorusSystem::TorusSystem(sc_core::sc_module_name name, const MachineConfig &config, const rt_scene *scene,
                          const rt_grid *grid, const int32_t *cell_owner, PacketLedger &ledger,
-                         rt_framebuffer *fb)
+                         rt_framebuffer *fb, HandOverTiming hand_over)
     : sc_module(name), m_routing(config.ips, config.topology == Topology::torus)
 {
     int nodes = config.node_count();
@@ -23,6 +23,13 @@ TorusSystem::TorusSystem(sc_core::sc_module_name name, const MachineConfig &conf
     if (config.cluster == 1 && lookahead == sc_core::SC_ZERO_TIME && rt_timing_link_packet_us(&config.timing) > 0 &&
         nodes >= kCalendarMinNodes)
         m_calendar = std::make_unique<WakeCalendar>("wake_calendar");
+    // A flat approximately-timed machine with a positive link time and unbounded buffers routes
+    // a processor's packets for other nodes as they are handed over, and wakes a waiting
+    // processor in the delta its packet arrives: the order of what is routed and taken up at
+    // each time is the same as one delta later, so are the times.
+    bool at_once = hand_over == HandOverTiming::at_once && config.cluster == 1 && lookahead == sc_core::SC_ZERO_TIME &&
+                   rt_timing_link_packet_us(&config.timing) > 0 && config.queue_capacity == 0;
+    if (config.cluster == 1) m_activations = std::make_unique<ActivationQueue>("activations");
     m_fb = std::make_unique<FrameBuffer>("fb", fb);
     m_host = std::make_unique<Host>("host", config, scene, grid, cell_owner, ledger);
     m_host->fb_socket.bind(m_fb->socket);
@@ -31,15 +38,18 @@ TorusSystem::TorusSystem(sc_core::sc_module_name name, const MachineConfig &conf
                                                     lookahead));
         m_comm[n]->set_flow(config.flow);
         m_comm[n]->use_pool(m_pool);
+        m_comm[n]->route_at_once(at_once);
         if (m_calendar) m_comm[n]->use_calendar(*m_calendar); // node by node: the order of simultaneous wakes
         if (config.cluster == 1) {
             auto ip = std::make_unique<IntersectionProcessor>(("ip_" + std::to_string(n)).c_str(), config, scene,
                                                               grid, cell_owner, n, n, ledger);
             if (m_calendar) ip->use_calendar(*m_calendar); // after its node's comm unit
+            ip->use_activations(*m_activations);
             ip->out.bind(m_comm[n]->in);
             ip->fb_socket.bind(m_fb->socket);
             m_comm[n]->local.bind(ip->in);
             ip->queue().use_pool(m_pool);
+            if (at_once) ip->queue().tell_reader_at_once(ip.get());
             ip->queue().attach(&m_host->primaries(), n);
             m_ips.push_back(std::move(ip));
         } else {

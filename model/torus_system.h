@@ -8,6 +8,7 @@
 #include <systemc>
 #include <vector>
 
+#include "activation_queue.h"
 #include "comm_unit.h"
 #include "frame_buffer.h"
 #include "host.h"
@@ -24,10 +25,17 @@ namespace torusrt {
 
 class ClusterNode;
 
+// Whether a flat approximately-timed machine with a positive link time and unbounded buffers
+// takes a processor's packets for other nodes on as they are handed over and tells a waiting
+// processor of a packet in the delta it arrives (at_once, what every run uses), or one delta
+// later as every other machine does (next_delta: for the test that both give the same times).
+enum class HandOverTiming { at_once, next_delta };
+
 class TorusSystem : public sc_core::sc_module {
   public:
     TorusSystem(sc_core::sc_module_name name, const MachineConfig &config, const rt_scene *scene,
-                const rt_grid *grid, const int32_t *cell_owner, PacketLedger &ledger, rt_framebuffer *fb);
+                const rt_grid *grid, const int32_t *cell_owner, PacketLedger &ledger, rt_framebuffer *fb,
+                HandOverTiming hand_over = HandOverTiming::at_once);
     ~TorusSystem() override;
 
     const Routing &routing() const { return m_routing; }
@@ -47,6 +55,7 @@ class TorusSystem : public sc_core::sc_module {
   private:
     Routing m_routing;
     PacketPool m_pool; // every packet on the network, by handle (comm units, links, input queues)
+    std::unique_ptr<ActivationQueue> m_activations; // flat processors' state machines, when woken
     std::unique_ptr<WakeCalendar> m_calendar; // the comm units' timed deliveries
     // Smallest machine that uses the calendar (measured: at 16 nodes it costs about a fifth more
     // wall time per hop than per-unit events, at 64 it is even, at 512 it saves a fifth).

@@ -14,6 +14,7 @@
 #include "cli_main.h"
 #include "common_options.h"
 #include "frame_pattern.h"
+#include "huge_pages.h"
 #include "machine_file_reader.h"
 #include "machine_options.h"
 #include "model_run.h"
@@ -473,9 +474,11 @@ int sc_main(int argc, char **argv)
                    "  3 deadlock: the network stalled with packets outstanding\n");
 }
 
-// Our own entry point: the SystemC banner is printed before sc_main runs, so it is switched off here.
+// Our own entry point: the SystemC banner is printed before sc_main runs, so it is switched off
+// here; and the allocator's huge pages are asked for before anything is allocated.
 int main(int argc, char **argv)
 {
+    torusrt::reexec_with_huge_pages(argv);
     setenv("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE", "DISABLE", 1);
     return sc_core::sc_elab_and_sim(argc, argv);
 }

@@ -1,5 +1,6 @@
 // run_report_json.cpp - the JSON report, written from a RunReport (keys in README.md).
 #include <algorithm>
+#include <cstdlib>
 
 #include "routing.h"
 #include "machine_options.h"
@@ -175,6 +176,8 @@ nlohmann::json to_json(const RunReport &r)
         {"packet_bytes_in_memory", sizeof(rt_packet)},
         {"wall_s", f.wall_s},
         {"sim_wall_s", f.sim_wall_s},
+        // What the allocator was told (huge pages; huge_pages.h): it moves the wall times above.
+        {"allocator_tunables", std::getenv("GLIBC_TUNABLES") ? std::getenv("GLIBC_TUNABLES") : ""},
         {"events", r.totals.events},
         {"events_per_s", f.sim_wall_s > 0 ? r.totals.events / f.sim_wall_s : 0.0},
         {"packet_hops", r.totals.hops},
