@@ -5,9 +5,10 @@
 
 namespace torusrt {
 
-// Unless GLIBC_TUNABLES is set already (the user's choice wins), sets it to
-// glibc.malloc.hugetlb=1 and executes this program again with the same arguments, so the
-// allocator reads it at start-up. Returns only when it did not (already set, or exec failed).
+// Unless GLIBC_TUNABLES is set already (the user's choice wins) or the program runs under
+// Valgrind, sets it to glibc.malloc.hugetlb=1 and executes this program again with the same
+// arguments, so the allocator reads it at start-up. Returns only when it did not (already set,
+// under Valgrind, or the exec failed).
 void reexec_with_huge_pages(char **argv);
 
 }  // namespace torusrt
