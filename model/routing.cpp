@@ -11,12 +11,14 @@ const char *direction_name(int dir)
     return dir >= 0 && dir < kDirections ? names[dir] : "none";
 }
 
-Routing::Routing(const std::array<int, 3> &dims, bool torus) : m_dims(dims), m_torus(torus) {}
-
-std::array<int, 3> Routing::coords(int node) const
+Routing::Routing(const std::array<int, 3> &dims, bool torus) : m_dims(dims), m_torus(torus)
 {
-    return {node % m_dims[0], (node / m_dims[0]) % m_dims[1], node / (m_dims[0] * m_dims[1])};
+    int nodes = dims[0] * dims[1] * dims[2];
+    m_coords.reserve(static_cast<size_t>(nodes > 0 ? nodes : 0));
+    for (int n = 0; n < nodes; n++) m_coords.push_back({n % dims[0], (n / dims[0]) % dims[1], n / (dims[0] * dims[1])});
 }
+
+std::array<int, 3> Routing::coords(int node) const { return m_coords[static_cast<size_t>(node)]; }
 
 int Routing::node(const std::array<int, 3> &c) const { return c[0] + m_dims[0] * (c[1] + m_dims[1] * c[2]); }
 
@@ -36,12 +38,13 @@ int Routing::neighbour(int n, int dir) const
 
 int Routing::next_direction(int from, int to) const
 {
-    auto a = coords(from), b = coords(to);
+    const std::array<int, 3> &a = m_coords[static_cast<size_t>(from)], &b = m_coords[static_cast<size_t>(to)];
     for (int axis = 0; axis < 3; axis++) {
         if (a[axis] == b[axis]) continue;
         if (!m_torus) return direction(axis, b[axis] > a[axis]);
         int p = m_dims[axis];
-        int forward = ((b[axis] - a[axis]) % p + p) % p;
+        int forward = b[axis] - a[axis];
+        if (forward < 0) forward += p; // the hops going + round the ring
         return direction(axis, forward <= p - forward);
     }
     return -1;

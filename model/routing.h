@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <vector>
 
 namespace torusrt {
 
@@ -30,6 +31,8 @@ class Routing {
   private:
     std::array<int, 3> m_dims;
     bool m_torus;
+    // Every node's coordinates, worked out once: a hop asks for two and divisions cost more.
+    std::vector<std::array<int, 3>> m_coords;
 };
 
 }  // namespace torusrt
