@@ -113,8 +113,7 @@ void CommUnit::accept(const TimedPacket &p)
     // processor takes up its next packet before this one joins its queue.
     if (m_route_at_once && p.stamp <= now && m_pool->owner(packet) != m_node &&
         (m_arrivals.empty() || m_arrivals.next_time() > now)) {
-        m_pool->credit(packet) = nullptr;
-        if (forward(packet)) return; // unbounded buffers: it always moves on
+        if (forward(packet)) return; // unbounded buffers: it always moves on (no credit held)
     }
     enqueue(packet, p.stamp, processor_source(), nullptr);
 }

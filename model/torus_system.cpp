@@ -16,19 +16,19 @@ TorusSystem::TorusSystem(sc_core::sc_module_name name, const MachineConfig &conf
     int nodes = config.node_count();
     sc_core::sc_time lookahead = config.style == TimingStyle::lt ? sc_core::sc_time(config.quantum_us, sc_core::SC_US)
                                                                  : sc_core::SC_ZERO_TIME;
-    // Where the outcome depends on which of two simultaneous processes runs first, the calendar
-    // would change it (wake_calendar.h): those machines keep their per-unit timed events. Below
-    // kCalendarMinNodes the per-unit events stay warm and cost less than the calendar's heap;
-    // both give the same times there.
-    if (config.cluster == 1 && lookahead == sc_core::SC_ZERO_TIME && rt_timing_link_packet_us(&config.timing) > 0 &&
-        nodes >= kCalendarMinNodes)
-        m_calendar = std::make_unique<WakeCalendar>("wake_calendar");
-    // A flat approximately-timed machine with a positive link time and unbounded buffers routes
-    // a processor's packets for other nodes as they are handed over, and wakes a waiting
-    // processor in the delta its packet arrives: the order of what is routed and taken up at
-    // each time is the same as one delta later, so are the times.
-    bool at_once = hand_over == HandOverTiming::at_once && config.cluster == 1 && lookahead == sc_core::SC_ZERO_TIME &&
-                   rt_timing_link_packet_us(&config.timing) > 0 && config.queue_capacity == 0;
+    // A flat approximately-timed machine with a positive link time: the units due at one time do
+    // not affect each other within the delta, so the order of simultaneous processes does not
+    // change the times. Elsewhere it can.
+    bool order_free = config.cluster == 1 && lookahead == sc_core::SC_ZERO_TIME &&
+                      rt_timing_link_packet_us(&config.timing) > 0;
+    // Elsewhere the calendar would change the outcome (wake_calendar.h): those machines keep
+    // their per-unit timed events. Below kCalendarMinNodes the per-unit events stay warm and
+    // cost less than the calendar's heap; both give the same times there.
+    if (order_free && nodes >= kCalendarMinNodes) m_calendar = std::make_unique<WakeCalendar>("wake_calendar");
+    // With unbounded buffers too, a processor's packets for other nodes are routed as they are
+    // handed over, and a waiting processor is woken in the delta its packet arrives: the order of
+    // what is routed and taken up at each time is the same as one delta later, so are the times.
+    bool at_once = hand_over == HandOverTiming::at_once && order_free && config.queue_capacity == 0;
     if (config.cluster == 1) m_activations = std::make_unique<ActivationQueue>("activations");
     m_fb = std::make_unique<FrameBuffer>("fb", fb);
     m_host = std::make_unique<Host>("host", config, scene, grid, cell_owner, ledger);
