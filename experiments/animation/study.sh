@@ -6,7 +6,7 @@
 # the same orbit in 128 frames (the view turns a quarter as far from one frame to the next),
 # run with GNU parallel; every frame is compared with the renderer's byte for byte. Writes
 # experiments/animation/results/ (runs.tsv, frames.tsv, density.tsv), docs/animation.md and
-# docs/animation/ (the plot). Image 64x64 with 24^3 cells keeps the study near 40 minutes on
+# docs/animation/ (the plot). Image 64x64 with 24^3 cells keeps the study near 15 minutes on
 # two cores.
 # Usage: bash experiments/animation/study.sh [BUILD_DIR] [JOBS]   (default build, 2 jobs)
 set -euo pipefail
