@@ -6,42 +6,49 @@
 # simulation's wall time to torusrt-render's on the same scene, grid and size, and the peak
 # resident memory and the CPU time (user + system) of the whole torusrt-sim process
 # (/usr/bin/time -v; on a shared machine the CPU time is the steadier figure).
-# The machine's speed drifts from minute to minute: BENCH_RUNS=N runs each row N times (the
-# renderer too) and reports the run with the least simulation wall time (default 1).
+# The machine's speed drifts from minute to minute: BENCH_RUNS=N runs every row N times, in N
+# rounds of one run of each row (the renderer too), and reports the run with the least
+# simulation wall time and the median of the N (default 1).
 # Usage: bash bench/sim.sh [BUILD_DIR]   (BENCH_BIG=0 skips the 1024x1024 run)
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$here/build}
 scene=$here/scenes/paper-image1.nff
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
-printf '%-10s %5s %6s %10s %9s %8s %10s %11s %11s %10s %8s\n' \
-  size cells ips sim_time_s wall_s cpu_s hops us_per_hop hops_per_s vs_render peak_MB
+trap 'echo "bench/sim.sh: line $LINENO failed (status $?)" >&2' ERR
+printf '%-10s %5s %6s %10s %9s %9s %8s %10s %11s %11s %10s %8s\n' \
+  size cells ips sim_time_s wall_s wall_med_s cpu_s hops us_per_hop hops_per_s vs_render peak_MB
 configs=("144x144 24 4x2x2" "144x144 24 4x4x4" "144x144 24 8x8x8")
 [ "${BENCH_BIG:-1}" = 0 ] || configs+=("1024x1024 64 8x8x8")
-for c in "${configs[@]}"; do
-  read -r size cells ips <<<"$c"
-  best=""
-  for _ in $(seq "${BENCH_RUNS:-1}"); do
-    "$build/torusrt-render" "$scene" --size "$size" --cells "$cells" -o "$tmp/r.png" --stats "$tmp/r1.json" -q
-    if [ ! -e "$tmp/r.json" ] || [ "$(jq ".wall_s < $(jq .wall_s "$tmp/r.json")" "$tmp/r1.json")" = true ]; then
-      mv "$tmp/r1.json" "$tmp/r.json"
+# Round by round, every row once a round: a slow spell of the machine falls on all rows alike.
+declare -a best walls
+for _ in $(seq "${BENCH_RUNS:-1}"); do
+  for i in "${!configs[@]}"; do
+    read -r size cells ips <<<"${configs[$i]}"
+    "$build/torusrt-render" "$scene" --size "$size" --cells "$cells" -o "$tmp/r.png" --stats "$tmp/render.json" -q
+    if [ ! -e "$tmp/r$i.json" ] || [ "$(jq ".wall_s < $(jq .wall_s "$tmp/r$i.json")" "$tmp/render.json")" = true ]; then
+      mv "$tmp/render.json" "$tmp/r$i.json"
     fi
-    /usr/bin/time -v -o "$tmp/time1.txt" "$build/torusrt-sim" "$scene" --size "$size" --cells "$cells" --ips "$ips" \
-      --t1 1 -o "$tmp/s.png" --stats "$tmp/s1.json" -q
-    wall=$(jq .sim_wall_s "$tmp/s1.json")
-    if [ -z "$best" ] || [ "$(jq -n "$wall < $best")" = true ]; then
-      best=$wall
-      mv "$tmp/s1.json" "$tmp/s.json"
-      mv "$tmp/time1.txt" "$tmp/time.txt"
+    /usr/bin/time -v -o "$tmp/run-time.txt" "$build/torusrt-sim" "$scene" --size "$size" --cells "$cells" --ips "$ips" \
+      --t1 1 -o "$tmp/s.png" --stats "$tmp/run.json" -q
+    wall=$(jq .sim_wall_s "$tmp/run.json")
+    walls[i]="${walls[i]:-} $wall"
+    if [ -z "${best[i]:-}" ] || [ "$(jq -n "$wall < ${best[i]}")" = true ]; then
+      best[i]=$wall
+      mv "$tmp/run.json" "$tmp/s$i.json"
+      mv "$tmp/run-time.txt" "$tmp/time$i.txt"
     fi
   done
-  rss_kb=$(awk -F': ' '/Maximum resident set size/ { print $2 }' "$tmp/time.txt")
-  cpu_s=$(awk -F': ' '/User time|System time/ { s += $2 } END { print s }' "$tmp/time.txt")
-  jq -r --arg size "$size" --arg cells "$cells" --argjson rw "$(jq .wall_s "$tmp/r.json")" --argjson rss "$rss_kb" \
-    --argjson cpu "$cpu_s" \
-    '[$size, $cells, .ips, .sim_time_s, .sim_wall_s, $cpu, .links.packets, (.sim_wall_s / .links.packets * 1e6),
-      .packet_hops_per_s, (.sim_wall_s / $rw), ($rss / 1024)] | @tsv' "$tmp/s.json" |
-    awk -F'\t' '{ printf "%-10s %5s %6d %10.5f %9.3f %8.2f %10d %11.3f %11.0f %9.1fx %8.1f\n",
-                  $1, $2, $3, $4, $5, $6, $7, $8, $9, $10, $11 }'
-  rm -f "$tmp/r.json"
+done
+for i in "${!configs[@]}"; do
+  read -r size cells ips <<<"${configs[$i]}"
+  rss_kb=$(awk -F': ' '/Maximum resident set size/ { print $2 }' "$tmp/time$i.txt")
+  cpu_s=$(awk -F': ' '/User time|System time/ { s += $2 } END { print s }' "$tmp/time$i.txt")
+  median=$(tr ' ' '\n' <<<"${walls[i]}" | sed '/^$/d' | sort -g | awk '{ a[NR] = $1 } END { print a[int((NR + 1) / 2)] }')
+  jq -r --arg size "$size" --arg cells "$cells" --argjson rw "$(jq .wall_s "$tmp/r$i.json")" --argjson rss "$rss_kb" \
+    --argjson cpu "$cpu_s" --argjson med "$median" \
+    '[$size, $cells, .ips, .sim_time_s, .sim_wall_s, $med, $cpu, .links.packets, (.sim_wall_s / .links.packets * 1e6),
+      .packet_hops_per_s, (.sim_wall_s / $rw), ($rss / 1024)] | @tsv' "$tmp/s$i.json" |
+    awk -F'\t' '{ printf "%-10s %5s %6d %10.5f %9.3f %9.3f %8.2f %10d %11.3f %11.0f %9.1fx %8.1f\n",
+                  $1, $2, $3, $4, $5, $6, $7, $8, $9, $10, $11, $12 }'
 done

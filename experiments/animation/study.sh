@@ -2,10 +2,12 @@
 # Animation study: a full orbit (360 degrees over 32 frames) of paper-image2 and paper-image1 at
 # 64 and 512 nodes under six mapping policies - cyclic (static), cost (static), cost +
 # every-frame remapping, cost + adaptive remapping, cost + adaptive remapping judged on the
-# host's preview of each frame (--remap-pilot) and oracle - run with GNU parallel; every
-# frame is compared with the renderer's byte for byte. Writes experiments/animation/results/
-# (runs.tsv, frames.tsv), docs/animation.md and docs/animation/ (the plot).
-# Image 64x64 with 24^3 cells keeps the whole study near 10 minutes on one core.
+# host's preview of each frame (--remap-pilot) and oracle - and adaptive and oracle again over
+# the same orbit in 128 frames (the view turns a quarter as far from one frame to the next),
+# run with GNU parallel; every frame is compared with the renderer's byte for byte. Writes
+# experiments/animation/results/ (runs.tsv, frames.tsv, density.tsv), docs/animation.md and
+# docs/animation/ (the plot). Image 64x64 with 24^3 cells keeps the study near 15 minutes on
+# two cores.
 # Usage: bash experiments/animation/study.sh [BUILD_DIR] [JOBS]   (default build, 2 jobs)
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
@@ -17,22 +19,31 @@ pics="$root/docs/animation"
 work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
 mkdir -p "$res" "$pics"
 frames=32 orbit=360 size=64x64
+dense=128 # the frame count of the finer orbit (adaptive and oracle only)
 preview=0.015625 # the preview row's --remap-pilot: 1/64 of the pixels (8x8 of 64x64)
 scenes=(paper-image2 paper-image1)
 start=$(date +%s)
-for sc in "${scenes[@]}"; do # the renderer's frames: the golden images
-  mkdir -p "$work/ref-$sc"
-  "$build/torusrt-render" "$root/scenes/$sc.nff" --size "$size" --orbit "$orbit" --frames "$frames" \
-    -o "$work/ref-$sc/f_%02d.png" -q
-done
-point() { # SCENE SHAPE POLICY-NAME MAP REMAP PILOT-FRACTION (- for none)
-  local tag="$1_$2_$3" dir="$work/$1_$2_$3" pilot=()
+for sc in "${scenes[@]}"; do for n in "$frames" "$dense"; do # the renderer's frames: the golden images
+  mkdir -p "$work/ref-$sc-$n"
+  "$build/torusrt-render" "$root/scenes/$sc.nff" --size "$size" --orbit "$orbit" --frames "$n" \
+    -o "$work/ref-$sc-$n/f_%03d.png" -q
+done; done
+point() { # SCENE SHAPE POLICY-NAME MAP REMAP PILOT-FRACTION (- for none) FRAMES
+  local tag="$1_$2_$3_$7" dir="$work/$1_$2_$3_$7" pilot=()
   [ "$6" = - ] || pilot=(--remap-pilot "$6")
   mkdir -p "$dir"
-  "$build/torusrt-sim" "$root/scenes/$1.nff" --size "$size" --orbit "$orbit" --frames "$frames" \
-    --ips "$2" --map "$4" --remap "$5" "${pilot[@]}" -o "$dir/f_%02d.png" --stats "$work/$tag.json" -q
+  "$build/torusrt-sim" "$root/scenes/$1.nff" --size "$size" --orbit "$orbit" --frames "$7" \
+    --ips "$2" --map "$4" --remap "$5" "${pilot[@]}" -o "$dir/f_%03d.png" --stats "$work/$tag.json" -q
   local same=1
-  for f in "$work/ref-$1"/*.png; do cmp -s "$f" "$dir/$(basename "$f")" || same=0; done
+  for f in "$work/ref-$1-$7"/*.png; do cmp -s "$f" "$dir/$(basename "$f")" || same=0; done
+  if [ "$7" != "$frames" ]; then # the finer orbit: its totals only
+    jq -r --arg sc "$1" --arg pol "$3" --arg same "$same" --arg fr "$7" \
+      '[$sc, .config.nodes, $pol, $fr, .animation.total_s, .animation.image_time_s, .animation.migration_time_s,
+        .animation.mapping_changes, (.packets.conserved | tostring), $same, .wall_s] | @tsv' \
+      "$work/$tag.json" > "$work/$tag.dense"
+    rm -rf "$dir"
+    return
+  fi
   jq -r --arg sc "$1" --arg pol "$3" --arg same "$same" \
     '[$sc, .config.nodes, $pol, .animation.total_s, .animation.image_time_s, .animation.migration_time_s,
       .animation.migration_share, .animation.migration_bytes, .animation.mapping_changes, .animation.efficiency,
@@ -46,16 +57,20 @@ point() { # SCENE SHAPE POLICY-NAME MAP REMAP PILOT-FRACTION (- for none)
 }
 export -f point
 export build root work frames orbit size preview
-for sc in "${scenes[@]}"; do for s in 8x8x8 4x4x4; do
-  echo "$sc $s cyclic cyclic static -"
-  echo "$sc $s cost cost static -"
-  echo "$sc $s every-frame cost every-frame -"
-  echo "$sc $s adaptive cost adaptive -"
-  echo "$sc $s preview cost adaptive $preview"
-  echo "$sc $s oracle cost oracle -"
+for sc in "${scenes[@]}"; do for s in 8x8x8 4x4x4; do # the longest runs first
+  echo "$sc $s adaptive cost adaptive - $dense"
+  echo "$sc $s oracle cost oracle - $dense"
 done; done > "$work/points"
-echo "animation study: $(wc -l < "$work/points") runs of $frames frames on $jobs jobs" >&2
-parallel -j "$jobs" --colsep ' ' --halt now,fail=1 point {1} {2} {3} {4} {5} {6} :::: "$work/points"
+for sc in "${scenes[@]}"; do for s in 8x8x8 4x4x4; do
+  echo "$sc $s cyclic cyclic static - $frames"
+  echo "$sc $s cost cost static - $frames"
+  echo "$sc $s every-frame cost every-frame - $frames"
+  echo "$sc $s adaptive cost adaptive - $frames"
+  echo "$sc $s preview cost adaptive $preview $frames"
+  echo "$sc $s oracle cost oracle - $frames"
+done; done >> "$work/points"
+echo "animation study: $(wc -l < "$work/points") runs of $frames and $dense frames on $jobs jobs" >&2
+parallel -j "$jobs" --colsep ' ' --halt now,fail=1 point {1} {2} {3} {4} {5} {6} {7} :::: "$work/points"
 {
   printf 'scene\tn\tpolicy\ttotal_s\timage_time_s\tmigration_time_s\tmigration_share\tmigration_bytes\tmapping_changes\tefficiency\tconserved\timages_identical\twall_s\thost_pilot_time_s\thost_pilot_charged_s\n'
   cat "$work"/*.run | sort -t$'\t' -k1,1 -k2,2n -k3,3
@@ -64,6 +79,10 @@ parallel -j "$jobs" --colsep ' ' --halt now,fail=1 point {1} {2} {3} {4} {5} {6}
   printf 'scene\tn\tpolicy\tframe\timage_time_s\tmigration_time_s\tmigration_bytes\tefficiency\tdecision\tguess\n'
   cat "$work"/*.frames | sort -t$'\t' -k1,1 -k2,2n -k3,3 -k4,4n
 } > "$res/frames.tsv"
+{
+  printf 'scene\tn\tpolicy\tframes\ttotal_s\timage_time_s\tmigration_time_s\tmapping_changes\tconserved\timages_identical\twall_s\n'
+  cat "$work"/*.dense | sort -t$'\t' -k1,1 -k2,2n -k3,3
+} > "$res/density.tsv"
 elapsed=$(( $(date +%s) - start ))
 python3 "$root/experiments/report/animation.py" "$res" "$root/docs/animation.md" "$pics" \
   "$root/experiments/plots/animation.gp" "$jobs" "$elapsed"
