@@ -64,6 +64,16 @@ def plot(frames, keys, pics, gp):
     return os.path.basename(png)
 
 
+def gap_pct(total, bound):
+    """How far `total` is above `bound`, in per cent."""
+    return 100 * (total / bound - 1)
+
+
+def near_oracle(adaptive, oracle):
+    """The target: adaptive's total within 10 % of oracle's."""
+    return adaptive <= 1.1 * oracle
+
+
 def case_table(rows):
     oracle = float(rows["oracle"]["total_s"])
     out = ["| policy | total s | images s | migration s | migration share | bytes moved | mapping changes "
@@ -76,7 +86,7 @@ def case_table(rows):
                    f"{float(r['migration_time_s']):.4f} | {100 * float(r['migration_share']):.2f} % | "
                    f"{int(r['migration_bytes'])} | {r['mapping_changes']} | {float(r['host_pilot_time_s']):.3f} "
                    f"({float(r['host_pilot_charged_s']):.3f}) | {100 * float(r['efficiency']):.1f} % | "
-                   f"{100 * (t / oracle - 1):+.1f} % |")
+                   f"{gap_pct(t, oracle):+.1f} % |")
     return out
 
 
@@ -88,8 +98,8 @@ def verdict(rows):
     checks = [
         (a <= s, f"adaptive {a:.3f} s {'<=' if a <= s else '>'} static cost {s:.3f} s"),
         (a <= e, f"adaptive {a:.3f} s {'<=' if a <= e else '>'} every-frame {e:.3f} s"),
-        (a <= 1.1 * o, f"adaptive is {100 * (a / o - 1):+.1f} % from oracle's {o:.3f} s "
-                       f"({'within' if a <= 1.1 * o else 'outside'} 10 %)"),
+        (near_oracle(a, o), f"adaptive is {gap_pct(a, o):+.1f} % from oracle's {o:.3f} s "
+                            f"({'within' if near_oracle(a, o) else 'outside'} 10 %)"),
     ]
     return checks
 
@@ -170,7 +180,7 @@ def before_text(runs, keys):
     for scene, n in keys:
         if (scene, n) in BEFORE:
             a, b = float(by_policy(runs, scene, n)["adaptive"]["total_s"]), BEFORE[(scene, n)]
-            parts.append(f"{scene} at {n} nodes {b:.3f} s then, {a:.3f} s now ({100 * (a / b - 1):+.1f} %)")
+            parts.append(f"{scene} at {n} nodes {b:.3f} s then, {a:.3f} s now ({gap_pct(a, b):+.1f} %)")
     return "; ".join(parts)
 
 
@@ -186,13 +196,13 @@ def findings(runs, frames, keys):
         worst_share = max(worst_share, max(float(r["migration_share"]) for r in rows.values()))
         a, e, o = (float(rows[p]["total_s"]) for p in ("adaptive", "every-frame", "oracle"))
         c = float(rows["cyclic"]["total_s"])
-        lines.append(f"- {scene}, {n} nodes: adaptive {100 * (a / e - 1):+.1f} % against every-frame, "
-                     f"{100 * (a / o - 1):+.1f} % against oracle, {100 * (a / c - 1):+.1f} % against cyclic.")
+        lines.append(f"- {scene}, {n} nodes: adaptive {gap_pct(a, e):+.1f} % against every-frame, "
+                     f"{gap_pct(a, o):+.1f} % against oracle, {gap_pct(a, c):+.1f} % against cyclic.")
         pv = rows["preview"]
         t = float(pv["total_s"])
         preview_lines.append(
-            f"- {scene}, {n} nodes: with the preview {t:.3f} s ({100 * (t / a - 1):+.1f} % against adaptive "
-            f"without it, {100 * (t / o - 1):+.1f} % against oracle), of which {float(pv['host_pilot_charged_s']):.3f} s "
+            f"- {scene}, {n} nodes: with the preview {t:.3f} s ({gap_pct(t, a):+.1f} % against adaptive "
+            f"without it, {gap_pct(t, o):+.1f} % against oracle), of which {float(pv['host_pilot_charged_s']):.3f} s "
             f"is the host's pilot time past the frames' (its whole host time {float(pv['host_pilot_time_s']):.3f} s).")
     k = len(keys)
     preview_text = PREVIEW_TEXT
@@ -293,8 +303,8 @@ def density_section(runs, dense, keys, nframes):
             if "adaptive" not in pol or "oracle" not in pol:
                 continue
             a, o = float(pol["adaptive"]["total_s"]), float(pol["oracle"]["total_s"])
-            gaps.setdefault(c, {})[(scene, n)] = (100 * (a / o - 1), a <= 1.1 * o)  # verdict()'s test
-            out.append(f"| {scene}, {n} | {c} | {360 / c:g} | {a:.3f} | {o:.3f} | {100 * (a / o - 1):+.1f} % | "
+            gaps.setdefault(c, {})[(scene, n)] = (gap_pct(a, o), near_oracle(a, o))
+            out.append(f"| {scene}, {n} | {c} | {360 / c:g} | {a:.3f} | {o:.3f} | {gap_pct(a, o):+.1f} % | "
                        f"{pol['adaptive']['mapping_changes']} |")
     identical = all(r["images_identical"] == "1" for r in dense)
     conserved = all(r["conserved"] == "true" for r in dense)
