@@ -2,12 +2,12 @@
 # Animation study: a full orbit (360 degrees over 32 frames) of paper-image2 and paper-image1 at
 # 64 and 512 nodes under six mapping policies - cyclic (static), cost (static), cost +
 # every-frame remapping, cost + adaptive remapping, cost + adaptive remapping judged on the
-# host's preview of each frame (--remap-pilot) and oracle - and adaptive and oracle again over
-# the same orbit in 128 frames (the view turns a quarter as far from one frame to the next),
-# run with GNU parallel; every frame is compared with the renderer's byte for byte. Writes
-# experiments/animation/results/ (runs.tsv, frames.tsv, density.tsv), docs/animation.md and
-# docs/animation/ (the plot). Image 64x64 with 24^3 cells keeps the study near 15 minutes on
-# two cores.
+# host's preview of each frame (--remap-pilot) and oracle - and every policy but the preview
+# again over the same orbit in 128 and in 256 frames (the view turns a quarter and an eighth as
+# far from one frame to the next), run with GNU parallel; every frame is compared with the
+# renderer's byte for byte. Writes experiments/animation/results/ (runs.tsv, frames.tsv,
+# density.tsv), docs/animation.md and docs/animation/ (the plot). Image 64x64 with 24^3 cells
+# keeps the study near 40 minutes on two cores.
 # Usage: bash experiments/animation/study.sh [BUILD_DIR] [JOBS]   (default build, 2 jobs)
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
@@ -19,11 +19,11 @@ pics="$root/docs/animation"
 work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
 mkdir -p "$res" "$pics"
 frames=32 orbit=360 size=64x64
-dense=128 # the frame count of the finer orbit (adaptive and oracle only)
+dense="256 128" # the frame counts of the finer orbits (every policy but the preview; longest first)
 preview=0.015625 # the preview row's --remap-pilot: 1/64 of the pixels (8x8 of 64x64)
 scenes=(paper-image2 paper-image1)
 start=$(date +%s)
-for sc in "${scenes[@]}"; do for n in "$frames" "$dense"; do # the renderer's frames: the golden images
+for sc in "${scenes[@]}"; do for n in "$frames" $dense; do # the renderer's frames: the golden images
   mkdir -p "$work/ref-$sc-$n"
   "$build/torusrt-render" "$root/scenes/$sc.nff" --size "$size" --orbit "$orbit" --frames "$n" \
     -o "$work/ref-$sc-$n/f_%03d.png" -q
@@ -57,10 +57,15 @@ point() { # SCENE SHAPE POLICY-NAME MAP REMAP PILOT-FRACTION (- for none) FRAMES
 }
 export -f point
 export build root work frames orbit size preview
-for sc in "${scenes[@]}"; do for s in 8x8x8 4x4x4; do # the longest runs first
-  echo "$sc $s adaptive cost adaptive - $dense"
-  echo "$sc $s oracle cost oracle - $dense"
-done; done > "$work/points"
+for d in $dense; do for sc in "${scenes[@]}"; do for s in 8x8x8 4x4x4; do # the longest runs first
+  echo "$sc $s adaptive cost adaptive - $d"
+  echo "$sc $s oracle cost oracle - $d"
+  echo "$sc $s every-frame cost every-frame - $d"
+done; done; done > "$work/points"
+for d in $dense; do for sc in "${scenes[@]}"; do for s in 8x8x8 4x4x4; do
+  echo "$sc $s cyclic cyclic static - $d"
+  echo "$sc $s cost cost static - $d"
+done; done; done >> "$work/points"
 for sc in "${scenes[@]}"; do for s in 8x8x8 4x4x4; do
   echo "$sc $s cyclic cyclic static - $frames"
   echo "$sc $s cost cost static - $frames"
@@ -69,7 +74,7 @@ for sc in "${scenes[@]}"; do for s in 8x8x8 4x4x4; do
   echo "$sc $s preview cost adaptive $preview $frames"
   echo "$sc $s oracle cost oracle - $frames"
 done; done >> "$work/points"
-echo "animation study: $(wc -l < "$work/points") runs of $frames and $dense frames on $jobs jobs" >&2
+echo "animation study: $(wc -l < "$work/points") runs of $frames and ${dense// / and } frames on $jobs jobs" >&2
 parallel -j "$jobs" --colsep ' ' --halt now,fail=1 point {1} {2} {3} {4} {5} {6} {7} :::: "$work/points"
 {
   printf 'scene\tn\tpolicy\ttotal_s\timage_time_s\tmigration_time_s\tmigration_share\tmigration_bytes\tmapping_changes\tefficiency\tconserved\timages_identical\twall_s\thost_pilot_time_s\thost_pilot_charged_s\n'
@@ -81,7 +86,7 @@ parallel -j "$jobs" --colsep ' ' --halt now,fail=1 point {1} {2} {3} {4} {5} {6}
 } > "$res/frames.tsv"
 {
   printf 'scene\tn\tpolicy\tframes\ttotal_s\timage_time_s\tmigration_time_s\tmapping_changes\tconserved\timages_identical\twall_s\n'
-  cat "$work"/*.dense | sort -t$'\t' -k1,1 -k2,2n -k3,3
+  cat "$work"/*.dense | sort -t$'\t' -k1,1 -k2,2n -k4,4n -k3,3
 } > "$res/density.tsv"
 elapsed=$(( $(date +%s) - start ))
 python3 "$root/experiments/report/animation.py" "$res" "$root/docs/animation.md" "$pics" \

@@ -1,6 +1,7 @@
 """The animation report's finer-orbit section (experiments/report/animation.py density_section):
-each case's gap to oracle at each frame count, the count within 10 %, and whether the gap shrinks,
-judged over the cases present at both frame counts."""
+each case's totals and gap to oracle at each frame count, the count within 10 % and below static
+cost and every-frame, the frame counts where all three hold in every case, and whether the gap
+shrinks, judged over the cases present at both frame counts."""
 import os
 import sys
 import unittest
@@ -22,19 +23,43 @@ def run(scene, n, policy, total, frames=None, changes=3):
 class DensitySection(unittest.TestCase):
     keys = [("paper-image1", 512), ("paper-image1", 64)]
     runs = [run("paper-image1", 512, "adaptive", 12.0), run("paper-image1", 512, "oracle", 10.0),
-            run("paper-image1", 64, "adaptive", 11.0), run("paper-image1", 64, "oracle", 10.0)]
+            run("paper-image1", 512, "cost", 30.0), run("paper-image1", 512, "every-frame", 13.0),
+            run("paper-image1", 512, "cyclic", 14.0),
+            run("paper-image1", 64, "adaptive", 11.0), run("paper-image1", 64, "oracle", 10.0),
+            run("paper-image1", 64, "cost", 20.0), run("paper-image1", 64, "every-frame", 10.5)]
 
     def test_gaps_and_verdict(self):
         dense = [run("paper-image1", 512, "adaptive", 42.0, 128), run("paper-image1", 512, "oracle", 40.0, 128)]
         text = "\n".join(animation.density_section(self.runs, dense, self.keys, 32))
-        self.assertIn("| paper-image1, 512 | 32 | 11.25 | 12.000 | 10.000 | +20.0 % | 3 |", text)
-        self.assertIn("| paper-image1, 512 | 128 | 2.8125 | 42.000 | 40.000 | +5.0 % | 3 |", text)
+        self.assertIn("| paper-image1, 512 | 32 | 11.25 | 14.000 | 30.000 | 13.000 | 12.000 | 10.000 | +20.0 % | 3 |",
+                      text)
+        # Policies not run at the finer orbit show as "-".
+        self.assertIn("| paper-image1, 512 | 128 | 2.8125 | - | - | - | 42.000 | 40.000 | +5.0 % | 3 |", text)
         self.assertIn("within 10 % in 1 of 2 cases", text)  # 32 frames: +20 % and +10 %
-        self.assertIn("within 10 % in 1 of 1 cases", text)
+        self.assertIn("within 10 % in 1 of 1 cases.", text)  # 128 frames: no static or every-frame to judge
+        # 32 frames: adaptive below static cost in both cases, below every-frame at 512 only (11 > 10.5 at 64).
+        self.assertIn("no longer than static cost in 2 of 2 and than every-frame in 1 of 2", text)
+        self.assertIn("hold in every case at: none of the frame counts measured.", text)
         # Only the 512-node case has both counts: +20 % against +5 %, not the 32-frame mean of +15 %.
         self.assertIn("Mean gap over the same 1 cases +20.0 % at 32 frames, +5.0 % at 128", text)
         self.assertIn("it shrinks", text)
         self.assertIn("byte for byte: **yes**", text)
+
+    def test_all_three_conditions_at_a_frame_count(self):
+        dense = []
+        for n, (a, o, c, e) in {512: (41.0, 40.0, 90.0, 45.0), 64: (43.0, 40.0, 60.0, 44.0)}.items():
+            dense += [run("paper-image1", n, "adaptive", a, 256), run("paper-image1", n, "oracle", o, 256),
+                      run("paper-image1", n, "cost", c, 256), run("paper-image1", n, "every-frame", e, 256)]
+        text = "\n".join(animation.density_section(self.runs, dense, self.keys, 32))
+        self.assertIn("256 frames (1.40625 degrees a frame): adaptive is +2.5 % to +7.5 % from oracle, within 10 % "
+                      "in 2 of 2 cases; no longer than static cost in 2 of 2 and than every-frame in 2 of 2; every-frame is "
+                      "+10.0 % to +12.5 % from oracle, within 10 % in 1 of 2.", text)
+        self.assertIn("hold in every case at: 256 frames.", text)
+        # One case above every-frame: the frame count no longer qualifies.
+        dense[3]["total_s"] = "40.5"
+        text = "\n".join(animation.density_section(self.runs, dense, self.keys, 32))
+        self.assertIn("than every-frame in 1 of 2", text)
+        self.assertIn("hold in every case at: none of the frame counts measured.", text)
 
     def test_a_wider_gap_is_said(self):
         dense = [run("paper-image1", 512, "adaptive", 50.0, 128), run("paper-image1", 512, "oracle", 40.0, 128)]
