@@ -281,6 +281,22 @@ MEAN_GUESS_TEXT = (
     "52 of the 127 frames), and 10.580 s in 32 frames, as without (never taken).")
 
 
+def frame_count_line(c, gaps, checks, efgaps):
+    """One frame count's summary: adaptive's gaps to oracle per case ((gap, within 10 %)), and when
+    static cost and every-frame ran, the verdicts per case and every-frame's own gaps."""
+    g = [gap for gap, _ in gaps.values()]
+    line = (f"- {c} frames ({360 / c:g} degrees a frame): adaptive is {min(g):+.1f} % to {max(g):+.1f} % "
+            f"from oracle, within 10 % in {sum(1 for _, ok in gaps.values() if ok)} of {len(g)} cases")
+    if checks:
+        line += (f"; no longer than static cost in {sum(1 for v in checks.values() if v[0])} of {len(checks)} and "
+                 f"than every-frame in {sum(1 for v in checks.values() if v[1])} of {len(checks)}")
+    if efgaps:
+        eg = [gap for gap, _ in efgaps]
+        line += (f"; every-frame is {min(eg):+.1f} % to {max(eg):+.1f} % from oracle, within 10 % in "
+                 f"{sum(1 for _, ok in efgaps if ok)} of {len(eg)}")
+    return line + "."
+
+
 DENSE_POLICIES = ["cyclic", "cost", "every-frame", "adaptive", "oracle"]  # the finer orbits' (no preview)
 
 
@@ -322,25 +338,10 @@ def density_section(runs, dense, keys, nframes):
     conserved = all(r["conserved"] == "true" for r in dense)
     out += ["", f"- {len(dense)} runs of the finer orbits; every frame equals `torusrt-render`'s byte for byte: "
             f"**{'yes' if identical else 'NO'}**; packets conserved: **{'yes' if conserved else 'NO'}**."]
-    every = []
-    for c in sorted(gaps):
-        g = [gap for gap, _ in gaps[c].values()]
-        inside = sum(1 for _, ok in gaps[c].values() if ok)
-        line = (f"- {c} frames ({360 / c:g} degrees a frame): adaptive is {min(g):+.1f} % to {max(g):+.1f} % "
-                f"from oracle, within 10 % in {inside} of {len(g)} cases")
-        if c in checks:
-            k = checks[c]
-            below_static = sum(1 for v in k.values() if v[0])
-            below_every = sum(1 for v in k.values() if v[1])
-            line += (f"; no longer than static cost in {below_static} of {len(k)} and than every-frame in "
-                     f"{below_every} of {len(k)}")
-            if len(k) == len(gaps[c]) and all(all(v) for v in k.values()):
-                every.append(c)
-        if c in efgaps:
-            eg = [g for g, _ in efgaps[c]]
-            line += (f"; every-frame is {min(eg):+.1f} % to {max(eg):+.1f} % from oracle, within 10 % in "
-                     f"{sum(1 for _, ok in efgaps[c] if ok)} of {len(eg)}")
-        out.append(line + ".")
+    out += [frame_count_line(c, gaps[c], checks.get(c), efgaps.get(c)) for c in sorted(gaps)]
+    # Where every case has all three verdicts and each holds.
+    every = [c for c in sorted(gaps)
+             if c in checks and len(checks[c]) == len(gaps[c]) and all(all(v) for v in checks[c].values())]
     out.append("- All three conditions of the verdicts (adaptive no longer than static cost and than every-frame, "
                "and within 10 % of oracle) hold in every case at: "
                + (", ".join(f"{c} frames" for c in every) if every else "none of the frame counts measured") + ".")
