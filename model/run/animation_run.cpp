@@ -63,6 +63,14 @@ struct Machine {
     double sim_wall_s = 0;
 };
 
+// T(1) of the animation: the sum of the frames' pilots.
+double frames_t1(const std::vector<FrameRecord> &frames)
+{
+    double t1 = 0;
+    for (const FrameRecord &f : frames) t1 += f.t1_s;
+    return t1;
+}
+
 // The report's run facts: T(1) is the sum of the frames' pilots.
 RunFacts animation_facts(const Machine &m, double t1_s, double wall_start_s)
 {
@@ -97,9 +105,9 @@ const rt_camera_pose *pose_before(const rt_camera_path *path, size_t k)
 }
 
 // Frame k's mapping (k > 0) and its record's mapping fields; the owner table is updated.
-void next_mapping(RemapPolicy policy, const RemapContext &ctx, Machine &m, const FrameLoads &loads, FrameRecord &rec)
+void next_mapping(Remapper &remapper, const RemapContext &ctx, Machine &m, const FrameLoads &loads, FrameRecord &rec)
 {
-    RemapDecision d = decide_mapping(policy, ctx, m.owner, loads);
+    RemapDecision d = remapper.decide(ctx, m.owner, loads);
     std::copy(d.owner.begin(), d.owner.end(), m.owner.begin()); // same storage: the modules' pointer stays
     rec.decision = d.decision;
     rec.reason = d.reason;
@@ -126,7 +134,7 @@ std::unique_ptr<FramePilot> host_preview(const SimConfig &config, rt_scene *scen
 
 AnimationOutcome run_animation(const SimConfig &config, rt_scene *scene, const rt_grid *grid,
                                const rt_camera_path *path, const std::vector<std::string> &files,
-                               RemapPolicy policy, double pilot_fraction, double wall_start_s)
+                               RemapPolicy policy, double pilot_fraction, size_t window, double wall_start_s)
 {
     size_t n = rt_camera_path_count(path);
     Machine m;
@@ -145,6 +153,7 @@ AnimationOutcome run_animation(const SimConfig &config, rt_scene *scene, const r
     if (!config.vcd_path.empty()) m.tracer = std::make_unique<Tracer>(config, *m.top);
 
     AnimationOutcome out;
+    Remapper remapper(policy, window);
     std::unique_ptr<FramePilot> previous, before, earlier, preview;
     double end_s = 0;
     for (size_t k = 0; k < n; k++) {
@@ -166,7 +175,7 @@ AnimationOutcome run_animation(const SimConfig &config, rt_scene *scene, const r
             double previous_time_s = out.frames.back().image_time_s;
             if (policy == RemapPolicy::adaptive && pilot_fraction > 0)
                 preview = host_preview(config, scene, grid, pilot_fraction, previous_time_s, rec);
-            next_mapping(policy, ctx, m, FrameLoads{*previous, previous_time_s, *pilot, before.get(), earlier.get(),
+            next_mapping(remapper, ctx, m, FrameLoads{*previous, previous_time_s, *pilot, before.get(), earlier.get(),
                                                     preview.get(), pose_before(path, k), rt_camera_path_pose(path, k - 1),
                                                     rt_camera_path_pose(path, k)}, rec);
             m.fb = new_frame_buffer(scene);
@@ -181,7 +190,7 @@ AnimationOutcome run_animation(const SimConfig &config, rt_scene *scene, const r
             out.report = collect(config, *m.top, m.ledger, scene, grid, m.owner.data(),
                                  animation_facts(m, 0, wall_start_s), true);
             out.report.frames = out.frames;  // the frames that completed
-            out.report.remap_policy = remap_policy_name(policy);
+            out.report.remap = {remap_policy_name(policy), pilot_fraction, window};
             out.deadlock_details = "frame " + std::to_string(k) + ":\n" + deadlock_text(out.report);
             out.sim_time_s = out.report.sim_time_s;
             return out;
@@ -195,12 +204,10 @@ AnimationOutcome run_animation(const SimConfig &config, rt_scene *scene, const r
         rt_framebuffer_to_rgb8(m.fb.get(), out.images.back().data());
         out.frames.push_back(rec);
     }
-    double t1 = 0;
-    for (const FrameRecord &f : out.frames) t1 += f.t1_s;
-    out.report = collect(config, *m.top, m.ledger, scene, grid, m.owner.data(), animation_facts(m, t1, wall_start_s),
-                         false);
+    out.report = collect(config, *m.top, m.ledger, scene, grid, m.owner.data(),
+                         animation_facts(m, frames_t1(out.frames), wall_start_s), false);
     out.report.frames = out.frames;
-    out.report.remap_policy = remap_policy_name(policy);
+    out.report.remap = {remap_policy_name(policy), pilot_fraction, window};
     if (m.tracer) m.tracer->finish();
     return out;
 }

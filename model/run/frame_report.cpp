@@ -36,7 +36,7 @@ nlohmann::json frame_json(const FrameRecord &f)
             {"mapper_wall_s", f.mapper_wall_s}};
 }
 
-nlohmann::json animation_json(const std::vector<FrameRecord> &frames, const std::string &policy)
+nlohmann::json animation_json(const std::vector<FrameRecord> &frames, const RemapSettings &remap)
 {
     double image = 0, migration = 0, t1 = 0, host = 0, host_charged = 0;
     uint64_t bytes = 0, remaps = 0;
@@ -51,8 +51,8 @@ nlohmann::json animation_json(const std::vector<FrameRecord> &frames, const std:
     }
     double total = image + migration + host_charged;
     int n = frames.empty() ? 1 : frames.front().processors;
-    return {{"frame_count", frames.size()},
-            {"policy", policy},
+    nlohmann::json a = {{"frame_count", frames.size()},
+            {"policy", remap.policy},
             {"total_s", total},
             {"image_time_s", image},
             {"migration_time_s", migration},
@@ -63,6 +63,11 @@ nlohmann::json animation_json(const std::vector<FrameRecord> &frames, const std:
             {"mapping_changes", remaps},
             {"t1_s", t1},
             {"efficiency", total > 0 ? t1 / (n * total) : 0.0}};
+    if (remap.policy == "adaptive") {
+        a["pilot_fraction"] = remap.pilot_fraction;
+        a["window"] = remap.window;
+    }
+    return a;
 }
 
 std::string frames_csv(const std::vector<FrameRecord> &frames)
@@ -81,10 +86,17 @@ std::string frames_csv(const std::vector<FrameRecord> &frames)
     return out.str();
 }
 
-void print_frame_table(const std::vector<FrameRecord> &frames, const std::string &policy, std::FILE *out)
+void print_frame_table(const std::vector<FrameRecord> &frames, const RemapSettings &remap, std::FILE *out)
 {
     if (frames.empty()) return;
-    nlohmann::json a = animation_json(frames, policy);
+    nlohmann::json a = animation_json(frames, remap);
+    std::string policy = remap.policy;
+    if (remap.policy == "adaptive") {
+        char buf[96];
+        if (remap.pilot_fraction > 0) std::snprintf(buf, sizeof buf, " (preview %g of the pixels)", remap.pilot_fraction);
+        else std::snprintf(buf, sizeof buf, " (guesses judged over %zu frames)", remap.window);
+        policy += buf;
+    }
     std::fprintf(out, "  animation    %zu frames, remap %s: total %.6f s = images %.6f s + migration %.6f s (%.1f %%)"
                  " + host pilot %.6f s\n",
                  frames.size(), policy.c_str(), a["total_s"].get<double>(), a["image_time_s"].get<double>(),

@@ -34,13 +34,20 @@ struct FrameRecord {
     double charged_migration_s() const { return migration_charged ? migration.time_s : 0; }
 };
 
+// The policy of an animation and, for adaptive, its settings (the reading the run was made under).
+struct RemapSettings {
+    std::string policy;          // remap_policy_name
+    double pilot_fraction = 0;   // --remap-pilot (adaptive)
+    size_t window = 0;           // --remap-window (adaptive without a preview)
+};
+
 nlohmann::json frame_json(const FrameRecord &frame);
-// Totals: frame_count, policy, total_s = sum of image times + charged migration + charged host
+// Totals: frame_count, policy (and adaptive's pilot_fraction and window), total_s = sum of image times + charged migration + charged host
 // pilot time, and its parts.
-nlohmann::json animation_json(const std::vector<FrameRecord> &frames, const std::string &policy);
+nlohmann::json animation_json(const std::vector<FrameRecord> &frames, const RemapSettings &remap);
 // One header line and one row per frame (columns as README "Animation in torusrt-sim").
 std::string frames_csv(const std::vector<FrameRecord> &frames);
 // The summary's table (nothing for a single image).
-void print_frame_table(const std::vector<FrameRecord> &frames, const std::string &policy, std::FILE *out);
+void print_frame_table(const std::vector<FrameRecord> &frames, const RemapSettings &remap, std::FILE *out);
 
 }  // namespace torusrt

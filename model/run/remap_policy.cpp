@@ -86,40 +86,40 @@ std::unique_ptr<FramePilot> guessed_load(const RemapContext &ctx, const GuessKin
     return g.blurred ? FramePilot::blurred(*p, blur_keep) : std::move(p);
 }
 
-// The guess that, made of frame k-1 from frames k-2 (and k-3), would have given frame k-1 the
-// table (remapped from frame k-1's) with the least measured work on its busiest nodes; the
-// first on a tie. Frame 1 has no pair to test on: frame k-1's load.
-const GuessKind &backtested_guess(const RemapContext &ctx, const std::vector<int32_t> &current,
-                                  const FrameLoads &loads, std::string &why)
-{
-    if (!loads.before) return guesses[0];
-    int nodes = ctx.config.node_count();
-    const GuessKind *best = &guesses[0];
-    double best_w = 0;
-    bool first = true;
-    for (const GuessKind &g : guesses) {
-        if (g.guess == Guess::trend && !loads.earlier) continue;
-        auto p = guessed_load(ctx, g, *loads.before, loads.earlier, *loads.pose_before, *loads.pose_previous);
-        double w = loads.previous.busiest_work_s(remapped(ctx, current, *p), nodes);
-        char buf[64];
-        std::snprintf(buf, sizeof buf, "%s%s %.6f s", first ? "" : ", ", g.name, w);
-        why += buf;
-        if (first || w < best_w) best = &g, best_w = w;
-        first = false;
-    }
-    return *best;
-}
+}  // namespace
 
-// Adaptive without a preview: the remapping of frame k's load as the back-tested guess has it,
-// taken only if its predicted gain exceeds its migration.
-void guess_choice(const RemapContext &ctx, const std::vector<int32_t> &current, const FrameLoads &loads,
-                  RemapDecision &d)
+// Adaptive without a preview: first the tables proposed for frame k-1 are scored on its measured
+// load; then every guess of frame k's load gives a table (a remap from frame k-1's), and the
+// scoreboard's best guess is taken if its predicted gain exceeds its migration.
+void Remapper::guess_choice(const RemapContext &ctx, const std::vector<int32_t> &current, const FrameLoads &loads,
+                            RemapDecision &d)
 {
     int nodes = ctx.config.node_count();
-    std::string tested;
-    const GuessKind &g = backtested_guess(ctx, current, loads, tested);
-    auto predicted = guessed_load(ctx, g, loads.previous, loads.before, *loads.pose_previous, *loads.pose_next);
-    std::vector<int32_t> candidate = remapped(ctx, current, *predicted);
+    constexpr size_t n = sizeof guesses / sizeof guesses[0];
+    if (!m_proposed.empty()) {
+        std::vector<double> scores(n, -1);
+        for (size_t g = 0; g < n; g++)
+            if (!m_proposed[g].empty()) scores[g] = loads.previous.busiest_work_s(m_proposed[g], nodes);
+        m_board.record(scores);
+    }
+    size_t pick = m_board.best();
+    std::vector<std::string> names;
+    for (const GuessKind &g : guesses) names.emplace_back(g.name);
+    std::string tested = m_board.text(names);
+    m_proposed.assign(n, {});
+    std::unique_ptr<FramePilot> predicted;
+    for (size_t g = 0; g < n; g++) {
+        if (guesses[g].guess == Guess::trend && !loads.before) continue;
+        auto p = guessed_load(ctx, guesses[g], loads.previous, loads.before, *loads.pose_previous, *loads.pose_next);
+        m_proposed[g] = remapped(ctx, current, *p);
+        if (g == pick) predicted = std::move(p);
+    }
+    if (!predicted) {  // cannot happen: a guess scored before can be made again; frame k-1's load then
+        pick = 0;
+        predicted = guessed_load(ctx, guesses[0], loads.previous, loads.before, *loads.pose_previous, *loads.pose_next);
+    }
+    const GuessKind &g = guesses[pick];
+    std::vector<int32_t> candidate = m_proposed[pick];
     double w_now = predicted->busiest_work_s(current, nodes);
     double w_new = predicted->busiest_work_s(candidate, nodes);
     double move = migration_cost(ctx.scene, ctx.grid, ctx.routing, nodes, ctx.config.timing, current, candidate).time_s;
@@ -127,10 +127,16 @@ void guess_choice(const RemapContext &ctx, const std::vector<int32_t> &current, 
     bool take = d.predicted_gain_s > move;
     d.owner = take ? std::move(candidate) : current;
     d.decision = take ? "remap" : "keep";
-    d.reason = std::string("adaptive: guess ") + g.name + (tested.empty() ? "" : " (back-tested " + tested + ")") +
+    size_t scored = m_board.frames();
+    d.reason = std::string("adaptive: guess ") + g.name +
+               (tested.empty() ? ""
+                               : " (back-tested on " + std::to_string(scored) + (scored == 1 ? " frame" : " frames") +
+                                     ", mean ratio to the best table: " + tested + ")") +
                ", predicted gain " + seconds_text(d.predicted_gain_s) + (take ? " > " : " <= ") + "migration " +
                seconds_text(move);
 }
+
+namespace {
 
 // Adaptive with a preview: the candidate with the least predicted image time plus migration (keep on a tie).
 void adaptive_choice(const RemapContext &ctx, const std::vector<int32_t> &current, const FrameLoads &loads,
@@ -172,6 +178,16 @@ double parse_remap_pilot(const std::string &text)
     if (text.empty() || *end != '\0' || !(f >= 0 && f <= 1))
         throw UserError("--remap-pilot '" + text + "': expected a fraction of the pixels in [0, 1] (0: no preview)", 2);
     return f;
+}
+
+size_t parse_remap_window(const std::string &text)
+{
+    bool digits = !text.empty() && text.size() <= 7 && text.find_first_not_of("0123456789") == std::string::npos;
+    unsigned long n = digits ? std::strtoul(text.c_str(), nullptr, 10) : 0;
+    if (n < 1 || n > max_remap_window)
+        throw UserError("--remap-window '" + text + "': expected a whole number of frames in [1, " +
+                            std::to_string(max_remap_window) + "]", 2);
+    return static_cast<size_t>(n);
 }
 
 RemapPolicy parse_remap_policy(const std::string &text)
@@ -294,10 +310,15 @@ std::vector<int32_t> oracle_mapping(const RemapContext &ctx, const FramePilot &p
     return fresh_map(ctx, pilot);
 }
 
-RemapDecision decide_mapping(RemapPolicy policy, const RemapContext &ctx, const std::vector<int32_t> &current,
-                             const FrameLoads &loads)
+Remapper::Remapper(RemapPolicy policy, size_t window)
+    : m_policy(policy), m_board(sizeof guesses / sizeof guesses[0], window)
+{
+}
+
+RemapDecision Remapper::decide(const RemapContext &ctx, const std::vector<int32_t> &current, const FrameLoads &loads)
 {
     RemapDecision d;
+    RemapPolicy policy = m_policy;
     int nodes = ctx.config.node_count();
     double t0 = now_s();
     if (policy == RemapPolicy::static_map) {

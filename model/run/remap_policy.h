@@ -13,10 +13,13 @@
 //               (`trend`), frame k-1's load moved with the camera from pose k-1 to pose k
 //               (`moved`: its rays move, each cell's work per ray stays, load_motion.h), and
 //               each of them blurred (`-blurred`: a quarter of a cell's work stays, the rest
-//               goes to its face neighbours). The guess taken is the one that, made of frame
-//               k-1 from frames k-2 (and k-3), would have given frame k-1 the table (remapped
-//               from frame k-1's) with the least W in frame k-1's measured load (the first in
-//               that order on a tie; `frame` for frame 1, the trend from frame 3 on).
+//               goes to its face neighbours). Before each frame every guess gives a table (a
+//               remap from the table in force); once the frame has run, each of those tables is
+//               scored by W in the frame's measured load, as a ratio to the least W among them.
+//               The guess taken is the one with the least mean ratio over the last
+//               --remap-window frames scored (the first in that order on a tie; `frame` for
+//               frame 1, before anything is scored; the trend is made from frame 2 on and scored
+//               from frame 3 on).
 //               With a preview (--remap-pilot FRACTION > 0): the camera path is known in
 //               advance, so the host pilots frame k at FRACTION of the pixels (same view) while
 //               the machine renders frame k-1; that preview, scaled to the full pixel count,
@@ -44,6 +47,7 @@
 #include <string>
 #include <vector>
 
+#include "guess_scoreboard.h"
 #include "migration.h"
 #include "rt_camera_path.h"
 #include "rt_cost_map.h"
@@ -123,7 +127,15 @@ constexpr double default_remap_pilot = 0;
 // --remap-pilot: a fraction in [0, 1]; UserError (exit 2) otherwise.
 double parse_remap_pilot(const std::string &text);
 
-// What decide_mapping sees of frames k-1 and k.
+// --remap-window's default: adaptive judges its guesses over this many past frames (chosen by
+// the animation study, docs/animation.md).
+constexpr size_t default_remap_window = 1;
+constexpr size_t max_remap_window = 1000000;
+
+// --remap-window: an integer in [1, 1000000]; UserError (exit 2) otherwise.
+size_t parse_remap_window(const std::string &text);
+
+// What Remapper::decide sees of frames k-1 and k.
 struct FrameLoads {
     const FramePilot &previous;    // frame k-1's measured load
     double previous_time_s;        // frame k-1's measured image time
@@ -136,9 +148,21 @@ struct FrameLoads {
     const rt_camera_pose *pose_next;      // frame k's camera (known in advance)
 };
 
-// The table for frame k > 0; `current` is frame k-1's table.
-RemapDecision decide_mapping(RemapPolicy policy, const RemapContext &ctx, const std::vector<int32_t> &current,
-                             const FrameLoads &loads);
+// A policy across the frames of one animation, with what adaptive remembers from frame to frame
+// (the tables its guesses gave and how they scored).
+class Remapper {
+  public:
+    Remapper(RemapPolicy policy, size_t window);
+    // The table for frame k > 0; `current` is frame k-1's table. Called once per frame, in order.
+    RemapDecision decide(const RemapContext &ctx, const std::vector<int32_t> &current, const FrameLoads &loads);
+
+  private:
+    void guess_choice(const RemapContext &ctx, const std::vector<int32_t> &current, const FrameLoads &loads,
+                      RemapDecision &d);
+    RemapPolicy m_policy;
+    GuessScoreboard m_board;
+    std::vector<std::vector<int32_t>> m_proposed;  // each guess's table for the frame last decided (empty: none)
+};
 
 // Oracle's table for a frame from its own pilot (also frame 0's under oracle).
 std::vector<int32_t> oracle_mapping(const RemapContext &ctx, const FramePilot &pilot);

@@ -83,7 +83,8 @@ struct RunReport {
     nlohmann::json flow;                 // flow control: capacities, packet memory, classes (flow_report.h)
     // An animation (no frames: a single image).
     std::vector<FrameRecord> frames;
-    std::string remap_policy, camera_source, output_pattern;
+    RemapSettings remap;
+    std::string camera_source, output_pattern;
 };
 
 // Reads the system after the run. `deadlock`: the network stalled (fills report.deadlock).

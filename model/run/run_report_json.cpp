@@ -186,7 +186,7 @@ nlohmann::json to_json(const RunReport &r)
     j["packets"]["conserved"] = r.conserved;
     if (!r.mapping.is_null()) j["mapping"] = r.mapping;
     if (!r.frames.empty()) {
-        j["animation"] = animation_json(r.frames, r.remap_policy);
+        j["animation"] = animation_json(r.frames, r.remap);
         j["frames"] = nlohmann::json::array();
         for (const FrameRecord &frame : r.frames) j["frames"].push_back(frame_json(frame));
         j["camera_source"] = r.camera_source;

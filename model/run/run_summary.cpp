@@ -112,7 +112,7 @@ void print_summary(const RunReport &r, std::FILE *out)
     double w = f.sim_wall_s;
     std::fprintf(out, "  wall         %.3f s (%.3f s simulating), %.0f events/s, %.0f packet hops/s\n", f.wall_s, w,
                  w > 0 ? r.totals.events / w : 0.0, w > 0 ? r.totals.hops / w : 0.0);
-    print_frame_table(r.frames, r.remap_policy, out);
+    print_frame_table(r.frames, r.remap, out);
 }
 
 std::string deadlock_text(const RunReport &r)

@@ -9,8 +9,8 @@ sim=("$BUILD/torusrt-sim" "$f" -q --t1 1 --size 16x16)
 "${sim[@]}" -o "$TMP/cl.png" --stats "$TMP/cl.json" --ips 2 --cluster 3 --data shared || fail "cluster run"
 "${sim[@]}" -o "$TMP/dl.png" --stats "$TMP/dl.json" --ips 1 --queue 1 --flow none 2> /dev/null
 check "the deadlock run exits 3" test $? -eq 3
-"$BUILD/torusrt-sim" "$f" -q --size 16x16 -o "$TMP/an_%d.png" --stats "$TMP/an.json" --ips 2 --frames 2 --orbit 10 \
-    --remap every-frame ||
+"$BUILD/torusrt-sim" "$f" -q --size 16x16 -o "$TMP/an_%d.png" --stats "$TMP/an.json" --ips 2 --frames 3 --orbit 10 \
+    --remap adaptive ||
     fail "animation run"
 python3 - "$SRC/README.md" "$TMP/flat.json" "$TMP/cl.json" "$TMP/dl.json" "$TMP/an.json" > "$TMP/keys.txt" <<'PY'
 import json, re, sys
