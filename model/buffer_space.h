@@ -15,6 +15,8 @@
 #include <systemc>
 #include <vector>
 
+#include "sim_now.h"
+
 namespace torusrt {
 
 // The simulated time during which at least one of its members is stalled (intervals that
@@ -23,14 +25,14 @@ class StallClock {
   public:
     void begin()
     {
-        if (m_active++ == 0) m_since = sc_core::sc_time_stamp();
+        if (m_active++ == 0) m_since = sim_now();
     }
     void end()
     {
-        if (m_active && --m_active == 0) m_total += sc_core::sc_time_stamp() - m_since;
+        if (m_active && --m_active == 0) m_total += sim_now() - m_since;
     }
     // An interval still open counts up to now.
-    sc_core::sc_time time() const { return m_active ? m_total + (sc_core::sc_time_stamp() - m_since) : m_total; }
+    sc_core::sc_time time() const { return m_active ? m_total + (sim_now() - m_since) : m_total; }
 
   private:
     unsigned m_active = 0;

@@ -25,20 +25,12 @@ class ClassBuffers {
     ClassBuffers(const ClassBuffers &) = delete;
     ClassBuffers &operator=(const ClassBuffers &) = delete;
 
-    BufferSpace &at(uint32_t index)
+    // Inlined: the hop path calls it several times a hop and nearly always takes the first test.
+    [[gnu::always_inline]] BufferSpace &at(uint32_t index)
     {
         if (index > m_top) m_top = index;
-        index = slot(index);
-        if (!index && m_first_made) return m_first; // the hop path's case: no look-up
-        if (index >= m_count) m_count = index + 1;
-        if (index >= m_made.size()) m_made.resize(index + 1, 0);
-        BufferSpace &s = space(index);
-        if (!m_made[index]) {
-            m_made[index] = 1;
-            m_first_made = m_first_made || !index;
-            s.count_in(&m_depth, &m_stall);
-        }
-        return s;
+        if (m_first_made && !slot(index)) return m_first; // the hop path's case: no look-up
+        return made(slot(index));
     }
     // Unbounded: every packet finds room, nothing to check.
     bool unbounded() const { return !m_capacity; }
@@ -88,6 +80,19 @@ class ClassBuffers {
     // An unbounded buffer keeps every index in one BufferSpace: nothing ever waits for room, so
     // a split would change no time and only cost memory (hundreds of classes per buffer).
     uint32_t slot(uint32_t index) const { return m_capacity ? index : 0; }
+    // The buffer at slot `index`, made and counted in on first use (out of line: rare).
+    [[gnu::noinline]] BufferSpace &made(uint32_t index)
+    {
+        if (index >= m_count) m_count = index + 1;
+        if (index >= m_made.size()) m_made.resize(index + 1, 0);
+        BufferSpace &s = space(index);
+        if (!m_made[index]) {
+            m_made[index] = 1;
+            m_first_made = m_first_made || !index;
+            s.count_in(&m_depth, &m_stall);
+        }
+        return s;
+    }
     // The buffer at `index`, making the storage up to it (deque growth keeps addresses).
     BufferSpace &space(uint32_t index)
     {

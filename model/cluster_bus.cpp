@@ -3,6 +3,8 @@
 
 #include <string>
 
+#include "sim_now.h"
+
 namespace torusrt {
 
 ClusterBus::ClusterBus(sc_core::sc_module_name name, const rt_timing &timing, bool loosely_timed, int requesters)
@@ -105,13 +107,13 @@ void ClusterBus::b_transport(int id, tlm::tlm_generic_payload &trans, sc_core::s
         return;
     }
     if (m_lt) {
-        sc_core::sc_time requested = sc_core::sc_time_stamp() + delay;
+        sc_core::sc_time requested = sim_now() + delay;
         sc_core::sc_time memory_delay;
         double bytes = carry(trans, memory_delay);
         sc_core::sc_time occupancy = transfer_time(bytes) + memory_delay;
         sc_core::sc_time start = reserve(requested, occupancy);
         record(id, trans, bytes, requested, start, occupancy);
-        delay = start + occupancy - sc_core::sc_time_stamp();
+        delay = start + occupancy - sim_now();
         return;
     }
     // Approximately timed: the master's annotated delay is spent first, then it requests.
@@ -122,12 +124,12 @@ void ClusterBus::b_transport(int id, tlm::tlm_generic_payload &trans, sc_core::s
     if (m_requesting[id] || m_owner == id)
         SC_REPORT_FATAL(
             name(), ("requester " + std::to_string(id) + " issued a second transfer before its first ended").c_str());
-    sc_core::sc_time requested = sc_core::sc_time_stamp();
+    sc_core::sc_time requested = sim_now();
     m_requesting[id] = true;
     m_request_line[id] = true;
     if (m_owner < 0) m_arbitrate.notify(sc_core::SC_ZERO_TIME);
     while (m_owner != id) sc_core::wait(*m_granted[id]);
-    sc_core::sc_time start = sc_core::sc_time_stamp();
+    sc_core::sc_time start = sim_now();
     sc_core::sc_time memory_delay;
     double bytes = carry(trans, memory_delay);
     sc_core::sc_time occupancy = transfer_time(bytes) + memory_delay;
@@ -144,7 +146,7 @@ void ClusterBus::b_transport(int id, tlm::tlm_generic_payload &trans, sc_core::s
 sc_core::sc_time ClusterBus::reserve(const sc_core::sc_time &requested, const sc_core::sc_time &occupancy)
 {
     // Every requester's local time is at or after simulation time: older slots can go.
-    while (!m_reserved.empty() && m_reserved.begin()->second <= sc_core::sc_time_stamp())
+    while (!m_reserved.empty() && m_reserved.begin()->second <= sim_now())
         m_reserved.erase(m_reserved.begin());
     sc_core::sc_time start = requested;
     if (occupancy == sc_core::SC_ZERO_TIME) return start;

@@ -6,6 +6,8 @@
 #include <map>
 #include <stdexcept>
 
+#include "sim_now.h"
+
 namespace torusrt {
 
 namespace {
@@ -92,7 +94,7 @@ void ClusterDispatcher::run()
         int k = m_target >= 0 ? m_target : m_policy->choose(m_processors);
         m_busy_flag = true;
         // Packet write over the bus; the delay argument carries this process's local offset.
-        sc_core::sc_time delay = m_time.now() - sc_core::sc_time_stamp();
+        sc_core::sc_time delay = m_time.now() - sim_now();
         m_trans.set_command(tlm::TLM_WRITE_COMMAND);
         m_trans.set_address(static_cast<uint64_t>(k));
         m_trans.set_data_ptr(reinterpret_cast<unsigned char *>(&tp.packet));
@@ -101,7 +103,7 @@ void ClusterDispatcher::run()
         m_trans.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
         bus_socket->b_transport(m_trans, delay);
         if (m_trans.is_response_error()) SC_REPORT_FATAL(name(), "packet transfer over the cluster bus failed");
-        m_time.advance_to(sc_core::sc_time_stamp() + delay);
+        m_time.advance_to(sim_now() + delay);
         m_busy_flag = false;
         tp.stamp = m_time.now();
         m_dispatched[k]++;

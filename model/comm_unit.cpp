@@ -6,6 +6,7 @@
 
 #include "flow_control.h"
 #include "rt_step.h"
+#include "sim_now.h"
 #include "timed_packet.h"
 #include "toroidal_link.h"
 
@@ -107,7 +108,7 @@ void CommUnit::accept(const TimedPacket &p)
     while (processor_held()) sc_core::wait(m_processor_room);
     uint32_t packet = m_pool->add(p, owner_of(p));
     m_pool->at(packet).last_dir = -1; // it leaves the processor side
-    sc_core::sc_time now = sc_core::sc_time_stamp();
+    sc_core::sc_time now = sim_now();
     // Bound for a link: routed now, as it would be one delta on (nothing else is routed at this
     // time any more). Bound for this node's own processor, it waits for that delta, so the
     // processor takes up its next packet before this one joins its queue.
@@ -122,7 +123,7 @@ void CommUnit::on_space(const TimedPacket &, sc_core::sc_event &e) { m_processor
 
 void CommUnit::enqueue(uint32_t packet, const sc_core::sc_time &stamp, int source, BufferSpace *credit)
 {
-    sc_core::sc_time now = sc_core::sc_time_stamp();
+    sc_core::sc_time now = sim_now();
     sc_core::sc_time when = stamp > now + m_lookahead ? stamp - m_lookahead : now;
     m_pool->at(packet).stamp = stamp;
     m_pool->credit(packet) = credit;
@@ -148,13 +149,13 @@ void CommUnit::b_transport(int id, tlm::tlm_generic_payload &trans, sc_core::sc_
         packet = m_pool->add(ext->item, owner_of(ext->item));
     }
     // Arrival in the sender's local time.
-    enqueue(packet, sc_core::sc_time_stamp() + delay, id, ext->credit);
+    enqueue(packet, sim_now() + delay, id, ext->credit);
     trans.set_response_status(tlm::TLM_OK_RESPONSE);
 }
 
 void CommUnit::wake_at(const sc_core::sc_time &when)
 {
-    sc_core::sc_time now = sc_core::sc_time_stamp();
+    sc_core::sc_time now = sim_now();
     // Due now: deliver one delta on. Later: the calendar's wake or a timed notification (an
     // earlier one pending is kept; deliver() asks again for the rest).
     if (when <= now) m_run.notify(sc_core::SC_ZERO_TIME);
@@ -165,7 +166,7 @@ void CommUnit::wake_at(const sc_core::sc_time &when)
 bool CommUnit::forward(uint32_t packet)
 {
     TimedPacket &p = m_pool->at(packet);
-    sc_core::sc_time now = sc_core::sc_time_stamp();
+    sc_core::sc_time now = sim_now();
     if (p.stamp < now) p.stamp = now; // held packets move on no earlier than now
     Hop next = next_hop(p, m_pool->owner(packet));
     if (next.link) next.link->prefetch_hop();
@@ -184,7 +185,7 @@ bool CommUnit::forward(uint32_t packet)
 
 void CommUnit::deliver()
 {
-    sc_core::sc_time now = sc_core::sc_time_stamp();
+    sc_core::sc_time now = sim_now();
     while (!m_arrivals.empty() && m_arrivals.next_time() <= now) {
         if (m_arrivals.next_is_new()) { // sent in this delta: next delta (already notified)
             m_run.notify(sc_core::SC_ZERO_TIME);

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "flow_control.h"
+#include "sim_now.h"
 
 namespace torusrt {
 
@@ -234,12 +235,12 @@ void IntersectionProcessor::run_method()
     // Only what the machine waits for moves it on (as for a thread): a release of a buffer it
     // once waited on may come while it steps or waits on its queue alone.
     bool go = m_woken || (m_room_woken && m_wake == Wake::queue_or_room);
-    if (m_wake == Wake::timer) go = m_woken && sc_core::sc_time_stamp() >= m_due;
+    if (m_wake == Wake::timer) go = m_woken && sim_now() >= m_due;
     m_woken = m_room_woken = false;
     if (!go) return;
     m_wake = act();
     if (m_wake != Wake::timer) return;
-    m_due = sc_core::sc_time_stamp() + m_delay;
+    m_due = sim_now() + m_delay;
     if (m_calendar && m_delay != sc_core::SC_ZERO_TIME) m_calendar->wake_at(m_calendar_id, m_due);
     else m_timer.notify(m_delay); // zero: the next delta, as wait(SC_ZERO_TIME)
 }

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "cluster_memory.h"
+#include "sim_now.h"
 
 namespace torusrt {
 
@@ -12,7 +13,7 @@ namespace {
 // Offset of a local time from simulation time (zero if it does not lie ahead).
 sc_core::sc_time offset_of(const sc_core::sc_time &local)
 {
-    sc_core::sc_time now = sc_core::sc_time_stamp();
+    sc_core::sc_time now = sim_now();
     return local > now ? local - now : sc_core::SC_ZERO_TIME;
 }
 
@@ -39,7 +40,7 @@ void ProcessorBusPort::accept(const TimedPacket &p)
     m_trans.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
     bus_socket->b_transport(m_trans, delay);
     if (m_trans.is_response_error()) SC_REPORT_FATAL(name(), "packet transfer over the cluster bus failed");
-    out.stamp = sc_core::sc_time_stamp() + delay;
+    out.stamp = sim_now() + delay;
     to_comm_unit->accept(out);
 }
 
@@ -64,7 +65,7 @@ void ProcessorBusPort::fetch(int, uint32_t object, TimeKeeper &time)
     m_trans.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
     bus_socket->b_transport(m_trans, delay);
     if (m_trans.is_response_error()) SC_REPORT_FATAL(name(), "object read over the cluster bus failed");
-    time.advance_to(sc_core::sc_time_stamp() + delay);
+    time.advance_to(sim_now() + delay);
 }
 
 }  // namespace torusrt

@@ -1,13 +1,15 @@
 // time_keeper.cpp - waits (AT) or quantum-keeper offsets (LT).
 #include "time_keeper.h"
 
+#include "sim_now.h"
+
 namespace torusrt {
 
 TimeKeeper::TimeKeeper(bool loosely_timed) : m_lt(loosely_timed) { m_qk.reset(); }
 
 sc_core::sc_time TimeKeeper::now() const
 {
-    return m_lt ? m_qk.get_current_time() : sc_core::sc_time_stamp();
+    return m_lt ? m_qk.get_current_time() : sim_now();
 }
 
 TimeWait TimeKeeper::advance_nb(const sc_core::sc_time &d)
@@ -40,7 +42,7 @@ void TimeKeeper::resumed()
 void TimeKeeper::settle(const sc_core::sc_time &before)
 {
     if (!m_lt) return;
-    sc_core::sc_time now = sc_core::sc_time_stamp();
+    sc_core::sc_time now = sim_now();
     m_qk.set(before > now ? before - now : sc_core::SC_ZERO_TIME);
 }
 

@@ -1,6 +1,8 @@
 // toroidal_link.cpp - busy-until serialisation of one link direction.
 #include "toroidal_link.h"
 
+#include "sim_now.h"
+
 namespace torusrt {
 
 ToroidalLink::ToroidalLink(sc_core::sc_module_name name, const MachineConfig &config, int from, int to, int dir)
@@ -31,7 +33,7 @@ void ToroidalLink::accept(const TimedPacket &p)
     q = p;
     q.reserved = false;
     m_ext->pool = nullptr;
-    send(q, sc_core::sc_time_stamp());
+    send(q, sim_now());
 }
 
 void ToroidalLink::accept_pooled(PacketPool &pool, uint32_t handle, const sc_core::sc_time &now)
@@ -76,7 +78,7 @@ bool &ToroidalLink::busy_trace()
 
 void ToroidalLink::drive_busy_trace()
 {
-    sc_core::sc_time now = sc_core::sc_time_stamp();
+    sc_core::sc_time now = sim_now();
     while (!m_crossings.empty() && m_crossings.front().second <= now) m_crossings.pop_front();
     // Crossings are back to back or separated by idle time; the flag follows the front one.
     m_busy_flag = !m_crossings.empty() && m_crossings.front().first <= now;

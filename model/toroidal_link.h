@@ -35,7 +35,7 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
     // Waits (in a thread) for room, then sends. A method caller checks can_accept() first.
     void accept(const TimedPacket &p) override;
     // The same for a packet of `pool`, which crosses by handle (a method caller, after
-    // can_accept(); the receiver takes the handle on). `now` = sc_time_stamp(), read once a hop.
+    // can_accept(); the receiver takes the handle on). `now` = sim_now(), read once a hop.
     void accept_pooled(PacketPool &pool, uint32_t handle, const sc_core::sc_time &now);
     // Any other caller of the sink interface (a thread may wait for room): copies the packet in.
     using PacketSinkIf::accept_pooled;
@@ -81,7 +81,7 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
   private:
     static uint32_t index_of(const TimedPacket &p) { return 2 * p.cls + p.vc; }
     BufferSpace &space_for(const TimedPacket &p) { return m_spaces.at(index_of(p)); }
-    // Sends `p` (the extension's packet), its slot taken, at `now` or later (now = sc_time_stamp()).
+    // Sends `p` (the extension's packet), its slot taken, at `now` or later (now = sim_now()).
     void send(TimedPacket &p, const sc_core::sc_time &now);
     void drive_busy_trace();
     void start_of_simulation() override { m_fw = socket.operator->(); }

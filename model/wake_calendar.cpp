@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+#include "sim_now.h"
+
 namespace torusrt {
 
 WakeCalendar::WakeCalendar(sc_core::sc_module_name name) : sc_module(name)
@@ -32,7 +34,7 @@ void WakeCalendar::wake_at(int id, const sc_core::sc_time &when)
     std::push_heap(m_heap.begin(), m_heap.end(), later);
     if (t < m_notified) { // an earlier notification replaces a pending later one
         m_notified = t;
-        m_due.notify(sc_core::sc_time::from_value(t) - sc_core::sc_time_stamp());
+        m_due.notify(sc_core::sc_time::from_value(t) - sim_now());
     }
 }
 
@@ -54,7 +56,7 @@ WakeCalendar::Key WakeCalendar::pop()
 
 void WakeCalendar::run()
 {
-    uint64_t now = sc_core::sc_time_stamp().value();
+    uint64_t now = sim_now().value();
     m_notified = kNone;
     // Wakes asked for by the clients woken here are later than now: they wait for the next run.
     while (!m_heap.empty() && m_heap.front().when <= now) {
