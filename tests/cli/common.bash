@@ -25,6 +25,29 @@ fail() { FAILED=$((FAILED + 1)); echo "FAIL: $*"; }
 # check DESCRIPTION COMMAND...: passes if the command succeeds.
 check() { local what=$1; shift; if "$@"; then pass; else fail "$what"; fi; }
 finish() { echo "$PASSED passed, $FAILED failed"; [ "$FAILED" -eq 0 ]; }
+# sim_ok NAME ARGS...: a torusrt-sim run ($sim, set by the script) that must succeed, quiet, its
+# stderr in $TMP/NAME.stderr.
+sim_ok() {
+    local name=$1
+    shift
+    if "${run_limited[@]}" "$sim" "$@" -q >/dev/null 2>"$TMP/$name.stderr" </dev/null; then pass; else
+        fail "$name: torusrt-sim $* failed: $(head -c 300 "$TMP/$name.stderr")"
+        return 1
+    fi
+}
+# bad_option OPTION NAME ARGS...: a torusrt-sim run of $scene at ${size[@]} (set by the script)
+# with ARGS must exit 2, name OPTION on stderr and write neither its frames nor its stats.
+bad_option() {
+    local option=$1 name=$2
+    shift 2
+    rm -rf "$TMP/bad" && mkdir "$TMP/bad"
+    "${run_limited[@]}" "$sim" "$scene" "${size[@]}" -q "$@" -o "$TMP/bad/f_%d.png" --stats "$TMP/bad/s.json" \
+        >/dev/null 2>"$TMP/bad.stderr" </dev/null
+    local rc=$?
+    check "$name: exit 2 (got $rc)" [ "$rc" = 2 ]
+    check "$name: names $option ($(head -c 200 "$TMP/bad.stderr"))" grep -q -- "$option" "$TMP/bad.stderr"
+    check "$name: no output" [ -z "$(ls "$TMP/bad")" ]
+}
 # json FILE FILTER: one value from a JSON file.
 json() { jq -r "$2" "$1"; }
 

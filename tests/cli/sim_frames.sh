@@ -15,14 +15,6 @@ scene=$(source_scene paper-image2) || exit 1
 scene1=$(source_scene paper-image1) || exit 1
 size=(--size 32x32)
 
-sim_ok() { # sim_ok NAME ARGS...: a run that must succeed
-    local name=$1
-    shift
-    if "${run_limited[@]}" "$sim" "$@" -q >/dev/null 2>"$TMP/$name.stderr" </dev/null; then pass; else
-        fail "$name: torusrt-sim $* failed: $(head -c 300 "$TMP/$name.stderr")"
-        return 1
-    fi
-}
 sum() { jq "[$2] | add" "$1"; }
 close() { awk -v a="$1" -v b="$2" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(d <= 1e-7 * (a < 0 ? -a : a) + 1e-12) }'; }
 differs() { ! cmp -s "$1" "$2"; }

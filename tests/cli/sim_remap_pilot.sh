@@ -12,14 +12,6 @@ time_limit 300
 scene=$(source_scene paper-image2) || exit 1
 size=(--size 16x16)
 
-sim_ok() { # sim_ok NAME ARGS...: a run that must succeed
-    local name=$1
-    shift
-    if "${run_limited[@]}" "$sim" "$@" -q >/dev/null 2>"$TMP/$name.stderr" </dev/null; then pass; else
-        fail "$name: torusrt-sim $* failed: $(head -c 300 "$TMP/$name.stderr")"
-        return 1
-    fi
-}
 close() { awk -v a="$1" -v b="$2" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(d <= 1e-7 * (a < 0 ? -a : a) + 1e-12) }'; }
 
 # Two frames of the same view: frame 1's full-resolution preview (--remap-pilot 1) costs the host
@@ -65,17 +57,7 @@ sim_ok default "$scene" "${size[@]}" --ips 2x2x2 --map cost --orbit 90 --frames 
 check "default: no preview" [ "$(jq '[.frames[].host_pilot.pixels] | add' "$TMP/d.json")" = 0 ]
 
 # Bad values: exit 2, the option named, no output.
-bad() { # bad NAME ARGS...
-    local name=$1
-    shift
-    rm -rf "$TMP/bad" && mkdir "$TMP/bad"
-    "${run_limited[@]}" "$sim" "$scene" "${size[@]}" -q "$@" -o "$TMP/bad/f_%d.png" --stats "$TMP/bad/s.json" \
-        >/dev/null 2>"$TMP/bad.stderr" </dev/null
-    local rc=$?
-    check "$name: exit 2 (got $rc)" [ "$rc" = 2 ]
-    check "$name: names --remap-pilot ($(head -c 200 "$TMP/bad.stderr"))" grep -q -- "--remap-pilot" "$TMP/bad.stderr"
-    check "$name: no output" [ -z "$(ls "$TMP/bad")" ]
-}
+bad() { bad_option --remap-pilot "$@"; }
 bad word --orbit 90 --frames 2 --remap adaptive --remap-pilot half
 bad negative --orbit 90 --frames 2 --remap adaptive --remap-pilot -0.5
 bad above-one --orbit 90 --frames 2 --remap adaptive --remap-pilot 1.5

@@ -14,14 +14,6 @@ scene=$(source_scene paper-image1) || exit 1
 size=(--size 16x16)
 anim=(--ips 2x2x2 --map cost --orbit 360 --frames 7 --remap adaptive)
 
-sim_ok() { # sim_ok NAME ARGS...: a run that must succeed
-    local name=$1
-    shift
-    if "${run_limited[@]}" "$sim" "$@" -q >/dev/null 2>"$TMP/$name.stderr" </dev/null; then pass; else
-        fail "$name: torusrt-sim $* failed: $(head -c 300 "$TMP/$name.stderr")"
-        return 1
-    fi
-}
 
 "$BUILD/torusrt-render" "$scene" "${size[@]}" --orbit 360 --frames 7 -o "$TMP/ref_%d.png" -q || fail "renderer frames"
 sim_ok default "$scene" "${size[@]}" "${anim[@]}" -o "$TMP/d_%d.png" --stats "$TMP/d.json"
@@ -56,17 +48,7 @@ for w in d w1 w3 w4; do for k in 0 1 2 3 4 5 6; do
 done; done
 
 # Bad values: exit 2, the option named, no output.
-bad() { # bad NAME ARGS...
-    local name=$1
-    shift
-    rm -rf "$TMP/bad" && mkdir "$TMP/bad"
-    "${run_limited[@]}" "$sim" "$scene" "${size[@]}" -q "$@" -o "$TMP/bad/f_%d.png" --stats "$TMP/bad/s.json" \
-        >/dev/null 2>"$TMP/bad.stderr" </dev/null
-    local rc=$?
-    check "$name: exit 2 (got $rc)" [ "$rc" = 2 ]
-    check "$name: names --remap-window ($(head -c 200 "$TMP/bad.stderr"))" grep -q -- "--remap-window" "$TMP/bad.stderr"
-    check "$name: no output" [ -z "$(ls "$TMP/bad")" ]
-}
+bad() { bad_option --remap-window "$@"; }
 bad zero --orbit 90 --frames 2 --remap adaptive --remap-window 0
 bad negative --orbit 90 --frames 2 --remap adaptive --remap-window -3
 bad fraction --orbit 90 --frames 2 --remap adaptive --remap-window 2.5
