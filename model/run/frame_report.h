@@ -42,8 +42,8 @@ struct RemapSettings {
 };
 
 nlohmann::json frame_json(const FrameRecord &frame);
-// Totals: frame_count, policy (and adaptive's pilot_fraction and window), total_s = sum of image times + charged migration + charged host
-// pilot time, and its parts.
+// Totals: frame_count, policy (and adaptive's pilot_fraction and window), total_s = sum of
+// image times + charged migration + charged host pilot time, and its parts.
 nlohmann::json animation_json(const std::vector<FrameRecord> &frames, const RemapSettings &remap);
 // One header line and one row per frame (columns as README "Animation in torusrt-sim").
 std::string frames_csv(const std::vector<FrameRecord> &frames);

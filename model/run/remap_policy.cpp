@@ -6,8 +6,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <new>
 #include <functional>
+#include <new>
+#include <stdexcept>
 
 #include "load_motion.h"
 #include "user_error.h"
@@ -103,8 +104,11 @@ void Remapper::guess_choice(const RemapContext &ctx, const std::vector<int32_t> 
         m_board.record(scores);
     }
     size_t pick = m_board.best();
-    std::vector<std::string> names;
-    for (const GuessKind &g : guesses) names.emplace_back(g.name);
+    static const std::vector<std::string> names = [] {
+        std::vector<std::string> v;
+        for (const GuessKind &g : guesses) v.emplace_back(g.name);
+        return v;
+    }();
     std::string tested = m_board.text(names);
     m_proposed.assign(n, {});
     std::unique_ptr<FramePilot> predicted;
@@ -114,10 +118,8 @@ void Remapper::guess_choice(const RemapContext &ctx, const std::vector<int32_t> 
         m_proposed[g] = remapped(ctx, current, *p);
         if (g == pick) predicted = std::move(p);
     }
-    if (!predicted) {  // cannot happen: a guess scored before can be made again; frame k-1's load then
-        pick = 0;
-        predicted = guessed_load(ctx, guesses[0], loads.previous, loads.before, *loads.pose_previous, *loads.pose_next);
-    }
+    // The guess picked was scored, so it was made before, and what made it (frame k-2 for the trend) is still here.
+    if (!predicted) throw std::logic_error("adaptive: the guess picked gave no table");
     const GuessKind &g = guesses[pick];
     std::vector<int32_t> candidate = m_proposed[pick];
     double w_now = predicted->busiest_work_s(current, nodes);
@@ -318,18 +320,17 @@ Remapper::Remapper(RemapPolicy policy, size_t window)
 RemapDecision Remapper::decide(const RemapContext &ctx, const std::vector<int32_t> &current, const FrameLoads &loads)
 {
     RemapDecision d;
-    RemapPolicy policy = m_policy;
     int nodes = ctx.config.node_count();
     double t0 = now_s();
-    if (policy == RemapPolicy::static_map) {
+    if (m_policy == RemapPolicy::static_map) {
         d.owner = current;
         d.reason = "static: the first frame's mapping";
-    } else if (policy == RemapPolicy::oracle) {
+    } else if (m_policy == RemapPolicy::oracle) {
         d.owner = oracle_mapping(ctx, loads.pilot);
         d.decision = "remap";
         d.reason = "oracle: this frame's own pilot, migration free";
         d.migration_charged = false;
-    } else if (policy == RemapPolicy::every_frame) {
+    } else if (m_policy == RemapPolicy::every_frame) {
         d.owner = remapped(ctx, current, loads.previous);
         d.decision = "remap";
         d.reason = "every-frame: remapped from the previous frame's work";
