@@ -4,7 +4,10 @@
 
 namespace torusrt {
 
-PacketQueue::PacketQueue(std::string name, unsigned capacity) : m_name(std::move(name)), m_spaces(capacity) {}
+PacketQueue::PacketQueue(std::string name, unsigned capacity)
+    : m_pool(&m_own_pool), m_spaces(capacity), m_name(std::move(name))
+{
+}
 
 void PacketQueue::push_blocking(const TimedPacket &p) { push_pooled(*m_pool, m_pool->add(p, -1)); }
 

@@ -134,18 +134,20 @@ class PacketQueue {
                (m_items.empty() || m_source->next_time(m_node) <= m_pool->at(m_items.front()).stamp);
     }
 
-    std::string m_name;
-    ClassBuffers m_spaces;
-    PacketPool m_own_pool; // a queue alone (tests); the machine's queues share its pool
-    PacketPool *m_pool = &m_own_pool;
+    // What a push and a take touch first, then the buffers, then the rest (a reader told at
+    // once never touches the event).
+    PacketPool *m_pool;
     std::deque<uint32_t> m_items; // pool handles, oldest first
-    sc_core::sc_event m_not_empty;
     size_t m_high_water = 0;
     int m_depth = 0;
     bool m_reader_waiting = false;
     Reader *m_ready_reader = nullptr;
     PrimarySource *m_source = nullptr;
     int m_node = -1;
+    ClassBuffers m_spaces;
+    sc_core::sc_event m_not_empty;
+    PacketPool m_own_pool; // a queue alone (tests); the machine's queues share its pool
+    std::string m_name;
 };
 
 template <class Accept> bool PacketQueue::try_take(Accept &&accept, TimedPacket *taken)

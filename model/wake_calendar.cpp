@@ -1,14 +1,12 @@
-// wake_calendar.cpp - a binary min-heap of wake keys with lazy deletion, and the method that
-// wakes the clients due.
+// wake_calendar.cpp - the tournament tree of wake times and the method that wakes the clients
+// due.
 #include "wake_calendar.h"
-
-#include <algorithm>
 
 #include "sim_now.h"
 
 namespace torusrt {
 
-WakeCalendar::WakeCalendar(sc_core::sc_module_name name) : sc_module(name)
+WakeCalendar::WakeCalendar(sc_core::sc_module_name name) : sc_module(name), m_when(1, kNone), m_win(2, 0)
 {
     SC_HAS_PROCESS(WakeCalendar);
     SC_METHOD(run);
@@ -18,20 +16,32 @@ WakeCalendar::WakeCalendar(sc_core::sc_module_name name) : sc_module(name)
 
 int WakeCalendar::add(Client &client)
 {
-    if (m_slots.size() >= (size_t{1} << (64 - kSeqBits))) SC_REPORT_FATAL(name(), "too many clients");
-    m_slots.push_back(Slot{&client, kNone, kNone});
-    return static_cast<int>(m_slots.size() - 1);
+    if (m_clients.size() >= (size_t{1} << 30)) SC_REPORT_FATAL(name(), "too many clients");
+    if (m_asked) SC_REPORT_FATAL(name(), "clients are added before any wake");
+    m_clients.push_back(&client);
+    if (m_clients.size() > m_leaves) { // twice the leaves; every wake is still kNone
+        m_leaves *= 2;
+        m_when.assign(m_leaves, kNone);
+        m_win.assign(2 * m_leaves, 0);
+        for (size_t j = 0; j < m_leaves; j++) m_win[m_leaves + j] = static_cast<int32_t>(j);
+        for (size_t p = m_leaves - 1; p >= 1; p--) m_win[p] = m_win[2 * p]; // all kNone: the lower index
+    }
+    return static_cast<int>(m_clients.size() - 1);
 }
 
 void WakeCalendar::wake_at(int id, const sc_core::sc_time &when)
 {
-    Slot &s = m_slots[static_cast<size_t>(id)];
+    m_asked = true;
     uint64_t t = when.value();
-    if (t >= s.when) return; // an earlier (or the same) wake is live
-    s.when = t;
-    s.order = static_cast<uint64_t>(id) << kSeqBits | m_seq++;
-    m_heap.push_back(Key{t, s.order});
-    std::push_heap(m_heap.begin(), m_heap.end(), later);
+    if (t >= m_when[id]) return; // an earlier (or the same) wake is pending
+    m_when[id] = t;
+    // Up from the leaf while it is, or now beats, what each node holds; above a node it does not
+    // beat, nothing changes.
+    for (size_t p = (m_leaves + id) >> 1; p >= 1; p >>= 1) {
+        int32_t w = m_win[p];
+        if (w != id && !before(id, w)) break;
+        m_win[p] = id;
+    }
     if (t < m_notified) { // an earlier notification replaces a pending later one
         m_notified = t;
         m_due.notify(sc_core::sc_time::from_value(t) - sim_now());
@@ -40,18 +50,26 @@ void WakeCalendar::wake_at(int id, const sc_core::sc_time &when)
 
 bool WakeCalendar::due_time(int id, sc_core::sc_time &when) const
 {
-    const Slot &s = m_slots[static_cast<size_t>(id)];
-    if (s.when == kNone) return false;
-    when = sc_core::sc_time::from_value(s.when);
+    if (m_when[id] == kNone) return false;
+    when = sc_core::sc_time::from_value(m_when[id]);
     return true;
 }
 
-WakeCalendar::Key WakeCalendar::pop()
+size_t WakeCalendar::pending() const
 {
-    std::pop_heap(m_heap.begin(), m_heap.end(), later);
-    Key k = m_heap.back();
-    m_heap.pop_back();
-    return k;
+    size_t n = 0;
+    for (uint64_t w : m_when) n += w != kNone;
+    return n;
+}
+
+void WakeCalendar::clear_earliest(int32_t id)
+{
+    m_when[id] = kNone;
+    // It was the earliest at every node of its path: each takes the earlier of its children.
+    for (size_t p = (m_leaves + id) >> 1; p >= 1; p >>= 1) {
+        int32_t a = m_win[2 * p], b = m_win[2 * p + 1];
+        m_win[p] = before(b, a) ? b : a;
+    }
 }
 
 void WakeCalendar::run()
@@ -59,25 +77,22 @@ void WakeCalendar::run()
     uint64_t now = sim_now().value();
     m_notified = kNone;
     // Wakes asked for by the clients woken here are later than now: they wait for the next run.
-    while (!m_heap.empty() && m_heap.front().when <= now) {
-        Key k = pop();
-        if (stale(k)) continue;
-        Slot &s = m_slots[k.order >> kSeqBits];
-        s.when = s.order = kNone;
+    for (int32_t id = earliest(); m_when[id] <= now; id = earliest()) {
+        clear_earliest(id);
         // The next client due is cold (a node's unit): fetch it while this one runs.
-        if (!m_heap.empty() && m_heap.front().when <= now)
-            __builtin_prefetch(m_slots[m_heap.front().order >> kSeqBits].client);
-        s.client->wake_due();
+        int32_t next = earliest();
+        if (m_when[next] <= now) __builtin_prefetch(m_clients[next]);
+        m_clients[id]->wake_due();
     }
     arm(now);
 }
 
 void WakeCalendar::arm(uint64_t now)
 {
-    while (!m_heap.empty() && stale(m_heap.front())) pop();
-    if (m_heap.empty() || m_heap.front().when >= m_notified) return;
-    m_notified = m_heap.front().when;
-    m_due.notify(sc_core::sc_time::from_value(m_notified - now));
+    uint64_t t = m_when[earliest()];
+    if (t >= m_notified) return; // nothing pending (kNone), or notified for it already
+    m_notified = t;
+    m_due.notify(sc_core::sc_time::from_value(t - now));
 }
 
 }  // namespace torusrt

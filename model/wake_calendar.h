@@ -1,16 +1,18 @@
 // wake_calendar.h - the machine's one calendar of timed wake-ups. Every communication unit (and
 // every method-driven processor) that wants to run again at a later time asks the calendar
 // instead of notifying an event of its own; the calendar holds the earliest time each client
-// wants in a compact min-heap and keeps ONE SystemC event, notified for the earliest time of all.
-// At each such time its SC_METHOD wakes every client due in a fixed order: time, then client
-// (the order they were added: node by node), then sequence (the order the wakes were asked for),
-// so the order of simultaneous wakes is the model's, not the SystemC kernel's; then it re-arms
-// for the next time. A hop costs a push and a pop on a small heap of warm keys and the kernel's
-// timed queue holds one entry instead of one per node.
+// wants and keeps ONE SystemC event, notified for the earliest time of all. At each such time
+// its SC_METHOD wakes every client due in a fixed order: time, then client (the order they were
+// added: node by node), so the order of simultaneous wakes is the model's, not the SystemC
+// kernel's; then it re-arms for the next time. The kernel's timed queue holds one entry instead
+// of one per node.
 //
-// Lazy deletion: a client has at most one live wake, its earliest; asking for an earlier one
-// pushes a new key and leaves the later one in the heap, skipped when it comes to the top. A
-// client woken asks again for its next time, if any.
+// A client has at most one wake, its earliest: asking for an earlier time replaces it, asking for
+// a later one while it is pending changes nothing, and a client woken asks again for its next
+// time, if any. So the calendar is a tournament tree over the clients (one leaf each, a node
+// holding the earlier of its two children's wakes): asking climbs from the client's leaf only
+// while it beats what is there, waking the earliest replays its one path to the root. That is
+// fewer steps than a heap's push and pop of the same wake, and it keeps no stale entries.
 #pragma once
 
 #include <cstdint>
@@ -38,33 +40,26 @@ class WakeCalendar : public sc_core::sc_module {
     void wake_at(int id, const sc_core::sc_time &when);
     // The time client `id` will be woken, if it is to be (else false).
     bool due_time(int id, sc_core::sc_time &when) const;
-    // Keys in the heap, live and stale.
-    size_t heap_size() const { return m_heap.size(); }
+    // Clients with a wake pending.
+    size_t pending() const;
 
   private:
     static constexpr uint64_t kNone = ~uint64_t{0};
-    // Client ids below 2^24; 40 bits of sequence.
-    static constexpr int kSeqBits = 40;
-    struct Key {
-        uint64_t when;  // sc_time value
-        uint64_t order; // client << kSeqBits | sequence
-    };
-    struct Slot {
-        Client *client;
-        uint64_t when;  // its live wake, or kNone
-        uint64_t order; // the live wake's key order (the older keys of the client are stale)
-    };
-    static bool later(const Key &a, const Key &b) { return a.when != b.when ? a.when > b.when : a.order > b.order; }
-    bool stale(const Key &k) const { return m_slots[k.order >> kSeqBits].order != k.order; }
-    Key pop();
+    // Whether client a's wake comes before client b's: time, then client.
+    bool before(int32_t a, int32_t b) const { return m_when[a] != m_when[b] ? m_when[a] < m_when[b] : a < b; }
+    int32_t earliest() const { return m_win[1]; }
+    // Clears the wake of `id`, the earliest of all, and replays its path.
+    void clear_earliest(int32_t id);
     void run();
-    // Drops stale keys from the top and notifies the event for the earliest live wake.
+    // Notifies the event for the earliest wake, if it is earlier than the one notified.
     void arm(uint64_t now);
 
-    std::vector<Key> m_heap;
-    std::vector<Slot> m_slots;
-    uint64_t m_seq = 0;
-    uint64_t m_notified = kNone; // time the event is notified for, or kNone
+    std::vector<Client *> m_clients;
+    size_t m_leaves = 1;            // leaves of the tree: a power of two, at least the clients
+    std::vector<uint64_t> m_when;   // per leaf, the client's wake (sc_time value) or kNone
+    std::vector<int32_t> m_win;     // per tree node (1 is the root, leaf j at m_leaves + j), the earliest leaf below
+    bool m_asked = false;           // a wake was asked for (no client may be added then)
+    uint64_t m_notified = kNone;    // time the event is notified for, or kNone
     sc_core::sc_event m_due;
 };
 

@@ -1,7 +1,7 @@
 // wake_calendar_test.cpp - the machine's wake calendar: clients due at the same time are woken
 // in client order (the order they were added), whatever order they asked in; asking for an
-// earlier time replaces a client's later wake (lazy deletion: the later key is skipped, and no
-// simulated time is spent on it), asking for a later one while an earlier is pending changes
+// earlier time replaces a client's later wake (no simulated time is spent on the later one, and
+// nothing is left pending at the end), asking for a later one while an earlier is pending changes
 // nothing; a client woken may ask again (the calendar re-arms for it), also for a time earlier
 // than the one the calendar is already notified for. Many clients asking again and again, with
 // earlier asks replacing later ones, are woken in (time, client) order, each at its earliest ask.
@@ -40,7 +40,7 @@ struct RecordingClient : WakeCalendar::Client {
 struct Outcome {
     std::vector<Wake> wakes;
     sc_time end;           // simulation time when nothing was left to do
-    size_t heap_left = 0;  // keys in the heap at the end
+    size_t pending_left = 0;  // clients with a wake pending at the end
     bool due_after_ask = false, due_after_wake = true;
     sc_time due_seen;
     std::vector<int> ids; // what add() returned, in the order the clients were added
@@ -118,7 +118,7 @@ static Outcome simulate()
     Asker asker("asker", calendar, out);
     sc_core::sc_start();
     out.end = sc_core::sc_time_stamp();
-    out.heap_left = calendar.heap_size();
+    out.pending_left = calendar.pending();
     sc_time unused;
     out.due_after_wake = calendar.due_time(1, unused);
     return out;
@@ -179,11 +179,11 @@ TEST(WakeCalendar, EarlierWakeReplacesLaterOne)
 TEST(WakeCalendar, StaleKeySpendsNoTime)
 {
     // The replaced 60 us key (and the crowd's replaced ones, 500 us later than their first) are
-    // skipped without an event: the run ends at the last wake, with the heap empty.
+    // dropped without an event: the run ends at the last wake, with nothing pending.
     sc_time last = run().wakes.back().at;
     for (const Wake &w : run().crowd) last = w.at > last ? w.at : last;
     EXPECT_EQ(run().end, last);
-    EXPECT_EQ(run().heap_left, 0u);
+    EXPECT_EQ(run().pending_left, 0u);
 }
 
 TEST(WakeCalendar, CrowdWokenInTimeThenClientOrder)
