@@ -4,7 +4,8 @@
 // nothing is left pending at the end), asking for a later one while an earlier is pending changes
 // nothing; a client woken may ask again (the calendar re-arms for it), also for a time earlier
 // than the one the calendar is already notified for. Many clients asking again and again, with
-// earlier asks replacing later ones, are woken in (time, client) order, each at its earliest ask.
+// earlier asks replacing later ones, are woken in (time, client) order, each at its earliest ask;
+// so is a calendar's only client.
 #include <systemc>
 #include <utility>
 #include <vector>
@@ -45,6 +46,7 @@ struct Outcome {
     sc_time due_seen;
     std::vector<int> ids; // what add() returned, in the order the clients were added
     std::vector<Wake> crowd; // the wakes of the crowd below
+    std::vector<Wake> solo;  // the wakes of a calendar with one client (its tree is a leaf)
     std::vector<std::vector<sc_time>> crowd_want; // per crowd client, the times it must be woken at
 };
 
@@ -115,6 +117,15 @@ static Outcome simulate()
         calendar.wake_at(crowd[i].id, out.crowd_want[i][0] + us(500)); // replaced just below
         calendar.wake_at(crowd[i].id, out.crowd_want[i][0]);
     }
+    // One client alone: asks for 7 us, then 3 us (replacing it), and from its wake for 8 us.
+    WakeCalendar solo_calendar("solo_calendar");
+    RecordingClient solo;
+    solo.calendar = &solo_calendar;
+    solo.id = solo_calendar.add(solo);
+    solo.log = &out.solo;
+    solo.next = {us(8)};
+    solo_calendar.wake_at(solo.id, us(7));
+    solo_calendar.wake_at(solo.id, us(3));
     Asker asker("asker", calendar, out);
     sc_core::sc_start();
     out.end = sc_core::sc_time_stamp();
@@ -198,4 +209,13 @@ TEST(WakeCalendar, CrowdWokenInTimeThenClientOrder)
     std::vector<std::vector<sc_time>> got(kCrowd);
     for (const Wake &w : c) got[static_cast<size_t>(w.client - 4)].push_back(w.at);
     EXPECT_EQ(got, run().crowd_want);
+}
+
+TEST(WakeCalendar, OneClientAlone)
+{
+    // A calendar of one client: the earlier ask replaced the later, the wake asked from the first
+    // wake came at its time.
+    std::vector<sc_time> at;
+    for (const Wake &w : run().solo) at.push_back(w.at);
+    EXPECT_EQ(at, (std::vector<sc_time>{us(3), us(8)}));
 }
