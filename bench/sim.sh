@@ -7,8 +7,8 @@
 # resident memory and the CPU time (user + system) of the whole torusrt-sim process
 # (/usr/bin/time -v; on a shared machine the CPU time is the steadier figure).
 # The machine's speed drifts from minute to minute: BENCH_RUNS=N runs every row N times, in N
-# rounds of one run of each row (the renderer too), and reports the run with the least
-# simulation wall time and the median of the N (default 1).
+# rounds of one run of each small row (the renderer too), then N runs of the 1024x1024 row, and
+# reports the run with the least simulation wall time and the median of the N (default 1).
 # Usage: bash bench/sim.sh [BUILD_DIR]   (BENCH_BIG=0 skips the 1024x1024 run)
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -20,26 +20,33 @@ printf '%-10s %5s %6s %10s %9s %9s %8s %10s %11s %11s %10s %8s\n' \
   size cells ips sim_time_s wall_s wall_med_s cpu_s hops us_per_hop hops_per_s vs_render peak_MB
 configs=("144x144 24 4x2x2" "144x144 24 4x4x4" "144x144 24 8x8x8")
 [ "${BENCH_BIG:-1}" = 0 ] || configs+=("1024x1024 64 8x8x8")
-# Round by round, every row once a round: a slow spell of the machine falls on all rows alike.
 declare -a best walls
+run_row() { # one run of row $1 (and of the renderer on its scene, size and grid)
+  local i=$1 size cells ips wall
+  read -r size cells ips <<<"${configs[$i]}"
+  "$build/torusrt-render" "$scene" --size "$size" --cells "$cells" -o "$tmp/r.png" --stats "$tmp/render.json" -q
+  if [ ! -e "$tmp/r$i.json" ] || [ "$(jq ".wall_s < $(jq .wall_s "$tmp/r$i.json")" "$tmp/render.json")" = true ]; then
+    mv "$tmp/render.json" "$tmp/r$i.json"
+  fi
+  /usr/bin/time -v -o "$tmp/run-time.txt" "$build/torusrt-sim" "$scene" --size "$size" --cells "$cells" --ips "$ips" \
+    --t1 1 -o "$tmp/s.png" --stats "$tmp/run.json" -q
+  wall=$(jq .sim_wall_s "$tmp/run.json")
+  walls[i]="${walls[i]:-} $wall"
+  if [ -z "${best[i]:-}" ] || [ "$(jq -n "$wall < ${best[i]}")" = true ]; then
+    best[i]=$wall
+    mv "$tmp/run.json" "$tmp/s$i.json"
+    mv "$tmp/run-time.txt" "$tmp/time$i.txt"
+  fi
+}
+# Round by round, the three small rows once a round: a slow spell of the machine falls on all of
+# them alike. The 1024x1024 row runs its rounds after them, so no small row follows a run that
+# has just freed a quarter of a gigabyte.
 for _ in $(seq "${BENCH_RUNS:-1}"); do
-  for i in "${!configs[@]}"; do
-    read -r size cells ips <<<"${configs[$i]}"
-    "$build/torusrt-render" "$scene" --size "$size" --cells "$cells" -o "$tmp/r.png" --stats "$tmp/render.json" -q
-    if [ ! -e "$tmp/r$i.json" ] || [ "$(jq ".wall_s < $(jq .wall_s "$tmp/r$i.json")" "$tmp/render.json")" = true ]; then
-      mv "$tmp/render.json" "$tmp/r$i.json"
-    fi
-    /usr/bin/time -v -o "$tmp/run-time.txt" "$build/torusrt-sim" "$scene" --size "$size" --cells "$cells" --ips "$ips" \
-      --t1 1 -o "$tmp/s.png" --stats "$tmp/run.json" -q
-    wall=$(jq .sim_wall_s "$tmp/run.json")
-    walls[i]="${walls[i]:-} $wall"
-    if [ -z "${best[i]:-}" ] || [ "$(jq -n "$wall < ${best[i]}")" = true ]; then
-      best[i]=$wall
-      mv "$tmp/run.json" "$tmp/s$i.json"
-      mv "$tmp/run-time.txt" "$tmp/time$i.txt"
-    fi
-  done
+  for i in 0 1 2; do run_row "$i"; done
 done
+if [ "${#configs[@]}" -gt 3 ]; then
+  for _ in $(seq "${BENCH_RUNS:-1}"); do run_row 3; done
+fi
 for i in "${!configs[@]}"; do
   read -r size cells ips <<<"${configs[$i]}"
   rss_kb=$(awk -F': ' '/Maximum resident set size/ { print $2 }' "$tmp/time$i.txt")
