@@ -98,12 +98,6 @@ bool run_frame(const SimConfig &config, Machine &m, size_t k, size_t n)
     return run_finished(config, *m.top, m.ledger, m.memory);
 }
 
-// Frame k-2's camera, none for k < 2.
-const rt_camera_pose *pose_before(const rt_camera_path *path, size_t k)
-{
-    return k >= 2 ? rt_camera_path_pose(path, k - 2) : nullptr;
-}
-
 // Frame k's mapping (k > 0) and its record's mapping fields; the owner table is updated.
 void next_mapping(Remapper &remapper, const RemapContext &ctx, Machine &m, const FrameLoads &loads, FrameRecord &rec)
 {
@@ -154,7 +148,7 @@ AnimationOutcome run_animation(const SimConfig &config, rt_scene *scene, const r
 
     AnimationOutcome out;
     Remapper remapper(policy, window);
-    std::unique_ptr<FramePilot> previous, before, earlier, preview;
+    std::unique_ptr<FramePilot> previous, before, preview;
     double end_s = 0;
     for (size_t k = 0; k < n; k++) {
         FrameRecord rec;
@@ -168,16 +162,14 @@ AnimationOutcome run_animation(const SimConfig &config, rt_scene *scene, const r
         sc_core::sc_time start = sc_core::SC_ZERO_TIME;
         if (k > 0) {
             set_camera(scene, path, k);
-            earlier = std::move(before);
             before = std::move(previous);
             previous = std::move(pilot);
             pilot = std::make_unique<FramePilot>(config, scene, grid);
             double previous_time_s = out.frames.back().image_time_s;
             if (policy == RemapPolicy::adaptive && pilot_fraction > 0)
                 preview = host_preview(config, scene, grid, pilot_fraction, previous_time_s, rec);
-            next_mapping(remapper, ctx, m, FrameLoads{*previous, previous_time_s, *pilot, before.get(), earlier.get(),
-                                                    preview.get(), pose_before(path, k), rt_camera_path_pose(path, k - 1),
-                                                    rt_camera_path_pose(path, k)}, rec);
+            next_mapping(remapper, ctx, m, FrameLoads{*previous, previous_time_s, *pilot, before.get(), preview.get(),
+                                                    rt_camera_path_pose(path, k - 1), rt_camera_path_pose(path, k)}, rec);
             m.fb = new_frame_buffer(scene);
             start = frame_start(config, end_s + rec.charged_migration_s() + rec.host_pilot_charged_s);
             m.top->start_frame(m.fb.get(), m.owner.data(), start);

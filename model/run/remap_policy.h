@@ -141,9 +141,7 @@ struct FrameLoads {
     double previous_time_s;        // frame k-1's measured image time
     const FramePilot &pilot;       // frame k's own full pilot (oracle only)
     const FramePilot *before;      // frame k-2's measured load (null for k = 1)
-    const FramePilot *earlier;     // frame k-3's measured load (null for k < 3)
     const FramePilot *preview;     // frame k's host preview (adaptive only)
-    const rt_camera_pose *pose_before;    // frame k-2's camera (null for k = 1)
     const rt_camera_pose *pose_previous;  // frame k-1's camera
     const rt_camera_pose *pose_next;      // frame k's camera (known in advance)
 };
