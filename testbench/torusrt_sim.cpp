@@ -372,7 +372,10 @@ void report_deadlock(const SimConfig &config, double sim_time_s, const std::stri
 
 void write_stats(const StagedOutputs &outputs, const CommandLine &cl, const RunReport &report)
 {
-    if (!outputs.stats.empty()) write_text_file(outputs.stats, cl.common.stats, to_json(report).dump(2) + "\n");
+    if (outputs.stats.empty()) return;
+    std::string text = to_json(report).dump(2);  // the tree is freed before the file is written
+    text += '\n';
+    write_text_file(outputs.stats, cl.common.stats, text);
 }
 
 // An animation: every frame's PNG, the statistics and the CSV commit together.

@@ -58,7 +58,7 @@ struct Machine {
     rt_budget memory;
     std::vector<int32_t> owner;  // the table every module reads; its contents change between frames
     FramebufferPtr fb;
-    std::unique_ptr<TorusSystem> top;
+    TorusSystem *top = nullptr;  // kept until the process exits (keep_until_exit)
     std::unique_ptr<Tracer> tracer;
     double sim_wall_s = 0;
 };
@@ -143,7 +143,8 @@ AnimationOutcome run_animation(const SimConfig &config, rt_scene *scene, const r
     m.fb = new_frame_buffer(scene);
     if (config.style == TimingStyle::lt)
         tlm::tlm_global_quantum::instance().set(sc_core::sc_time(config.quantum_us, sc_core::SC_US));
-    m.top = std::make_unique<TorusSystem>("top", config, scene, grid, m.owner.data(), m.ledger, m.fb.get());
+    m.top = &keep_until_exit(std::make_unique<TorusSystem>("top", config, scene, grid, m.owner.data(), m.ledger,
+                                                           m.fb.get()));
     if (!config.vcd_path.empty()) m.tracer = std::make_unique<Tracer>(config, *m.top);
 
     AnimationOutcome out;

@@ -88,6 +88,14 @@ void show_progress(void *ctx, uint64_t consumed, int64_t outstanding)
     p->update(consumed, consumed + static_cast<uint64_t>(outstanding > 0 ? outstanding : 0));
 }
 
+TorusSystem &keep_until_exit(std::unique_ptr<TorusSystem> machine)
+{
+    // Never destroyed, so the list and the machines stay reachable to the end.
+    static auto *kept = new std::vector<TorusSystem *>;
+    kept->push_back(machine.release());
+    return *kept->back();
+}
+
 ModelOutcome run_model(const SimConfig &config, const rt_scene *scene, const rt_grid *grid, double t1_s,
                        const std::string &t1_source, double wall_start_s)
 {
@@ -104,7 +112,8 @@ ModelOutcome run_model(const SimConfig &config, const rt_scene *scene, const rt_
     ledger.set_progress(show_progress, &progress);
     if (config.style == TimingStyle::lt)
         tlm::tlm_global_quantum::instance().set(sc_core::sc_time(config.quantum_us, sc_core::SC_US));
-    TorusSystem top("top", config, scene, grid, owner.data(), ledger, fb.get());
+    TorusSystem &top =
+        keep_until_exit(std::make_unique<TorusSystem>("top", config, scene, grid, owner.data(), ledger, fb.get()));
     std::unique_ptr<Tracer> tracer;
     if (!config.vcd_path.empty()) tracer = std::make_unique<Tracer>(config, top);
 

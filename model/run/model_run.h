@@ -2,6 +2,7 @@
 // SystemC elaborates once per process, so a second configuration (T(1)) runs in a child process.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,11 @@ ModelOutcome run_model(const SimConfig &config, const rt_scene *scene, const rt_
                        const std::string &t1_source, double wall_start_s);
 
 // Pieces of a run that an animation's run shares:
+// the machine, kept until the process exits and never taken apart. SystemC elaborates one
+// machine per process, and its registries remove every port, export, module and child object
+// by a linear search, so destroying a machine object by object takes time quadratic in its
+// size (0.85 s at 4096 nodes, more than that run's simulation); the exit frees it at once;
+TorusSystem &keep_until_exit(std::unique_ptr<TorusSystem> machine);
 // the owner table of config (config.owner_table, or the regular mapping filled in);
 std::vector<int32_t> owner_table_of(const SimConfig &config, const rt_grid *grid);
 // a warning for nodes that own no cell;
