@@ -62,7 +62,7 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
     {
         reg.add(name(), QueueKind::link, m_from, m_spaces, m_spaces.depth_trace());
     }
-    // Traced busy line; asking for it turns on the (otherwise idle) process that drives it.
+    // Traced busy line; asking for it (before sc_start) makes the process that drives it.
     bool &busy_trace();
     // The receiving side's first two lines a crossing touches (prefetched with the link's).
     void set_receiver_line(const void *line) { m_receiver_line = line; }
@@ -84,6 +84,7 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
     // Sends `p` (the extension's packet), its slot taken, at `now` or later (now = sim_now()).
     void send(TimedPacket &p, const sc_core::sc_time &now);
     void drive_busy_trace();
+    void before_end_of_elaboration() override;
     void start_of_simulation() override { m_fw = socket.operator->(); }
 
     // What a hop reads and writes, on two cache lines of their own: these fields, then the
