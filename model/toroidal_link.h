@@ -11,6 +11,7 @@
 #pragma once
 
 #include <deque>
+#include <memory>
 #include <systemc>
 #include <tlm>
 #include <tlm_utils/simple_initiator_socket.h>
@@ -107,8 +108,11 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
     alignas(64) tlm::tlm_generic_payload m_trans;
     int m_from, m_to;
     // Busy trace (only when traced): crossings not yet over, and the event that re-evaluates.
-    std::deque<std::pair<sc_core::sc_time, sc_core::sc_time>> m_crossings;
-    sc_core::sc_event m_trace_changed;
+    struct BusyTrace {
+        std::deque<std::pair<sc_core::sc_time, sc_core::sc_time>> crossings;
+        sc_core::sc_event changed{"trace_changed"};
+    };
+    std::unique_ptr<BusyTrace> m_trace;
 };
 
 }  // namespace torusrt
