@@ -64,7 +64,7 @@ void ToroidalLink::send(TimedPacket &p, const sc_core::sc_time &now)
     m_free_at = start + m_packet_time;
     m_packets++;
     m_bytes += m_packet_bytes;
-    if (m_trace) {
+    if (m_tracing) {  // on the hop's first line; m_trace exists whenever it is set
         m_trace->crossings.emplace_back(start, m_free_at);
         m_trace->changed.notify(sc_core::SC_ZERO_TIME);
     }
@@ -81,6 +81,9 @@ void ToroidalLink::send(TimedPacket &p, const sc_core::sc_time &now)
 
 bool &ToroidalLink::busy_trace()
 {
+    // The process that drives the line is made at the end of elaboration.
+    if (sc_core::sc_get_status() != sc_core::SC_ELABORATION)
+        SC_REPORT_FATAL(name(), "a link's busy trace must be asked for before sc_start");
     m_tracing = true;
     return m_busy_flag;
 }
