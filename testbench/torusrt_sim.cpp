@@ -45,7 +45,7 @@ struct CommandLine {
     bool dump_config = false;
     // Animation (run options too: the frames are the workload).
     AnimationOptions anim;
-    std::string remap, remap_pilot, remap_window, frames_csv;
+    std::string remap, remap_pilot, remap_window, remap_margin, frames_csv;
     std::string config_file;  // the --config file read, if any (no output may replace it)
 };
 
@@ -200,9 +200,14 @@ void declare_run_options(CLI::App &app, CommandLine &cl)
                    "(default 0: no preview, guesses of the load from earlier frames)")->type_name("FRACTION");
     app.add_option("--remap-window", cl.remap_window, "adaptive without a preview: judge its guesses over this many past\n"
                    "frames (default " + std::to_string(default_remap_window) + ")")->type_name("N");
+    char margin_default[32];
+    std::snprintf(margin_default, sizeof margin_default, "%g", default_remap_margin);
+    app.add_option("--remap-margin", cl.remap_margin, std::string("adaptive without a preview: keep the previous frame's load as the\n"
+                   "guess unless another's back-test is better by more than this fraction (default ") +
+                   margin_default + ")")->type_name("FRACTION");
     app.add_option("--frames-csv", cl.frames_csv, "write one CSV row per frame of an animation")->type_name("FILE");
     for (const char *name : {"--vcd", "--trace-from", "--trace-to", "--trace-ips", "--t1", "--time-limit", "--remap",
-                             "--remap-pilot", "--remap-window", "--frames-csv"})
+                             "--remap-pilot", "--remap-window", "--remap-margin", "--frames-csv"})
         app.get_option(name)->configurable(false);
 }
 
@@ -211,9 +216,10 @@ void check_animation(CommandLine &cl)
 {
     check_animation_options(cl.anim);
     if (!cl.anim.animated()) {
-        if (!cl.remap_pilot.empty() || !cl.remap_window.empty())
-            throw UserError(std::string(cl.remap_pilot.empty() ? "--remap-window" : "--remap-pilot") +
-                                ": only for an animation with --remap adaptive", 2);
+        for (const auto &[name, value] : {std::pair<const char *, const std::string &>{"--remap-pilot", cl.remap_pilot},
+                                          {"--remap-window", cl.remap_window},
+                                          {"--remap-margin", cl.remap_margin}})
+            if (!value.empty()) throw UserError(std::string(name) + ": only for an animation with --remap adaptive", 2);
         if (!cl.remap.empty() || !cl.frames_csv.empty())
             throw UserError(std::string(cl.remap.empty() ? "--frames-csv" : "--remap") +
                                 ": only for an animation (--frames N with --orbit DEG, or --camera-path FILE)", 2);
@@ -229,6 +235,12 @@ void check_animation(CommandLine &cl)
         if (cl.remap != "adaptive") throw UserError("--remap-window: only with --remap adaptive", 2);
         if (!cl.remap_pilot.empty() && parse_remap_pilot(cl.remap_pilot) > 0)
             throw UserError("--remap-window: only without a preview (--remap-pilot 0); the preview judges the tables", 2);
+    }
+    if (!cl.remap_margin.empty()) {
+        parse_remap_margin(cl.remap_margin);
+        if (cl.remap != "adaptive") throw UserError("--remap-margin: only with --remap adaptive", 2);
+        if (!cl.remap_pilot.empty() && parse_remap_pilot(cl.remap_pilot) > 0)
+            throw UserError("--remap-margin: only without a preview (--remap-pilot 0); the preview judges the tables", 2);
     }
     if (!cl.t1.empty()) throw UserError("--t1: not used by an animation (each frame's T(1) is its pilot's work)", 2);
     if (!cl.common.output.empty()) check_frame_pattern("-o", cl.common.output);
@@ -392,10 +404,12 @@ int animate(const CommandLine &cl, SimConfig &config, LoadedScene &loaded, const
     }
     std::string csv = cl.frames_csv.empty() ? "" : outputs.set.add("--frames-csv", cl.frames_csv, cl.common.scene);
     RemapPolicy policy = cl.remap.empty() ? RemapPolicy::static_map : parse_remap_policy(cl.remap);
-    double pilot_fraction = cl.remap_pilot.empty() ? default_remap_pilot : parse_remap_pilot(cl.remap_pilot);
-    size_t window = cl.remap_window.empty() ? default_remap_window : parse_remap_window(cl.remap_window);
-    AnimationOutcome out = run_animation(config, scene, loaded.grid.get(), path.get(), files, policy, pilot_fraction,
-                                         window, wall_start);
+    AdaptiveSettings adaptive;
+    if (!cl.remap_pilot.empty()) adaptive.pilot_fraction = parse_remap_pilot(cl.remap_pilot);
+    if (!cl.remap_window.empty()) adaptive.window = parse_remap_window(cl.remap_window);
+    if (!cl.remap_margin.empty()) adaptive.margin = parse_remap_margin(cl.remap_margin);
+    AnimationOutcome out =
+        run_animation(config, scene, loaded.grid.get(), path.get(), files, policy, adaptive, wall_start);
     out.report.mapping = mapping_facts;
     out.report.camera_source = cl.anim.orbit.empty() ? "camera-path" : "orbit";
     out.report.output_pattern = cl.common.output;

@@ -124,11 +124,17 @@ std::unique_ptr<FramePilot> host_preview(const SimConfig &config, rt_scene *scen
     return preview;
 }
 
+// The policy and adaptive's settings as the report states them.
+RemapSettings remap_settings(RemapPolicy policy, const AdaptiveSettings &a)
+{
+    return {remap_policy_name(policy), a.pilot_fraction, a.window, a.margin};
+}
+
 }  // namespace
 
 AnimationOutcome run_animation(const SimConfig &config, rt_scene *scene, const rt_grid *grid,
                                const rt_camera_path *path, const std::vector<std::string> &files,
-                               RemapPolicy policy, double pilot_fraction, size_t window, double wall_start_s)
+                               RemapPolicy policy, const AdaptiveSettings &adaptive, double wall_start_s)
 {
     size_t n = rt_camera_path_count(path);
     Machine m;
@@ -148,7 +154,7 @@ AnimationOutcome run_animation(const SimConfig &config, rt_scene *scene, const r
     if (!config.vcd_path.empty()) m.tracer = std::make_unique<Tracer>(config, *m.top);
 
     AnimationOutcome out;
-    Remapper remapper(policy, window);
+    Remapper remapper(policy, adaptive.window, adaptive.margin);
     std::unique_ptr<FramePilot> previous, before, preview;
     double end_s = 0;
     for (size_t k = 0; k < n; k++) {
@@ -167,8 +173,8 @@ AnimationOutcome run_animation(const SimConfig &config, rt_scene *scene, const r
             previous = std::move(pilot);
             pilot = std::make_unique<FramePilot>(config, scene, grid);
             double previous_time_s = out.frames.back().image_time_s;
-            if (policy == RemapPolicy::adaptive && pilot_fraction > 0)
-                preview = host_preview(config, scene, grid, pilot_fraction, previous_time_s, rec);
+            if (policy == RemapPolicy::adaptive && adaptive.pilot_fraction > 0)
+                preview = host_preview(config, scene, grid, adaptive.pilot_fraction, previous_time_s, rec);
             next_mapping(remapper, ctx, m, FrameLoads{*previous, previous_time_s, *pilot, before.get(), preview.get(),
                                                     rt_camera_path_pose(path, k - 1), rt_camera_path_pose(path, k)}, rec);
             m.fb = new_frame_buffer(scene);
@@ -183,7 +189,7 @@ AnimationOutcome run_animation(const SimConfig &config, rt_scene *scene, const r
             out.report = collect(config, *m.top, m.ledger, scene, grid, m.owner.data(),
                                  animation_facts(m, 0, wall_start_s), true);
             out.report.frames = out.frames;  // the frames that completed
-            out.report.remap = {remap_policy_name(policy), pilot_fraction, window};
+            out.report.remap = remap_settings(policy, adaptive);
             out.deadlock_details = "frame " + std::to_string(k) + ":\n" + deadlock_text(out.report);
             out.sim_time_s = out.report.sim_time_s;
             return out;
@@ -200,7 +206,7 @@ AnimationOutcome run_animation(const SimConfig &config, rt_scene *scene, const r
     out.report = collect(config, *m.top, m.ledger, scene, grid, m.owner.data(),
                          animation_facts(m, frames_t1(out.frames), wall_start_s), false);
     out.report.frames = out.frames;
-    out.report.remap = {remap_policy_name(policy), pilot_fraction, window};
+    out.report.remap = remap_settings(policy, adaptive);
     if (m.tracer) m.tracer->finish();
     return out;
 }

@@ -26,10 +26,11 @@ struct AnimationOutcome {
 };
 
 // Runs every pose of `path` on `config`'s machine; `files` names each frame's PNG (for the
-// report). `pilot_fraction` is adaptive's preview resolution (--remap-pilot), `window` the frames
-// its guesses are judged over (--remap-window). The scene's camera is left at the last frame's.
+// report). `adaptive` holds adaptive's preview resolution (--remap-pilot), the frames its guesses
+// are judged over (--remap-window) and the margin the plain guess keeps (--remap-margin). The
+// scene's camera is left at the last frame's.
 AnimationOutcome run_animation(const SimConfig &config, rt_scene *scene, const rt_grid *grid,
                                const rt_camera_path *path, const std::vector<std::string> &files,
-                               RemapPolicy policy, double pilot_fraction, size_t window, double wall_start_s);
+                               RemapPolicy policy, const AdaptiveSettings &adaptive, double wall_start_s);
 
 }  // namespace torusrt

@@ -66,6 +66,7 @@ nlohmann::json animation_json(const std::vector<FrameRecord> &frames, const Rema
     if (remap.policy == "adaptive") {
         a["pilot_fraction"] = remap.pilot_fraction;
         a["window"] = remap.window;
+        a["margin"] = remap.margin;
     }
     return a;
 }
@@ -93,8 +94,11 @@ void print_frame_table(const std::vector<FrameRecord> &frames, const RemapSettin
     std::string policy = remap.policy;
     if (remap.policy == "adaptive") {
         char buf[96];
-        if (remap.pilot_fraction > 0) std::snprintf(buf, sizeof buf, " (preview %g of the pixels)", remap.pilot_fraction);
-        else std::snprintf(buf, sizeof buf, " (guesses judged over %zu frames)", remap.window);
+        if (remap.pilot_fraction > 0)
+            std::snprintf(buf, sizeof buf, " (preview %g of the pixels)", remap.pilot_fraction);
+        else
+            std::snprintf(buf, sizeof buf, " (guesses judged over %zu frames, margin %g)", remap.window,
+                          remap.margin);
         policy += buf;
     }
     std::fprintf(out, "  animation    %zu frames, remap %s: total %.6f s = images %.6f s + migration %.6f s (%.1f %%)"

@@ -39,10 +39,11 @@ struct RemapSettings {
     std::string policy;          // remap_policy_name
     double pilot_fraction = 0;   // --remap-pilot (adaptive)
     size_t window = 0;           // --remap-window (adaptive without a preview)
+    double margin = 0;           // --remap-margin (adaptive without a preview)
 };
 
 nlohmann::json frame_json(const FrameRecord &frame);
-// Totals: frame_count, policy (and adaptive's pilot_fraction and window), total_s = sum of
+// Totals: frame_count, policy (and adaptive's pilot_fraction, window and margin), total_s = sum of
 // image times + charged migration + charged host pilot time, and its parts.
 nlohmann::json animation_json(const std::vector<FrameRecord> &frames, const RemapSettings &remap);
 // One header line and one row per frame (columns as README "Animation in torusrt-sim").

@@ -6,9 +6,11 @@
 
 namespace torusrt {
 
-GuessScoreboard::GuessScoreboard(size_t guesses, size_t window) : m_guesses(guesses), m_window(window)
+GuessScoreboard::GuessScoreboard(size_t guesses, size_t window, double margin)
+    : m_guesses(guesses), m_window(window), m_margin(margin)
 {
     if (guesses == 0 || window == 0) throw std::invalid_argument("GuessScoreboard: no guesses or an empty window");
+    if (!(margin >= 0)) throw std::invalid_argument("GuessScoreboard: a negative margin");
 }
 
 void GuessScoreboard::record(const std::vector<double> &busiest_s)
@@ -42,7 +44,8 @@ size_t GuessScoreboard::best() const
         double r = mean_ratio(g);
         if (r >= 0 && (best_r < 0 || r < best_r)) best = g, best_r = r;
     }
-    return best;
+    double first = mean_ratio(0);
+    return first >= 0 && first <= best_r * (1 + m_margin) ? 0 : best;
 }
 
 std::string GuessScoreboard::text(const std::vector<std::string> &names) const

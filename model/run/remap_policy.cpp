@@ -173,11 +173,22 @@ void adaptive_choice(const RemapContext &ctx, const std::vector<int32_t> &curren
 
 }  // namespace
 
-double parse_remap_pilot(const std::string &text)
+namespace {
+
+// `text` as a number in [0, 1], or false.
+bool unit_fraction(const std::string &text, double &f)
 {
     char *end = nullptr;
-    double f = std::strtod(text.c_str(), &end);
-    if (text.empty() || *end != '\0' || !(f >= 0 && f <= 1))
+    f = std::strtod(text.c_str(), &end);
+    return !text.empty() && *end == '\0' && f >= 0 && f <= 1;
+}
+
+}  // namespace
+
+double parse_remap_pilot(const std::string &text)
+{
+    double f;
+    if (!unit_fraction(text, f))
         throw UserError("--remap-pilot '" + text + "': expected a fraction of the pixels in [0, 1] (0: no preview)", 2);
     return f;
 }
@@ -190,6 +201,14 @@ size_t parse_remap_window(const std::string &text)
         throw UserError("--remap-window '" + text + "': expected a whole number of frames in [1, " +
                             std::to_string(max_remap_window) + "]", 2);
     return static_cast<size_t>(n);
+}
+
+double parse_remap_margin(const std::string &text)
+{
+    double f;
+    if (!unit_fraction(text, f))
+        throw UserError("--remap-margin '" + text + "': expected a fraction in [0, 1] (0: the least mean ratio alone)", 2);
+    return f;
 }
 
 RemapPolicy parse_remap_policy(const std::string &text)
@@ -312,8 +331,8 @@ std::vector<int32_t> oracle_mapping(const RemapContext &ctx, const FramePilot &p
     return fresh_map(ctx, pilot);
 }
 
-Remapper::Remapper(RemapPolicy policy, size_t window)
-    : m_policy(policy), m_board(sizeof guesses / sizeof guesses[0], window)
+Remapper::Remapper(RemapPolicy policy, size_t window, double margin)
+    : m_policy(policy), m_board(sizeof guesses / sizeof guesses[0], window, margin)
 {
 }
 

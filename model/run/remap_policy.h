@@ -19,7 +19,8 @@
 //               The guess taken is the one with the least mean ratio over the last
 //               --remap-window frames scored (the first in that order on a tie; `frame` for
 //               frame 1, before anything is scored; the trend is made from frame 2 on and scored
-//               from frame 3 on).
+//               from frame 3 on), unless `frame`'s mean ratio is at most 1 + --remap-margin
+//               times that least one: then `frame`.
 //               With a preview (--remap-pilot FRACTION > 0): the camera path is known in
 //               advance, so the host pilots frame k at FRACTION of the pixels (same view) while
 //               the machine renders frame k-1; that preview, scaled to the full pixel count,
@@ -135,6 +136,21 @@ constexpr size_t max_remap_window = 1000000;
 // --remap-window: an integer in [1, 1000000]; UserError (exit 2) otherwise.
 size_t parse_remap_window(const std::string &text);
 
+// --remap-margin's default: another guess replaces `frame` when its back-test is better at all
+// (0). A margin such as 0.03 suits long animations that turn little per frame, where one frame's
+// back-test is mostly noise, and costs up to 3 % at 11 degrees a frame (docs/animation.md).
+constexpr double default_remap_margin = 0;
+
+// --remap-margin: a fraction in [0, 1]; UserError (exit 2) otherwise.
+double parse_remap_margin(const std::string &text);
+
+// Adaptive's settings (--remap-pilot, --remap-window, --remap-margin).
+struct AdaptiveSettings {
+    double pilot_fraction = default_remap_pilot;
+    size_t window = default_remap_window;
+    double margin = default_remap_margin;
+};
+
 // What Remapper::decide sees of frames k-1 and k.
 struct FrameLoads {
     const FramePilot &previous;    // frame k-1's measured load
@@ -150,7 +166,7 @@ struct FrameLoads {
 // (the tables its guesses gave and how they scored).
 class Remapper {
   public:
-    Remapper(RemapPolicy policy, size_t window);
+    Remapper(RemapPolicy policy, size_t window, double margin);
     // The table for frame k > 0; `current` is frame k-1's table. Called once per frame, in order.
     RemapDecision decide(const RemapContext &ctx, const std::vector<int32_t> &current, const FrameLoads &loads);
 

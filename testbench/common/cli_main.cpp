@@ -8,12 +8,40 @@
 
 namespace torusrt {
 
+namespace {
+
+// The first option on the command line given an empty value ("--x ''" or "--x="), which would
+// read as one not given and so silently as its default; "" if none. A machine file may hold
+// empty values: --dump-config writes an option not set so.
+std::string empty_value_option(const CLI::App &app, int argc, char **argv)
+{
+    for (int i = 1; i < argc; i++) {
+        std::string arg = argv[i];
+        if (arg == "--") break;
+        if (arg.size() < 2 || arg[0] != '-') continue;
+        size_t eq = arg.rfind("--", 0) == 0 ? arg.find('=') : std::string::npos;
+        std::string name = arg.substr(0, eq);
+        const CLI::Option *o = app.get_option_no_throw(name);
+        if (o == nullptr || o->get_type_size_max() == 0) continue;  // not an option, or a flag
+        bool empty = eq != std::string::npos ? eq + 1 == arg.size() : i + 1 < argc && argv[i + 1][0] == '\0';
+        if (empty) return name;
+    }
+    return "";
+}
+
+}  // namespace
+
 int run_cli(const char *program, CLI::App &app, int argc, char **argv, const std::function<int()> &body,
             const char *extra_exit_statuses)
 {
     app.set_version_flag("--version", std::string(program) + " " + TORUSRT_VERSION);
     app.footer(std::string("Exit status:\n  0 success\n  1 bad input file or failed run (a write error included)\n"
                            "  2 bad command line\n") + extra_exit_statuses);
+    std::string empty = empty_value_option(app, argc, argv);
+    if (!empty.empty()) {
+        std::fprintf(stderr, "%s: %s: an empty value\nRun with --help for more information.\n", program, empty.c_str());
+        return 2;
+    }
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError &e) {

@@ -38,6 +38,12 @@ bad "--cluster" --cluster 0
 bad "--queue" --queue -1
 bad "--min-weight" --min-weight -1
 bad "--trace-ips" --ips 2 --trace-ips 7
+# An empty value is refused, not read as the option's default.
+bad "--link-us: an empty value" --link-us ""
+bad "--stats: an empty value" --stats ""
+bad "--remap: an empty value" --orbit 90 --frames 2 --remap ""
+bad "--remap-window: an empty value" --orbit 90 --frames 2 --remap adaptive --remap-window ""
+bad "--link-us: an empty value" --link-us=
 bad "--data" --data everywhere
 bad "--t1" --t1 0
 # Ranges and combinations the validator checks before the scene is read.
