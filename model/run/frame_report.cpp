@@ -97,8 +97,8 @@ void print_frame_table(const std::vector<FrameRecord> &frames, const RemapSettin
         if (remap.pilot_fraction > 0)
             std::snprintf(buf, sizeof buf, " (preview %g of the pixels)", remap.pilot_fraction);
         else
-            std::snprintf(buf, sizeof buf, " (guesses judged over %zu frames, margin %g)", remap.window,
-                          remap.margin);
+            std::snprintf(buf, sizeof buf, " (guesses judged over %zu frame%s, margin %g)", remap.window,
+                          remap.window == 1 ? "" : "s", remap.margin);
         policy += buf;
     }
     std::fprintf(out, "  animation    %zu frames, remap %s: total %.6f s = images %.6f s + migration %.6f s (%.1f %%)"

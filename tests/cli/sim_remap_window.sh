@@ -29,6 +29,14 @@ check "the default is --remap-window 1" [ "$(jq -c '[.frames[].remap.reason]' "$
     "$(jq -c '[.frames[].remap.reason]' "$TMP/w1.json")" ]
 check "--remap-window 3 reported" [ "$(jq .animation.window "$TMP/w3.json")" = 3 ]
 check "default margin reported" [ "$(jq .animation.margin "$TMP/d.json")" = 0 ]
+"$sim" "$scene" "${size[@]}" "${anim[@]}" --remap-window 3 --remap-margin 0.25 -o "$TMP/sum_%d.png" \
+    > "$TMP/sum.txt" 2>/dev/null </dev/null || fail "a run with its summary"
+check "the summary names the window and margin ($(grep -m1 animation "$TMP/sum.txt"))" \
+    grep -q "remap adaptive (guesses judged over 3 frames, margin 0.25)" "$TMP/sum.txt"
+"$sim" "$scene" "${size[@]}" "${anim[@]}" -o "$TMP/sum1_%d.png" > "$TMP/sum1.txt" 2>/dev/null </dev/null ||
+    fail "a default run with its summary"
+check "the summary of the default: one frame ($(grep -m1 animation "$TMP/sum1.txt"))" \
+    grep -q "remap adaptive (guesses judged over 1 frame, margin 0)" "$TMP/sum1.txt"
 check "--remap-margin 1 reported" [ "$(jq .animation.margin "$TMP/m1.json")" = 1 ]
 check "the default is --remap-margin 0" [ "$(jq -c '[.frames[].remap.reason]' "$TMP/d.json")" = \
     "$(jq -c '[.frames[].remap.reason]' "$TMP/m0.json")" ]
