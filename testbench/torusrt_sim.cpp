@@ -230,17 +230,19 @@ void check_animation(CommandLine &cl)
         parse_remap_pilot(cl.remap_pilot);
         if (cl.remap != "adaptive") throw UserError("--remap-pilot: only with --remap adaptive", 2);
     }
+    // --remap-window and --remap-margin tune how adaptive judges its guesses, which a preview replaces.
+    auto guess_option = [&cl](const std::string &name) {
+        if (cl.remap != "adaptive") throw UserError(name + ": only with --remap adaptive", 2);
+        if (!cl.remap_pilot.empty() && parse_remap_pilot(cl.remap_pilot) > 0)
+            throw UserError(name + ": only without a preview (--remap-pilot 0); the preview judges the tables", 2);
+    };
     if (!cl.remap_window.empty()) {
         parse_remap_window(cl.remap_window);
-        if (cl.remap != "adaptive") throw UserError("--remap-window: only with --remap adaptive", 2);
-        if (!cl.remap_pilot.empty() && parse_remap_pilot(cl.remap_pilot) > 0)
-            throw UserError("--remap-window: only without a preview (--remap-pilot 0); the preview judges the tables", 2);
+        guess_option("--remap-window");
     }
     if (!cl.remap_margin.empty()) {
         parse_remap_margin(cl.remap_margin);
-        if (cl.remap != "adaptive") throw UserError("--remap-margin: only with --remap adaptive", 2);
-        if (!cl.remap_pilot.empty() && parse_remap_pilot(cl.remap_pilot) > 0)
-            throw UserError("--remap-margin: only without a preview (--remap-pilot 0); the preview judges the tables", 2);
+        guess_option("--remap-margin");
     }
     if (!cl.t1.empty()) throw UserError("--t1: not used by an animation (each frame's T(1) is its pilot's work)", 2);
     if (!cl.common.output.empty()) check_frame_pattern("-o", cl.common.output);

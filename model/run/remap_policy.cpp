@@ -171,10 +171,6 @@ void adaptive_choice(const RemapContext &ctx, const std::vector<int32_t> &curren
     d.owner = std::move(candidates[best].owner);
 }
 
-}  // namespace
-
-namespace {
-
 // `text` as a number in [0, 1], or false.
 bool unit_fraction(const std::string &text, double &f)
 {
