@@ -185,6 +185,17 @@ bool CommUnit::forward(uint32_t packet)
 
 void CommUnit::deliver()
 {
+    m_delivering = true;
+    deliver_due();
+    m_delivering = false;
+    if (ActivationQueue::Client *c = m_after_delivery) {
+        m_after_delivery = nullptr;
+        c->activate();
+    }
+}
+
+void CommUnit::deliver_due()
+{
     sc_core::sc_time now = sim_now();
     while (!m_arrivals.empty() && m_arrivals.next_time() <= now) {
         if (m_arrivals.next_is_new()) { // sent in this delta: next delta (already notified)

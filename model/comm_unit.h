@@ -39,12 +39,14 @@
 #include <tlm_utils/multi_passthrough_target_socket.h>
 #include <vector>
 
+#include "activation_queue.h"
 #include "arrival_queue.h"
 #include "module_stats.h"
 #include "packet_pool.h"
 #include "packet_sink_if.h"
 #include "rt_grid.h"
 #include "routing.h"
+#include "sim_now.h"
 #include "sim_config.h"
 #include "wake_calendar.h"
 
@@ -94,6 +96,17 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf, public WakeCale
         m_calendar_id = calendar.add(*this);
     }
 
+    // Whether an arrival due by now still waits for its delivery (in this delta or the next).
+    bool arrival_due() const { return !m_arrivals.empty() && m_arrivals.next_time() <= sim_now(); }
+    // Within a delivery round: runs `client` (this node's processor) once the round is over and
+    // returns true; else false.
+    bool run_after_delivery(ActivationQueue::Client &client)
+    {
+        if (!m_delivering) return false;
+        m_after_delivery = &client;
+        return true;
+    }
+
     uint64_t routed_local() const { return m_local; }
     uint64_t routed_transit() const { return m_transit; }
     // Packets held for room further on (for the deadlock report).
@@ -122,7 +135,9 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf, public WakeCale
     void b_transport(int id, tlm::tlm_generic_payload &trans, sc_core::sc_time &delay);
     void enqueue(uint32_t packet, const sc_core::sc_time &stamp, int source, BufferSpace *credit);
     void wake_at(const sc_core::sc_time &when);
+    // A delivery round, then the processor that asked to run after it.
     void deliver();
+    void deliver_due();
     void wake_due() override { deliver(); }
     void retry();
     int processor_source() const { return m_processor_source; }
@@ -139,6 +154,8 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf, public WakeCale
     sc_core::sc_time m_lookahead; // the quantum when loosely timed, else 0
     size_t m_held_total = 0; // packets held (checked first: usually none)
     bool m_route_at_once = false;
+    bool m_delivering = false;
+    ActivationQueue::Client *m_after_delivery = nullptr;
     uint64_t m_local = 0, m_transit = 0;
     int m_node;
     FlowControl m_flow = FlowControl::none;

@@ -4,6 +4,7 @@
 
 #include <stdexcept>
 
+#include "comm_unit.h"
 #include "flow_control.h"
 #include "sim_now.h"
 
@@ -227,6 +228,13 @@ void IntersectionProcessor::ask_to_act()
     }
     if (m_act_asked) return;
     m_act_asked = true;
+    if (m_unit && !m_acting) {
+        if (m_unit->run_after_delivery(*this)) return;
+        if (!m_unit->arrival_due()) {
+            activate(); // nothing of its node is still to come in this delta
+            return;
+        }
+    }
     m_activations->request(*this);
 }
 
@@ -238,7 +246,9 @@ void IntersectionProcessor::run_method()
     if (m_wake == Wake::timer) go = m_woken && sim_now() >= m_due;
     m_woken = m_room_woken = false;
     if (!go) return;
+    m_acting = true;
     m_wake = act();
+    m_acting = false;
     if (m_wake != Wake::timer) return;
     m_due = sim_now() + m_delay;
     if (m_calendar && m_delay != sc_core::SC_ZERO_TIME) m_calendar->wake_at(m_calendar_id, m_due);

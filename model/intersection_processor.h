@@ -42,6 +42,8 @@
 
 namespace torusrt {
 
+class CommUnit;
+
 class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf, public WakeCalendar::Client,
                               public PacketQueue::Reader,
                               public ActivationQueue::Client {
@@ -81,6 +83,12 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf, pu
     // The machine's activation queue, which then runs this processor's state machine when it is
     // woken (call at elaboration; a processor alone notifies an event of its own).
     void use_activations(ActivationQueue &activations) { m_activations = &activations; }
+    // Where nodes do not affect each other within a delta cycle (a flat, approximately-timed
+    // machine with a positive link time and unbounded buffers), what must come before the state
+    // machine in a delta is only the deliveries of its own node's unit `unit`: it then runs at
+    // once when none is due, or right after the unit's delivery round, not from the activation
+    // queue (call at elaboration, after use_activations).
+    void order_after(CommUnit &unit) { m_unit = &unit; }
     void use_calendar(WakeCalendar &calendar)
     {
         m_calendar = &calendar;
@@ -138,7 +146,8 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf, pu
     std::vector<TimedPacket> m_outputs; // the current step's created packets, then the forwarded one
     bool m_threaded;
     ActivationQueue *m_activations = nullptr;
-    bool m_act_asked = false;
+    CommUnit *m_unit = nullptr;
+    bool m_act_asked = false, m_acting = false;
     WakeCalendar *m_calendar = nullptr;
     int m_calendar_id = -1;
     Stage m_stage = Stage::top;

@@ -45,6 +45,7 @@ TorusSystem::TorusSystem(sc_core::sc_module_name name, const MachineConfig &conf
                                                               grid, cell_owner, n, n, ledger);
             if (m_calendar) ip->use_calendar(*m_calendar); // after its node's comm unit
             ip->use_activations(*m_activations);
+            if (at_once) ip->order_after(*m_comm[n]);
             ip->out.bind(m_comm[n]->in);
             ip->fb_socket.bind(m_fb->socket);
             m_comm[n]->local.bind(ip->in);
