@@ -68,6 +68,9 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf, public WakeCale
              const int32_t *cell_owner, const sc_core::sc_time &lookahead = sc_core::SC_ZERO_TIME);
 
     void accept(const TimedPacket &p) override;
+    // From the processor side by handle in the machine's pool (a packet its processor stepped in
+    // its slot): as accept(), without a copy.
+    void accept_pooled(PacketPool &pool, uint32_t handle) override;
     // The processor side may hand over now unless one of its packets is held; else on_space()'s
     // event is notified once none is (a processor that must not wait in accept() waits for it).
     bool can_accept(const TimedPacket &p) const override { return p.from_host || !processor_held(); }
@@ -134,6 +137,8 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf, public WakeCale
     bool forward(uint32_t packet);
     void b_transport(int id, tlm::tlm_generic_payload &trans, sc_core::sc_time &delay);
     void enqueue(uint32_t packet, const sc_core::sc_time &stamp, int source, BufferSpace *credit);
+    // Routes pool packet `packet`, just handed over by the processor side.
+    void from_processor(uint32_t packet);
     void wake_at(const sc_core::sc_time &when);
     // A delivery round, then the processor that asked to run after it.
     void deliver();

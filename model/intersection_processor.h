@@ -140,10 +140,16 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf, pu
     TimeKeeper m_time;
     rt_step_params m_params;
     bool m_reserving;       // outputs reserve their slots before a packet is taken up
-    TimedPacket m_current;  // the packet taken up (after its step)
+    TimedPacket m_current;  // the packet taken up (after its step), when taken up by copy
+    // The packet taken up: m_current, or its pool slot (m_handle) where it was stepped in place.
+    TimedPacket *m_cur = &m_current;
+    static constexpr uint32_t kNoHandle = ~uint32_t{0};
+    uint32_t m_handle = kNoHandle;
+    bool m_forward_pooled = false; // the step forwards the packet taken up by its handle
+    uint32_t m_out_cls = 0;        // the class of the step's outputs
     rt_step_result m_result;
     std::vector<uint32_t> m_tested; // objects tested in the current step (shared data only)
-    std::vector<TimedPacket> m_outputs; // the current step's created packets, then the forwarded one
+    std::vector<TimedPacket> m_outputs; // the current step's created packets, then the forwarded one (by copy)
     bool m_threaded;
     ActivationQueue *m_activations = nullptr;
     CommUnit *m_unit = nullptr;
