@@ -16,6 +16,9 @@
 // calendar (wake_calendar.h) to wake it at its earliest arrival time, and the calendar calls
 // deliver() then, units due at one time in node order; alone, the unit notifies its own timed
 // event. Either way an arrival due now (or pushed in this delta) waits for m_run, one delta on.
+// A processor that runs after its own node's deliveries (IntersectionProcessor::order_after)
+// asks the unit whether an arrival is still due and, during a delivery round, to be run when
+// the round is over.
 //
 // Loosely timed (temporal decoupling with quantum Q): an arrival is handled as soon as it lies
 // no more than Q ahead of simulation time, keeping its annotated time as its stamp; the next

@@ -13,6 +13,10 @@
 // process that was runnable when it began, where a thread would run (after the delta's methods);
 // so it takes up a packet after every delivery and release of that delta cycle, whichever
 // SystemC ran first. (A processor alone notifies its own m_act at once, to the same effect.)
+// With unbounded buffers (order_after) only its own node's deliveries can come before it in a
+// delta: it then runs at once, or right after its unit's delivery round, and the activation
+// queue serves only a wake while its unit still has an arrival due. Without reservations it
+// steps a packet in its pool slot and forwards it by the same handle.
 // Its timed waits end through the machine's wake calendar (wake_calendar.h) where the machine has
 // one, which calls on_wake's work in the first delta of the time, as the timer event would.
 // In a cluster an SC_THREAD drives the same machine, because crossing the cluster bus (packets
@@ -167,7 +171,7 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf, pu
     uint64_t m_packets_in = 0, m_packets_out = 0;
     bool m_busy_flag = false;
     tlm::tlm_generic_payload m_fb_trans; // a member, not a thread local: freed with the module
-    // The events last: on the calendar's path (a flat machine of 64 nodes or more) none is touched
+    // The events last: on the calendar's path (a flat machine with a positive link time) none is touched
     // per step, and the fields above then share fewer cache lines.
     sc_core::sc_event m_room;           // an output's buffer released a slot
     sc_core::sc_event m_out_room;       // the processor side may hand over again
