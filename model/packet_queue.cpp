@@ -57,22 +57,11 @@ void PacketQueue::wait_for(sc_core::sc_event *retry)
 
 bool PacketQueue::try_take_first(TimedPacket &taken)
 {
-    m_reader_waiting = false;
-    if (m_source && m_source->pending(m_node) && primary_first()) {
-        taken = m_source->take(m_node);
-        return true;
-    }
-    if (!m_items.empty()) {
-        taken = m_pool->at(m_items.front());
-        remove(0);
-        prefetch_front();
-        return true;
-    }
-    if (m_source && m_source->pending(m_node)) { // a primary not yet due
-        taken = m_source->take(m_node);
-        return true;
-    }
-    return false;
+    uint32_t handle;
+    if (!try_take_first_pooled(handle)) return false;
+    taken = m_pool->at(handle);
+    m_pool->release(handle);
+    return true;
 }
 
 bool PacketQueue::try_take_first_pooled(uint32_t &handle)
