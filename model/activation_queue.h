@@ -4,7 +4,9 @@
 // processor notifying an event of its own at once, it joins this queue, and the queue's one
 // method, notified at once when the first one joins, runs them in the order they joined: the
 // order in which their own methods would have run. A processor joins at most once a round.
-// At 512 nodes this saves touching a cold event and a cold process for every step.
+// At 512 nodes this saves touching a cold event and a cold process for every step. (With
+// unbounded buffers a processor asks only while its node still has an arrival due now; else it
+// runs at once or after its unit's delivery round: intersection_processor.h.)
 #pragma once
 
 #include <systemc>

@@ -106,17 +106,33 @@ void CommUnit::accept(const TimedPacket &p)
     }
     // Called in the processor side's thread: it waits while one of its packets is held.
     while (processor_held()) sc_core::wait(m_processor_room);
-    uint32_t packet = m_pool->add(p, owner_of(p));
-    m_pool->at(packet).last_dir = -1; // it leaves the processor side
-    sc_core::sc_time now = sim_now();
+    from_processor(m_pool->add(p, owner_of(p)));
+}
+
+void CommUnit::accept_pooled(PacketPool &pool, uint32_t handle)
+{
+    if (&pool != m_pool || pool.at(handle).from_host) {
+        PacketSinkIf::accept_pooled(pool, handle); // copied in
+        return;
+    }
+    while (processor_held()) sc_core::wait(m_processor_room);
+    m_pool->reuse(handle, owner_of(m_pool->at(handle)));
+    from_processor(handle);
+}
+
+void CommUnit::from_processor(uint32_t packet)
+{
+    TimedPacket &p = m_pool->at(packet);
+    p.last_dir = -1; // it leaves the processor side
+    const sc_core::sc_time stamp = p.stamp, now = sim_now();
     // Bound for a link: routed now, as it would be one delta on (nothing else is routed at this
     // time any more). Bound for this node's own processor, it waits for that delta, so the
     // processor takes up its next packet before this one joins its queue.
-    if (m_route_at_once && p.stamp <= now && m_pool->owner(packet) != m_node &&
+    if (m_route_at_once && stamp <= now && m_pool->owner(packet) != m_node &&
         (m_arrivals.empty() || m_arrivals.next_time() > now)) {
         if (forward(packet)) return; // unbounded buffers: it always moves on (no credit held)
     }
-    enqueue(packet, p.stamp, processor_source(), nullptr);
+    enqueue(packet, stamp, processor_source(), nullptr);
 }
 
 void CommUnit::on_space(const TimedPacket &, sc_core::sc_event &e) { m_processor_waiters.push_back(&e); }
@@ -184,6 +200,17 @@ bool CommUnit::forward(uint32_t packet)
 }
 
 void CommUnit::deliver()
+{
+    m_delivering = true;
+    deliver_due();
+    m_delivering = false;
+    if (ActivationQueue::Client *c = m_after_delivery) {
+        m_after_delivery = nullptr;
+        c->activate();
+    }
+}
+
+void CommUnit::deliver_due()
 {
     sc_core::sc_time now = sim_now();
     while (!m_arrivals.empty() && m_arrivals.next_time() <= now) {

@@ -16,6 +16,9 @@
 // calendar (wake_calendar.h) to wake it at its earliest arrival time, and the calendar calls
 // deliver() then, units due at one time in node order; alone, the unit notifies its own timed
 // event. Either way an arrival due now (or pushed in this delta) waits for m_run, one delta on.
+// A processor that runs after its own node's deliveries (IntersectionProcessor::order_after)
+// asks the unit whether an arrival is still due and, during a delivery round, to be run when
+// the round is over.
 //
 // Loosely timed (temporal decoupling with quantum Q): an arrival is handled as soon as it lies
 // no more than Q ahead of simulation time, keeping its annotated time as its stamp; the next
@@ -39,12 +42,14 @@
 #include <tlm_utils/multi_passthrough_target_socket.h>
 #include <vector>
 
+#include "activation_queue.h"
 #include "arrival_queue.h"
 #include "module_stats.h"
 #include "packet_pool.h"
 #include "packet_sink_if.h"
 #include "rt_grid.h"
 #include "routing.h"
+#include "sim_now.h"
 #include "sim_config.h"
 #include "wake_calendar.h"
 
@@ -66,6 +71,9 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf, public WakeCale
              const int32_t *cell_owner, const sc_core::sc_time &lookahead = sc_core::SC_ZERO_TIME);
 
     void accept(const TimedPacket &p) override;
+    // From the processor side by handle in the machine's pool (a packet its processor stepped in
+    // its slot): as accept(), without a copy.
+    void accept_pooled(PacketPool &pool, uint32_t handle) override;
     // The processor side may hand over now unless one of its packets is held; else on_space()'s
     // event is notified once none is (a processor that must not wait in accept() waits for it).
     bool can_accept(const TimedPacket &p) const override { return p.from_host || !processor_held(); }
@@ -92,6 +100,17 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf, public WakeCale
     {
         m_calendar = &calendar;
         m_calendar_id = calendar.add(*this);
+    }
+
+    // Whether an arrival due by now still waits for its delivery (in this delta or the next).
+    bool arrival_due() const { return !m_arrivals.empty() && m_arrivals.next_time() <= sim_now(); }
+    // Within a delivery round: runs `client` (this node's processor) once the round is over and
+    // returns true; else false.
+    bool run_after_delivery(ActivationQueue::Client &client)
+    {
+        if (!m_delivering) return false;
+        m_after_delivery = &client;
+        return true;
     }
 
     uint64_t routed_local() const { return m_local; }
@@ -121,8 +140,12 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf, public WakeCale
     bool forward(uint32_t packet);
     void b_transport(int id, tlm::tlm_generic_payload &trans, sc_core::sc_time &delay);
     void enqueue(uint32_t packet, const sc_core::sc_time &stamp, int source, BufferSpace *credit);
+    // Routes pool packet `packet`, just handed over by the processor side.
+    void from_processor(uint32_t packet);
     void wake_at(const sc_core::sc_time &when);
+    // A delivery round, then the processor that asked to run after it.
     void deliver();
+    void deliver_due();
     void wake_due() override { deliver(); }
     void retry();
     int processor_source() const { return m_processor_source; }
@@ -139,6 +162,8 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf, public WakeCale
     sc_core::sc_time m_lookahead; // the quantum when loosely timed, else 0
     size_t m_held_total = 0; // packets held (checked first: usually none)
     bool m_route_at_once = false;
+    bool m_delivering = false;
+    ActivationQueue::Client *m_after_delivery = nullptr;
     uint64_t m_local = 0, m_transit = 0;
     int m_node;
     FlowControl m_flow = FlowControl::none;

@@ -4,6 +4,7 @@
 
 #include <stdexcept>
 
+#include "comm_unit.h"
 #include "flow_control.h"
 #include "sim_now.h"
 
@@ -60,8 +61,11 @@ bool IntersectionProcessor::prepare(TimedPacket &tp)
     if (st != RT_OK) SC_REPORT_FATAL(name(), rt_status_name(st));
     m_outputs.clear();
     uint32_t cls = output_class(m_config.flow, tp.cls);
+    m_out_cls = cls;
     for (size_t i = 0; i < m_result.created_count; i++) m_outputs.push_back(TimedPacket{m_result.created[i], {}});
-    if (m_result.fate == RT_FATE_FORWARDED) m_outputs.push_back(TimedPacket{tp.packet, {}});
+    // Stepped in its pool slot, a forwarded packet leaves by its handle (hand_over()).
+    m_forward_pooled = m_result.fate == RT_FATE_FORWARDED && m_handle != kNoHandle;
+    if (m_result.fate == RT_FATE_FORWARDED && !m_forward_pooled) m_outputs.push_back(TimedPacket{tp.packet, {}});
     for (TimedPacket &o : m_outputs) o.cls = cls;
     // Unbounded buffers always have room: nothing to reserve (the timing is the same either way).
     return !m_reserving || reserve_outputs();
@@ -94,9 +98,14 @@ bool IntersectionProcessor::reserve_outputs()
 
 bool IntersectionProcessor::try_take_up()
 {
-    // Unbounded buffers or --flow none: the oldest packet, stepped once taken.
-    if (!m_reserving) return m_queue.try_take_first(m_current) && prepare(m_current);
+    // Unbounded buffers or --flow none: the oldest packet, stepped once taken, in its pool slot.
+    if (!m_reserving) {
+        if (!m_queue.try_take_first_pooled(m_handle)) return false;
+        m_cur = &m_queue.pool().at(m_handle);
+        return prepare(*m_cur);
+    }
     // Else each candidate is stepped (on a copy: a refused one stays as it is in the queue).
+    m_cur = &m_current;
     return m_queue.try_take(
         [this](const TimedPacket &c) {
             m_current = c;
@@ -130,7 +139,7 @@ IntersectionProcessor::Wake IntersectionProcessor::act()
             }
             m_time.settle(m_before);  // it may have waited for room
             m_stage = Stage::begin;
-            if (owe(m_time.advance_to_nb(m_current.stamp))) return Wake::timer; // never start before it arrived
+            if (owe(m_time.advance_to_nb(m_cur->stamp))) return Wake::timer; // never start before it arrived
             break;
         case Stage::begin:
             begin_step();
@@ -177,22 +186,37 @@ void IntersectionProcessor::end_step()
     m_handed_at = m_time.now();
     for (size_t i = 0; i < m_result.created_count; i++) m_ledger.created(m_result.created[i].kind);
     if (m_result.fate == RT_FATE_FORWARDED) m_ledger.forwarded();
-    else m_ledger.consumed(m_current.packet.kind, m_handed_at);
+    else m_ledger.consumed(m_cur->packet.kind, m_handed_at);
+    if (m_handle != kNoHandle && !m_forward_pooled) { // consumed: its slot is free
+        m_queue.pool().release(m_handle);
+        m_handle = kNoHandle;
+    }
 }
 
 bool IntersectionProcessor::hand_over()
 {
-    for (; m_next_out < m_outputs.size(); m_next_out++) {
-        TimedPacket &o = m_outputs[m_next_out];
+    size_t total = m_outputs.size() + m_forward_pooled;
+    for (; m_next_out < total; m_next_out++) {
+        bool pooled = m_next_out == m_outputs.size(); // the forwarded packet, in its slot
+        TimedPacket &o = pooled ? *m_cur : m_outputs[m_next_out];
+        if (pooled) { // as a new packet of the step's: only the kernel's packet carries over
+            o.cls = m_out_cls;
+            o.vc = 0;
+            o.last_dir = -1;
+            o.reserved = o.from_host = false;
+        }
         o.stamp = m_handed_at;
         if (!out->can_accept(o)) { // a packet of ours is held (--flow none)
             out->on_space(o, m_out_room);
             return false;
         }
-        out->accept(o); // a cluster's bus port waits here for the bus (a thread)
+        // A cluster's bus port waits here for the bus (a thread).
+        if (pooled) out->accept_pooled(m_queue.pool(), m_handle);
+        else out->accept(o);
         m_time.settle(m_handed_at);
     }
-    m_packets_out += m_outputs.size();
+    if (m_forward_pooled) m_handle = kNoHandle; // the receiver owns it now
+    m_packets_out += total;
     return true;
 }
 
@@ -227,6 +251,13 @@ void IntersectionProcessor::ask_to_act()
     }
     if (m_act_asked) return;
     m_act_asked = true;
+    if (m_unit && !m_acting) {
+        if (m_unit->run_after_delivery(*this)) return;
+        if (!m_unit->arrival_due()) {
+            activate(); // nothing of its node is still to come in this delta
+            return;
+        }
+    }
     m_activations->request(*this);
 }
 
@@ -238,7 +269,9 @@ void IntersectionProcessor::run_method()
     if (m_wake == Wake::timer) go = m_woken && sim_now() >= m_due;
     m_woken = m_room_woken = false;
     if (!go) return;
+    m_acting = true;
     m_wake = act();
+    m_acting = false;
     if (m_wake != Wake::timer) return;
     m_due = sim_now() + m_delay;
     if (m_calendar && m_delay != sc_core::SC_ZERO_TIME) m_calendar->wake_at(m_calendar_id, m_due);

@@ -13,6 +13,10 @@
 // process that was runnable when it began, where a thread would run (after the delta's methods);
 // so it takes up a packet after every delivery and release of that delta cycle, whichever
 // SystemC ran first. (A processor alone notifies its own m_act at once, to the same effect.)
+// With unbounded buffers (order_after) only its own node's deliveries can come before it in a
+// delta: it then runs at once, or right after its unit's delivery round, and the activation
+// queue serves only a wake while its unit still has an arrival due. Without reservations it
+// steps a packet in its pool slot and forwards it by the same handle.
 // Its timed waits end through the machine's wake calendar (wake_calendar.h) where the machine has
 // one, which calls on_wake's work in the first delta of the time, as the timer event would.
 // In a cluster an SC_THREAD drives the same machine, because crossing the cluster bus (packets
@@ -41,6 +45,8 @@
 #include "wake_calendar.h"
 
 namespace torusrt {
+
+class CommUnit;
 
 class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf, public WakeCalendar::Client,
                               public PacketQueue::Reader,
@@ -81,6 +87,12 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf, pu
     // The machine's activation queue, which then runs this processor's state machine when it is
     // woken (call at elaboration; a processor alone notifies an event of its own).
     void use_activations(ActivationQueue &activations) { m_activations = &activations; }
+    // Where nodes do not affect each other within a delta cycle (a flat, approximately-timed
+    // machine with a positive link time and unbounded buffers), what must come before the state
+    // machine in a delta is only the deliveries of its own node's unit `unit`: it then runs at
+    // once when none is due, or right after the unit's delivery round, not from the activation
+    // queue (call at elaboration, after use_activations).
+    void order_after(CommUnit &unit) { m_unit = &unit; }
     void use_calendar(WakeCalendar &calendar)
     {
         m_calendar = &calendar;
@@ -132,13 +144,20 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf, pu
     TimeKeeper m_time;
     rt_step_params m_params;
     bool m_reserving;       // outputs reserve their slots before a packet is taken up
-    TimedPacket m_current;  // the packet taken up (after its step)
+    TimedPacket m_current;  // the packet taken up (after its step), when taken up by copy
+    // The packet taken up: m_current, or its pool slot (m_handle) where it was stepped in place.
+    TimedPacket *m_cur = &m_current;
+    static constexpr uint32_t kNoHandle = ~uint32_t{0};
+    uint32_t m_handle = kNoHandle;
+    bool m_forward_pooled = false; // the step forwards the packet taken up by its handle
+    uint32_t m_out_cls = 0;        // the class of the step's outputs
     rt_step_result m_result;
     std::vector<uint32_t> m_tested; // objects tested in the current step (shared data only)
-    std::vector<TimedPacket> m_outputs; // the current step's created packets, then the forwarded one
+    std::vector<TimedPacket> m_outputs; // the current step's created packets, then the forwarded one (by copy)
     bool m_threaded;
     ActivationQueue *m_activations = nullptr;
-    bool m_act_asked = false;
+    CommUnit *m_unit = nullptr;
+    bool m_act_asked = false, m_acting = false;
     WakeCalendar *m_calendar = nullptr;
     int m_calendar_id = -1;
     Stage m_stage = Stage::top;
@@ -152,7 +171,7 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf, pu
     uint64_t m_packets_in = 0, m_packets_out = 0;
     bool m_busy_flag = false;
     tlm::tlm_generic_payload m_fb_trans; // a member, not a thread local: freed with the module
-    // The events last: on the calendar's path (a flat machine of 64 nodes or more) none is touched
+    // The events last: on the calendar's path (a flat machine with a positive link time) none is touched
     // per step, and the fields above then share fewer cache lines.
     sc_core::sc_event m_room;           // an output's buffer released a slot
     sc_core::sc_event m_out_room;       // the processor side may hand over again

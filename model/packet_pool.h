@@ -3,8 +3,9 @@
 // 32-bit handle (in the arrival queue, the held FIFOs and the link transaction's extension) and
 // on into the input queue at its cell's owner (an IP's, or a cluster dispatcher's), which keeps
 // the handle until a reader takes the packet up: its body is written once per hop where it
-// changes (stamp, channel, last link), never copied on the way; the reader copies it out and
-// the slot is free again. One pool serves the whole machine; a freed slot is the next one used,
+// changes (stamp, channel, last link), never copied on the way; a flat processor that takes no
+// reservations steps it in its slot and hands a forwarded packet on by the same handle, any
+// other reader copies it out and the slot is free again. One pool serves the whole machine; a freed slot is the next one used,
 // so the packets in flight stay in few, warm cache lines. Slots live in fixed chunks: a packet
 // never moves while it is in the pool. A slot starts with what a hop uses: the credit, the node
 // the packet is heading for (its cell's owner, found once when it enters the pool: the cell does
@@ -40,6 +41,14 @@ class PacketPool {
         s.credit = nullptr;
         s.owner = owner;
         return h;
+    }
+    // Packet `h`, kept in its slot by a processor that stepped it there, now heads for node
+    // `owner` again, holding no buffer slot.
+    void reuse(uint32_t h, int32_t owner)
+    {
+        Slot &s = slot(h);
+        s.credit = nullptr;
+        s.owner = owner;
     }
     TimedPacket &at(uint32_t h) { return slot(h).item; }
     // The node owning the cell the packet is in (where it is going).

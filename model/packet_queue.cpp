@@ -36,14 +36,14 @@ void PacketQueue::append(uint32_t handle)
     else m_not_empty.notify(sc_core::SC_ZERO_TIME);
 }
 
-void PacketQueue::remove(size_t index)
+void PacketQueue::remove(size_t index, bool keep_slot)
 {
     uint32_t handle = m_items[index];
     BufferSpace &space = space_for(m_pool->at(handle));
     if (index == 0) m_items.pop_front();
     else m_items.erase(m_items.begin() + static_cast<std::ptrdiff_t>(index));
     m_depth = static_cast<int>(m_items.size());
-    m_pool->release(handle);
+    if (!keep_slot) m_pool->release(handle);
     space.release();
 }
 
@@ -57,19 +57,28 @@ void PacketQueue::wait_for(sc_core::sc_event *retry)
 
 bool PacketQueue::try_take_first(TimedPacket &taken)
 {
+    uint32_t handle;
+    if (!try_take_first_pooled(handle)) return false;
+    taken = m_pool->at(handle);
+    m_pool->release(handle);
+    return true;
+}
+
+bool PacketQueue::try_take_first_pooled(uint32_t &handle)
+{
     m_reader_waiting = false;
     if (m_source && m_source->pending(m_node) && primary_first()) {
-        taken = m_source->take(m_node);
+        handle = m_pool->add(m_source->take(m_node), -1);
         return true;
     }
     if (!m_items.empty()) {
-        taken = m_pool->at(m_items.front());
-        remove(0);
+        handle = m_items.front();
+        remove(0, true);
         prefetch_front();
         return true;
     }
     if (m_source && m_source->pending(m_node)) { // a primary not yet due
-        taken = m_source->take(m_node);
+        handle = m_pool->add(m_source->take(m_node), -1);
         return true;
     }
     return false;

@@ -66,6 +66,10 @@ class PacketQueue {
     template <class Accept> bool try_take(Accept &&accept, TimedPacket *taken);
     // The same for a reader that takes every packet (it never refuses).
     bool try_take_first(TimedPacket &taken);
+    // The same, the packet left in its pool slot: `handle` is the reader's now (it releases it,
+    // or hands it on by handle). A primary is put into a slot first.
+    bool try_take_first_pooled(uint32_t &handle);
+    PacketPool &pool() { return *m_pool; }
     // Blocking form of try_take: waits (in the calling thread) while there is none, on the queue
     // and, once one was refused, on `retry`.
     template <class Accept> TimedPacket take_first(Accept &&accept, sc_core::sc_event &retry);
@@ -115,8 +119,9 @@ class PacketQueue {
   private:
     // Appends pool packet `handle`, its buffer slot taken.
     void append(uint32_t handle);
-    // Removes the packet at `index`, freeing its buffer slot and its pool slot.
-    void remove(size_t index);
+    // Removes the packet at `index`, freeing its buffer slot and (unless `keep_slot`) its pool
+    // slot.
+    void remove(size_t index, bool keep_slot = false);
     void wait_for(sc_core::sc_event *retry);
     // The next packet a reader takes has waited long and is cold: fetch it into the cache
     // while the reader works on this one. Forced inline: called, a function that only prefetches

@@ -22,12 +22,13 @@ TorusSystem::TorusSystem(sc_core::sc_module_name name, const MachineConfig &conf
     bool order_free = config.cluster == 1 && lookahead == sc_core::SC_ZERO_TIME &&
                       rt_timing_link_packet_us(&config.timing) > 0;
     // Elsewhere the calendar would change the outcome (wake_calendar.h): those machines keep
-    // their per-unit timed events. Below kCalendarMinNodes the per-unit events stay warm and
-    // cost less than the calendar's heap; both give the same times there.
-    if (order_free && nodes >= kCalendarMinNodes) m_calendar = std::make_unique<WakeCalendar>("wake_calendar");
+    // their per-unit timed events.
+    if (order_free) m_calendar = std::make_unique<WakeCalendar>("wake_calendar");
     // With unbounded buffers too, a processor's packets for other nodes are routed as they are
-    // handed over, and a waiting processor is woken in the delta its packet arrives: the order of
-    // what is routed and taken up at each time is the same as one delta later, so are the times.
+    // handed over, a waiting processor is woken in the delta its packet arrives, and a processor
+    // runs as soon as its own node's deliveries of the delta are done: nodes then meet only
+    // through links, whose packets arrive later, so the order of what is routed and taken up at
+    // each time is the same as one delta later, so are the times.
     bool at_once = hand_over == HandOverTiming::at_once && order_free && config.queue_capacity == 0;
     if (config.cluster == 1) m_activations = std::make_unique<ActivationQueue>("activations");
     m_fb = std::make_unique<FrameBuffer>("fb", fb);
@@ -45,6 +46,7 @@ TorusSystem::TorusSystem(sc_core::sc_module_name name, const MachineConfig &conf
                                                               grid, cell_owner, n, n, ledger);
             if (m_calendar) ip->use_calendar(*m_calendar); // after its node's comm unit
             ip->use_activations(*m_activations);
+            if (at_once) ip->order_after(*m_comm[n]);
             ip->out.bind(m_comm[n]->in);
             ip->fb_socket.bind(m_fb->socket);
             m_comm[n]->local.bind(ip->in);

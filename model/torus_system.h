@@ -56,10 +56,7 @@ class TorusSystem : public sc_core::sc_module {
     Routing m_routing;
     PacketPool m_pool; // every packet on the network, by handle (comm units, links, input queues)
     std::unique_ptr<ActivationQueue> m_activations; // flat processors' state machines, when woken
-    std::unique_ptr<WakeCalendar> m_calendar; // the comm units' timed deliveries
-    // Smallest machine that uses the calendar (measured: at 16 nodes it costs about a fifth more
-    // wall time per hop than per-unit events, at 64 it is even, at 512 it saves a fifth).
-    static constexpr int kCalendarMinNodes = 64;
+    std::unique_ptr<WakeCalendar> m_calendar; // the comm units' and processors' timed wake-ups
     std::unique_ptr<FrameBuffer> m_fb;
     std::unique_ptr<Host> m_host;
     std::vector<std::unique_ptr<CommUnit>> m_comm;

@@ -65,18 +65,28 @@ size_t WakeCalendar::pending() const
 void WakeCalendar::clear_earliest(int32_t id)
 {
     m_when[id] = kNone;
-    // It was the earliest at every node of its path: each takes the earlier of its children.
-    for (size_t p = (m_leaves + id) >> 1; p >= 1; p >>= 1) {
-        int32_t a = m_win[2 * p], b = m_win[2 * p + 1];
-        m_win[p] = before(b, a) ? b : a;
+    // It was the earliest at every node of its path: each now holds the earlier of what comes up
+    // the path (carried here) and what its other child holds. The other children are not on the
+    // path and do not change, so their loads do not wait for the stores above them.
+    int32_t w = id;
+    uint64_t wt = kNone;
+    for (size_t node = m_leaves + id; node > 1; node >>= 1) {
+        int32_t s = m_win[node ^ 1];
+        uint64_t st = m_when[s];
+        // Selected by masks, not branches: which side wins is a coin toss to a branch predictor.
+        uint64_t other = uint64_t{0} - ((st < wt) | ((st == wt) & (s < w)));
+        w = static_cast<int32_t>((static_cast<uint64_t>(s) & other) | (static_cast<uint64_t>(w) & ~other));
+        wt = (st & other) | (wt & ~other);
+        m_win[node >> 1] = w;
     }
 }
 
 void WakeCalendar::run()
 {
     uint64_t now = sim_now().value();
-    m_notified = kNone;
-    // Wakes asked for by the clients woken here are later than now: they wait for the next run.
+    // Wakes asked for by the clients woken here are later than now: they wait for the next run,
+    // and arm() notifies the event once for the earliest of them.
+    m_notified = 0;
     for (int32_t id = earliest(); m_when[id] <= now; id = earliest()) {
         clear_earliest(id);
         // The next client due is cold (a node's unit): fetch it while this one runs.
@@ -84,6 +94,7 @@ void WakeCalendar::run()
         if (m_when[next] <= now) __builtin_prefetch(m_clients[next]);
         m_clients[id]->wake_due();
     }
+    m_notified = kNone;
     arm(now);
 }
 

@@ -1,9 +1,10 @@
 // hand_over_timing_test.cpp - a flat machine that takes its processors' packets for other nodes
-// on as they are handed over, and tells a waiting processor of a packet in the delta it arrives
-// (HandOverTiming::at_once, what every run uses), gives the same simulated times, counts and
-// image as the same machine taking both one delta later (next_delta). Two sizes: 2x2x2 (each
-// unit and processor with timed events of its own) and 4x4x4 (the wake calendar). All four
-// machines are elaborated side by side and run in one simulation; none sees another.
+// on as they are handed over, tells a waiting processor of a packet in the delta it arrives and
+// runs a processor right after its own node's deliveries (HandOverTiming::at_once, what every
+// run uses), gives the same simulated times, counts and image as the same machine taking both
+// packets one delta later and running its processors from the activation queue, after every
+// delivery of the delta (next_delta). Two sizes, 2x2x2 and 4x4x4. All four machines are
+// elaborated side by side and run in one simulation; none sees another.
 //
 // Scene: a mirror sphere among diffuse ones, so the runs have reflection and shadow packets,
 // packets for the same node (created at a hit) and for other nodes (forwarded to the next cell).
