@@ -145,6 +145,7 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf, public WakeCale
     void wake_at(const sc_core::sc_time &when);
     // A delivery round, then the processor that asked to run after it.
     void deliver();
+    // The round: every arrival due now, in the arrival queue's order.
     void deliver_due();
     void wake_due() override { deliver(); }
     void retry();
