@@ -14,12 +14,11 @@ IntersectionProcessor::IntersectionProcessor(sc_core::sc_module_name name, const
                                              const rt_scene *scene, const rt_grid *grid,
                                              const int32_t *cell_owner, int owner_id, int index,
                                              PacketLedger &ledger)
-    : sc_module(name), in("in"), out("out"), fetch("fetch"), fb_socket("fb_socket"), m_config(config),
+    : sc_module(name), in("in"), out("out"), fetch("fetch"), fb_socket("fb_socket"),
+      m_reserving(config.flow != FlowControl::none && config.queue_capacity != 0), m_config(config),
       m_scene(scene), m_grid(grid), m_owner(cell_owner), m_owner_id(owner_id), m_index(index),
-      m_ledger(ledger), m_queue(std::string(basename()) + ".queue", config.queue_capacity),
-      m_time(config.style == TimingStyle::lt), m_params(config.step),
-      m_reserving(config.flow != FlowControl::none && config.queue_capacity != 0),
-      m_threaded(config.cluster > 1)
+      m_ledger(ledger), m_params(config.step), m_time(config.style == TimingStyle::lt),
+      m_queue(std::string(basename()) + ".queue", config.queue_capacity), m_threaded(config.cluster > 1)
 {
     in.bind(*this);
     if (rt_step_result_init(&m_result, scene) != RT_OK) throw std::bad_alloc();
@@ -77,12 +76,12 @@ bool IntersectionProcessor::reserve_outputs()
     // every output needs one slot of its own and a step fits buffers of capacity 1.
     std::vector<BufferSpace *> base(m_outputs.size()), first(m_outputs.size());
     for (size_t i = 0; i < m_outputs.size(); i++) {
-        first[i] = base[i] = out->room_for(m_outputs[i]);
+        first[i] = base[i] = m_out->room_for(m_outputs[i]);
         uint32_t rank = 0;
         for (size_t j = 0; j < i; j++) rank += base[j] == base[i];
         if (!rank) continue;
         m_outputs[i].cls += rank;
-        first[i] = out->room_for(m_outputs[i]);
+        first[i] = m_out->room_for(m_outputs[i]);
     }
     for (size_t i = 0; i < m_outputs.size(); i++)
         if (first[i] && !first[i]->available()) {
@@ -179,7 +178,7 @@ void IntersectionProcessor::end_step()
         m_fb_trans.set_data_length(static_cast<unsigned>(m_result.contrib_count * sizeof(rt_contribution)));
         m_fb_trans.set_streaming_width(m_fb_trans.get_data_length());
         m_fb_trans.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
-        fb_socket->b_transport(m_fb_trans, delay);
+        m_fb->b_transport(m_fb_trans, delay);
     }
     // New packets are counted before the input is consumed, so the ledger never sees
     // zero outstanding while work remains.
@@ -206,13 +205,13 @@ bool IntersectionProcessor::hand_over()
             o.reserved = o.from_host = false;
         }
         o.stamp = m_handed_at;
-        if (!out->can_accept(o)) { // a packet of ours is held (--flow none)
-            out->on_space(o, m_out_room);
+        if (!m_out->can_accept(o)) { // a packet of ours is held (--flow none)
+            m_out->on_space(o, m_out_room);
             return false;
         }
         // A cluster's bus port waits here for the bus (a thread).
-        if (pooled) out->accept_pooled(m_queue.pool(), m_handle);
-        else out->accept(o);
+        if (pooled) m_out->accept_pooled(m_queue.pool(), m_handle);
+        else m_out->accept(o);
         m_time.settle(m_handed_at);
     }
     if (m_forward_pooled) m_handle = kNoHandle; // the receiver owns it now

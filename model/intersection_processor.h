@@ -125,6 +125,11 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf, pu
     }
     void run_method();
     void end_of_elaboration() override;
+    void start_of_simulation() override
+    {
+        m_out = out.operator->();
+        m_fb = fb_socket.operator->();
+    }
     // Runs the step of `tp` (updated in place) and lists its outputs; under the class scheme
     // reserves their slots and returns false (nothing reserved) if one has no room.
     bool prepare(TimedPacket &tp);
@@ -134,45 +139,52 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf, pu
     bool try_take_up();
     static void on_test(void *ctx, uint32_t object);
 
+    // What a step reads and writes, from the first line on, in the order a step touches it: at 512
+    // nodes a processor is cold when its turn comes, so every line it touches counts. What only a
+    // cluster, the class scheme or a copied packet uses comes after the queue.
+    alignas(64) Stage m_stage = Stage::top;
+    Wake m_wake = Wake::start;
+    bool m_woken = false, m_room_woken = false; // method driver: what woke it this delta
+    bool m_act_asked = false, m_acting = false;
+    bool m_reserving;              // outputs reserve their slots before a packet is taken up
+    bool m_forward_pooled = false; // the step forwards the packet taken up by its handle
+    static constexpr uint32_t kNoHandle = ~uint32_t{0};
+    uint32_t m_handle = kNoHandle;
+    uint32_t m_out_cls = 0;        // the class of the step's outputs
+    int m_calendar_id = -1;
+    // The packet taken up: m_current, or its pool slot (m_handle) where it was stepped in place.
+    TimedPacket *m_cur = &m_current;
+    CommUnit *m_unit = nullptr;
+    ActivationQueue *m_activations = nullptr;
+    WakeCalendar *m_calendar = nullptr;
+    // The interfaces bound to `out` and `fb_socket`, kept after elaboration so a step does not
+    // read the ports for them.
+    PacketSinkIf *m_out = nullptr;
+    tlm::tlm_fw_transport_if<> *m_fb = nullptr;
+    sc_core::sc_time m_delay, m_due;    // the owed wait and when it ends
     const MachineConfig &m_config;
     const rt_scene *m_scene;
     const rt_grid *m_grid;
     const int32_t *m_owner;
     int m_owner_id, m_index;
     PacketLedger &m_ledger;
-    PacketQueue m_queue;
-    TimeKeeper m_time;
     rt_step_params m_params;
-    bool m_reserving;       // outputs reserve their slots before a packet is taken up
-    TimedPacket m_current;  // the packet taken up (after its step), when taken up by copy
-    // The packet taken up: m_current, or its pool slot (m_handle) where it was stepped in place.
-    TimedPacket *m_cur = &m_current;
-    static constexpr uint32_t kNoHandle = ~uint32_t{0};
-    uint32_t m_handle = kNoHandle;
-    bool m_forward_pooled = false; // the step forwards the packet taken up by its handle
-    uint32_t m_out_cls = 0;        // the class of the step's outputs
-    rt_step_result m_result;
-    std::vector<uint32_t> m_tested; // objects tested in the current step (shared data only)
-    std::vector<TimedPacket> m_outputs; // the current step's created packets, then the forwarded one (by copy)
-    bool m_threaded;
-    ActivationQueue *m_activations = nullptr;
-    CommUnit *m_unit = nullptr;
-    bool m_act_asked = false, m_acting = false;
-    WakeCalendar *m_calendar = nullptr;
-    int m_calendar_id = -1;
-    Stage m_stage = Stage::top;
-    Wake m_wake = Wake::start;
-    bool m_woken = false, m_room_woken = false; // method driver: what woke it this delta
-    sc_core::sc_time m_delay, m_due;    // the owed wait and when it ends
+    TimeKeeper m_time;
     sc_core::sc_time m_before, m_start, m_handed_at;
-    size_t m_next_out = 0;              // the next output to hand over
-    rt_op_counts m_ops{};
     sc_core::sc_time m_busy = sc_core::SC_ZERO_TIME;
+    size_t m_next_out = 0;              // the next output to hand over
     uint64_t m_packets_in = 0, m_packets_out = 0;
     bool m_busy_flag = false;
+    rt_op_counts m_ops{};
+    rt_step_result m_result;
+    std::vector<TimedPacket> m_outputs; // the current step's created packets, then the forwarded one (by copy)
+    PacketQueue m_queue;
+    TimedPacket m_current;  // the packet taken up (after its step), when taken up by copy
+    std::vector<uint32_t> m_tested; // objects tested in the current step (shared data only)
+    bool m_threaded;
     tlm::tlm_generic_payload m_fb_trans; // a member, not a thread local: freed with the module
-    // The events last: on the calendar's path (a flat machine with a positive link time) none is touched
-    // per step, and the fields above then share fewer cache lines.
+    // The events last: on the calendar's path (a flat machine with a positive link time) none is
+    // touched per step.
     sc_core::sc_event m_room;           // an output's buffer released a slot
     sc_core::sc_event m_out_room;       // the processor side may hand over again
     sc_core::sc_event m_timer;          // method driver: the owed wait is over

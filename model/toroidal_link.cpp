@@ -11,14 +11,6 @@ ToroidalLink::ToroidalLink(sc_core::sc_module_name name, const MachineConfig &co
       m_dir(dir), m_packet_bytes(config.timing.packet_bytes), m_spaces(config.queue_capacity), m_from(from), m_to(to)
 {
     in.bind(*this);
-    m_ext = new PacketExtension;
-    m_trans.set_extension(m_ext);
-    // Fixed for every packet: a write to the receiving node, data = a packet as held in memory
-    // (its size on the wire is a timing parameter).
-    m_trans.set_command(tlm::TLM_WRITE_COMMAND);
-    m_trans.set_address(static_cast<uint64_t>(m_to));
-    m_trans.set_data_length(sizeof(rt_packet));
-    m_trans.set_streaming_width(sizeof(rt_packet));
 }
 
 void ToroidalLink::before_end_of_elaboration()
@@ -38,11 +30,12 @@ void ToroidalLink::accept(const TimedPacket &p)
 {
     if (!p.reserved) space_for(p).take_blocking();
     // The packet is copied once, into the transaction's extension, after any wait for room.
-    TimedPacket &q = m_ext->item;
+    TransactionPool::Crossing c = m_transactions->take();
+    TimedPacket &q = c.ext->item;
     q = p;
     q.reserved = false;
-    m_ext->pool = nullptr;
-    send(q, sim_now());
+    c.ext->pool = nullptr;
+    send(c, q, sim_now());
 }
 
 void ToroidalLink::accept_pooled(PacketPool &pool, uint32_t handle, const sc_core::sc_time &now)
@@ -50,12 +43,13 @@ void ToroidalLink::accept_pooled(PacketPool &pool, uint32_t handle, const sc_cor
     TimedPacket &p = pool.at(handle);
     if (!p.reserved) space_for(p).take_blocking(); // room was checked: does not wait
     p.reserved = false;
-    m_ext->pool = &pool;
-    m_ext->handle = handle;
-    send(p, now);
+    TransactionPool::Crossing c = m_transactions->take();
+    c.ext->pool = &pool;
+    c.ext->handle = handle;
+    send(c, p, now);
 }
 
-void ToroidalLink::send(TimedPacket &p, const sc_core::sc_time &now)
+void ToroidalLink::send(const TransactionPool::Crossing &c, TimedPacket &p, const sc_core::sc_time &now)
 {
     // A packet that waited for room is sent no earlier than now; a crossing cannot start before
     // the packet was sent, nor before the previous crossing ends.
@@ -68,15 +62,22 @@ void ToroidalLink::send(TimedPacket &p, const sc_core::sc_time &now)
         m_trace->crossings.emplace_back(start, m_free_at);
         m_trace->changed.notify(sc_core::SC_ZERO_TIME);
     }
-    m_ext->credit = &space_for(p);
+    c.ext->credit = &space_for(p);
     p.stamp = m_free_at;
     p.last_dir = static_cast<int8_t>(m_dir);
-    m_trans.set_data_ptr(reinterpret_cast<unsigned char *>(&p.packet));
-    m_trans.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
+    // A write to the receiving node, data = the packet as held in memory (its size on the wire is
+    // a timing parameter).
+    tlm::tlm_generic_payload &trans = *c.trans;
+    trans.set_address(static_cast<uint64_t>(m_to));
+    trans.set_data_ptr(reinterpret_cast<unsigned char *>(&p.packet));
+    trans.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
     // Annotated delay: queueing behind earlier packets plus serialisation.
     sc_core::sc_time delay = m_free_at - now;
-    m_fw->b_transport(m_trans, delay);
-    if (m_trans.is_response_error()) SC_REPORT_FATAL(name(), "the receiving communication unit refused a packet");
+    trans.acquire();
+    m_fw->b_transport(trans, delay);
+    bool refused = trans.is_response_error();
+    trans.release(); // back to the pool
+    if (refused) SC_REPORT_FATAL(name(), "the receiving communication unit refused a packet");
 }
 
 bool &ToroidalLink::busy_trace()

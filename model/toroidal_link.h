@@ -23,6 +23,7 @@
 #include "packet_sink_if.h"
 #include "queue_registry.h"
 #include "sim_config.h"
+#include "transaction_pool.h"
 
 namespace torusrt {
 
@@ -67,23 +68,27 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
     bool &busy_trace();
     // The receiving side's first two lines a crossing touches (prefetched with the link's).
     void set_receiver_line(const void *line) { m_receiver_line = line; }
-    // Asks for every other line a crossing touches (here, the transaction, its extension, the
-    // bound target's interface, the receiver) at once: a sender calls it as it picks the link, so
-    // at 512 nodes, where all of them are cold, they cost about one miss, not one after another.
-    // Forced inline, as PacketQueue::prefetch_front.
+    // The machine's transactions, shared by its links (call at elaboration; a link alone uses
+    // its own).
+    void use_transactions(TransactionPool &pool) { m_transactions = &pool; }
+    // Asks for every other line a crossing touches (here, the bound target's interface and the
+    // receiver) at once: a sender calls it as it picks the link, so at 512 nodes, where all of
+    // them are cold, they cost about one miss, not one after another. Forced inline, as
+    // PacketQueue::prefetch_front.
     [[gnu::always_inline]] void prefetch_hop() const
     {
-        const char *hot = reinterpret_cast<const char *>(&m_free_at), *trans = reinterpret_cast<const char *>(&m_trans);
+        const char *hot = reinterpret_cast<const char *>(&m_free_at);
         const char *receiver = static_cast<const char *>(m_receiver_line);
-        const void *lines[] = {hot + 64, trans, trans + 64, m_ext, m_fw, receiver, receiver + 64};
+        const void *lines[] = {hot + 64, m_fw, receiver, receiver + 64};
         for (const void *line : lines) __builtin_prefetch(line, 1);
     }
 
   private:
     static uint32_t index_of(const TimedPacket &p) { return 2 * p.cls + p.vc; }
     BufferSpace &space_for(const TimedPacket &p) { return m_spaces.at(index_of(p)); }
-    // Sends `p` (the extension's packet), its slot taken, at `now` or later (now = sim_now()).
-    void send(TimedPacket &p, const sc_core::sc_time &now);
+    // Sends `p` in crossing `c` (whose extension names it), its slot taken, at `now` or later
+    // (now = sim_now()).
+    void send(const TransactionPool::Crossing &c, TimedPacket &p, const sc_core::sc_time &now);
     void drive_busy_trace();
     void before_end_of_elaboration() override;
     void start_of_simulation() override { m_fw = socket.operator->(); }
@@ -93,7 +98,7 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
     // nodes, so every line it touches counts.
     alignas(64) sc_core::sc_time m_free_at = sc_core::SC_ZERO_TIME; // busy until
     sc_core::sc_time m_packet_time;                                 // serialisation time of one packet
-    PacketExtension *m_ext; // owned by m_trans
+    TransactionPool *m_transactions = &m_own_transactions;
     // The socket's bound target interface (what socket-> returns), kept after elaboration so a
     // crossing does not read the port for it.
     tlm::tlm_fw_transport_if<> *m_fw = nullptr;
@@ -104,9 +109,8 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
     double m_bytes = 0;
     double m_packet_bytes;
     ClassBuffers m_spaces;
-    // The transaction's hot fields (data pointer, response status, extensions) on lines of its own.
-    alignas(64) tlm::tlm_generic_payload m_trans;
     int m_from, m_to;
+    TransactionPool m_own_transactions;
     // Busy trace (only when traced): crossings not yet over, and the event that re-evaluates.
     struct BusyTrace {
         std::deque<std::pair<sc_core::sc_time, sc_core::sc_time>> crossings;

@@ -19,6 +19,7 @@
 #include "routing.h"
 #include "sim_config.h"
 #include "toroidal_link.h"
+#include "transaction_pool.h"
 #include "wake_calendar.h"
 
 namespace torusrt {
@@ -55,6 +56,7 @@ class TorusSystem : public sc_core::sc_module {
   private:
     Routing m_routing;
     PacketPool m_pool; // every packet on the network, by handle (comm units, links, input queues)
+    TransactionPool m_transactions; // the links' crossings (one at a time: one transaction, hot)
     std::unique_ptr<ActivationQueue> m_activations; // flat processors' state machines, when woken
     std::unique_ptr<WakeCalendar> m_calendar; // the comm units' and processors' timed wake-ups
     std::unique_ptr<FrameBuffer> m_fb;
