@@ -36,9 +36,15 @@ void CommUnit::end_of_elaboration()
     m_held_count.assign(link_in.size() + 1, 0);
 }
 
+void CommUnit::start_of_simulation()
+{
+    for (ToroidalLink::HopLines &out : m_out_links)
+        if (out.link) out = out.link->hop_lines(); // its socket is bound now
+}
+
 void CommUnit::set_link(int dir, ToroidalLink &link, const CommUnit &receiver)
 {
-    m_link_of_dir[dir] = &link;
+    m_out_links[dir].link = &link;
     link.set_receiver_line(&receiver.m_pool);
 }
 
@@ -46,13 +52,13 @@ int CommUnit::owner_of(const TimedPacket &p) const { return m_owner[rt_packet_ce
 
 CommUnit::Hop CommUnit::next_hop(TimedPacket &p, int owner)
 {
-    if (owner == m_node) return {local.operator->(), nullptr, true};
+    if (owner == m_node) return {local.operator->(), nullptr, true, -1};
     int dir = m_routing.next_direction(m_node, owner);
     int port = dir >= 0 ? m_port_of_dir[dir] : -1;
     if (port < 0) SC_REPORT_FATAL(name(), "no link toward the packet's owner");
     p.vc = link_channel(m_flow, m_routing, p, m_node, dir);
-    if (ToroidalLink *link = m_link_of_dir[dir]) return {link, link, false}; // the port's own link
-    return {link_out[port], nullptr, false};
+    if (ToroidalLink *link = m_out_links[dir].link) return {link, link, false, dir}; // the port's own link
+    return {link_out[port], nullptr, false, dir};
 }
 
 BufferSpace *CommUnit::room_for(const TimedPacket &p)
@@ -185,7 +191,7 @@ bool CommUnit::forward(uint32_t packet)
     sc_core::sc_time now = sim_now();
     if (p.stamp < now) p.stamp = now; // held packets move on no earlier than now
     Hop next = next_hop(p, m_pool->owner(packet));
-    if (next.link) next.link->prefetch_hop();
+    if (next.link) ToroidalLink::prefetch_hop(m_out_links[next.dir]);
     if (!(next.link ? next.link->ToroidalLink::can_accept(p) : next.sink->can_accept(p))) {
         next.sink->on_space(p, m_retry);
         return false;

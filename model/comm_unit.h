@@ -51,11 +51,10 @@
 #include "routing.h"
 #include "sim_now.h"
 #include "sim_config.h"
+#include "toroidal_link.h"
 #include "wake_calendar.h"
 
 namespace torusrt {
-
-class ToroidalLink;
 
 class CommUnit : public sc_core::sc_module, public PacketSinkIf, public WakeCalendar::Client {
   public:
@@ -124,6 +123,7 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf, public WakeCale
         PacketSinkIf *sink;
         ToroidalLink *link; // the sink as a link of this machine (takes pool handles), or null
         bool local;
+        int dir; // the link's direction, when `link` is set
     };
     // The node owning the cell `p` is in.
     int owner_of(const TimedPacket &p) const;
@@ -151,11 +151,12 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf, public WakeCale
     void retry();
     int processor_source() const { return m_processor_source; }
     void end_of_elaboration() override;
+    void start_of_simulation() override;
 
     PacketPool m_own_pool;
-    // What a hop touches here, on three cache lines of their own: the first two when a packet
-    // arrives from a link (a sender prefetches them) and when delivery starts, the third when a
-    // packet is routed on.
+    // What a hop touches here, on cache lines of their own: the first two when a packet arrives
+    // from a link (a sender prefetches them) and when delivery starts, the third and the
+    // direction's entry of m_out_links when a packet is routed on.
     alignas(64) PacketPool *m_pool = &m_own_pool;
     WakeCalendar *m_calendar = nullptr;
     int m_calendar_id = -1;
@@ -173,7 +174,8 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf, public WakeCale
     const rt_grid *m_grid;
     const int32_t *m_owner;
     std::array<int, kDirections> m_port_of_dir;
-    std::array<ToroidalLink *, kDirections> m_link_of_dir{};
+    // Per direction, the machine's link there (or none) and where its crossings touch memory.
+    std::array<ToroidalLink::HopLines, kDirections> m_out_links{};
     // Per source, per incoming buffer (2 x class + channel), pool handles.
     // Sorted by buffer; retry() visits them in that order.
     struct HeldFifo {

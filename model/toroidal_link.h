@@ -71,15 +71,26 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
     // The machine's transactions, shared by its links (call at elaboration; a link alone uses
     // its own).
     void use_transactions(TransactionPool &pool) { m_transactions = &pool; }
-    // Asks for every other line a crossing touches (here, the bound target's interface and the
-    // receiver) at once: a sender calls it as it picks the link, so at 512 nodes, where all of
-    // them are cold, they cost about one miss, not one after another. Forced inline, as
-    // PacketQueue::prefetch_front.
-    [[gnu::always_inline]] void prefetch_hop() const
+    // Where a crossing of this link first touches memory beyond the sender: the link's own hot
+    // lines, the bound target interface and the receiving unit's first lines (hop_lines(), once
+    // elaboration is over). A sender keeps them and asks for all of them at once as it picks the
+    // link (prefetch_hop): at 512 nodes every one is cold, and fetched one after another, or
+    // only once the link's own line has come in to name the others, they cost a miss each.
+    struct HopLines {
+        ToroidalLink *link = nullptr;
+        const char *hot = nullptr;
+        const void *target = nullptr;
+        const char *receiver = nullptr;
+    };
+    HopLines hop_lines()
     {
-        const char *hot = reinterpret_cast<const char *>(&m_free_at);
-        const char *receiver = static_cast<const char *>(m_receiver_line);
-        const void *lines[] = {hot + 64, m_fw, receiver, receiver + 64};
+        return {this, reinterpret_cast<const char *>(&m_free_at), socket.operator->(),
+                static_cast<const char *>(m_receiver_line)};
+    }
+    // Forced inline, as PacketQueue::prefetch_front.
+    [[gnu::always_inline]] static void prefetch_hop(const HopLines &h)
+    {
+        const void *lines[] = {h.hot, h.hot + 64, h.target, h.receiver, h.receiver + 64};
         for (const void *line : lines) __builtin_prefetch(line, 1);
     }
 
