@@ -63,14 +63,14 @@ toroidal_link.cpp, comm_unit.cpp, host.cpp):
 - *Idle processes stay close to AT.* A process that finds its queue empty synchronises and
   blocks; its quantum keeper keeps the synchronisation point computed before the wait, which
   simulation time has usually passed when the next packet comes, so the first delay after an
-  idle wait synchronises at once: the process waits until the packet's stamp, as in AT. Links
-  (one packet at a time, idle most of the time) and lightly loaded IPs therefore run nearly
-  AT-timed until the quantum approaches the image time. This costs context switches but keeps the
+  idle wait synchronises at once: the process waits until the packet's stamp, as in AT. Lightly
+  loaded IPs therefore run nearly AT-timed until the quantum approaches the image time. This
+  costs process activations but keeps the
   error small: recomputing the synchronisation point after the wait (the usual
   `tlm_quantumkeeper::reset()` after an explicit wait) cuts the delta cycles by a quarter to
   a half at quanta of 10 ms to 1 s, and raises the error two- to fourfold there (measured
   on paper-image2 with a patched copy of the model; not part of the model).
-- *Speed-up is bounded.* LT saves SystemC context switches and delta cycles (one per step and
+- *Speed-up is bounded.* LT saves SystemC process activations and delta cycles (one per step and
   per hop in AT); it cannot save the packet steps themselves (the kernel's intersection and
   shading work), which are the same in both styles. Once the delta cycles have collapsed (see
   `delta_cycles` in the CSV) the wall time stops falling, at a few times the AT speed, and
@@ -118,8 +118,8 @@ def quantum_section(qt, rel_img, command):
            "  waits at every delay when the quantum is 0, as AT does).",
            "- Highest speed-up per configuration: %s." % f["maxspd"]]
     if f["slower"]:
-        out.append("- LT not faster than AT (speed-up < 1) at: %s. Below a few milliseconds LT does the same context "
-                   "switches as AT (compare delta cycles), so there it is AT plus the time keeper's bookkeeping, within "
+        out.append("- LT not faster than AT (speed-up < 1) at: %s. Below a few milliseconds LT does the same process "
+                   "activations as AT (compare delta cycles), so there it is AT plus the time keeper's bookkeeping, within "
                    "the timing noise." % f["slower"])
     if f["negatives"]:
         out.append("- LT image time *below* AT (negative error) at: %s." % f["negatives"])
