@@ -11,6 +11,8 @@
 # The machine's speed drifts from minute to minute: BENCH_RUNS=N runs every row N times, in N
 # rounds of one run of each small row (the renderer too), then N runs of each large row, and
 # reports the run with the least simulation wall time and the median of the N (default 1).
+# A last line gives the cost of a hop at 512 IPs over that at 16 (the same work), at best and at
+# the medians.
 # Usage: bash bench/sim.sh [BUILD_DIR]   (BENCH_BIG=0 skips the 1024x1024 run)
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -63,3 +65,8 @@ for i in "${!configs[@]}"; do
     awk -F'\t' '{ printf "%-10s %5s %6d %10.5f %9.3f %9.3f %7.2f %8.2f %10d %11.3f %11.0f %9.1fx %8.1f\n",
                   $1, $2, $3, $4, $5, $6, $7, $8, $9, $10, $11, $12, $13 }'
 done
+# The same work at 16 and 512 IPs (rows 0 and 2): the cost of a hop at 512 over that at 16.
+ratio() { jq -n "($2 / $(jq .links.packets "$tmp/s2.json")) / ($1 / $(jq .links.packets "$tmp/s0.json"))"; }
+med() { tr ' ' '\n' <<<"$1" | sed '/^$/d' | sort -g | awk '{ a[NR] = $1 } END { print a[int((NR + 1) / 2)] }'; }
+printf '512 vs 16 IPs, wall per hop: %.2fx at best, %.2fx at the medians\n' \
+  "$(ratio "${best[0]}" "${best[2]}")" "$(ratio "$(med "${walls[0]}")" "$(med "${walls[2]}")")"
