@@ -11,8 +11,8 @@
 # The machine's speed drifts from minute to minute: BENCH_RUNS=N runs every row N times, in N
 # rounds of one run of each small row (the renderer too), then N runs of each large row, and
 # reports the run with the least simulation wall time and the median of the N (default 1).
-# A last line gives the cost of a hop at 512 IPs over that at 16 (the same work), at best and at
-# the medians.
+# A last line gives the cost of a hop at 512 IPs over that at 16 (the same work): at best, at the
+# medians, and the median of the ratios within each round.
 # Usage: bash bench/sim.sh [BUILD_DIR]   (BENCH_BIG=0 skips the 1024x1024 run)
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -68,5 +68,9 @@ done
 # The same work at 16 and 512 IPs (rows 0 and 2): the cost of a hop at 512 over that at 16.
 ratio() { jq -n "($2 / $(jq .links.packets "$tmp/s2.json")) / ($1 / $(jq .links.packets "$tmp/s0.json"))"; }
 med() { tr ' ' '\n' <<<"$1" | sed '/^$/d' | sort -g | awk '{ a[NR] = $1 } END { print a[int((NR + 1) / 2)] }'; }
-printf '512 vs 16 IPs, wall per hop: %.2fx at best, %.2fx at the medians\n' \
-  "$(ratio "${best[0]}" "${best[2]}")" "$(ratio "$(med "${walls[0]}")" "$(med "${walls[2]}")")"
+# Per round too: both rows of a round meet the same spell of the machine, so the median of the
+# rounds' ratios drifts least.
+rounds=$(paste -d' ' <(tr ' ' '\n' <<<"${walls[0]}" | sed '/^$/d') <(tr ' ' '\n' <<<"${walls[2]}" | sed '/^$/d') |
+  while read -r w16 w512; do ratio "$w16" "$w512"; done | tr '\n' ' ')
+printf '512 vs 16 IPs, wall per hop: %.2fx at best, %.2fx at the medians, %.2fx the median of the rounds'"'"' ratios\n' \
+  "$(ratio "${best[0]}" "${best[2]}")" "$(ratio "$(med "${walls[0]}")" "$(med "${walls[2]}")")" "$(med "$rounds")"
