@@ -39,13 +39,12 @@ void CommUnit::end_of_elaboration()
 void CommUnit::start_of_simulation()
 {
     for (ToroidalLink::HopLines &out : m_out_links)
-        if (out.link) out = out.link->hop_lines(); // its socket is bound now
+        if (out.link) out.target = out.link->socket.operator->(); // bound now
 }
 
 void CommUnit::set_link(int dir, ToroidalLink &link, const CommUnit &receiver)
 {
-    m_out_links[dir].link = &link;
-    link.set_receiver_line(&receiver.m_pool);
+    m_out_links[dir] = {&link, nullptr, reinterpret_cast<const char *>(&receiver.m_pool)};
 }
 
 int CommUnit::owner_of(const TimedPacket &p) const { return m_owner[rt_packet_cell(m_grid, &p.packet)]; }

@@ -66,31 +66,25 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
     }
     // Traced busy line; asking for it (before sc_start) makes the process that drives it.
     bool &busy_trace();
-    // The receiving side's first two lines a crossing touches (prefetched with the link's).
-    void set_receiver_line(const void *line) { m_receiver_line = line; }
     // The machine's transactions, shared by its links (call at elaboration; a link alone uses
     // its own).
     void use_transactions(TransactionPool &pool) { m_transactions = &pool; }
     // Where a crossing of this link first touches memory beyond the sender: the link's own hot
-    // lines, the bound target interface and the receiving unit's first lines (hop_lines(), once
-    // elaboration is over). A sender keeps them and asks for all of them at once as it picks the
-    // link (prefetch_hop): at 512 nodes every one is cold, and fetched one after another, or
-    // only once the link's own line has come in to name the others, they cost a miss each.
+    // lines (named by `link` without reading it), the bound target interface (`socket`'s, once
+    // elaboration is over) and the receiving unit's first lines. A sender keeps them and asks for
+    // all of them at once as it picks the link (prefetch_hop): at 512 nodes every one is cold,
+    // and fetched one after another, or only once the link's own line has come in to name the
+    // others, they cost a miss each.
     struct HopLines {
         ToroidalLink *link = nullptr;
-        const char *hot = nullptr;
         const void *target = nullptr;
         const char *receiver = nullptr;
     };
-    HopLines hop_lines()
-    {
-        return {this, reinterpret_cast<const char *>(&m_free_at), socket.operator->(),
-                static_cast<const char *>(m_receiver_line)};
-    }
     // Forced inline, as PacketQueue::prefetch_front.
     [[gnu::always_inline]] static void prefetch_hop(const HopLines &h)
     {
-        const void *lines[] = {h.hot, h.hot + 64, h.target, h.receiver, h.receiver + 64};
+        const char *hot = reinterpret_cast<const char *>(&h.link->m_free_at); // an address, not a load
+        const void *lines[] = {hot, hot + 64, h.target, h.receiver, h.receiver + 64};
         for (const void *line : lines) __builtin_prefetch(line, 1);
     }
 
@@ -113,7 +107,6 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
     // The socket's bound target interface (what socket-> returns), kept after elaboration so a
     // crossing does not read the port for it.
     tlm::tlm_fw_transport_if<> *m_fw = nullptr;
-    const void *m_receiver_line = nullptr;
     int m_dir;
     bool m_tracing = false, m_busy_flag = false;
     uint64_t m_packets = 0;
