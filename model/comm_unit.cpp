@@ -3,6 +3,7 @@
 #include "comm_unit.h"
 
 #include <algorithm>
+#include <string>
 
 #include "flow_control.h"
 #include "rt_step.h"
@@ -12,14 +13,28 @@
 
 namespace torusrt {
 
+namespace {
+// Links arrive from every neighbour: one per direction that has one.
+size_t neighbours(const Routing &routing, int node)
+{
+    size_t n = 0;
+    for (int dir = 0; dir < kDirections; dir++) n += routing.neighbour(node, dir) >= 0;
+    return n;
+}
+}  // namespace
+
 CommUnit::CommUnit(sc_core::sc_module_name name, int node, const Routing &routing, const rt_grid *grid,
                    const int32_t *cell_owner, const sc_core::sc_time &lookahead)
-    : sc_module(name), link_in("link_in"), in("in"), local("local"), link_out("link_out"), m_lookahead(lookahead),
+    : sc_module(name), link_in("link_in", neighbours(routing, node)), in("in"), local("local"), link_out("link_out"), m_lookahead(lookahead),
       m_node(node), m_routing(routing), m_grid(grid), m_owner(cell_owner)
 {
     m_port_of_dir.fill(-1);
     in.bind(*this);
-    link_in.register_b_transport(this, &CommUnit::b_transport);
+    for (size_t i = 0; i < link_in.size(); i++) {
+        m_inputs[i].m_unit = this;
+        m_inputs[i].m_source = static_cast<int>(i);
+        link_in[i].bind(m_inputs[i]);
+    }
     SC_HAS_PROCESS(CommUnit);
     SC_METHOD(deliver);
     sensitive << m_due << m_run;
@@ -29,11 +44,18 @@ CommUnit::CommUnit(sc_core::sc_module_name name, int node, const Routing &routin
     dont_initialize();
 }
 
+CommUnit::LinkInSocket &CommUnit::next_link_in()
+{
+    if (static_cast<size_t>(m_processor_source) >= link_in.size())
+        SC_REPORT_FATAL(name(), ("more incoming links than the node's " + std::to_string(link_in.size()) +
+                                 " neighbours").c_str());
+    return link_in[m_processor_source++];
+}
+
 void CommUnit::end_of_elaboration()
 {
-    m_processor_source = static_cast<int>(link_in.size());
-    m_held.resize(link_in.size() + 1);
-    m_held_count.assign(link_in.size() + 1, 0);
+    m_held.resize(m_processor_source + 1);
+    m_held_count.assign(m_processor_source + 1, 0);
 }
 
 void CommUnit::start_of_simulation()
@@ -152,7 +174,7 @@ void CommUnit::enqueue(uint32_t packet, const sc_core::sc_time &stamp, int sourc
     wake_at(when);
 }
 
-void CommUnit::b_transport(int id, tlm::tlm_generic_payload &trans, sc_core::sc_time &delay)
+void CommUnit::b_transport(int source, tlm::tlm_generic_payload &trans, sc_core::sc_time &delay)
 {
     auto *ext = trans.get_extension<PacketExtension>();
     if (!ext) {
@@ -170,7 +192,7 @@ void CommUnit::b_transport(int id, tlm::tlm_generic_payload &trans, sc_core::sc_
         packet = m_pool->add(ext->item, owner_of(ext->item));
     }
     // Arrival in the sender's local time.
-    enqueue(packet, sim_now() + delay, id, ext->credit);
+    enqueue(packet, sim_now() + delay, source, ext->credit);
     trans.set_response_status(tlm::TLM_OK_RESPONSE);
 }
 

@@ -6,8 +6,8 @@
 // payload event queue) at their annotated time; one SC_METHOD delivers every arrival due, in the
 // arrival queue's fixed order (time, source, sequence), but never one pushed in the same delta
 // cycle: that one waits for the next delta, so whether its sender ran before or after the
-// delivery method does not matter. Sources: incoming link ports 0..L-1, then the processor side
-// (L). Host primaries go straight to the local processor side (they never wait). With
+// delivery method does not matter. Sources: incoming links 0..L-1, numbered in the order their
+// sockets were bound (next_link_in), then the processor side (L). Host primaries go straight to the local processor side (they never wait). With
 // route_at_once (flat, approximately timed, positive link time, unbounded buffers) a packet from
 // the processor side for another node is routed as it is handed over when no arrival is due:
 // the processor runs after the delta's deliveries, so this is the order of one delta later.
@@ -39,7 +39,6 @@
 #include <deque>
 #include <systemc>
 #include <tlm>
-#include <tlm_utils/multi_passthrough_target_socket.h>
 #include <vector>
 
 #include "activation_queue.h"
@@ -58,16 +57,19 @@ namespace torusrt {
 
 class CommUnit : public sc_core::sc_module, public PacketSinkIf, public WakeCalendar::Client {
   public:
-    // Packets from incoming links (none when the node has no neighbours).
-    tlm_utils::multi_passthrough_target_socket<CommUnit, 32, tlm::tlm_base_protocol_types, 0,
-                                               sc_core::SC_ZERO_OR_MORE_BOUND>
-        link_in;
+    // Packets from incoming links: one socket per neighbour (none when the node has none).
+    using LinkInSocket = tlm::tlm_target_socket<32, tlm::tlm_base_protocol_types, 1, sc_core::SC_ZERO_OR_MORE_BOUND>;
+    sc_core::sc_vector<LinkInSocket> link_in;
     sc_core::sc_export<PacketSinkIf> in;                          // packets from the IP side and the host
     sc_core::sc_port<PacketSinkIf> local;                         // packets for this node's cells
     sc_core::sc_port<PacketSinkIf, kDirections, sc_core::SC_ZERO_OR_MORE_BOUND> link_out; // outgoing links
 
     CommUnit(sc_core::sc_module_name name, int node, const Routing &routing, const rt_grid *grid,
              const int32_t *cell_owner, const sc_core::sc_time &lookahead = sc_core::SC_ZERO_TIME);
+
+    // The next incoming-link socket not yet handed out, for a link to bind to (elaboration). A
+    // link's crossings are numbered by its socket, so sources are numbered in this order.
+    LinkInSocket &next_link_in();
 
     void accept(const TimedPacket &p) override;
     // From the processor side by handle in the machine's pool (a packet its processor stepped in
@@ -119,6 +121,27 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf, public WakeCale
     CommUnitStats stats() const { return {m_local, m_transit, held()}; }
 
   private:
+    // What an incoming link's socket is bound to: it passes the link's number on with each
+    // crossing. A unit holds its own, so a crossing reaches b_transport in two direct calls.
+    class LinkInput final : public tlm::tlm_fw_transport_if<> {
+      public:
+        void b_transport(tlm::tlm_generic_payload &trans, sc_core::sc_time &delay) override
+        {
+            m_unit->b_transport(m_source, trans, delay);
+        }
+        // Links only use b_transport.
+        tlm::tlm_sync_enum nb_transport_fw(tlm::tlm_generic_payload &trans, tlm::tlm_phase &,
+                                           sc_core::sc_time &) override
+        {
+            trans.set_response_status(tlm::TLM_COMMAND_ERROR_RESPONSE);
+            return tlm::TLM_COMPLETED;
+        }
+        bool get_direct_mem_ptr(tlm::tlm_generic_payload &, tlm::tlm_dmi &) override { return false; }
+        unsigned int transport_dbg(tlm::tlm_generic_payload &) override { return 0; }
+
+        CommUnit *m_unit = nullptr;
+        int m_source = 0;
+    };
     struct Hop {
         PacketSinkIf *sink;
         ToroidalLink *link; // the sink as a link of this machine (takes pool handles), or null
@@ -138,7 +161,7 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf, public WakeCale
     void hold(int source, uint32_t buffer, uint32_t packet);
     // Moves pool packet `packet` on if its next buffer has room.
     bool forward(uint32_t packet);
-    void b_transport(int id, tlm::tlm_generic_payload &trans, sc_core::sc_time &delay);
+    void b_transport(int source, tlm::tlm_generic_payload &trans, sc_core::sc_time &delay);
     void enqueue(uint32_t packet, const sc_core::sc_time &stamp, int source, BufferSpace *credit);
     // Routes pool packet `packet`, just handed over by the processor side.
     void from_processor(uint32_t packet);
@@ -160,7 +183,7 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf, public WakeCale
     alignas(64) PacketPool *m_pool = &m_own_pool;
     WakeCalendar *m_calendar = nullptr;
     int m_calendar_id = -1;
-    int m_processor_source = 0; // = the number of incoming links, known after elaboration
+    int m_processor_source = 0; // = the number of incoming links bound
     sc_core::sc_time m_lookahead; // the quantum when loosely timed, else 0
     size_t m_held_total = 0; // packets held (checked first: usually none)
     bool m_route_at_once = false;
@@ -174,6 +197,8 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf, public WakeCale
     const rt_grid *m_grid;
     const int32_t *m_owner;
     std::array<int, kDirections> m_port_of_dir;
+    // Per incoming-link socket, what it is bound to (a crossing's target).
+    std::array<LinkInput, kDirections> m_inputs;
     // Per direction, the machine's link there (or none) and where its crossings touch memory.
     std::array<ToroidalLink::HopLines, kDirections> m_out_links{};
     // Per source, per incoming buffer (2 x class + channel), pool handles.

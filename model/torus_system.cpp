@@ -77,7 +77,7 @@ TorusSystem::TorusSystem(sc_core::sc_module_name name, const MachineConfig &conf
             m_comm[n]->link_out.bind(link->in);
             m_comm[n]->set_link_port(dir, port++);
             m_comm[n]->set_link(dir, *link, *m_comm[to]);
-            link->socket.bind(m_comm[to]->link_in);
+            link->socket.bind(m_comm[to]->next_link_in());
             m_links.push_back(std::move(link));
         }
     }

@@ -3,7 +3,8 @@
 // (dimension order, the shorter way, + on a tie); packets from its links are delivered at their
 // annotated arrival time, simultaneous ones in source-port order and then in send order, and
 // each link slot (credit) is given back at delivery; host primaries go straight to the local
-// side; processor-side packets leave at their stamp.
+// side; processor-side packets leave at their stamp. The unit has one link socket per neighbour,
+// handed out in order, and answers only blocking transport on them.
 #include <systemc>
 #include <tlm>
 #include <tlm_utils/simple_initiator_socket.h>
@@ -141,8 +142,8 @@ static Outcome simulate()
     // Port 1 sends first (1 us), port 0 later (2 us), all arriving at 5 us: delivery must still
     // put port 0's packet first.
     LinkSender port0("port0"), port1("port1");
-    port0.socket.bind(cu.link_in); // source 0
-    port1.socket.bind(cu.link_in); // source 1
+    port0.socket.bind(cu.next_link_in()); // source 0
+    port1.socket.bind(cu.next_link_in()); // source 1
     port1.at = us(1);
     port0.at = us(2);
     port1.sends = {{11, us(4)}, {12, us(4)}, {13, us(2)}}; // 13 arrives first, at 3 us
@@ -206,4 +207,34 @@ TEST(CommUnit, HoldsLinkSlotsUntilDelivery)
 {
     EXPECT_EQ(run().credits_at4, 3u) << "11, 12 (port 1) and 10 (port 0) not yet delivered at 4 us";
     EXPECT_EQ(run().credits_at6, 0u) << "all back at 6 us";
+}
+
+TEST(CommUnit, HasOneLinkSocketPerNeighbourAndRefusesAnotherLink)
+{
+    sc_core::sc_report_handler::set_actions(sc_core::SC_FATAL, sc_core::SC_THROW);
+    Routing ring({4, 1, 1}, true), line({4, 1, 1}, false);
+    CommUnit inner("inner", 0, ring, nullptr, nullptr), end("end", 0, line, nullptr, nullptr);
+    EXPECT_EQ(inner.link_in.size(), 2u) << "two neighbours on a ring";
+    EXPECT_EQ(end.link_in.size(), 1u) << "one at the end of a line";
+    EXPECT_EQ(&inner.next_link_in(), &inner.link_in[0]) << "handed out in order";
+    EXPECT_EQ(&inner.next_link_in(), &inner.link_in[1]);
+    EXPECT_THROW(inner.next_link_in(), sc_core::sc_report) << "a third link has no neighbour to come from";
+}
+
+TEST(CommUnit, LinkSocketAnswersOnlyBlockingTransport)
+{
+    Routing ring({4, 1, 1}, true);
+    CommUnit cu("cu", 0, ring, nullptr, nullptr);
+    tlm::tlm_fw_transport_if<> *target = cu.link_in[0].get_base_export().operator->();
+    tlm::tlm_generic_payload t;
+    tlm::tlm_phase phase = tlm::BEGIN_REQ;
+    sc_time delay = sc_core::SC_ZERO_TIME;
+    EXPECT_EQ(target->nb_transport_fw(t, phase, delay), tlm::TLM_COMPLETED);
+    EXPECT_EQ(t.get_response_status(), tlm::TLM_COMMAND_ERROR_RESPONSE);
+    tlm::tlm_dmi dmi;
+    EXPECT_FALSE(target->get_direct_mem_ptr(t, dmi));
+    EXPECT_EQ(target->transport_dbg(t), 0u);
+    t.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
+    target->b_transport(t, delay); // no packet extension: refused
+    EXPECT_EQ(t.get_response_status(), tlm::TLM_GENERIC_ERROR_RESPONSE);
 }

@@ -134,7 +134,7 @@ struct Ring {
                 links.push_back(std::make_unique<ToroidalLink>(ln.c_str(), config, i, to, dir));
                 cus[i]->link_out.bind(links.back()->in);
                 cus[i]->set_link_port(dir, port++);
-                links.back()->socket.bind(cus[to]->link_in);
+                links.back()->socket.bind(cus[to]->next_link_in());
             }
         }
     }
