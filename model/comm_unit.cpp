@@ -25,8 +25,9 @@ size_t neighbours(const Routing &routing, int node)
 
 CommUnit::CommUnit(sc_core::sc_module_name name, int node, const Routing &routing, const rt_grid *grid,
                    const int32_t *cell_owner, const sc_core::sc_time &lookahead)
-    : sc_module(name), link_in("link_in", neighbours(routing, node)), in("in"), local("local"), link_out("link_out"), m_lookahead(lookahead),
-      m_node(node), m_routing(routing), m_grid(grid), m_owner(cell_owner)
+    : sc_module(name), link_in("link_in", neighbours(routing, node)), in("in"), local("local"),
+      link_out("link_out"), m_lookahead(lookahead), m_node(node), m_routing(routing), m_grid(grid),
+      m_owner(cell_owner)
 {
     m_port_of_dir.fill(-1);
     in.bind(*this);

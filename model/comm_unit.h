@@ -7,10 +7,11 @@
 // arrival queue's fixed order (time, source, sequence), but never one pushed in the same delta
 // cycle: that one waits for the next delta, so whether its sender ran before or after the
 // delivery method does not matter. Sources: incoming links 0..L-1, numbered in the order their
-// sockets were bound (next_link_in), then the processor side (L). Host primaries go straight to the local processor side (they never wait). With
-// route_at_once (flat, approximately timed, positive link time, unbounded buffers) a packet from
-// the processor side for another node is routed as it is handed over when no arrival is due:
-// the processor runs after the delta's deliveries, so this is the order of one delta later.
+// sockets were bound (next_link_in), then the processor side (L). Host primaries go straight to
+// the local processor side (they never wait). With route_at_once (flat, approximately timed,
+// positive link time, unbounded buffers) a packet from the processor side for another node is
+// routed as it is handed over when no arrival is due: the processor runs after the delta's
+// deliveries, so this is the order of one delta later.
 //
 // Timed wake-up: in a machine that has one (use_calendar), the unit asks the machine's wake
 // calendar (wake_calendar.h) to wake it at its earliest arrival time, and the calendar calls
@@ -58,7 +59,8 @@ namespace torusrt {
 class CommUnit : public sc_core::sc_module, public PacketSinkIf, public WakeCalendar::Client {
   public:
     // Packets from incoming links: one socket per neighbour (none when the node has none).
-    using LinkInSocket = tlm::tlm_target_socket<32, tlm::tlm_base_protocol_types, 1, sc_core::SC_ZERO_OR_MORE_BOUND>;
+    using LinkInSocket =
+        tlm::tlm_target_socket<32, tlm::tlm_base_protocol_types, 1, sc_core::SC_ZERO_OR_MORE_BOUND>;
     sc_core::sc_vector<LinkInSocket> link_in;
     sc_core::sc_export<PacketSinkIf> in;                          // packets from the IP side and the host
     sc_core::sc_port<PacketSinkIf> local;                         // packets for this node's cells

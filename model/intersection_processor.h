@@ -177,7 +177,8 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf, pu
     bool m_busy_flag = false;
     rt_op_counts m_ops{};
     rt_step_result m_result;
-    std::vector<TimedPacket> m_outputs; // the current step's created packets, then the forwarded one (by copy)
+    // The current step's created packets, then the forwarded one (by copy).
+    std::vector<TimedPacket> m_outputs;
     PacketQueue m_queue;
     TimedPacket m_current;  // the packet taken up (after its step), when taken up by copy
     std::vector<uint32_t> m_tested; // objects tested in the current step (shared data only)
