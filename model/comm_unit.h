@@ -198,7 +198,7 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf, public WakeCale
     const Routing &m_routing;
     const rt_grid *m_grid;
     const int32_t *m_owner;
-    std::array<int, kDirections> m_port_of_dir;
+    PacketSinkIf *m_local_sink = nullptr; // what `local` is bound to (from the start of simulation)
     // Per incoming-link socket, what it is bound to (a crossing's target).
     std::array<LinkInput, kDirections> m_inputs;
     // Per direction, the machine's link there (or none) and where its crossings touch memory.
@@ -214,6 +214,7 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf, public WakeCale
     std::vector<size_t> m_held_count;
     sc_core::sc_event m_due, m_run, m_retry, m_processor_room;
     std::vector<sc_core::sc_event *> m_processor_waiters; // on_space(): notified with m_processor_room
+    std::array<int, kDirections> m_port_of_dir; // link_out's index per direction (-1: none)
 };
 
 }  // namespace torusrt

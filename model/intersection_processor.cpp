@@ -55,7 +55,7 @@ void IntersectionProcessor::on_test(void *ctx, uint32_t object)
 
 bool IntersectionProcessor::prepare(TimedPacket &tp)
 {
-    m_tested.clear();
+    if (m_params.on_test) m_tested.clear(); // shared data only: else the list's line stays cold
     rt_status st = rt_step(m_scene, m_grid, m_owner, m_owner_id, &m_params, &tp.packet, &m_result);
     if (st != RT_OK) SC_REPORT_FATAL(name(), rt_status_name(st));
     m_outputs.clear();
@@ -164,7 +164,8 @@ void IntersectionProcessor::begin_step()
     m_busy_flag = true;
     rt_ops_add(&m_ops, &m_result.ops);
     m_start = m_time.now();
-    for (uint32_t obj : m_tested) fetch->fetch(m_index, obj, m_time); // a thread: it may wait
+    if (m_params.on_test)
+        for (uint32_t obj : m_tested) fetch->fetch(m_index, obj, m_time); // a thread: it may wait
 }
 
 void IntersectionProcessor::end_step()

@@ -48,9 +48,10 @@ namespace torusrt {
 
 class CommUnit;
 
-class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf, public WakeCalendar::Client,
-                              public PacketQueue::Reader,
-                              public ActivationQueue::Client {
+// The interfaces come before sc_module so that their virtual-table pointers share the object's
+// first line: the comm unit, the calendar and the queue call in through them at every step.
+class IntersectionProcessor : public PacketSinkIf, public WakeCalendar::Client, public PacketQueue::Reader,
+                              public ActivationQueue::Client, public sc_core::sc_module {
   public:
     sc_core::sc_export<PacketSinkIf> in;                                      // packets to process
     sc_core::sc_port<PacketSinkIf> out;                                       // new and forwarded packets

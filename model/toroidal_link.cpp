@@ -8,7 +8,8 @@ namespace torusrt {
 ToroidalLink::ToroidalLink(sc_core::sc_module_name name, const MachineConfig &config, int from, int to, int dir)
     : sc_module(name), socket("socket"), in("in"),
       m_packet_time(rt_timing_link_packet_us(&config.timing), sc_core::SC_US),
-      m_dir(dir), m_packet_bytes(config.timing.packet_bytes), m_spaces(config.queue_capacity), m_from(from), m_to(to)
+      m_to(to), m_dir(static_cast<int8_t>(dir)), m_packet_bytes(config.timing.packet_bytes),
+      m_spaces(config.queue_capacity), m_from(from)
 {
     in.bind(*this);
 }
@@ -64,7 +65,7 @@ void ToroidalLink::send(const TransactionPool::Crossing &c, TimedPacket &p, cons
     }
     c.ext->credit = &space_for(p);
     p.stamp = m_free_at;
-    p.last_dir = static_cast<int8_t>(m_dir);
+    p.last_dir = m_dir;
     // A write to the receiving node, data = the packet as held in memory (its size on the wire is
     // a timing parameter).
     tlm::tlm_generic_payload &trans = *c.trans;

@@ -75,7 +75,8 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
     // all of them at once as it picks the link (prefetch_hop): at 512 nodes every one is cold,
     // and fetched one after another, or only once the link's own line has come in to name the
     // others, they cost a miss each.
-    struct HopLines {
+    // 32 bytes, so that a direction's entry in an array of them never spans two lines.
+    struct alignas(32) HopLines {
         ToroidalLink *link = nullptr;
         const void *target = nullptr;
         const char *receiver = nullptr;
@@ -107,13 +108,14 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
     // The socket's bound target interface (what socket-> returns), kept after elaboration so a
     // crossing does not read the port for it.
     tlm::tlm_fw_transport_if<> *m_fw = nullptr;
-    int m_dir;
+    int m_to;       // the receiving node: each crossing is addressed to it
+    int8_t m_dir;
     bool m_tracing = false, m_busy_flag = false;
     uint64_t m_packets = 0;
     double m_bytes = 0;
     double m_packet_bytes;
     ClassBuffers m_spaces;
-    int m_from, m_to;
+    int m_from;
     TransactionPool m_own_transactions;
     // Busy trace (only when traced): crossings not yet over, and the event that re-evaluates.
     struct BusyTrace {
