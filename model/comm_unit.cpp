@@ -75,14 +75,14 @@ int CommUnit::owner_of(const TimedPacket &p) const { return m_owner[rt_packet_ce
 
 CommUnit::Hop CommUnit::next_hop(TimedPacket &p, int owner)
 {
-    if (owner == m_node) return {m_local_sink ? m_local_sink : local.operator->(), nullptr, true, -1};
+    if (owner == m_node) return {m_local_sink, nullptr, true, -1};
     int dir = m_routing.next_direction(m_node, owner);
-    // The port's own link first: the port table is only read for a link bound some other way.
-    ToroidalLink *link = dir >= 0 ? m_out_links[dir].link : nullptr;
-    int port = !link && dir >= 0 ? m_port_of_dir[dir] : -1;
-    if (!link && port < 0) SC_REPORT_FATAL(name(), "no link toward the packet's owner");
+    if (dir < 0) SC_REPORT_FATAL(name(), "no link toward the packet's owner");
     p.vc = link_channel(m_flow, m_routing, p, m_node, dir);
-    if (link) return {link, link, false, dir};
+    // The port's own link first: the port table is only read for a link bound some other way.
+    if (ToroidalLink *link = m_out_links[dir].link) return {link, link, false, dir};
+    int port = m_port_of_dir[dir];
+    if (port < 0) SC_REPORT_FATAL(name(), "no link toward the packet's owner");
     return {link_out[port], nullptr, false, dir};
 }
 
