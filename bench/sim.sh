@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # Benchmark (not a test): the simulator's cost per packet hop. paper-image1 at 144x144 on 24^3
 # cells with 16, 64, 512 and 4096 IPs (the same work at every size), and the 512-IP run on 64^3 cells at
-# 1024x1024; cyclic mapping. Per row: simulated image time, wall time of the simulation, packet
-# hops (link crossings), microseconds of wall time per hop, hops per second, the ratio of the
-# simulation's wall time to torusrt-render's on the same scene, grid and size, and the wall
-# time, the CPU time (user + system) and the peak resident memory of the whole torusrt-sim
-# process (/usr/bin/time -v: elaboration, the run, the reports and the exit; on a shared
-# machine the CPU time is the steadier figure). A 4096-IP row shows the same work on the
+# 1024x1024; cyclic mapping. Per row: simulated image time, wall time of the simulation (sc_start,
+# after elaboration), that of the elaboration before it (building and binding the modules: a cost
+# per machine, not per hop), packet hops (link crossings), microseconds of simulation wall time
+# per hop, hops per second, the ratio of the simulation's wall time to torusrt-render's on the
+# same scene, grid and size, and the wall time, the CPU time (user + system) and the peak
+# resident memory of the whole torusrt-sim process (/usr/bin/time -v: elaboration, the run, the
+# reports and the exit; on a shared machine the CPU time is the steadier figure). A 4096-IP row shows the same work on the
 # largest machine the model builds.
 # The machine's speed drifts from minute to minute: BENCH_RUNS=N runs every row N times, in N
 # rounds of one run of each small row (the renderer too), then N runs of each large row, and
@@ -20,8 +21,8 @@ build=${1:-$here/build}
 scene=$here/scenes/paper-image1.nff
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 trap 'echo "bench/sim.sh: line $LINENO failed (status $?)" >&2' ERR
-printf '%-10s %5s %6s %10s %9s %9s %7s %8s %10s %11s %11s %10s %8s\n' \
-  size cells ips sim_time_s wall_s wall_med_s run_s cpu_s hops us_per_hop hops_per_s vs_render peak_MB
+printf '%-10s %5s %6s %10s %9s %9s %7s %7s %8s %10s %11s %11s %10s %8s\n' \
+  size cells ips sim_time_s wall_s wall_med_s elab_s run_s cpu_s hops us_per_hop hops_per_s vs_render peak_MB
 configs=("144x144 24 4x2x2" "144x144 24 4x4x4" "144x144 24 8x8x8" "144x144 24 16x16x16")
 small=3 # rows run round by round; the rest, each a quarter of a gigabyte, after them
 [ "${BENCH_BIG:-1}" = 0 ] || configs+=("1024x1024 64 8x8x8")
@@ -60,10 +61,10 @@ for i in "${!configs[@]}"; do
   median=$(tr ' ' '\n' <<<"${walls[i]}" | sed '/^$/d' | sort -g | awk '{ a[NR] = $1 } END { print a[int((NR + 1) / 2)] }')
   jq -r --arg size "$size" --arg cells "$cells" --argjson rw "$(jq .wall_s "$tmp/r$i.json")" --argjson rss "$rss_kb" \
     --argjson cpu "$cpu_s" --argjson med "$median" --argjson run "$run_s" \
-    '[$size, $cells, .ips, .sim_time_s, .sim_wall_s, $med, $run, $cpu, .links.packets, (.sim_wall_s / .links.packets * 1e6),
+    '[$size, $cells, .ips, .sim_time_s, .sim_wall_s, $med, .elaboration_wall_s, $run, $cpu, .links.packets, (.sim_wall_s / .links.packets * 1e6),
       .packet_hops_per_s, (.sim_wall_s / $rw), ($rss / 1024)] | @tsv' "$tmp/s$i.json" |
-    awk -F'\t' '{ printf "%-10s %5s %6d %10.5f %9.3f %9.3f %7.2f %8.2f %10d %11.3f %11.0f %9.1fx %8.1f\n",
-                  $1, $2, $3, $4, $5, $6, $7, $8, $9, $10, $11, $12, $13 }'
+    awk -F'\t' '{ printf "%-10s %5s %6d %10.5f %9.3f %9.3f %7.3f %7.2f %8.2f %10d %11.3f %11.0f %9.1fx %8.1f\n",
+                  $1, $2, $3, $4, $5, $6, $7, $8, $9, $10, $11, $12, $13, $14 }'
 done
 # The same work at 16 and 512 IPs (rows 0 and 2): the cost of a hop at 512 over that at 16.
 ratio() { jq -n "($2 / $(jq .links.packets "$tmp/s2.json")) / ($1 / $(jq .links.packets "$tmp/s0.json"))"; }

@@ -1,7 +1,6 @@
 // torusrt_sim.cpp - the main simulator: the object-space-parallel ray-tracing machine as a
 // SystemC/TLM-2.0 model, on one scene, with one configuration.
 #include <CLI/CLI.hpp>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <set>
@@ -25,6 +24,7 @@
 #include "mapping_setup.h"
 #include "systemc_messages.h"
 #include "user_error.h"
+#include "wall_clock.h"
 
 using namespace torusrt;
 
@@ -48,11 +48,6 @@ struct CommandLine {
     std::string remap, remap_pilot, remap_window, remap_margin, frames_csv;
     std::string config_file;  // the --config file read, if any (no output may replace it)
 };
-
-double seconds_now()
-{
-    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
 
 rt_map_kind parse_mapping(const std::string &text, int &block)
 {
@@ -483,7 +478,7 @@ int run(CommandLine &cl, double wall_start)
 
 int sc_main(int argc, char **argv)
 {
-    double wall_start = seconds_now();
+    double wall_start = wall_clock_s();
     sc_core::sc_report_handler::set_actions(sc_core::SC_FATAL, sc_core::SC_DISPLAY | sc_core::SC_THROW);
     sc_core::sc_report_handler::set_actions(sc_core::SC_ERROR, sc_core::SC_DISPLAY | sc_core::SC_THROW);
     CommandLine cl;

@@ -2,19 +2,14 @@
 #include "cost_mapping.h"
 
 #include <algorithm>
-#include <chrono>
 
 #include "rt_cost_map.h"
 #include "user_error.h"
+#include "wall_clock.h"
 
 namespace torusrt {
 
 namespace {
-
-double seconds_now()
-{
-    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
 
 // Runs the pilot at the pilot size (the scene's resolution is restored afterwards).
 rt_cost_pilot run_pilot(const MachineConfig &config, rt_scene *scene, const rt_grid *grid)
@@ -37,15 +32,15 @@ rt_cost_pilot run_pilot(const MachineConfig &config, rt_scene *scene, const rt_g
 nlohmann::json cost_mapping(const MachineConfig &config, rt_scene *scene, const rt_grid *grid,
                             std::vector<int32_t> &owner)
 {
-    double t0 = seconds_now();
+    double t0 = wall_clock_s();
     rt_cost_pilot pilot = run_pilot(config, scene, grid);
-    double t1 = seconds_now();
+    double t1 = wall_clock_s();
     rt_cost_map_facts facts;
     char msg[RT_MSG_LEN] = "";
     double edge_us = rt_cost_edge_us(&config.timing);
     rt_status st = rt_cost_map_folded(&pilot, config.ips.data(), config.topology == Topology::torus, edge_us,
                                       config.block, owner.data(), &facts, msg, sizeof msg);
-    double t2 = seconds_now();
+    double t2 = wall_clock_s();
     double pilot_us = pilot.total_us, max_cell_us = 0;
     for (size_t c = 0; c < pilot.cells; c++) max_cell_us = std::max(max_cell_us, pilot.work_us[c]);
     uint64_t faces = pilot.ops.handovers_sent;

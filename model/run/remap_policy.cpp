@@ -2,7 +2,6 @@
 #include "remap_policy.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -12,15 +11,11 @@
 
 #include "load_motion.h"
 #include "user_error.h"
+#include "wall_clock.h"
 
 namespace torusrt {
 
 namespace {
-
-double now_s()
-{
-    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
 
 std::string seconds_text(double s)
 {
@@ -229,11 +224,11 @@ const char *remap_policy_name(RemapPolicy policy)
 
 void FramePilot::run(const SimConfig &config, const rt_scene *scene, const rt_grid *grid)
 {
-    double t0 = now_s();
+    double t0 = wall_clock_s();
     char msg[RT_MSG_LEN] = "";
     if (rt_cost_pilot_run(scene, grid, &config.step, &config.timing, &m_pilot, msg, sizeof msg) != RT_OK)
         throw UserError(std::string("frame pilot run: ") + msg);
-    m_wall_s = now_s() - t0;
+    m_wall_s = wall_clock_s() - t0;
     m_host_s = m_pilot.total_us * 1e-6;
     const rt_camera *cam = rt_scene_camera(scene);
     m_pixels = static_cast<uint64_t>(cam->width) * cam->height;
@@ -336,7 +331,7 @@ RemapDecision Remapper::decide(const RemapContext &ctx, const std::vector<int32_
 {
     RemapDecision d;
     int nodes = ctx.config.node_count();
-    double t0 = now_s();
+    double t0 = wall_clock_s();
     if (m_policy == RemapPolicy::static_map) {
         d.owner = current;
         d.reason = "static: the first frame's mapping";
@@ -353,7 +348,7 @@ RemapDecision Remapper::decide(const RemapContext &ctx, const std::vector<int32_
         if (loads.preview) adaptive_choice(ctx, current, loads, d);
         else guess_choice(ctx, current, loads, d);
     }
-    d.mapper_wall_s = now_s() - t0;
+    d.mapper_wall_s = wall_clock_s() - t0;
     d.migration = migration_cost(ctx.scene, ctx.grid, ctx.routing, nodes, ctx.config.timing, current, d.owner);
     return d;
 }

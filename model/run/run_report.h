@@ -24,7 +24,9 @@ struct RunFacts {
     double t1_s = 0;          // T(1): the same model with one processor
     std::string t1_source;    // "passed", "one-processor run", "this run"
     double wall_s = 0;        // wall-clock seconds of the whole run
-    double sim_wall_s = 0;    // wall-clock seconds inside sc_start
+    // Wall-clock seconds of elaboration (building and binding the modules, SystemC's end of
+    // elaboration and start of simulation) and of the simulation after it (sc_start).
+    double elaboration_wall_s = 0, sim_wall_s = 0;
     uint64_t delta_cycles = 0;
 };
 

@@ -174,6 +174,7 @@ nlohmann::json to_json(const RunReport &r)
         {"packet_bytes_wire", r.config.timing.packet_bytes},
         {"packet_bytes_in_memory", sizeof(rt_packet)},
         {"wall_s", f.wall_s},
+        {"elaboration_wall_s", f.elaboration_wall_s},
         {"sim_wall_s", f.sim_wall_s},
         // What the allocator was told (huge pages; huge_pages.h): it moves the wall times above.
         {"allocator_tunables", std::getenv("GLIBC_TUNABLES") ? std::getenv("GLIBC_TUNABLES") : ""},

@@ -110,7 +110,8 @@ void print_summary(const RunReport &r, std::FILE *out)
                  static_cast<unsigned long long>(r.units_serial), static_cast<unsigned long long>(r.units_parallel), n);
     print_mapping(r, out);
     double w = f.sim_wall_s;
-    std::fprintf(out, "  wall         %.3f s (%.3f s simulating), %.0f events/s, %.0f packet hops/s\n", f.wall_s, w,
+    std::fprintf(out, "  wall         %.3f s (%.3f s elaborating, %.3f s simulating), %.0f events/s, %.0f packet hops/s\n",
+                 f.wall_s, f.elaboration_wall_s, w,
                  w > 0 ? r.totals.events / w : 0.0, w > 0 ? r.totals.hops / w : 0.0);
     print_frame_table(r.frames, r.remap, out);
 }

@@ -13,7 +13,7 @@ report=(python3 "$SRC/experiments/report")
 run=(--size 32x32 --memory-budget 2G)  # run options: given to every run, never in the file
 # The report without the wall-clock figures (they differ from run to run).
 timeless() {
-    jq -S 'del(.wall_s, .sim_wall_s, .events_per_s, .packet_hops_per_s, .mapping.pilot_wall_s, .mapping.mapper_wall_s)' "$1"
+    jq -S 'del(.wall_s, .elaboration_wall_s, .sim_wall_s, .events_per_s, .packet_hops_per_s, .mapping.pilot_wall_s, .mapping.mapper_wall_s)' "$1"
 }
 same_run() {  # same_run WHAT A B: same image, same report but for the wall-clock figures
     check "$1: same image bytes" cmp -s "$TMP/$2.png" "$TMP/$3.png"

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The summary and the JSON come from one report, and the queue figures mean what they say:
-# - the summary's image time, efficiency, packet hops and queue line equal the JSON's;
+# - the summary's image time, efficiency, packet hops, wall times and queue line equal the JSON's,
+#   and the elaboration's and the simulation's wall times are parts of the run's;
 # - every queue of the flat torus is listed once (an input queue per IP, one per link), with the
 #   high water the per-IP and per-link entries give, and with unbounded queues no writer ever
 #   waits (stalled_s 0, nothing ever full);
@@ -27,6 +28,11 @@ check "summary efficiency = efficiency" \
     test "$(line efficiency | awk '{ print $2 }')" = "$(json "$j" '.efficiency * 100' | awk '{ printf "%.1f", $1 }')"
 check "summary packet hops = links.packets" \
     test "$(line links | awk '{ print $4 }')" = "$(json "$j" '.links.packets')"
+check "wall: elaboration and simulation are parts of the whole run" \
+    jq -e '.elaboration_wall_s > 0 and .sim_wall_s > 0 and .elaboration_wall_s + .sim_wall_s <= .wall_s' "$j"
+check "summary wall line = wall_s, elaboration_wall_s, sim_wall_s" \
+    test "$(line wall | awk '{ print $2, $4, $7 }' | tr -d '(')" = \
+    "$(json "$j" '"\(.wall_s) \(.elaboration_wall_s) \(.sim_wall_s)"' | awk '{ printf "%.3f %.3f %.3f", $1, $2, $3 }')"
 hw=$(json "$j" '[.queues[].high_water] | max')
 name=$(json "$j" "[.queues[] | select(.high_water == $hw)][0].name")
 check "summary: largest high water $hw ($name)" \
