@@ -167,7 +167,11 @@ std::vector<MachineOption> build_table()
         {{"--link-us", "TIME", K::time, "50", 0, kMaxTimingUs, "us",
           "time per packet on a link; a bare number is microseconds", G::machine, "link-us"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
-             set_timing(s, m.timing, "link", parse_time(s.long_name(), t, -6, -6));
+             double us = parse_time(s.long_name(), t, -6, -6);
+             if (us > s.max)
+                 throw UserError(s.long_name() + " '" + shown_text(t) + "': must be at most " + number_text(s.max) +
+                                     " us (1 s)", 2);
+             set_timing(s, m.timing, "link", us);
          },
          [](const MachineConfig &m) { return number(timing_value(m.timing, "link")); }},
         {{"--packet-bytes", "BYTES", K::real, "28", 0, kMaxTimingUs, "bytes", "packet size on the wire",
