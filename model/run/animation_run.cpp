@@ -131,6 +131,7 @@ void elaborate(const SimConfig &config, const rt_scene *scene, const rt_grid *gr
                                                            m.fb.get()));
     if (!config.vcd_path.empty()) m.tracer = std::make_unique<Tracer>(config, *m.top);
     finish_elaboration();
+    check_budget_before_start(m.ledger, m.memory);
     m.elaboration_wall_s = wall_clock_s() - start;
 }
 

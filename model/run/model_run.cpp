@@ -50,6 +50,14 @@ bool run_finished(const SimConfig &config, TorusSystem &top, const PacketLedger 
     return finished;
 }
 
+void check_budget_before_start(const PacketLedger &ledger, rt_budget &memory)
+{
+    if (!ledger.over_limit()) return;  // sc_stop was called in elaboration: sc_start would fail (E546)
+    char msg[RT_MSG_LEN] = "";
+    rt_budget_packets_exceeded(&memory, ledger.outstanding_over_limit(), sizeof(rt_packet), msg, sizeof msg);
+    throw UserError(std::string("before the simulation started: ") + msg);
+}
+
 void check_conservation(const PacketLedger &ledger)
 {
     if (!ledger.conserved())
@@ -119,6 +127,7 @@ ModelOutcome run_model(const SimConfig &config, const rt_scene *scene, const rt_
     if (!config.vcd_path.empty()) tracer = std::make_unique<Tracer>(config, top);
 
     finish_elaboration();
+    check_budget_before_start(ledger, memory);
     double sim_start = wall_clock_s();
     // Stopping at the limit keeps SystemC's 64-bit time from wrapping: every single delay is
     // bounded (check_timing_limits), so none can jump from below the limit past the maximum.
