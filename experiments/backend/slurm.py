@@ -1,0 +1,173 @@
+"""The Slurm backend: each phase a job array of K points per task, each phase after the one
+before it (--dependency=afterany, so a point whose T(1) failed runs, fails at once and is listed
+as failed rather than left pending), [done/N] from squeue while waiting, the failed tasks from
+sacct afterwards, scancel on an interrupt."""
+import os
+import re
+import shlex
+import subprocess
+import sys
+import time
+
+BACKEND = os.path.dirname(os.path.abspath(__file__))
+MAX_TASKS = 1000  # below Slurm's default MaxArraySize (1001)
+
+
+def tasks_for(points, per_task):
+    return (points + per_task - 1) // per_task
+
+
+def sbatch_command(todo, tasks, per_task, jobs, slurm_args, name, after, outdir):
+    array = "1-%d" % tasks + ("%%%d" % jobs if jobs else "")
+    cmd = ["sbatch", "--parsable", "--job-name", name, "--array", array,
+           "--output", os.path.join(outdir, "%A_%a.out")]
+    if after:
+        cmd.append("--dependency=afterany:%s" % after)
+    cmd += shlex.split(slurm_args or "")
+    task = ["python3", BACKEND, "task", todo, str(per_task), todo + ".rc"]
+    return cmd + ["--wrap", shlex.join(task)]
+
+
+def submit(phases, state, per_task, jobs, slurm_args, name, say):
+    """Submits one array per phase with points; returns [(job id, tasks, points)] in order.
+    The caller cancels what was submitted if this is interrupted half-way."""
+    outdir = os.path.join(state, "slurm")
+    os.makedirs(outdir, exist_ok=True)
+    submitted, after = [], None
+    with open(os.path.join(state, "submitted"), "a") as record:
+        for number, (todo, points) in enumerate(phases, 1):
+            if not points:
+                continue
+            k = max(per_task, tasks_for(len(points), MAX_TASKS))
+            rcdir = todo + ".rc"
+            os.makedirs(rcdir, exist_ok=True)
+            for old in os.listdir(rcdir):
+                os.remove(os.path.join(rcdir, old))
+            tasks = tasks_for(len(points), k)
+            cmd = sbatch_command(todo, tasks, k, jobs, slurm_args, "%s-phase%d" % (name, number), after, outdir)
+            line = shlex.join(cmd)
+            say("backend: phase %d, %d points in %d tasks of %d: %s" % (number, len(points), tasks, k, line))
+            record.write(line + "\n")
+            out = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+            if out.returncode != 0:
+                raise RuntimeError("sbatch failed (exit %d): %s" % (out.returncode, out.stderr.strip()))
+            job = out.stdout.strip().split(";")[0]
+            submitted.append((job, tasks, len(points), k))
+            SUBMITTED.append(job)
+            after = job
+    return submitted
+
+
+SUBMITTED = []  # job ids, for cancel() on an interrupt
+
+
+def count_tasks(spec):
+    """Array tasks named by squeue's job id field: 12_3 is one, 12_[1-4,7%2] five, 12 one."""
+    m = re.fullmatch(r"\d+_\[([^\]]*)\]", spec)
+    if not m:
+        return 1
+    n = 0
+    for part in m.group(1).split("%")[0].split(","):
+        lo, _, hi = part.partition("-")
+        n += int(hi) - int(lo) + 1 if hi else 1
+    return n
+
+
+def queued(jobs):
+    """{job id: array tasks still pending, running or completing} from squeue."""
+    ids = ",".join(j for j, _, _, _ in jobs)
+    out = subprocess.run(["squeue", "-h", "-r", "-j", ids, "-o", "%i %T"], stdout=subprocess.PIPE,
+                         stderr=subprocess.PIPE, text=True)
+    if out.returncode != 0:
+        if "Invalid job id" in out.stderr:  # every job has ended and left the controller's memory
+            return {}
+        raise RuntimeError("squeue failed: %s" % out.stderr.strip())
+    left = {}
+    for line in out.stdout.split():
+        if "_" in line or line.isdigit():
+            job = line.split("_")[0]
+            left[job] = left.get(job, 0) + count_tasks(line)
+    return left
+
+
+def wait(jobs, poll, say):
+    """Waits until no task of JOBS is queued, printing [done/N] (points of finished tasks) as it changes."""
+    total = sum(p for _, _, p, _ in jobs)
+    last = None
+    while True:
+        left = queued(jobs)
+        done = 0
+        for job, tasks, points, k in jobs:
+            finished = tasks - min(left.get(job, 0), tasks)
+            # the last task holds the remainder, and arrays run in task order, so it ends last
+            done += min(points, finished * k)
+        if done != last:
+            say("[%d/%d]" % (done, total))
+            last = done
+        if not left:
+            return
+        time.sleep(poll)
+
+
+def sacct_rows(jobs):
+    """(task, state, exit code) of every array task, from Slurm's accounting or, where that is
+    off, from its job-completion log (sacct --completion)."""
+    ids = ",".join(j for j, _, _, _ in jobs)
+    for extra in ([], ["--completion"]):
+        out = subprocess.run(["sacct", "-n", "-P", "-X", "-j", ids, "-o", "JobID,State,ExitCode"] + extra,
+                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        rows = [line.split("|") for line in out.stdout.splitlines() if line.count("|") >= 2]
+        if out.returncode == 0 and rows:
+            return rows, "sacct" + ("".join(" " + e for e in extra))
+    return None, "sacct (no accounting data: %s)" % out.stderr.strip()
+
+
+def failed_tasks(jobs, state):
+    """Lines naming each task that did not complete, with its state and its output file."""
+    rows, source = sacct_rows(jobs)
+    if rows is None:
+        return ["backend: the tasks' states are not available from %s" % source]
+    out = []
+    for task, st, code in rows:
+        if st.split()[0] != "COMPLETED":
+            job, _, index = task.partition("_")
+            log = os.path.join(state, "slurm", "%s_%s.out" % (job, index))
+            out.append("backend: task %s %s (exit %s), from %s; its output: %s" % (task, st, code, source, log))
+    return out
+
+
+def point_status(phases):
+    """{point: "exit E"} of the points a task ran and saw fail (from the tasks' .rc files)."""
+    failed = {}
+    for todo, points in phases:
+        rcdir = todo + ".rc"
+        if not os.path.isdir(rcdir):
+            continue
+        for name in os.listdir(rcdir):
+            with open(os.path.join(rcdir, name)) as f:
+                for line in f:
+                    index, _, rc = line.strip().partition("\t")
+                    if rc and rc != "0" and 0 < int(index) <= len(points):
+                        failed[points[int(index) - 1]] = "exit %s" % rc
+    return failed
+
+
+def cancel(say):
+    if SUBMITTED:
+        cmd = ["scancel"] + SUBMITTED
+        say("backend: interrupted: %s" % shlex.join(cmd))
+        subprocess.run(cmd)
+
+
+def run(phases, state, per_task, jobs, slurm_args, name, poll, say=print):
+    SUBMITTED.clear()
+    try:
+        submitted = submit(phases, state, per_task, jobs, slurm_args, name, say)
+        if submitted:
+            wait(submitted, poll, say)
+    except BaseException:
+        cancel(say)
+        raise
+    for line in failed_tasks(submitted, state) if submitted else []:
+        print(line, file=sys.stderr)
+    return point_status(phases)
