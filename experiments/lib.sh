@@ -124,3 +124,28 @@ study_list() {
         printf '%s\t%s\n' "$1/$tag.json" "$(printf '%q ' "TAG=$tag" bash "$1/point.sh" "${words[@]}")"
     done >"$2"
 }
+# study_rows LIST EXT: the files WORK/TAG.EXT of the points of LIST, one after the other (the
+# rows a study's points wrote beside their JSON).
+study_rows() {
+    local done _
+    while IFS=$'\t' read -r done _; do cat "${done%.json}.$2"; done <"$1"
+}
+
+# study_args "$@": a study's command line: the backend options, --build DIR, -h, and the
+# positional form [BUILD_DIR] [JOBS]; sets BUILD (absolute), SIM and JOBS.
+study_args() {
+    local positional=()
+    while [ $# -gt 0 ]; do
+        if backend_option "$@"; then shift "$SHIFT"; continue; fi
+        case $1 in
+            --build) [ $# -ge 2 ] || die "--build needs a folder"; BUILD=$2; shift 2 ;;
+            -h|--help) sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
+            -*) die "unknown option '$1' (see --help)" ;;
+            *) positional+=("$1"); shift ;;
+        esac
+    done
+    [ ${#positional[@]} -le 2 ] || die "too many arguments: ${positional[*]} (see --help)"
+    [ ${#positional[@]} -lt 1 ] || BUILD=${positional[0]}
+    [ ${#positional[@]} -lt 2 ] || JOBS=${positional[1]}
+    set_build "$BUILD"
+}

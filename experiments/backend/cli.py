@@ -76,7 +76,7 @@ def run(args):
         % (total, len(phases), total - to_run, to_run, where, " (-j %d)" % jobs if jobs else ""))
     start, cpu0 = time.time(), resource.getrusage(resource.RUSAGE_CHILDREN)
     if kind == "slurm":
-        status = slurm.run(todo, state, args.per_task, jobs, args.slurm_args, args.name, args.poll, say)
+        status = slurm.run(todo, state, args.per_task, jobs, args.slurm_args, args.name, say)
     else:
         status = local.run(todo, state, jobs, hostfile, say)
     wall = time.time() - start
@@ -108,7 +108,6 @@ def main(argv):
     p.add_argument("--slurm-args", default="", help="more sbatch options, e.g. \"--partition=short --time=0:20:00\"")
     p.add_argument("--per-task", type=int, default=4, help="points per Slurm array task (default 4)")
     p.add_argument("--name", default="torusrt", help="the Slurm job name's prefix")
-    p.add_argument("--poll", type=float, default=5, help="seconds between squeue polls (default 5)")
     p.add_argument("--runs", help="append one line about this run to this TSV file")
     p.add_argument("--label", default="", help="the mode column of that line")
     p.set_defaults(run=run)

@@ -90,10 +90,11 @@ def queued(jobs):
     return left
 
 
-def wait(jobs, poll, say):
-    """Waits until no task of JOBS is queued, printing [done/N] (points of finished tasks) as it changes."""
+def wait(jobs, say):
+    """Waits until no task of JOBS is queued, printing [done/N] (points of finished tasks) as it
+    changes; squeue is asked every second at first, then less often while nothing changes."""
     total = sum(p for _, _, p, _ in jobs)
-    last = None
+    last, poll = None, 1.0
     while True:
         left = queued(jobs)
         done = 0
@@ -103,23 +104,35 @@ def wait(jobs, poll, say):
             done += min(points, finished * k)
         if done != last:
             say("[%d/%d]" % (done, total))
-            last = done
+            last, poll = done, 1.0
         if not left:
             return
         time.sleep(poll)
+        poll = min(10.0, poll * 1.5)
 
 
 def sacct_rows(jobs):
-    """(task, state, exit code) of every array task, from Slurm's accounting or, where that is
-    off, from its job-completion log (sacct --completion)."""
+    """(task, state, exit code, output file) of every array task, from sacct, or where Slurm's
+    accounting is off (a cluster without slurmdbd) from scontrol, which keeps ended jobs for
+    MinJobAge seconds."""
     ids = ",".join(j for j, _, _, _ in jobs)
-    for extra in ([], ["--completion"]):
-        out = subprocess.run(["sacct", "-n", "-P", "-X", "-j", ids, "-o", "JobID,State,ExitCode"] + extra,
-                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-        rows = [line.split("|") for line in out.stdout.splitlines() if line.count("|") >= 2]
-        if out.returncode == 0 and rows:
-            return rows, "sacct" + ("".join(" " + e for e in extra))
-    return None, "sacct (no accounting data: %s)" % out.stderr.strip()
+    out = subprocess.run(["sacct", "-n", "-P", "-X", "-j", ids, "-o", "JobID,State,ExitCode"],
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    rows = [line.split("|")[:3] + [None] for line in out.stdout.splitlines() if line.count("|") >= 2]
+    if out.returncode == 0 and rows:
+        return rows, "sacct"
+    rows = []
+    for job in ids.split(","):
+        shown = subprocess.run(["scontrol", "-o", "show", "job", job], stdout=subprocess.PIPE,
+                               stderr=subprocess.PIPE, text=True)
+        for line in shown.stdout.splitlines():
+            f = dict(w.partition("=")[::2] for w in line.split() if "=" in w)
+            if "ArrayTaskId" in f:
+                rows.append(["%s_%s" % (f.get("ArrayJobId"), f["ArrayTaskId"]), f.get("JobState", "?"),
+                             f.get("ExitCode", "?"), f.get("StdOut")])
+    if rows:
+        return rows, "scontrol (sacct: %s)" % (out.stderr.strip() or "no records")
+    return None, "sacct or scontrol (%s)" % out.stderr.strip()
 
 
 def failed_tasks(jobs, state):
@@ -128,11 +141,11 @@ def failed_tasks(jobs, state):
     if rows is None:
         return ["backend: the tasks' states are not available from %s" % source]
     out = []
-    for task, st, code in rows:
+    for task, st, code, log in rows:
         if st.split()[0] != "COMPLETED":
             job, _, index = task.partition("_")
-            log = os.path.join(state, "slurm", "%s_%s.out" % (job, index))
-            out.append("backend: task %s %s (exit %s), from %s; its output: %s" % (task, st, code, source, log))
+            log = log or os.path.join(state, "slurm", "%s_%s.out" % (job, index))
+            out.append("backend: task %s %s (exit %s; from %s), its output: %s" % (task, st, code, source, log))
     return out
 
 
@@ -159,12 +172,12 @@ def cancel(say):
         subprocess.run(cmd)
 
 
-def run(phases, state, per_task, jobs, slurm_args, name, poll, say=print):
+def run(phases, state, per_task, jobs, slurm_args, name, say=print):
     SUBMITTED.clear()
     try:
         submitted = submit(phases, state, per_task, jobs, slurm_args, name, say)
         if submitted:
-            wait(submitted, poll, say)
+            wait(submitted, say)
     except BaseException:
         cancel(say)
         raise
