@@ -124,11 +124,11 @@ study_list() {
         printf '%s\t%s\n' "$1/$tag.json" "$(printf '%q ' "TAG=$tag" bash "$1/point.sh" "${words[@]}")"
     done >"$2"
 }
-# study_rows LIST EXT: the files WORK/TAG.EXT of the points of LIST, one after the other (the
-# rows a study's points wrote beside their JSON).
+# study_rows LIST EXT: the files WORK/TAG.EXT of the points of LIST that have one, one after
+# the other (the rows a study's points wrote beside their JSON).
 study_rows() {
     local done _
-    while IFS=$'\t' read -r done _; do cat "${done%.json}.$2"; done <"$1"
+    while IFS=$'\t' read -r done _; do [ ! -f "${done%.json}.$2" ] || cat "${done%.json}.$2"; done <"$1"
 }
 
 # study_args "$@": a study's command line: the backend options, --build DIR, -h, and the

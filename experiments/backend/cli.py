@@ -120,6 +120,7 @@ def main(argv):
     if args.command == "run" and (args.per_task < 1 or args.jobs < 0):
         parser.error("--per-task must be at least 1 and -j positive")
     signal.signal(signal.SIGTERM, interrupted)
+    signal.signal(signal.SIGINT, signal.default_int_handler)  # even where the shell started us ignoring it
     try:
         return args.run(args)
     except KeyboardInterrupt:
