@@ -75,13 +75,13 @@ def run(args):
     say("backend: %d points in %d phase(s), %d already done, %d to run on %s%s"
         % (total, len(phases), total - to_run, to_run, where, " (-j %d)" % jobs if jobs else ""))
     start, cpu0 = time.time(), resource.getrusage(resource.RUSAGE_CHILDREN)
-    if kind == "slurm":
-        status = slurm.run(todo, state, args.per_task, jobs, args.slurm_args, args.name, say)
+    if kind == "slurm":  # the CPU time of the points, as the tasks measured it
+        status, cpu = slurm.run(todo, state, args.per_task, jobs, args.slurm_args, args.name, say)
     else:
         status = local.run(todo, state, jobs, hostfile, say)
+        cpu1 = resource.getrusage(resource.RUSAGE_CHILDREN)
+        cpu = (cpu1.ru_utime - cpu0.ru_utime) + (cpu1.ru_stime - cpu0.ru_stime)
     wall = time.time() - start
-    cpu1 = resource.getrusage(resource.RUSAGE_CHILDREN)
-    cpu = None if kind == "slurm" else (cpu1.ru_utime - cpu0.ru_utime) + (cpu1.ru_stime - cpu0.ru_stime)
     failed = report_failures(state, [p for _, pend in todo for p in pend], status)
     ran = sum(1 for _, pend in todo for p in pend if p.is_done())
     say("backend: %d points run, %d failed, %.1f s wall%s" % (ran, failed, wall, "" if cpu is None else

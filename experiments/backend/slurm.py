@@ -2,6 +2,7 @@
 before it (--dependency=afterany, so a point whose T(1) failed runs, fails at once and is listed
 as failed rather than left pending), [done/N] from squeue while waiting, the failed tasks from
 sacct afterwards, scancel on an interrupt."""
+import datetime
 import os
 import re
 import shlex
@@ -111,14 +112,30 @@ def wait(jobs, say):
         poll = min(10.0, poll * 1.5)
 
 
+def core_seconds(elapsed, cpus):
+    try:
+        return float(elapsed) * int(cpus)
+    except (TypeError, ValueError):
+        return None
+
+
+def seconds_between(start, end):
+    try:
+        a, b = (datetime.datetime.strptime(t, "%Y-%m-%dT%H:%M:%S") for t in (start, end))
+    except (TypeError, ValueError):
+        return None
+    return (b - a).total_seconds()
+
+
 def sacct_rows(jobs):
     """(task, state, exit code, output file) of every array task, from sacct, or where Slurm's
     accounting is off (a cluster without slurmdbd) from scontrol, which keeps ended jobs for
     MinJobAge seconds."""
     ids = ",".join(j for j, _, _, _ in jobs)
-    out = subprocess.run(["sacct", "-n", "-P", "-X", "-j", ids, "-o", "JobID,State,ExitCode"],
+    out = subprocess.run(["sacct", "-n", "-P", "-X", "-j", ids, "-o", "JobID,State,ExitCode,ElapsedRaw,AllocCPUS"],
                          stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    rows = [line.split("|")[:3] + [None] for line in out.stdout.splitlines() if line.count("|") >= 2]
+    rows = [line.split("|")[:3] + [None, core_seconds(*line.split("|")[3:5])]
+            for line in out.stdout.splitlines() if line.count("|") >= 4]
     if out.returncode == 0 and rows:
         return rows, "sacct"
     rows = []
@@ -129,29 +146,36 @@ def sacct_rows(jobs):
             f = dict(w.partition("=")[::2] for w in line.split() if "=" in w)
             if "ArrayTaskId" in f:
                 rows.append(["%s_%s" % (f.get("ArrayJobId"), f["ArrayTaskId"]), f.get("JobState", "?"),
-                             f.get("ExitCode", "?"), f.get("StdOut")])
+                             f.get("ExitCode", "?"), f.get("StdOut"),
+                             core_seconds(seconds_between(f.get("StartTime"), f.get("EndTime")), f.get("NumCPUs"))])
     if rows:
         return rows, "scontrol (sacct: %s)" % (out.stderr.strip() or "no records")
     return None, "sacct or scontrol (%s)" % out.stderr.strip()
 
 
 def failed_tasks(jobs, state):
-    """Lines naming each task that did not complete, with its state and its output file."""
+    """Lines naming each task that did not complete, with its state and its output file, then
+    one line with the tasks' core-seconds (elapsed times allocated CPUs, whole seconds)."""
     rows, source = sacct_rows(jobs)
     if rows is None:
         return ["backend: the tasks' states are not available from %s" % source]
     out = []
-    for task, st, code, log in rows:
+    cores = [r[4] for r in rows if r[4] is not None]
+    for task, st, code, log, _ in rows:
         if st.split()[0] != "COMPLETED":
             job, _, index = task.partition("_")
             log = log or os.path.join(state, "slurm", "%s_%s.out" % (job, index))
             out.append("backend: task %s %s (exit %s; from %s), its output: %s" % (task, st, code, source, log))
+    if cores:
+        out.append("backend: %d tasks took %.0f core-seconds of Slurm's allocation (%s)"
+                   % (len(cores), sum(cores), source.split(" ")[0]))
     return out
 
 
 def point_status(phases):
-    """{point: "exit E"} of the points a task ran and saw fail (from the tasks' .rc files)."""
-    failed = {}
+    """{point: "exit E"} of the points a task ran and saw fail, and the CPU seconds of every
+    point run (from the tasks' .rc files)."""
+    failed, cpu = {}, 0.0
     for todo, points in phases:
         rcdir = todo + ".rc"
         if not os.path.isdir(rcdir):
@@ -159,10 +183,11 @@ def point_status(phases):
         for name in os.listdir(rcdir):
             with open(os.path.join(rcdir, name)) as f:
                 for line in f:
-                    index, _, rc = line.strip().partition("\t")
+                    index, rc, seconds = (line.strip().split("\t") + ["", ""])[:3]
+                    cpu += float(seconds or 0)
                     if rc and rc != "0" and 0 < int(index) <= len(points):
                         failed[points[int(index) - 1]] = "exit %s" % rc
-    return failed
+    return failed, cpu
 
 
 def cancel(say):
@@ -182,5 +207,5 @@ def run(phases, state, per_task, jobs, slurm_args, name, say=print):
         cancel(say)
         raise
     for line in failed_tasks(submitted, state) if submitted else []:
-        print(line, file=sys.stderr)
+        print(line, file=sys.stderr if " task " in line else sys.stdout, flush=True)
     return point_status(phases)

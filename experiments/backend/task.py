@@ -1,7 +1,9 @@
 """The body of one Slurm array task: lines (i-1)K+1 .. iK of a todo list, one after the other,
-each line's exit status recorded in RCDIR/i (LINE<TAB>STATUS) for the submitting command."""
+each line's exit status and CPU seconds recorded in RCDIR/i (LINE<TAB>STATUS<TAB>CPU) for the
+submitting command."""
 import datetime
 import os
+import resource
 import socket
 import subprocess
 import sys
@@ -20,9 +22,12 @@ def run(todo, per_task, rcdir):
         for number, line in enumerate(lines[first:first + per_task], first + 1):
             stamp = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ")
             print("[%s %s] point %d: %s" % (stamp, socket.gethostname(), number, line), flush=True)
+            before = resource.getrusage(resource.RUSAGE_CHILDREN)
             rc = subprocess.call(["bash", "-c", line])
-            print("point %d: exit %d" % (number, rc), flush=True)
-            record.write("%d\t%d\n" % (number, rc))
+            after = resource.getrusage(resource.RUSAGE_CHILDREN)
+            cpu = after.ru_utime - before.ru_utime + after.ru_stime - before.ru_stime
+            print("point %d: exit %d, %.2f s CPU" % (number, rc, cpu), flush=True)
+            record.write("%d\t%d\t%.3f\n" % (number, rc, cpu))
             record.flush()
             if rc:
                 status = 1

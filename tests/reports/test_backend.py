@@ -93,9 +93,13 @@ class Slurm(unittest.TestCase):
                 finally:
                     sys.stdout = saved
             self.assertEqual(open(os.path.join(d, "ran")).read().split(), ["3", "4", "5"])
-            self.assertEqual(open(os.path.join(todo + ".rc", "3")).read(), "5\t0\n6\t4\n")
+            record = [line.split("\t") for line in open(os.path.join(todo + ".rc", "3")).read().splitlines()]
+            self.assertEqual([r[:2] for r in record], [["5", "0"], ["6", "4"]])
+            self.assertTrue(all(float(r[2]) >= 0 for r in record), "each point's CPU seconds")
             pts = [points.Point("/p%d.json" % i, "true", "l") for i in range(1, 7)]
-            self.assertEqual(slurm.point_status([(todo, pts)]), {pts[5]: "exit 4"})
+            failed, cpu = slurm.point_status([(todo, pts)])
+            self.assertEqual(failed, {pts[5]: "exit 4"})
+            self.assertGreaterEqual(cpu, 0)
         finally:
             os.environ.pop("SLURM_ARRAY_TASK_ID", None)
             subprocess.run(["rm", "-rf", d])
