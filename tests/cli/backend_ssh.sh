@@ -6,16 +6,9 @@
 # message naming them.
 source "$(dirname "$0")/common.bash" "$@"
 need_exe torusrt-sim
-for tool in parallel gnuplot python3 jq; do
-    command -v $tool >/dev/null || { fail "$tool not installed"; finish; exit 1; }
-done
-SWEEP=$SRC/experiments/sweep
-scene=$SRC/scenes/paper-image2.nff
+SWEEP=$SRC/experiments/sweep scene=$SRC/scenes/paper-image2.nff
+for tool in parallel gnuplot jq; do command -v $tool >/dev/null || { fail "needs $tool"; finish; exit 1; }; done
 axes=(--axis ips=1,2x2 --axis map=block,cyclic)
-nowall() {
-    awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) keep[i] = $i !~ /wall/ }
-        { s = ""; for (i = 1; i <= NF; i++) if (keep[i]) s = s (s == "" ? "" : FS) $i; print s }' "$1"
-}
 TORUSRT_BUILD=$BUILD "$SWEEP" "$scene" "${axes[@]}" --out "$TMP/local" -j 2 -- --size 16x16 --t1 1 >"$TMP/local.out" 2>&1
 check "local sweep exits 0" test $? -eq 0
 echo : >"$TMP/hosts"
