@@ -95,9 +95,18 @@ def wait(jobs, say):
     """Waits until no task of JOBS is queued, printing [done/N] (points of finished tasks) as it
     changes; squeue is asked every second at first, then less often while nothing changes."""
     total = sum(p for _, _, p, _ in jobs)
-    last, poll = None, 1.0
+    last, poll, errors = None, 1.0, 0
     while True:
-        left = queued(jobs)
+        try:
+            left = queued(jobs)
+            errors = 0
+        except RuntimeError as e:  # a busy controller: ask again, up to a minute or so
+            errors += 1
+            if errors > 6:
+                raise
+            say("backend: %s; asking again" % e)
+            time.sleep(10)
+            continue
         done = 0
         for job, tasks, points, k in jobs:
             finished = tasks - min(left.get(job, 0), tasks)
