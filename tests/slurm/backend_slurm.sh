@@ -41,6 +41,8 @@ case " \$* " in *" --ips 1 --map block "*) touch "$TMP/slow.started"; sleep 120 
 exec "$BUILD/torusrt-sim" "\$@"
 SIM
 chmod +x "$TMP/slowbuild/torusrt-sim"
+# at WHAT: the time since the test started, for reading where it goes.
+at() { echo "$((SECONDS - start_s)) s: $*"; }
 # wait_file FILE SECONDS: until FILE exists.
 wait_file() { local end=$((SECONDS + $2)); while [ ! -e "$1" ] && [ $SECONDS -lt $end ]; do sleep 0.2; done; [ -e "$1" ]; }
 
@@ -48,6 +50,7 @@ wait_file() { local end=$((SECONDS + $2)); while [ ! -e "$1" ] && [ $SECONDS -lt
 TORUSRT_BUILD=$BUILD "$SWEEP" "$scene" "${axes[@]}" --out "$TMP/local" -j 2 "${fixed[@]}" >"$TMP/local.out" 2>&1
 check "local sweep exits 0 ($(tail -n 2 "$TMP/local.out" | tr '\n' ' '))" test $? -eq 0
 
+at "the local sweep done"
 # 2. On Slurm, two points per task; the slow point's task is cancelled while it runs, so
 #    neither of its points is done.
 set -m  # background jobs in their own process groups, as a terminal's would be
@@ -68,10 +71,11 @@ check "a cancelled task makes the sweep exit 1 (got $rc)" test $rc -eq 1
 check "it printed the sbatch line it submitted" grep -q '^backend: phase 1, 8 points in 4 tasks of 2: sbatch .*--array 1-4 ' "$out"
 check "it showed the progress [done/8]" grep -q '^\[8/8\]$' "$out"
 check "the cancelled task is listed with its state and output" grep -q "^backend: task $task CANCELLED" "$out"
-check "the points without a result are listed as failed" test "$(grep -c 'FAILED .*ips_1-map_' "$out")" -eq 2
+check "the points without a result are listed as failed" test "$(grep -c '^backend: FAILED .*ips_1-map_' "$out")" -eq 2
 check "their CSV rows say failed" test "$(awk -F, '$1 == "1" { print $3 }' "$TMP/slurm/sweep.csv" | sort -u)" = failed
 check "the other 6 points are done" test "$(ls "$TMP/slurm/points/"*.json | wc -l)" -eq 6
 
+at "the cancelled sweep done"
 # 3. The same command again (the real simulator) computes the two missing points only.
 TORUSRT_BUILD=$BUILD "$SWEEP" "$scene" "${axes[@]}" --out "$TMP/slurm" --backend slurm --per-task 2 \
     "${fixed[@]}" >"$TMP/slurm2.out" 2>&1
@@ -82,6 +86,7 @@ check "Slurm's sweep.csv equals the local one but for wall_s" \
     diff <(nowall "$TMP/local/sweep.csv") <(nowall "$TMP/slurm/sweep.csv")
 check "every point ok" test "$(awk -F, 'NR > 1 && $3 != "ok"' "$TMP/slurm/sweep.csv" | wc -l)" -eq 0
 
+at "the resumed sweep done"
 # 4. An interrupt while the arrays are queued or running cancels them.
 rm -f "$TMP/slow.started"
 TORUSRT_BUILD=$TMP/slowbuild "$SWEEP" "$scene" "${axes[@]}" --out "$TMP/slurm-int" --backend slurm --per-task 1 \
@@ -97,10 +102,12 @@ wait_for 30 sh -c '[ -z "$(squeue -h)" ]'
 check "nothing left in the queue" test -z "$(squeue -h)"
 set +m
 
+at "the interrupted sweep done"
 # 5. A study: the buffer study (quick) on Slurm and on this machine give the same runs.tsv.
 bash "$SRC/experiments/buffers/study.sh" --quick --results "$TMP/buf-local" --build "$BUILD" -j 2 \
     >"$TMP/buf-local.out" 2>&1
 check "buffer study, local: exit 0 ($(tail -n 1 "$TMP/buf-local.out"))" test $? -eq 0
+at "the local buffer study done"
 bash "$SRC/experiments/buffers/study.sh" --quick --results "$TMP/buf-slurm" --build "$BUILD" --backend slurm \
     --per-task 8 >"$TMP/buf-slurm.out" 2>&1
 check "buffer study, Slurm: exit 0 ($(tail -n 2 "$TMP/buf-slurm.out" | tr '\n' ' '))" test $? -eq 0
