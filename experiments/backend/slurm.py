@@ -30,7 +30,7 @@ def sbatch_command(todo, tasks, per_task, jobs, slurm_args, name, after, outdir)
 
 
 def submit(phases, state, per_task, jobs, slurm_args, name, say):
-    """Submits one array per phase with points; returns [(job id, tasks, points)] in order.
+    """Submits one array per phase with points; returns [(job id, tasks, points, K)] in order.
     The caller cancels what was submitted if this is interrupted half-way."""
     outdir = os.path.join(state, "slurm")
     os.makedirs(outdir, exist_ok=True)
