@@ -20,6 +20,7 @@
 #include "model_run.h"
 #include "option_parsing.h"
 #include "output_files.h"
+#include "packet_pool.h"
 #include "scene_setup.h"
 #include "sim_config.h"
 #include "mapping_setup.h"
@@ -375,6 +376,7 @@ int run(CommandLine &cl, double wall_start)
     stage_outputs(cl, config, outputs);
     LoadedScene loaded = load_scene(config.scene_path, config.width, config.height, config.cells, config.quiet,
                                     &config.memory);
+    check_shade_tree(config.scene_path, loaded.scene.get(), config.step, config.memory, PacketPool::bytes_per_packet());
     nlohmann::json mapping_facts = prepare_mapping(config, loaded.scene.get(), loaded.grid.get());
     if (cl.anim.animated()) {
         write_mapping_outputs(config, loaded.scene.get(), loaded.grid.get(), outputs.write_map, outputs.load_map);

@@ -150,7 +150,7 @@ AnimationOutcome run_animation(const SimConfig &config, rt_scene *scene, const r
     size_t n = rt_camera_path_count(path);
     Machine m;
     m.memory = config.memory;
-    m.ledger.set_limit(rt_budget_packets_allowed(&m.memory, sizeof(rt_packet)));
+    m.ledger.set_limit(rt_budget_packets_allowed(&m.memory, PacketPool::bytes_per_packet()));
     Routing routing(config.ips, config.topology == Topology::torus);
     RemapContext ctx{config, scene, grid, routing};
     set_camera(scene, path, 0);

@@ -36,7 +36,7 @@ bool run_finished(const SimConfig &config, TorusSystem &top, const PacketLedger 
 {
     char msg[RT_MSG_LEN] = "";
     if (ledger.over_limit()) {
-        rt_budget_packets_exceeded(&memory, ledger.outstanding_over_limit(), sizeof(rt_packet), msg,
+        rt_budget_packets_exceeded(&memory, ledger.outstanding_over_limit(), PacketPool::bytes_per_packet(), msg,
                                    sizeof msg);
         throw UserError(msg); // the tracer's destructor removes the partial trace
     }
@@ -115,7 +115,7 @@ ModelOutcome run_model(const SimConfig &config, const rt_scene *scene, const rt_
 
     PacketLedger ledger;
     rt_budget memory = config.memory;
-    ledger.set_limit(rt_budget_packets_allowed(&memory, sizeof(rt_packet)));
+    ledger.set_limit(rt_budget_packets_allowed(&memory, PacketPool::bytes_per_packet()));
     Progress progress("torusrt-sim", config.quiet);
     ledger.set_progress(show_progress, &progress);
     if (config.style == TimingStyle::lt)
