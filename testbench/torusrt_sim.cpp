@@ -362,10 +362,12 @@ void stage_outputs(const CommandLine &cl, SimConfig &config, StagedOutputs &out)
     out.set.check_not_input("--map-file", config.map_file);
 }
 
-void print_written(const CommandLine &cl, const SimConfig &config)
+// The summary's last line: every output written, FIRST (the image or the frames) first.
+void print_written(const CommandLine &cl, const SimConfig &config, const std::string &first)
 {
-    std::printf("  wrote        %s", cl.common.output.c_str());
-    if (!cl.common.stats.empty()) std::printf(", %s", cl.common.stats.c_str());
+    std::printf("  wrote        %s", first.c_str());
+    for (const std::string *f : {&cl.common.stats, &cl.frames_csv, &cl.mapping.write_map, &cl.mapping.load_map})
+        if (!f->empty()) std::printf(", %s", f->c_str());
     if (!cl.vcd.empty()) std::printf(", %s", cl.vcd.c_str());
     if (!config.gtkw_path.empty()) std::printf(" (gtkwave %s)", config.gtkw_path.c_str());
     std::printf("\n");
@@ -423,11 +425,7 @@ int animate(const CommandLine &cl, SimConfig &config, LoadedScene &loaded, const
     outputs.set.commit();
     if (!config.quiet) {
         print_summary_stdout(out.report);
-        std::printf("  wrote        %zu frames %s", n, cl.common.output.c_str());
-        if (!cl.common.stats.empty()) std::printf(", %s", cl.common.stats.c_str());
-        if (!cl.frames_csv.empty()) std::printf(", %s", cl.frames_csv.c_str());
-        if (!cl.vcd.empty()) std::printf(", %s", cl.vcd.c_str());
-        std::printf("\n");
+        print_written(cl, config, std::to_string(n) + " frames " + cl.common.output);
     }
     return 0;
 }
@@ -469,7 +467,7 @@ int run(CommandLine &cl, double wall_start)
     outputs.set.commit();
     if (!config.quiet) {
         print_summary_stdout(out.report);
-        print_written(cl, config);
+        print_written(cl, config, cl.common.output);
     }
     return 0;
 }
