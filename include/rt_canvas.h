@@ -9,13 +9,15 @@
  *   rt_png_write(path, c->width, c->height, c->rgb, msg, sizeof msg);
  *   rt_canvas_free(c);
  *
- * The font has digits, . - + e, space and lower-case letters; anything else draws a box.
+ * The font has digits, letters (drawn lower-case), space and . , - + : = ( ) > /; anything else
+ * draws a box.
  * Drawing outside the canvas is clipped. rt_canvas_new returns NULL on a zero size or
  * when memory runs out.
  */
 #ifndef RT_CANVAS_H
 #define RT_CANVAS_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 #ifdef __cplusplus
@@ -38,8 +40,12 @@ void rt_node_colour(int i, uint8_t rgb[3]);
 void rt_canvas_rect(rt_canvas *c, int x, int y, int w, int h, const uint8_t rgb[3]);
 /* Text from (x, y) at the top left; returns the x after the last glyph. */
 int rt_canvas_text(rt_canvas *c, int x, int y, int scale, const char *text, const uint8_t rgb[3]);
-/* A vertical colour bar (bottom = lo, top = hi) with both values written beside it. */
+/* A vertical colour bar (bottom = lo, top = hi) with both values written beside it; with unit
+ * "us" the values are written as times in us, ms or s (rt_time_label). */
 void rt_canvas_heat_bar(rt_canvas *c, int x, int y, int w, int h, double lo, double hi, const char *unit);
+/* A time of `us` microseconds in the unit that reads best, 4 significant digits: "850 us",
+ * "3.251 ms", "1.82 s". */
+void rt_time_label(double us, char *buf, size_t len);
 
 #ifdef __cplusplus
 }

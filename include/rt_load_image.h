@@ -5,9 +5,9 @@
  *   rt_load_map_write("load.png", dims, work_us, owner, nodes, msg, sizeof msg);
  *
  * The cost image shows each pixel's modelled microseconds as a heat map (black = 0 to
- * white = the largest) with a labelled colour bar. The load map shows the cells' work summed
- * along each axis (three projections, heat colours with a colour bar) beside the owners of
- * the middle z slice (a colour per node, labelled with node numbers). Both return RT_ERR_IO
+ * white = the largest) with a labelled colour bar. The load map is rt_load_map_draw's picture
+ * (rt_load_map.h): the cells' work, the owners of the middle z slice and the work per node.
+ * Both return RT_ERR_IO
  * (nothing left behind) or RT_ERR_NOMEM with a message.
  */
 #ifndef RT_LOAD_IMAGE_H

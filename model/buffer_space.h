@@ -20,23 +20,31 @@
 namespace torusrt {
 
 // The simulated time during which at least one of its members is stalled (intervals that
-// overlap count once).
+// overlap count once). A clock may feed a parent (the machine's: any writer of any buffer).
 class StallClock {
   public:
     void begin()
     {
-        if (m_active++ == 0) m_since = sim_now();
+        if (m_active++ == 0) {
+            m_since = sim_now();
+            if (m_parent) m_parent->begin();
+        }
     }
     void end()
     {
-        if (m_active && --m_active == 0) m_total += sim_now() - m_since;
+        if (m_active && --m_active == 0) {
+            m_total += sim_now() - m_since;
+            if (m_parent) m_parent->end();
+        }
     }
+    void feed(StallClock *parent) { m_parent = parent; }
     // An interval still open counts up to now.
     sc_core::sc_time time() const { return m_active ? m_total + (sim_now() - m_since) : m_total; }
 
   private:
     unsigned m_active = 0;
     sc_core::sc_time m_since = sc_core::SC_ZERO_TIME, m_total = sc_core::SC_ZERO_TIME;
+    StallClock *m_parent = nullptr;
 };
 
 class BufferSpace {

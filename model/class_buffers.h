@@ -75,6 +75,8 @@ class ClassBuffers {
     int &depth_trace() { return m_depth; }
     // Simulated time during which some class had a writer waiting for room (overlaps once).
     sc_core::sc_time stalled_time() const { return m_stall.time(); }
+    // Feeds this buffer's stall time into `machine` too (the time any writer waited).
+    void feed_stalls(StallClock &machine) { m_stall.feed(&machine); }
 
   private:
     // An unbounded buffer keeps every index in one BufferSpace: nothing ever waits for room, so

@@ -35,11 +35,15 @@ class QueueRegistry {
              const std::string &trace = "")
     {
         m_queues.push_back({name, kind, node, &buffers, &depth, trace.empty() ? name + ".queue_depth" : trace});
+        buffers.feed_stalls(m_any_stall);
     }
     const std::vector<QueueRef> &all() const { return m_queues; }
+    // Simulated time during which some writer of some registered buffer waited for room.
+    sc_core::sc_time any_stalled_time() const { return m_any_stall.time(); }
 
   private:
     std::vector<QueueRef> m_queues;
+    StallClock m_any_stall;
 };
 
 }  // namespace torusrt

@@ -73,18 +73,21 @@ static const char *glyph(char ch)
     static const char *lower[26] = {"02575", "44757", "03443", "11757", "07563", "32622", "07517",
                                     "44755", "20222", "10115", "45655", "22223", "07775", "06555",
                                     "02552", "07574", "07571", "06444", "03616", "27222", "05557",
-                                    "05552", "05577", "05255", "05571", "07247"};
+                                    "05552", "05577", "05255", "55316", "07247"};
     if (ch >= '0' && ch <= '9') return digits[ch - '0'];
     if (ch >= 'a' && ch <= 'z') return lower[ch - 'a'];
     if (ch >= 'A' && ch <= 'Z') return lower[ch - 'A'];
     switch (ch) {
     case '.': return "00002";
+    case ',': return "00012";
     case '-': return "00700";
     case '+': return "02720";
     case ':': return "02020";
     case '=': return "07070";
     case '(': return "12221";
     case ')': return "42224";
+    case '>': return "42124";
+    case '/': return "11244";
     case ' ': return "00000";
     }
     return "77777";
@@ -110,8 +113,19 @@ void rt_canvas_heat_bar(rt_canvas *c, int x, int y, int w, int h, double lo, dou
         rt_canvas_rect(c, x, y + j, w, 1, col);
     }
     char label[48];
-    snprintf(label, sizeof label, "%.4g %s", hi, unit);
+    int is_time = strcmp(unit, "us") == 0;
+    if (is_time) rt_time_label(hi, label, sizeof label);
+    else snprintf(label, sizeof label, "%.4g %s", hi, unit);
     rt_canvas_text(c, x + w + 4, y, 2, label, black);
-    snprintf(label, sizeof label, "%.4g %s", lo, unit);
+    if (is_time) rt_time_label(lo, label, sizeof label);
+    else snprintf(label, sizeof label, "%.4g %s", lo, unit);
     rt_canvas_text(c, x + w + 4, y + h - 10, 2, label, black);
+}
+
+void rt_time_label(double us, char *buf, size_t len)
+{
+    double a = fabs(us);
+    if (a >= 1e6) snprintf(buf, len, "%.4g s", us / 1e6);
+    else if (a >= 1e3) snprintf(buf, len, "%.4g ms", us / 1e3);
+    else snprintf(buf, len, "%.4g us", us);
 }

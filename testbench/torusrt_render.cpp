@@ -141,6 +141,12 @@ int run_single(const RenderOptions &opt, RenderSetup &setup, std::chrono::steady
                     rt_scene_object_count(setup.loaded.scene.get()),
                     static_cast<unsigned long long>(rays_of(fr.st)),
                     fr.t1_s, setup.settings.timing_label.c_str(), wall);
+    if (!opt.common.quiet) {
+        std::printf("  wrote        %s", opt.common.output.c_str());
+        for (const std::string *f : {&opt.common.stats, &opt.cost_image})
+            if (!f->empty()) std::printf(", %s", f->c_str());
+        std::printf("\n");
+    }
     return 0;
 }
 
@@ -197,6 +203,11 @@ int run_frames(const RenderOptions &opt, RenderSetup &setup, std::chrono::steady
                     opt.common.scene.c_str(), n, rt_scene_camera(scene)->width, rt_scene_camera(scene)->height,
                     rt_scene_object_count(scene), static_cast<unsigned long long>(rays_of(total)),
                     t1_total, setup.settings.timing_label.c_str(), wall);
+    if (!opt.common.quiet) {
+        std::printf("  wrote        %zu frames %s", n, opt.common.output.c_str());
+        if (!opt.common.stats.empty()) std::printf(", %s", opt.common.stats.c_str());
+        std::printf("\n");
+    }
     return 0;
 }
 

@@ -296,11 +296,13 @@ void stage_outputs(const CommandLine &cl, SimConfig &config, StagedOutputs &out)
     out.set.check_not_input("--map-file", config.map_file);
 }
 
-void print_written(const CommandLine &cl, const SimConfig &config)
+// The summary's last line: every output written, FIRST (the image or the frames) first.
+void print_written(const CommandLine &cl, const SimConfig &config, const std::string &first)
 {
-    std::printf("  wrote        %s", cl.common.output.c_str());
+    std::printf("  wrote        %s", first.c_str());
     if (!cl.common.stats.empty()) std::printf(", %s", cl.common.stats.c_str());
-    if (cl.has("--vcd")) std::printf(", %s", cl.text("--vcd").c_str());
+    for (const char *name : {"--frames-csv", "--write-map", "--load-map", "--vcd"})
+        if (cl.has(name) && !cl.text(name).empty()) std::printf(", %s", cl.text(name).c_str());
     if (!config.gtkw_path.empty()) std::printf(" (gtkwave %s)", config.gtkw_path.c_str());
     std::printf("\n");
 }
@@ -353,11 +355,7 @@ int animate(const CommandLine &cl, SimConfig &config, LoadedScene &loaded, const
     outputs.set.commit();
     if (!config.quiet) {
         print_summary_stdout(out.report);
-        std::printf("  wrote        %zu frames %s", n, cl.common.output.c_str());
-        if (!cl.common.stats.empty()) std::printf(", %s", cl.common.stats.c_str());
-        if (!frames_csv_path.empty()) std::printf(", %s", frames_csv_path.c_str());
-        if (cl.has("--vcd")) std::printf(", %s", cl.text("--vcd").c_str());
-        std::printf("\n");
+        print_written(cl, config, std::to_string(n) + " frames " + cl.common.output);
     }
     return 0;
 }
@@ -403,7 +401,7 @@ int run(CommandLine &cl, double wall_start)
     outputs.set.commit();
     if (!config.quiet) {
         print_summary_stdout(out.report);
-        print_written(cl, config);
+        print_written(cl, config, cl.common.output);
     }
     return 0;
 }

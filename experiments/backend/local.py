@@ -38,7 +38,7 @@ def run(phases, state, jobs, sshloginfile=None, say=print):
         cmd = parallel_command(jobs, joblog, sshloginfile)
         say("backend: phase %d, %d points: %s < %s" % (number, len(points), shlex.join(cmd), todo))
         with open(todo) as stdin:
-            proc = subprocess.Popen(cmd, stdin=stdin, stdout=subprocess.DEVNULL)
+            proc = subprocess.Popen(cmd, stdin=stdin)  # the points' progress lines pass through
             try:
                 proc.wait()
             except KeyboardInterrupt:  # parallel may have had the same Ctrl-C; a TERM ends it otherwise

@@ -2,7 +2,7 @@
 # combination of the other axes. Variables: dat (folder of series-1.dat ... series-N.dat, columns
 # index, x value, y value), out, nseries, titles (space-separated, one per series), numeric (1
 # when the x values are numbers: plotted at their value; 0: one tick per value, in order),
-# xname, yname.
+# xname, yname, ymin0 (1 when no y value is negative: the y axis starts at 0).
 set terminal pngcairo size 800,560 font 'DejaVu Sans,10' noenhanced
 set output out
 set grid
@@ -11,6 +11,7 @@ set xlabel xname
 set ylabel yname
 set title 'torusrt-sim sweep: '.yname.' against '.xname
 set offsets graph 0.05, graph 0.05, graph 0.05, graph 0.05
+if (ymin0) set yrange [0:*]
 if (numeric) {
     plot for [i=1:nseries] dat.'/series-'.i.'.dat' using 2:3 with linespoints lw 2 pt 7 title word(titles, i)
 } else {

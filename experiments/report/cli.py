@@ -65,6 +65,7 @@ def sweep_collect(args):
     columns = [c for c in args.columns.split(",") if c] if args.columns else sweep.DEFAULT_COLUMNS
     out = os.path.abspath(args.out)
     failed = sweep.collect(out, columns, args.y)
+    sweep.report_deadlocked(out)
     sweep.report_failed(out, failed)
     print("sweep: %s/sweep.csv%s" % (out, "" if failed else ", %s/sweep.png" % out))
     return 1 if failed else 0

@@ -6,6 +6,7 @@ import json
 import os
 import re
 import shlex
+import subprocess
 import sys
 
 from .plots import gnuplot, write_dat
@@ -29,17 +30,32 @@ def point_name(names, values):
     return "-".join("%s_%s" % (n, re.sub(r"[^A-Za-z0-9.]+", "_", v)) for n, v in zip(names, values))
 
 
+def dry_run(sim, scene, names, values, fixed):
+    """Checks the first point's command line with torusrt-sim --dump-config (nothing is run), so
+    that a misspelt axis or fixed option stops the sweep before any point runs."""
+    args = [sim, scene, "--dump-config"] + list(fixed)
+    for n, v in zip(names, values):
+        args += ["--" + n, v]
+    done = subprocess.run(args, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    if done.returncode != 0:
+        raise ValueError("the first point's options do not check out (no point was run): %s"
+                         % done.stderr.strip())
+
+
 def plan(out, sim, scene, axes, fixed):
     """Writes OUT/points.tsv (name and axis values per point) and prints the point list
     (experiments/backend): the point's JSON, a tab and its shell command line; a point whose JSON
-    exists is skipped, so a re-run resumes."""
+    exists is skipped, so a re-run resumes. A deadlocked point (exit 3) keeps its JSON (status
+    deadlock); a failed one leaves none."""
     names = [n for n, _ in axes]
+    combos = list(itertools.product(*(v for _, v in axes)))
+    dry_run(sim, scene, names, combos[0], fixed)
     points = os.path.join(out, "points")
     os.makedirs(points, exist_ok=True)
     with open(os.path.join(out, PLAN), "w", newline="") as f:
         table = csv.writer(f, delimiter="\t", lineterminator="\n")
         table.writerow(["name"] + names)
-        for values in itertools.product(*(v for _, v in axes)):
+        for k, values in enumerate(combos, 1):
             name = point_name(names, values)
             table.writerow([name] + list(values))
             base = os.path.join(points, name)
@@ -47,9 +63,13 @@ def plan(out, sim, scene, axes, fixed):
             for n, v in zip(names, values):
                 args += ["--" + n, v]
             run = " ".join(shlex.quote(a) for a in args)
-            print("{done}\t[ -s {j} ] || {{ {run} >{log} 2>&1 && mv {t} {j}; }}".format(
-                done=base + ".json", j=shlex.quote(base + ".json"), t=shlex.quote(base + ".json.tmp"), run=run,
-                log=shlex.quote(base + ".log")))
+            j, t = shlex.quote(base + ".json"), shlex.quote(base + ".json.tmp")
+            progress = "echo %s" % shlex.quote("sweep: [%d/%d] %s" % (k, len(combos), name))
+            print(base + ".json\t" +
+                  "[ -s {j} ] && {p}: done before || {{ {run} >{log} 2>&1; rc=$?; "
+                  "if [ $rc -eq 0 ] || {{ [ $rc -eq 3 ] && [ -s {t} ]; }}; then mv {t} {j}; {p}: "
+                  "$([ $rc -eq 0 ] && echo ok || echo deadlock); else rm -f {t}; {p}: failed; exit $rc; fi; }}".format(
+                      j=j, t=t, run=run, log=shlex.quote(base + ".log"), p=progress))
 
 
 def flatten(report, prefix=""):
@@ -65,8 +85,11 @@ def flatten(report, prefix=""):
 
 
 def text(value):
+    """A CSV cell: numbers with 6 significant digits."""
     if isinstance(value, bool):
         return "true" if value else "false"
+    if isinstance(value, float):
+        return "%.6g" % value
     return "" if value is None else str(value)
 
 
@@ -90,6 +113,8 @@ def collect(out, columns, y):
             failed.append(row[0])
     if columns == ["all"]:
         columns = sorted({k for f in flat if f for k in f} - {"status"})  # the CSV has its own
+    elif y not in columns:
+        columns = columns + [y]  # the plotted field is in the CSV too
     present = [f for f in flat if f]
     unknown = [c for c in columns + [y] if present and all(c not in f for f in present)]
     if unknown:
@@ -99,7 +124,7 @@ def collect(out, columns, y):
         table = csv.writer(f, lineterminator="\n")
         table.writerow(names + ["status"] + columns)
         for row, report in zip(points, flat):
-            status = "ok" if report else "failed"
+            status = report.get("status", "ok") if report else "failed"
             table.writerow(row[1:] + [status] + [text((report or {}).get(c)) for c in columns])
     os.replace(os.path.join(out, "sweep.csv.tmp"), os.path.join(out, "sweep.csv"))
     if any(flat):
@@ -125,13 +150,28 @@ def plot(out, names, points, flat, y):
     for row, report in zip(points, flat):
         if report and report.get(y) is not None:
             series.setdefault(tuple(row[2:]), []).append((xs.index(row[1]), row[1], report[y]))
+    ys = [v for rows in series.values() for _, _, v in rows]
     titles = []
     for i, (combo, rows) in enumerate(sorted(series.items()), 1):
         write_dat(os.path.join(dat, "series-%d.dat" % i), rows)
         titles.append(",".join("%s=%s" % (n, v) for n, v in zip(names[1:], combo)) or y)
     gnuplot("sweep.gp", {"dat": dat, "out": os.path.join(out, "sweep.png"), "nseries": len(titles),
                          "titles": " ".join(t.replace(" ", "_") for t in titles), "numeric": int(is_numeric),
-                         "xname": names[0], "yname": y})
+                         "xname": names[0], "yname": y,
+                         "ymin0": int(all(isinstance(v, (int, float)) and v >= 0 for v in ys))})
+
+
+def report_deadlocked(out):
+    """Lists the points that deadlocked (status deadlock: their JSON holds the figures)."""
+    names, points = read_points(out)
+    for row in points:
+        path = os.path.join(out, "points", row[0] + ".json")
+        if os.path.exists(path) and os.path.getsize(path) > 0:
+            with open(path) as f:
+                report = json.load(f)
+            if report.get("status") == "deadlock":
+                print("sweep: point %s deadlocked at %.6g s simulated (status deadlock in the CSV)"
+                      % (row[0], report["deadlock"]["time_s"]), file=sys.stderr)
 
 
 def report_failed(out, failed):

@@ -54,6 +54,7 @@ void collect_modules(TorusSystem &top, RunReport &r)
     for (const auto &cu : top.comm_units()) r.comm_units.push_back(cu->stats());
     r.host = top.host().stats();
     for (const QueueRef &q : top.queues().all()) r.queues.push_back(queue_stats(q));
+    r.any_stalled_s = top.queues().any_stalled_time().to_seconds();
     if (!top.clusters().empty()) collect_clusters(top, r);
     r.totals.events = r.totals.steps + r.totals.hops + r.host.injected;
     for (const auto &c : r.clusters) r.totals.events += c.bus.packet_transfers + c.bus.object_reads;

@@ -74,6 +74,7 @@ struct RunReport {
     HostStats host;
     std::vector<ClusterNodeReport> clusters;  // --cluster > 1
     std::vector<QueueStats> queues;           // the queue registry's order
+    double any_stalled_s = 0;                 // time during which some writer of some queue waited
     rt_packet_totals packets{};
     bool conserved = false;
     RunTotals totals;

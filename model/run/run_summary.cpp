@@ -1,7 +1,10 @@
 // run_summary.cpp - the human summary and the deadlock description, printed from a RunReport.
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <numeric>
 #include <sstream>
+#include <string>
 
 #include "run_report.h"
 
@@ -29,6 +32,34 @@ Spread spread(const std::vector<T> &items, F value)
     return s;
 }
 
+// A figure with 4 significant digits, without an exponent for the sizes a run produces.
+std::string sig4(double v)
+{
+    char buf[48];
+    double a = std::fabs(v);
+    if (a == 0 || a >= 1e9 || a < 1e-6) {
+        std::snprintf(buf, sizeof buf, "%.4g", v);
+    } else {
+        int decimals = 3 - static_cast<int>(std::floor(std::log10(a)));
+        std::snprintf(buf, sizeof buf, "%.*f", decimals < 0 ? 0 : decimals, v);
+    }
+    return buf;
+}
+
+// The machine as the summary's system line gives it: timing style, buffers and flow control.
+std::string machine_text(const SimConfig &c)
+{
+    std::string style = c.style == TimingStyle::lt
+                            ? "loosely timed (LT, quantum " + sig4(c.quantum_us) + " us)"
+                            : std::string("approximately timed (AT)");
+    std::string queue = c.queue_capacity ? std::to_string(c.queue_capacity) + " packets per buffer" +
+                                               (c.flow == FlowControl::classes ? " and class" : "")
+                                         : std::string("unbounded buffers");
+    std::string flow = c.flow == FlowControl::classes ? "flow control classes (deadlock-free)"
+                                                      : "flow control none (finite buffers may deadlock)";
+    return style + ", " + queue + ", " + flow;
+}
+
 void print_queues(const RunReport &r, std::FILE *out)
 {
     if (r.queues.empty()) return;
@@ -36,12 +67,18 @@ void print_queues(const RunReport &r, std::FILE *out)
                                [](const QueueStats &a, const QueueStats &b) { return a.high_water < b.high_water; });
     auto st = std::max_element(r.queues.begin(), r.queues.end(),
                                [](const QueueStats &a, const QueueStats &b) { return a.stalled_s < b.stalled_s; });
-    double total = std::accumulate(r.queues.begin(), r.queues.end(), 0.0,
-                                   [](double s, const QueueStats &q) { return s + q.stalled_s; });
     std::string cap = hw->capacity ? std::to_string(hw->capacity) : std::string("unbounded");
-    std::fprintf(out, "  queues       %zu, largest high water %llu (%s, capacity %s), stalled %.6f s in all",
-                 r.queues.size(), static_cast<unsigned long long>(hw->high_water), hw->name.c_str(), cap.c_str(), total);
-    if (st->stalled_s > 0) std::fprintf(out, ", at most %.6f s (%s)", st->stalled_s, st->name.c_str());
+    std::fprintf(out, "  queues       %zu, largest high water %llu (%s, capacity %s)", r.queues.size(),
+                 static_cast<unsigned long long>(hw->high_water), hw->name.c_str(), cap.c_str());
+    if (st->stalled_s > 0) {
+        double T = r.sim_time_s;
+        std::fprintf(out, "\n               writers waited for room: %s, the longest-stalled queue, %s s;"
+                          " some writer waited %s %% of the image time",
+                     st->name.c_str(), sig4(st->stalled_s).c_str(),
+                     T > 0 ? sig4(100 * r.any_stalled_s / T).c_str() : "-");
+    } else {
+        std::fprintf(out, ", no writer waited for room");
+    }
     std::fprintf(out, "\n");
 }
 
@@ -82,37 +119,44 @@ void print_summary(const RunReport &r, std::FILE *out)
     int n = c.processor_count();
     std::fprintf(out, "torusrt-sim: %s (%ux%u, %llu objects, %llu lights)\n", c.scene_path.c_str(), r.width, r.height,
                  static_cast<unsigned long long>(r.objects), static_cast<unsigned long long>(r.lights));
-    std::fprintf(out, "  system       %dx%dx%d %s, %s mapping, %d processor(s) per node, %s data, %s timing\n", c.ips[0],
-                 c.ips[1], c.ips[2], topology_name(c.topology), mapping_name(c.mapping), c.cluster,
-                 data_mode_name(c.data), style_name(c.style));
-    std::fprintf(out, "  image time   %.6f s simulated   (T(1) %.3f s, %s)\n", T, f.t1_s, f.t1_source.c_str());
+    std::fprintf(out, "  system       %dx%dx%d %s, %s mapping, %d processor(s) per node, %s data,\n"
+                      "               %s\n", c.ips[0], c.ips[1], c.ips[2], topology_name(c.topology),
+                 mapping_name(c.mapping), c.cluster, data_mode_name(c.data), machine_text(c).c_str());
+    if (r.frames.empty())
+        std::fprintf(out, "  image time   %s s simulated   (T(1) %s s, %s)\n", sig4(T).c_str(), sig4(f.t1_s).c_str(),
+                     f.t1_source.c_str());
+    else
+        std::fprintf(out, "  image time   %s s simulated for %zu frames, from the first frame's start to the last's end"
+                          " (per frame: the table below)\n", sig4(T).c_str(), r.frames.size());
     std::fprintf(out, "  efficiency   %.1f %% = T(1)/(n T(n)), n = %d   (load balance %.1f %% = busy/(n T(n)))\n",
                  T > 0 ? 100 * (f.t1_s / (n * T)) : 0.0, n, T > 0 ? 100 * (r.totals.busy_s / (n * T)) : 0.0);
     std::fprintf(out, "  timing       profile %s (hand-over send %g us, receive %g us)\n", c.timing_profile.c_str(),
                  c.timing.handover_send_us, c.timing.handover_receive_us);
     Spread b = spread(r.ips, [](const IpStats &p) { return p.busy_s; });
-    std::fprintf(out, "  load/IP      busy min %.4f  mean %.4f  max %.4f s\n", b.min, b.mean, b.max);
+    std::fprintf(out, "  busy per IP  min %s  mean %s  max %s s\n", sig4(b.min).c_str(), sig4(b.mean).c_str(),
+                 sig4(b.max).c_str());
     const rt_packet_totals &p = r.packets;
-    std::fprintf(out, "  packets      ray %llu  shadow %llu  created = consumed: %s  forwarded %llu  missed %llu\n",
+    std::fprintf(out, "  packets      ray %llu  shadow %llu  created = consumed: %s  handed between nodes %llu\n"
+                      "               primary rays that missed the scene %llu\n",
                  static_cast<unsigned long long>(p.created[RT_PACKET_RAY]),
                  static_cast<unsigned long long>(p.created[RT_PACKET_SHADOW]), r.conserved ? "yes" : "NO",
                  static_cast<unsigned long long>(p.forwarded), static_cast<unsigned long long>(p.primary_missed));
     Spread l = spread(r.links, [T](const LinkStats &k) { return T > 0 ? k.busy_s / T : 0.0; });
-    std::fprintf(out, "  links        %zu links, %llu packet hops, utilisation mean %.2f %% max %.2f %%\n", r.links.size(),
-                 static_cast<unsigned long long>(r.totals.hops), 100 * l.mean, 100 * l.max);
+    std::fprintf(out, "  links        %zu links, %llu packet hops, utilisation mean %s %% max %s %%\n", r.links.size(),
+                 static_cast<unsigned long long>(r.totals.hops), sig4(100 * l.mean).c_str(), sig4(100 * l.max).c_str());
     print_bus(r, out);
     print_queues(r, out);
     const MemoryReport &m = r.memory;
-    std::fprintf(out, "  memory       %llu bytes (max per processor x n) vs %llu pixel-partitioned (%.3f)\n",
+    std::fprintf(out, "  memory       %llu bytes (max per processor x n) vs %llu pixel-partitioned (%s)\n",
                  static_cast<unsigned long long>(m.total_bytes), static_cast<unsigned long long>(m.pixel_partitioned_bytes),
-                 m.pixel_partitioned_bytes ? static_cast<double>(m.total_bytes) / m.pixel_partitioned_bytes : 0.0);
+                 sig4(m.pixel_partitioned_bytes ? static_cast<double>(m.total_bytes) / m.pixel_partitioned_bytes : 0.0).c_str());
     std::fprintf(out, "  preprocess   %llu units serial, %llu units on %d processors\n",
                  static_cast<unsigned long long>(r.units_serial), static_cast<unsigned long long>(r.units_parallel), n);
     print_mapping(r, out);
     double w = f.sim_wall_s;
-    std::fprintf(out, "  wall         %.3f s (%.3f s elaborating, %.3f s simulating), %.0f events/s, %.0f packet hops/s\n",
-                 f.wall_s, f.elaboration_wall_s, w,
-                 w > 0 ? r.totals.events / w : 0.0, w > 0 ? r.totals.hops / w : 0.0);
+    std::fprintf(out, "  wall         %.3f s (%.3f s elaborating, %.3f s simulating), %s events/s, %s packet hops/s\n",
+                 f.wall_s, f.elaboration_wall_s, w, sig4(w > 0 ? r.totals.events / w : 0.0).c_str(),
+                 sig4(w > 0 ? r.totals.hops / w : 0.0).c_str());
     print_frame_table(r.frames, r.remap, out);
 }
 

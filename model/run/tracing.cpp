@@ -1,13 +1,12 @@
 // tracing.cpp - sc_trace on the modules' plain state variables, named by hierarchy, and the
-// GTKWave save file listing the same names.
+// GTKWave save file listing the same names, each with a short alias, zoomed to the traced span.
 #include "tracing.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstdlib>
-#include <limits.h>
+#include <cstdio>
 #include <set>
-#include <unistd.h>
 
 #include "cluster_node.h"
 #include "output_files.h"
@@ -19,12 +18,45 @@ namespace {
 
 uint64_t us_to_ps(double us) { return us < 0 ? UINT64_MAX : static_cast<uint64_t>(std::llround(us * 1e6)); }
 
-// The VCD's absolute path, so the save file opens it from any folder.
-std::string absolute(const std::string &path)
+// The file name without its folder: the save file lies beside the VCD, and GTKWave finds the
+// dump relative to the save file's folder when both names are given that way.
+std::string base_name(const std::string &path)
 {
-    if (!path.empty() && path[0] == '/') return path;
-    char cwd[PATH_MAX];
-    return getcwd(cwd, sizeof cwd) ? std::string(cwd) + "/" + path : path;
+    size_t slash = path.rfind('/');
+    return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+// "xp" -> "+x", "zm" -> "-z": a link's direction as the row's name shows it.
+std::string direction(const std::string &dir)
+{
+    if (dir.size() != 2 || (dir[1] != 'p' && dir[1] != 'm')) return dir;
+    return std::string(1, dir[1] == 'p' ? '+' : '-') + dir[0];
+}
+
+// A row's name in GTKWave from its hierarchical signal name:
+// top.ip_3.busy -> "ip 3 busy", top.link_3_to_7_zp.queue_depth -> "link 3->7 +z queue",
+// top.cluster_2.bus.request_cu -> "bus 2 request cu", top.cluster_2.ip_9.busy -> "ip 9 busy".
+std::string alias_of(const std::string &signal)
+{
+    std::string rest = signal.rfind("top.", 0) == 0 ? signal.substr(4) : signal;
+    size_t dot = rest.rfind('.');
+    if (dot == std::string::npos) return rest;
+    std::string owner = rest.substr(0, dot), what = rest.substr(dot + 1);
+    if (what == "queue_depth") what = "queue";
+    for (char &c : what)
+        if (c == '_') c = ' ';
+    std::string cluster;
+    if (owner.rfind("cluster_", 0) == 0 && owner.find('.') != std::string::npos) {
+        cluster = owner.substr(8, owner.find('.') - 8);
+        owner = owner.substr(owner.find('.') + 1);
+    }
+    int a = 0, b = 0;
+    char dir[3] = {0};
+    if (std::sscanf(owner.c_str(), "link_%d_to_%d_%2s", &a, &b, dir) == 3)
+        return "link " + std::to_string(a) + "->" + std::to_string(b) + " " + direction(dir) + " " + what;
+    if (owner.rfind("ip_", 0) == 0) return "ip " + owner.substr(3) + " " + what;
+    if (!cluster.empty()) return owner + " " + cluster + " " + what;  // the bus, the dispatcher
+    return owner + " " + what;
 }
 
 }  // namespace
@@ -61,13 +93,13 @@ Tracer::Tracer(const SimConfig &config, TorusSystem &top) : m_config(config)
 void Tracer::add(Group &g, bool &value, const std::string &name)
 {
     sc_core::sc_trace(m_file, value, name);
-    g.signals.push_back({"SystemC." + name, false});  // SystemC's VCD puts everything in scope SystemC
+    g.signals.push_back({"SystemC." + name, alias_of(name), false});  // SystemC's VCD scope is SystemC
 }
 
 void Tracer::add(Group &g, int &value, const std::string &name)
 {
     sc_core::sc_trace(m_file, value, name);
-    g.signals.push_back({"SystemC." + name + "[31:0]", true});
+    g.signals.push_back({"SystemC." + name + "[31:0]", alias_of(name), true});
 }
 
 void Tracer::trace_cluster(Group &g, ClusterNode &cluster)
@@ -80,16 +112,29 @@ void Tracer::trace_cluster(Group &g, ClusterNode &cluster)
     add(g, cluster.dispatcher().busy_trace(), std::string(cluster.dispatcher().name()) + ".busy");
 }
 
-std::string Tracer::save_file_text() const
+std::string Tracer::save_file_text(uint64_t end_ps) const
 {
+    // The window opens on the traced span: from --trace-from (or 0) to --trace-to or the end of
+    // the run. GTKWave shows 2^-zoom time units per 200 pixels; the window's size and signal pane
+    // are fixed so that the span takes about kSpanPixels of the wave pane.
+    constexpr double kSpanPixels = 1000;
+    uint64_t from = m_config.trace_from_us > 0 ? us_to_ps(m_config.trace_from_us) : 0;
+    uint64_t to = std::min(end_ps, us_to_ps(m_config.trace_to_us));
+    double span = to > from ? static_cast<double>(to - from) : 1.0;
+    char zoom[64];
+    std::snprintf(zoom, sizeof zoom, "*%.6f -1\n", -std::log2(span * 200.0 / kSpanPixels));
     // GTKWave flags: 0x200 blank (a label line), 0x800000/0x1000000 group begin/end,
-    // 0x28 binary, 0x24 decimal (right-justified).
+    // 0x28 binary, 0x24 decimal (right-justified); "+{NAME} SIGNAL" shows SIGNAL as NAME.
     std::string s = "[*] torusrt trace: open with  gtkwave FILE.gtkw\n";
-    s += "[dumpfile] \"" + absolute(m_config.vcd_path) + "\"\n";
-    s += "[timestart] " + std::to_string(m_config.trace_from_us > 0 ? us_to_ps(m_config.trace_from_us) : 0) + "\n";
+    s += "[dumpfile] \"" + base_name(m_config.vcd_path) + "\"\n";
+    s += "[savefile] \"" + base_name(m_config.gtkw_path) + "\"\n";
+    s += "[timestart] " + std::to_string(from) + "\n";
+    s += "[size] 1400 900\n[signals_width] 220\n[sst_expanded] 0\n";
+    s += zoom;
     for (const auto &g : m_groups) {
         s += "@800200\n-" + g.name + "\n";
-        for (const auto &sig : g.signals) s += std::string(sig.second ? "@24\n" : "@28\n") + sig.first + "\n";
+        for (const auto &sig : g.signals)
+            s += std::string(sig.counter ? "@24\n" : "@28\n") + "+{" + sig.alias + "} " + sig.name + "\n";
         s += "@1000200\n-" + g.name + "\n";
     }
     return s;
@@ -101,7 +146,8 @@ void Tracer::finish()
     m_file = nullptr;
     m_stream->finish();
     if (!m_config.gtkw_write_path.empty())
-        write_text_file(m_config.gtkw_write_path, m_config.gtkw_path, save_file_text());
+        write_text_file(m_config.gtkw_write_path, m_config.gtkw_path,
+                        save_file_text(sc_core::sc_time_stamp().value()));
 }
 
 Tracer::~Tracer()

@@ -4,6 +4,7 @@
 // optional time window) into the path the run's OutputSet handed out.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <systemc>
@@ -24,14 +25,19 @@ class Tracer {
     void finish();
 
   private:
+    struct Signal {
+        std::string name;   // as GTKWave names it: SystemC.top.ip_3.busy
+        std::string alias;  // the row's name: ip 3 busy
+        bool counter;       // shown in decimal
+    };
     struct Group {
         std::string name;
-        std::vector<std::pair<std::string, bool>> signals;  // GTKWave name, is a counter
+        std::vector<Signal> signals;
     };
     void add(Group &g, bool &value, const std::string &name);
     void add(Group &g, int &value, const std::string &name);
     void trace_cluster(Group &g, ClusterNode &cluster);
-    std::string save_file_text() const;
+    std::string save_file_text(uint64_t end_ps) const;  // end_ps: the end of the run
 
     const SimConfig &m_config;
     std::unique_ptr<VcdStream> m_stream;

@@ -1,0 +1,34 @@
+/* rt_load_map.h - the load map: what a mapping does to the nodes.
+ *
+ * Usage:
+ *   double node_us[NODES];
+ *   rt_node_work(dims, work_us, owner, nodes, node_us);     // work per node
+ *   rt_canvas *c = rt_load_map_draw(dims, work_us, owner, nodes);
+ *   ... write c (rt_load_map_write in rt_load_image.h writes it as PNG) ... rt_canvas_free(c);
+ *
+ * The picture has three panels: the cells' work summed along z (a heat map over x and y, axes
+ * and colour bar labelled in us, ms or s), the owners of the middle z slice (a colour per node,
+ * a line wherever two neighbouring cells have different owners, the node's number in each cell
+ * when it fits), and the work per node, sorted from the busiest down, with the mean and the
+ * busiest marked. rt_load_map_draw returns NULL when memory runs out or the grid is empty.
+ */
+#ifndef RT_LOAD_MAP_H
+#define RT_LOAD_MAP_H
+
+#include <stdint.h>
+
+#include "rt_canvas.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* node_us[n] = the work of the cells owner[] gives node n (0 <= n < nodes; other ids ignored). */
+void rt_node_work(const int dims[3], const double *work_us, const int32_t *owner, int nodes, double *node_us);
+
+rt_canvas *rt_load_map_draw(const int dims[3], const double *work_us, const int32_t *owner, int nodes);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
