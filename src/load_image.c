@@ -9,13 +9,13 @@
 
 static const uint8_t black[3] = {0, 0, 0};
 
-static rt_status finish(rt_canvas *c, const char *path, char *msg, size_t msg_len)
+static rt_status finish(rt_canvas *c, FILE *fp, const char *name, char *msg, size_t msg_len)
 {
     if (!c) {
-        if (msg && msg_len) snprintf(msg, msg_len, "%s: out of memory for the picture", path);
+        if (msg && msg_len) snprintf(msg, msg_len, "%s: out of memory for the picture", name);
         return RT_ERR_NOMEM;
     }
-    rt_status st = rt_png_write(path, c->width, c->height, c->rgb, msg, msg_len);
+    rt_status st = rt_png_write_stream(fp, name, c->width, c->height, c->rgb, msg, msg_len);
     rt_canvas_free(c);
     return st;
 }
@@ -27,7 +27,7 @@ static double max_of(const double *v, size_t n)
     return m;
 }
 
-rt_status rt_cost_image_write(const char *path, uint32_t w, uint32_t h, const double *cost, char *msg,
+rt_status rt_cost_image_write(FILE *fp, const char *name, uint32_t w, uint32_t h, const double *cost, char *msg,
                               size_t msg_len)
 {
     int s = h < 256 ? (int)((256 + h - 1) / h) : 1; /* small images are enlarged */
@@ -42,7 +42,7 @@ rt_status rt_cost_image_write(const char *path, uint32_t w, uint32_t h, const do
             }
         rt_canvas_heat_bar(c, (int)w * s + 10, 4, 16, (int)c->height - 8, 0.0, hi, "us");
     }
-    return finish(c, path, msg, msg_len);
+    return finish(c, fp, name, msg, msg_len);
 }
 
 /* Work summed along axis `a` into a plane of the other two axes (u fastest). */
@@ -98,7 +98,7 @@ static void draw_load(rt_canvas *c, const int d[3], const double *work, const in
     }
 }
 
-rt_status rt_load_map_write(const char *path, const int d[3], const double *work, const int32_t *owner, int nodes,
+rt_status rt_load_map_write(FILE *fp, const char *name, const int d[3], const double *work, const int32_t *owner, int nodes,
                             char *msg, size_t msg_len)
 {
     int big = d[0] > d[1] ? d[0] : d[1];
@@ -120,5 +120,5 @@ rt_status rt_load_map_write(const char *path, const int d[3], const double *work
     rt_canvas *c = planes[0] && planes[1] && planes[2] && cells ? rt_canvas_new(width, height) : NULL;
     if (c) draw_load(c, d, work, owner, nodes, s, planes, hi);
     for (int a = 0; a < 3; a++) free(planes[a]);
-    return finish(c, path, msg, msg_len);
+    return finish(c, fp, name, msg, msg_len);
 }

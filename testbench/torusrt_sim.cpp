@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -14,6 +15,7 @@
 #include "common_options.h"
 #include "frame_pattern.h"
 #include "huge_pages.h"
+#include "input_file_check.h"
 #include "machine_file_reader.h"
 #include "machine_options.h"
 #include "model_run.h"
@@ -251,7 +253,9 @@ void declare_options(CLI::App &app, CommandLine &cl)
     app.allow_config_extras(CLI::config_extras_mode::error);  // an unknown key is an error
     app.config_formatter(std::make_shared<MachineFileReader>());  // '#' in a quoted path, no repeated key
     app.set_config("--config", "", "read the machine from this TOML file (as --dump-config writes it);\n"
-                                   "options on the command line take precedence")->type_name("FILE");
+                                   "options on the command line take precedence")
+        ->type_name("FILE")
+        ->check(input_file_check(kMachineFileMaxBytes));  // before CLI11's own blocking read
     app.add_flag("--dump-config", cl.dump_config, "print the machine as TOML and exit without running")
         ->configurable(false);
     for (CLI::Option *opt : app.get_options())  // --help shows which options make the machine
@@ -337,29 +341,42 @@ int dump_config(const CLI::App &app, const CommandLine &cl)
     return 0;
 }
 
-// Every output's temporary, named before anything runs.
+// Every output of the run (every frame's included), registered and checked against the inputs
+// and each other before the scene is read.
 struct StagedOutputs {
     OutputSet set;
-    std::string png, stats, write_map, load_map;
+    std::optional<OutputSet::Id> png, stats, write_map, load_map, frames_csv;
+    OutputSet::Id first_frame = 0;  // frame k is first_frame + k
 };
 
-void stage_outputs(const CommandLine &cl, SimConfig &config, StagedOutputs &out)
+void stage_outputs(const CommandLine &cl, SimConfig &config, size_t frames, StagedOutputs &out)
 {
-    const std::string &scene = cl.common.scene;
-    if (!cl.anim.animated()) out.png = out.set.add("-o", cl.common.output, scene);  // frames: animate()
-    if (!cl.common.stats.empty()) out.stats = out.set.add("--stats", cl.common.stats, scene);
+    const std::string &pattern = cl.common.output;
+    if (!cl.anim.animated()) out.png = out.set.add("-o", pattern);
+    for (size_t k = 0; k < frames; k++) {
+        OutputSet::Id id = out.set.add("-o", frame_file_name(pattern, k));
+        if (k == 0) out.first_frame = id;
+    }
+    if (!cl.common.stats.empty()) out.stats = out.set.add("--stats", cl.common.stats);
+    std::optional<OutputSet::Id> vcd, gtkw;
     if (!cl.vcd.empty()) {
-        config.vcd_write_path = out.set.add("--vcd", cl.vcd, scene);
-        if (!is_special_file(cl.vcd)) {  // no save file beside /dev/null
+        vcd = out.set.add("--vcd", cl.vcd);
+        if (!out.set.special(*vcd)) {  // no save file beside /dev/null
             config.gtkw_path = save_file_path(cl.vcd);
-            config.gtkw_write_path = out.set.add("--vcd (save file)", config.gtkw_path, scene);
+            gtkw = out.set.add("--vcd (save file)", config.gtkw_path);
         }
     }
-    if (!cl.mapping.write_map.empty()) out.write_map = out.set.add("--write-map", cl.mapping.write_map, scene);
-    if (!cl.mapping.load_map.empty()) out.load_map = out.set.add("--load-map", cl.mapping.load_map, scene);
-    out.set.check_not_input("--config", cl.config_file);
-    out.set.check_not_input("--timing", config.timing_file);
-    out.set.check_not_input("--map-file", config.map_file);
+    if (!cl.mapping.write_map.empty()) out.write_map = out.set.add("--write-map", cl.mapping.write_map);
+    if (!cl.mapping.load_map.empty()) out.load_map = out.set.add("--load-map", cl.mapping.load_map);
+    if (!cl.frames_csv.empty()) out.frames_csv = out.set.add("--frames-csv", cl.frames_csv);
+    out.set.add_input("scene", cl.common.scene);
+    out.set.add_input("--config", cl.config_file);
+    out.set.add_input("--timing", config.timing_file);
+    out.set.add_input("--map-file", config.map_file);
+    out.set.add_input("--camera-path", cl.anim.camera_path);
+    out.set.check();
+    if (vcd) config.vcd_write_path = out.set.staged(*vcd);
+    if (gtkw) config.gtkw_write_path = out.set.staged(*gtkw);
 }
 
 void print_written(const CommandLine &cl, const SimConfig &config)
@@ -379,27 +396,23 @@ void report_deadlock(const SimConfig &config, double sim_time_s, const std::stri
                  sim_time_s, config.queue_capacity, details.c_str());
 }
 
-void write_stats(const StagedOutputs &outputs, const CommandLine &cl, const RunReport &report)
+void write_stats(StagedOutputs &outputs, const CommandLine &cl, const RunReport &report)
 {
-    if (outputs.stats.empty()) return;
+    if (!outputs.stats) return;
     std::string text = to_json(report).dump(2);  // the tree is freed before the file is written
     text += '\n';
-    write_text_file(outputs.stats, cl.common.stats, text);
+    write_text_file(outputs.set.staged(*outputs.stats), cl.common.stats, text);
 }
 
 // An animation: every frame's PNG, the statistics and the CSV commit together.
 int animate(const CommandLine &cl, SimConfig &config, LoadedScene &loaded, const nlohmann::json &mapping_facts,
-            StagedOutputs &outputs, double wall_start)
+            StagedOutputs &outputs, CameraPathPtr file, double wall_start)
 {
     rt_scene *scene = loaded.scene.get();
-    CameraPathPtr path = make_camera_path(cl.anim, scene);
+    CameraPathPtr path = make_camera_path(cl.anim, scene, std::move(file));
     size_t n = rt_camera_path_count(path.get());
-    std::vector<std::string> files, staged;
-    for (size_t k = 0; k < n; k++) {
-        files.push_back(frame_file_name(cl.common.output, k));
-        staged.push_back(outputs.set.add("-o", files.back(), cl.common.scene));
-    }
-    std::string csv = cl.frames_csv.empty() ? "" : outputs.set.add("--frames-csv", cl.frames_csv, cl.common.scene);
+    std::vector<std::string> files;
+    for (size_t k = 0; k < n; k++) files.push_back(outputs.set.path(outputs.first_frame + k));
     RemapPolicy policy = cl.remap.empty() ? RemapPolicy::static_map : parse_remap_policy(cl.remap);
     AdaptiveSettings adaptive;
     if (!cl.remap_pilot.empty()) adaptive.pilot_fraction = parse_remap_pilot(cl.remap_pilot);
@@ -417,9 +430,11 @@ int animate(const CommandLine &cl, SimConfig &config, LoadedScene &loaded, const
         return 3;
     }
     const rt_camera *cam = rt_scene_camera(scene);
-    for (size_t k = 0; k < n; k++) write_png_file(staged[k], files[k], cam->width, cam->height, out.images[k]);
+    for (size_t k = 0; k < n; k++)
+        write_png_file(outputs.set.staged(outputs.first_frame + k), files[k], cam->width, cam->height, out.images[k]);
     write_stats(outputs, cl, out.report);
-    if (!csv.empty()) write_text_file(csv, cl.frames_csv, frames_csv(out.frames));
+    if (outputs.frames_csv)
+        write_text_file(outputs.set.staged(*outputs.frames_csv), cl.frames_csv, frames_csv(out.frames));
     outputs.set.commit();
     if (!config.quiet) {
         print_summary_stdout(out.report);
@@ -439,14 +454,16 @@ int run(CommandLine &cl, double wall_start)
     check_animation(cl);
     SimConfig config = checked_config(cl);
     warn_about_settings("torusrt-sim", config.step, config.quiet);
+    CameraPathPtr file = read_camera_path_file(cl.anim);
     StagedOutputs outputs;
-    stage_outputs(cl, config, outputs);
+    stage_outputs(cl, config, cl.anim.animated() ? animation_frame_count(cl.anim, file.get()) : 0, outputs);
     LoadedScene loaded = load_scene(config.scene_path, config.width, config.height, config.cells, config.quiet,
                                     &config.memory);
     nlohmann::json mapping_facts = prepare_mapping(config, loaded.scene.get(), loaded.grid.get());
     if (cl.anim.animated()) {
-        write_mapping_outputs(config, loaded.scene.get(), loaded.grid.get(), outputs.write_map, outputs.load_map);
-        return animate(cl, config, loaded, mapping_facts, outputs, wall_start);
+        write_mapping_outputs(config, loaded.scene.get(), loaded.grid.get(), outputs.set, outputs.write_map,
+                              outputs.load_map);
+        return animate(cl, config, loaded, mapping_facts, outputs, std::move(file), wall_start);
     }
     double t1 = config.t1_s;
     std::string t1_source = "passed with --t1";
@@ -463,8 +480,9 @@ int run(CommandLine &cl, double wall_start)
         return 3;
     }
     const rt_camera *cam = rt_scene_camera(loaded.scene.get());
-    write_mapping_outputs(config, loaded.scene.get(), loaded.grid.get(), outputs.write_map, outputs.load_map);
-    write_png_file(outputs.png, cl.common.output, cam->width, cam->height, out.rgb8);
+    write_mapping_outputs(config, loaded.scene.get(), loaded.grid.get(), outputs.set, outputs.write_map,
+                          outputs.load_map);
+    write_png_file(outputs.set.staged(*outputs.png), cl.common.output, cam->width, cam->height, out.rgb8);
     write_stats(outputs, cl, out.report);
     outputs.set.commit();
     if (!config.quiet) {

@@ -58,6 +58,7 @@ std::vector<CLI::ConfigItem> MachineFileReader::from_config(std::istream &input)
     std::string cleaned, raw;
     std::set<std::string> keys;
     for (int n = 1; std::getline(input, raw); n++) {
+        if (n == 1 && raw.compare(0, 3, "\xEF\xBB\xBF") == 0) raw.erase(0, 3);  // a byte-order mark
         std::string line = trimmed(without_comment(raw));
         cleaned += line + "\n";
         if (line.empty()) continue;
