@@ -92,12 +92,6 @@ using FileKey = std::pair<dev_t, ino_t>;
 
 }  // namespace
 
-bool is_special_file(const std::string &path)
-{
-    struct stat st;
-    return stat(path.c_str(), &st) == 0 && (!S_ISREG(st.st_mode) || names_stdout(st));
-}
-
 OutputSet::~OutputSet()
 {
     for (auto &e : m_entries)

@@ -68,9 +68,6 @@ class OutputSet {
     std::vector<Input> m_inputs;
 };
 
-// True if PATH exists and is not a regular file (a device, FIFO, socket...) or is this
-// process's standard output, so it must be written in place rather than replaced.
-bool is_special_file(const std::string &path);
 // Writes `text` to `write_path`, checking every write and the close; `shown` names it in errors.
 void write_text_file(const std::string &write_path, const std::string &shown, const std::string &text);
 // Writes an 8-bit RGB PNG to `write_path` the same way.
