@@ -28,16 +28,30 @@ sanitize=(-O1 -g -fno-omit-frame-pointer -fsanitize=fuzzer,address,undefined -fn
 kernel=(-std=c11 -D_POSIX_C_SOURCE=200809L -I"$here/include" -I"$here/src" -I/usr/include/scotch
         $(pkg-config --cflags libpng))
 
+libs=($(pkg-config --libs libpng) -lscotch -lscotcherr -lm)
+
+# The kernel (src/*.c), compiled once for every target into BUILD_DIR/kernel/.
+build_kernel() {
+    mkdir -p "$build/kernel"
+    echo "fuzz.sh: building the kernel in $build/kernel" >&2
+    local c
+    for c in "$here"/src/*.c; do
+        "$cc" "${kernel[@]}" "${sanitize[@]/-fsanitize=fuzzer,/-fsanitize=fuzzer-no-link,}" -c "$c" \
+            -o "$build/kernel/$(basename "$c" .c).o"
+    done
+}
+
 build_target() {  # NAME: compiles BUILD_DIR/NAME
     local name=$1
     echo "fuzz.sh: building $build/$name" >&2
     case $name in
     nff_fuzz | map_fuzz)
-        "$cc" "${kernel[@]}" "${sanitize[@]}" "$here"/src/*.c "$here/tests/fuzz/$name.c" \
-            $(pkg-config --libs libpng) -lscotch -lscotcherr -lm -o "$build/$name" ;;
+        "$cc" "${kernel[@]}" "${sanitize[@]}" "$here/tests/fuzz/$name.c" "$build"/kernel/*.o "${libs[@]}" \
+            -o "$build/$name" ;;
     machine_fuzz)
-        "$cxx" -std=c++17 "${sanitize[@]}" -I"$here/testbench/common" \
-            "$here/testbench/common/machine_file_reader.cpp" "$here/tests/fuzz/machine_fuzz.cpp" -o "$build/$name" ;;
+        "$cxx" -std=c++17 "${sanitize[@]}" -I"$here/testbench/common" -I"$here/include" \
+            "$here"/testbench/common/{machine_file_reader,option_parsing,option_spec}.cpp \
+            "$here/tests/fuzz/machine_fuzz.cpp" "$build"/kernel/*.o "${libs[@]}" -o "$build/$name" ;;
     *) echo "fuzz.sh: no target $name" >&2; exit 2 ;;
     esac
 }
@@ -68,6 +82,7 @@ run_target() {
     fi
 }
 
+build_kernel
 for t in "${targets[@]}"; do build_target "$t"; done
 printf '%-12s %14s %12s %10s %12s\n' target execs execs_per_s findings exit_status
 for t in "${targets[@]}"; do

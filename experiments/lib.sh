@@ -60,3 +60,92 @@ define_mode() {
 }
 
 scene_file() { echo "$REPO/scenes/paper-$1.nff"; }
+
+# The backend every study runs its points on (experiments/backend): set by backend_option from
+# --backend local|ssh:HOSTFILE|slurm, -j N (points in flight), --slurm-args "..." and
+# --per-task K (points per Slurm array task).
+BACKEND=local JOBS="" SLURM_ARGS="" PER_TASK=""
+BACKEND_HELP='--backend local|ssh:HOSTFILE|slurm, -j N, --slurm-args "SBATCH OPTIONS", --per-task K'
+
+# backend_option ARGS...: takes one backend option off the front of ARGS, setting SHIFT to the
+# words it used; returns 1 (and leaves everything alone) if ARGS does not start with one.
+backend_option() {
+    case $1 in
+        --backend|--slurm-args|--per-task|-j) [ $# -ge 2 ] || die "$1 needs a value" ;;
+    esac
+    SHIFT=2
+    case $1 in
+        --backend) BACKEND=$2 ;;
+        --slurm-args) SLURM_ARGS=$2 ;;
+        --per-task) PER_TASK=$2 ;;
+        -j) JOBS=$2 ;;
+        -j[0-9]*) JOBS=${1#-j}; SHIFT=1 ;;
+        *) return 1 ;;
+    esac
+}
+
+# run_points STATE_DIR NAME LIST...: runs the point lists (DONE-FILE<TAB>COMMAND per line, one
+# list per phase, each phase after the one before) on the chosen backend; the exit status is
+# 1 if a point failed.
+run_points() {
+    local state=$1 name=$2
+    shift 2
+    local opts=(--state "$state" --backend "$BACKEND" --name "$name")
+    [ -z "$JOBS" ] || opts+=(-j "$JOBS")
+    [ -z "$SLURM_ARGS" ] || opts+=(--slurm-args "$SLURM_ARGS")
+    [ -z "$PER_TASK" ] || opts+=(--per-task "$PER_TASK")
+    python3 "$EXP/backend" run "${opts[@]}" "${RUN_POINTS_OPTS[@]}" "$@"
+}
+RUN_POINTS_OPTS=()
+
+# A study's points as scripts any machine can run. study_script WORK "FUNCTIONS" "VARIABLES"
+# writes WORK/point.sh: the study's FUNCTIONS with the VARIABLES they read, running "FUNCTION
+# ARG..." given on its command line. study_list WORK LIST < ARGS turns ARGS (one point per line:
+# FUNCTION and its arguments, tab-separated) into the point list LIST: the point is done when
+# WORK/TAG.json exists, TAG being its line with every character but letters, digits, '.' and
+# '-' made '_', and its command runs WORK/point.sh with TAG in the environment. A point function
+# writes its JSON as WORK/$TAG.part.json and renames it to WORK/$TAG.json when it is done.
+study_script() {
+    local v f
+    {
+        echo '#!/usr/bin/env bash'
+        echo 'set -euo pipefail'
+        for v in $3; do declare -p "$v"; done
+        for f in $2; do declare -f "$f"; done
+        echo '"$@"'
+    } >"$1/point.sh"
+}
+study_list() {
+    local line tag words
+    while IFS= read -r line; do
+        [ -n "$line" ] || continue
+        tag=${line//[^A-Za-z0-9.-]/_}
+        IFS=$'\t' read -r -a words <<<"$line"
+        printf '%s\t%s\n' "$1/$tag.json" "$(printf '%q ' "TAG=$tag" bash "$1/point.sh" "${words[@]}")"
+    done >"$2"
+}
+# study_rows LIST EXT: the files WORK/TAG.EXT of the points of LIST that have one, one after
+# the other (the rows a study's points wrote beside their JSON).
+study_rows() {
+    local done _
+    while IFS=$'\t' read -r done _; do [ ! -f "${done%.json}.$2" ] || cat "${done%.json}.$2"; done <"$1"
+}
+
+# study_args "$@": a study's command line: the backend options, --build DIR, -h, and the
+# positional form [BUILD_DIR] [JOBS]; sets BUILD (absolute), SIM and JOBS.
+study_args() {
+    local positional=()
+    while [ $# -gt 0 ]; do
+        if backend_option "$@"; then shift "$SHIFT"; continue; fi
+        case $1 in
+            --build) [ $# -ge 2 ] || die "--build needs a folder"; BUILD=$2; shift 2 ;;
+            -h|--help) sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
+            -*) die "unknown option '$1' (see --help)" ;;
+            *) positional+=("$1"); shift ;;
+        esac
+    done
+    [ ${#positional[@]} -le 2 ] || die "too many arguments: ${positional[*]} (see --help)"
+    [ ${#positional[@]} -lt 1 ] || BUILD=${positional[0]}
+    [ ${#positional[@]} -lt 2 ] || JOBS=${positional[1]}
+    set_build "$BUILD"
+}

@@ -14,7 +14,8 @@
  * the grid). On a hit the step shades (docs/design.md section 3) and creates shadow,
  * reflected and transmitted packets. Secondary rays start off the surface
  * by RT_SURFACE_OFFSET x max(|P|, |origin|, t) along the geometric normal
- * (outside for reflection and shadows, inside for transmission). Returns
+ * (outside for reflection and shadows, inside for transmission; off a `pp`
+ * triangle on the side of its plane each ray heads for). Returns
  * RT_ERR_CAPACITY if a buffer is too small (nothing is then done).
  */
 #ifndef RT_STEP_H

@@ -59,6 +59,10 @@ class PacketPool {
     void release(uint32_t h) { m_free.push_back(h); }
     // Packets in the pool now.
     size_t in_use() const { return m_size - m_free.size(); }
+    // Memory one outstanding packet takes at most: its slot, its handle in a queue and its
+    // entry in the free list (whose array may be twice its size while it grows). The memory
+    // budget's packet limit counts packets at this size.
+    static constexpr uint64_t bytes_per_packet() { return sizeof(Slot) + 3 * sizeof(uint32_t); }
 
   private:
     struct alignas(16) Slot {

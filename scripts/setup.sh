@@ -7,6 +7,7 @@ packages=(cmake g++ make pkg-config libsystemc-dev libpng-dev nlohmann-json3-dev
           libgtest-dev gtkwave gnuplot-nox parallel jq clang time
           libscotch-dev)
 packages+=(python3)  # report generation (experiments/report) and its tests
+packages+=(slurm-wlm slurm-client munge iproute2 util-linux)  # the Slurm backend's test (tests/slurm)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -76,6 +76,7 @@ typedef struct build {
     int nomem;
     size_t max_entries;           /* what the memory budget allows */
     int over_budget;              /* listing stopped at max_entries */
+    int counting;                 /* the counting pass: cell_n counts, nothing is stored */
 } build;
 
 static int box_is_empty(const rt_box *b)
@@ -170,6 +171,28 @@ static int flat_meets(const build *bd, const rt_box *b)
     return rt_polygon_inside(bd->loop, bd->loop_n, bd->drop, p);
 }
 
+/* 1 if the object holds the whole box, so every cell in it meets the object (the counting
+ * pass then counts them without splitting the box); spheres and cones only. */
+static int object_holds(const build *bd, const rt_box *b)
+{
+    const rt_object *o = bd->obj;
+    if (o->kind == RT_OBJ_SPHERE) {
+        /* The farthest corner inside the ball: the ball is convex. */
+        const rt_sphere_data *sp = &o->u.sphere;
+        double d2 = 0.0;
+        for (int a = 0; a < 3; a++) {
+            double c = axis_of(sp->center, a);
+            double far = fmax(fabs(axis_of(b->lo, a) - c), fabs(axis_of(b->hi, a) - c));
+            d2 += far * far;
+        }
+        return d2 <= sp->radius * sp->radius;
+    }
+    if (o->kind == RT_OBJ_CONE) /* its exact test is the bounds' overlap */
+        return o->bounds.lo.x <= b->lo.x && o->bounds.hi.x >= b->hi.x && o->bounds.lo.y <= b->lo.y &&
+               o->bounds.hi.y >= b->hi.y && o->bounds.lo.z <= b->lo.z && o->bounds.hi.z >= b->hi.z;
+    return 0;
+}
+
 static int object_meets(const build *bd, const rt_box *b)
 {
     switch (bd->obj->kind) {
@@ -211,6 +234,10 @@ static void slab_range(build *bd, int axis, int c0, int f, int m, int *first, in
 
 static void add_cell(build *bd, const int c[3])
 {
+    if (bd->counting) {
+        if (++bd->cell_n > bd->max_entries) bd->over_budget = bd->nomem = 1;
+        return;
+    }
     if (bd->cell_n == bd->max_entries) {
         bd->over_budget = bd->nomem = 1;
         return;
@@ -255,7 +282,15 @@ static void subdivide(build *bd, int level, const int c0[3])
                 b.hi = rt_vec(rt_grid_plane(g, 0, c[0] + m[0]) + tol,
                               rt_grid_plane(g, 1, c[1] + m[1]) + tol,
                               rt_grid_plane(g, 2, c[2] + m[2]) + tol);
-                if (object_meets(bd, &b)) subdivide(bd, level + 1, c);
+                if (!object_meets(bd, &b)) continue;
+                if (bd->counting && object_holds(bd, &b)) {
+                    /* Every cell of the sub-space is listed: count them at once. */
+                    size_t all = (size_t)m[0] * (size_t)m[1] * (size_t)m[2];
+                    bd->cell_n += all;
+                    if (bd->cell_n > bd->max_entries) bd->over_budget = bd->nomem = 1;
+                    continue;
+                }
+                subdivide(bd, level + 1, c);
             }
 }
 
@@ -342,25 +377,85 @@ static int object_space(const rt_scene *s, rt_box *out)
 /* Entries are 8 bytes while the lists are built (4 staged, 4 listed). */
 #define ENTRY_BYTES 8u
 
-/* Listing stopped in object `object`: the lists' size so far, and an estimate of the
- * whole from the share of objects listed, say by how much the budget falls short. */
+/* The counting pass passed what the budget allows in object `object`: the entries counted so
+ * far already exceed it. */
 static void over_budget_msg(const build *bd, size_t object, const rt_budget *budget, char *msg,
                             size_t msg_len)
 {
     const rt_grid *g = bd->g;
     size_t n = bd->scene->object_count;
-    double estimate = (double)bd->cell_n * (double)n / (double)(object + 1) * ENTRY_BYTES;
-    char left_s[32], limit_s[32], est_s[32];
+    char need_s[32], left_s[32], limit_s[32];
+    double need = (double)bd->cell_n * ENTRY_BYTES;
+    rt_budget_format(need < 1.8e19 ? (uint64_t)need : UINT64_MAX, need_s, sizeof need_s);
     rt_budget_format(rt_budget_left(budget), left_s, sizeof left_s);
     rt_budget_format(budget ? budget->limit : 0, limit_s, sizeof limit_s);
-    rt_budget_format(estimate < 1.8e19 ? (uint64_t)estimate : UINT64_MAX, est_s, sizeof est_s);
     if (msg && msg_len)
         snprintf(msg, msg_len,
-                 "memory budget exceeded: the cell lists of the %dx%dx%d grid filled the %s left "
-                 "of the %s budget at %zu entries (%u bytes each while they are built) with %zu of "
-                 "%zu objects still to list: about %s in all (raise it with --memory-budget)",
-                 g->dims[0], g->dims[1], g->dims[2], left_s, limit_s, bd->cell_n, ENTRY_BYTES,
-                 n - object, n, est_s);
+                 "memory budget exceeded: the cell lists of the %dx%dx%d grid would take more "
+                 "than %zu entries (%u bytes each while they are built), at least %s, counted "
+                 "before any is made with %zu of %zu objects still to count: more than the %s left "
+                 "of the %s budget (raise it with --memory-budget)",
+                 g->dims[0], g->dims[1], g->dims[2], bd->cell_n, ENTRY_BYTES, need_s,
+                 n - object - 1, n, left_s, limit_s);
+}
+
+static int same_point(rt_vec3 a, rt_vec3 b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+
+/* 1 if two objects are the same sphere, triangle or cone (polygons keep their vertices apart,
+ * so they are never taken as the same). */
+static int same_shape(const rt_object *a, const rt_object *b)
+{
+    if (a->kind != b->kind || a->kind == RT_OBJ_POLYGON) return 0;
+    switch (a->kind) {
+    case RT_OBJ_SPHERE:
+        return same_point(a->u.sphere.center, b->u.sphere.center) &&
+               a->u.sphere.radius == b->u.sphere.radius;
+    case RT_OBJ_TRIANGLE:
+        return same_point(a->u.triangle.v[0], b->u.triangle.v[0]) &&
+               same_point(a->u.triangle.v[1], b->u.triangle.v[1]) &&
+               same_point(a->u.triangle.v[2], b->u.triangle.v[2]);
+    case RT_OBJ_CONE:
+        return memcmp(&a->bounds, &b->bounds, sizeof a->bounds) == 0;
+    case RT_OBJ_POLYGON: break;
+    }
+    return 0;
+}
+
+/* The counting pass: how many entries the lists will have, without storing any; 0 when
+ * they pass what the budget allows (the message is set). */
+static int count_entries(build *bd, const rt_budget *budget, char *msg, size_t msg_len)
+{
+    const rt_scene *s = bd->scene;
+    int root[3] = {0, 0, 0};
+    bd->counting = 1;
+    size_t last = 0, last_count = 0; /* the last object counted (last_count: its entries) */
+    int have_last = 0;
+    for (size_t o = 0; o < s->object_count && !bd->g->empty; o++) {
+        if (box_is_empty(&s->objects[o].bounds)) continue;
+        size_t before = bd->cell_n;
+        if (have_last && same_shape(&s->objects[last], &s->objects[o])) {
+            /* The same shape meets the same cells (many coincident copies are what fill a
+             * budget): its count is the last one's. */
+            bd->cell_n += last_count;
+            if (bd->cell_n > bd->max_entries || bd->cell_n < before) bd->over_budget = 1;
+        } else {
+            if (!prepare_object(bd, o)) {
+                set_msg(msg, msg_len, "out of memory building the cell lists");
+                return 0;
+            }
+            subdivide(bd, 0, root);
+        }
+        last = o;
+        last_count = bd->cell_n - before;
+        have_last = 1;
+        if (bd->over_budget) {
+            over_budget_msg(bd, o, budget, msg, msg_len);
+            return 0;
+        }
+    }
+    bd->counting = 0;
+    bd->nomem = 0;
+    return 1;
 }
 
 /* Runs the subdivision for every object and fills the grid's lists. */
@@ -370,9 +465,17 @@ static int build_lists(build *bd, rt_budget *budget, char *msg, size_t msg_len)
     const rt_scene *s = bd->scene;
     size_t n = s->object_count, cells = rt_grid_cell_count(g);
 
+    /* Count first, then allocate: a scene whose lists cannot fit is refused before they
+     * take any memory, and the entries are allocated once, at their size. */
+    if (!count_entries(bd, budget, msg, msg_len)) return 0;
+    size_t entries = bd->cell_n;
+    bd->cell_n = 0;
+    bd->units = 0;
     bd->pair_start = malloc((n + 1) * sizeof *bd->pair_start);
     g->list_start = calloc(cells + 1, sizeof *g->list_start);
-    if (!bd->pair_start || !g->list_start) goto nomem;
+    bd->cells = malloc((entries ? entries : 1) * sizeof *bd->cells);
+    if (!bd->pair_start || !g->list_start || !bd->cells) goto nomem;
+    bd->cell_cap = entries ? entries : 1;
 
     int root[3] = {0, 0, 0};
     for (size_t o = 0; o < n; o++) {

@@ -133,9 +133,11 @@ int rt_intersect_object(const rt_scene *s, uint32_t index, rt_vec3 o, rt_vec3 d,
  * barycentrics are the hit test's own (u, v), so the weights agree with the
  * point that was hit. Vertex normals that nearly cancel (a pole of Haines'
  * teapot: (-0.90, 0, -0.43) beside (0.90, 0, 0.43)) leave a sum whose
- * direction is rounding noise, and a sum on the wrong side of the face lights
- * the surface from behind, where its own shadow rays are blocked: both fall
- * back to the face normal, on the side the vertex normals lie on. */
+ * direction is rounding noise: the face normal shades instead. A sum on the
+ * other side of the face is kept, turned to the vertex normals' side: vertex
+ * normals lying in the face's plane (the spout of the teapot at size 1 is a
+ * flat fin whose normals are the tube's) fall on either side by rounding, and
+ * replacing those by the face normal would make them speckle. */
 static rt_vec3 patch_normal(const rt_triangle_data *t, const rt_hit *hit)
 {
     double w[3] = {fmax(0.0, 1.0 - hit->u - hit->v), fmax(0.0, hit->u), fmax(0.0, hit->v)};
@@ -143,9 +145,9 @@ static rt_vec3 patch_normal(const rt_triangle_data *t, const rt_hit *hit)
     for (int k = 0; k < 3; k++) n = rt_vec_add(n, rt_vec_scale(t->n[k], w[k]));
     rt_vec3 face = rt_vec_scale(t->normal, t->side);
     double len = rt_vec_length(n);
-    if (!(len > RT_PATCH_MIN_NORMAL * (w[0] + w[1] + w[2])) || !(rt_vec_dot(n, face) > 0.0))
-        return face;
-    return rt_vec_scale(n, 1.0 / len);
+    if (!(len > RT_PATCH_MIN_NORMAL * (w[0] + w[1] + w[2]))) return face;
+    /* On the vertex normals' side of the face; shading turns it toward the ray. */
+    return rt_vec_scale(n, (rt_vec_dot(n, face) < 0.0 ? -1.0 : 1.0) / len);
 }
 
 void rt_object_normals(const rt_scene *s, uint32_t index, rt_vec3 p, const rt_hit *hit,

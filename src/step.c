@@ -96,8 +96,19 @@ typedef struct surface {
     rt_vec3 above;   /* secondary rays start here, off the surface on the ray's side */
     rt_vec3 below;   /* and here on the far side (refraction) */
     rt_vec3 pt;      /* the hit point */
+    rt_vec3 gf;      /* geometric normal toward the ray */
     int entering;    /* the ray enters the object */
+    int smooth;      /* the shading normal is not the geometric one (`pp` triangles) */
 } surface;
+
+/* Where a new ray along `dir` starts. Off a smooth triangle it starts on the side of the plane
+ * it heads for: a shading normal tilted from the face sends shadow and mirror rays through the
+ * plane, and from the other side they would hit their own triangle. */
+static rt_vec3 start_point(const surface *s, rt_vec3 dir, rt_vec3 usual)
+{
+    if (!s->smooth) return usual;
+    return rt_vec_dot(dir, s->gf) >= 0.0 ? s->above : s->below;
+}
 
 /* One shadow packet toward every light the surface faces (into `np`, reused). */
 static void shadow_rays(const rt_scene *scene, const rt_grid *grid, const rt_step_params *params,
@@ -117,12 +128,12 @@ static void shadow_rays(const rt_scene *scene, const rt_grid *grid, const rt_ste
         }
         value = rt_vec_mul(rt_vec_mul(p->weight, lj->color), value);
         if (rt_vec_is_zero(value)) continue;
-        rt_vec3 to = rt_vec_sub(lj->position, s->above);
+        np->origin = start_point(s, l, s->above);
+        rt_vec3 to = rt_vec_sub(lj->position, np->origin);
         double dist = rt_vec_length(to);
         np->kind = RT_PACKET_SHADOW;
         np->depth = p->depth;
         np->weight = value;
-        np->origin = s->above;
         if (!(dist > 0.0)) { /* the light sits on the surface: nothing can block it */
             contribute(out, np, value);
             continue;
@@ -148,7 +159,7 @@ static void secondary_rays(const rt_scene *scene, const rt_grid *grid, const rt_
         if (worth_a_ray(params, depth, wr)) {
             out->ops.reflection_vectors++;
             np->weight = wr;
-            np->origin = s->above;
+            np->origin = start_point(s, s->refl, s->above);
             np->dir = s->refl;
             launch(scene, grid, params, np, out);
         }
@@ -162,12 +173,12 @@ static void secondary_rays(const rt_scene *scene, const rt_grid *grid, const rt_
             double k = 1.0 - eta * eta * (1.0 - cosi * cosi);
             np->weight = wt;
             if (k < 0.0) { /* total internal reflection */
-                np->origin = s->above;
+                np->origin = start_point(s, s->refl, s->above);
                 np->dir = s->refl;
             } else {
-                np->origin = s->below;
                 np->dir = rt_vec_normalize(
                     rt_vec_add(rt_vec_scale(d, eta), rt_vec_scale(s->nf, eta * cosi - sqrt(k))));
+                np->origin = start_point(s, np->dir, s->below);
             }
             launch(scene, grid, params, np, out);
         }
@@ -185,8 +196,13 @@ static void shade(const rt_scene *scene, const rt_grid *grid, const rt_step_para
     rt_vec3 n_geo, n_shade;
     rt_object_normals(scene, obj, s.pt, hit, &n_geo, &n_shade);
     s.entering = rt_vec_dot(d, n_geo) < 0.0;
-    s.nf = s.entering ? n_shade : rt_vec_scale(n_shade, -1.0);
+    s.smooth = scene->objects[obj].kind == RT_OBJ_TRIANGLE;
+    /* The shading normal turns toward the ray by its own side, not the face's: where a `pp`
+     * normal tilts far from its face (a thin triangle across a curved surface) the face's side
+     * says nothing about it. Elsewhere both sides agree. */
+    s.nf = rt_vec_dot(d, n_shade) < 0.0 ? n_shade : rt_vec_scale(n_shade, -1.0);
     rt_vec3 gf = s.entering ? n_geo : rt_vec_scale(n_geo, -1.0); /* geometric normal toward the ray */
+    s.gf = gf;
     out->ops.shadings++;
 
     contribute(out, p, rt_vec_mul(rt_vec_mul(p->weight, s.m->color), scene->ambient));

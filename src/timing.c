@@ -122,8 +122,33 @@ static const char *skip_space(const char *p)
     return p;
 }
 
-/* Applies one line to *t; 0 with a message (no prefix) if malformed. */
-static int parse_line(char *line, rt_timing *t, char *msg, size_t msg_len)
+/* Whether v[0..len) is a decimal number: [-]DIGITS[.DIGITS][(e|E)[+-]DIGITS] (no hex float,
+ * no inf or nan, which strtod would take). */
+static int decimal_number(const char *v, size_t len)
+{
+    size_t i = 0, start;
+    if (i < len && v[i] == '-') i++;
+    start = i;
+    while (i < len && isdigit((unsigned char)v[i])) i++;
+    if (i == start || (i - start > 1 && v[start] == '0')) return 0;
+    if (i < len && v[i] == '.') {
+        size_t frac = ++i;
+        while (i < len && isdigit((unsigned char)v[i])) i++;
+        if (i == frac) return 0;
+    }
+    if (i < len && (v[i] == 'e' || v[i] == 'E')) {
+        size_t exp;
+        if (++i < len && (v[i] == '+' || v[i] == '-')) i++;
+        exp = i;
+        while (i < len && isdigit((unsigned char)v[i])) i++;
+        if (i == exp) return 0;
+    }
+    return i == len;
+}
+
+/* Applies one line to *t; 0 with a message (no prefix) if malformed. `seen` marks the keys
+ * the file has set: a key given twice is an error. */
+static int parse_line(char *line, rt_timing *t, unsigned char seen[], char *msg, size_t msg_len)
 {
     char *hash = strchr(line, '#');
     if (hash) *hash = '\0';
@@ -156,6 +181,17 @@ static int parse_line(char *line, rt_timing *t, char *msg, size_t msg_len)
                      rt_escape_bytes(key, key_len, 1, quoted, sizeof quoted));
         return 0;
     }
+    if (seen[i]) {
+        if (msg && msg_len) snprintf(msg, msg_len, "'%s' given twice", keys[i].name);
+        return 0;
+    }
+    seen[i] = 1;
+    if (!decimal_number(value, value_len)) {
+        if (msg && msg_len)
+            snprintf(msg, msg_len, "'%s' needs a decimal number (such as 12.5 or 1e-3; no hexadecimal)",
+                     keys[i].name);
+        return 0;
+    }
     char *end;
     errno = 0;
     double v = strtod(value, &end);
@@ -182,6 +218,7 @@ rt_status rt_timing_load(const char *path, rt_timing *timing, char *msg, size_t 
     /* Work on a copy: a bad file leaves the caller's table untouched. */
     rt_timing t = *timing;
     char why[256];
+    unsigned char seen[KEY_COUNT] = {0};
     long number = 0;
     for (char *line = text; st == RT_OK && line < text + length;) {
         char *nl = memchr(line, '\n', (size_t)(text + length - line));
@@ -199,7 +236,7 @@ rt_status rt_timing_load(const char *path, rt_timing *timing, char *msg, size_t 
             st = RT_ERR_PARSE;
         } else {
             *stop = '\0';
-            if (!parse_line(line, &t, why, sizeof why)) {
+            if (!parse_line(line, &t, seen, why, sizeof why)) {
                 if (msg && msg_len) snprintf(msg, msg_len, "%s:%ld: %s", shown, number, why);
                 st = RT_ERR_PARSE;
             }

@@ -13,6 +13,7 @@
 #include "common_options.h"
 #include "frame_pattern.h"
 #include "kernel_handles.h"
+#include "option_registration.h"
 #include "output_files.h"
 #include "progress.h"
 #include "rt_render.h"
@@ -244,11 +245,38 @@ int run(RenderOptions &opt)
     setup.budget = rt_budget_make(setup.settings.memory_bytes);
     setup.loaded = load_scene(opt.common.scene, setup.settings.size[0], setup.settings.size[1], setup.settings.cells,
                               opt.common.quiet, &setup.budget);
+    check_shade_tree(opt.common.scene, setup.loaded.scene.get(), setup.settings.step, setup.budget, sizeof(rt_packet));
     setup.ro = rt_render_options_default();
     setup.ro.step = setup.settings.step;
     setup.ro.step.brute_force = opt.brute_force;
     setup.ro.budget = &setup.budget;
     return opt.anim.animated() ? run_frames(opt, setup, outs, std::move(file), t0) : run_single(opt, setup, outs, t0);
+}
+
+// The renderer's own options.
+std::vector<OptionSpec> render_option_specs()
+{
+    return {{"--brute-force", "", ValueKind::flag, "", 0, 0, "", "test every object for every ray (the test oracle)",
+             OptionGroup::workload, ""},
+            {"--cost-image", "FILE", ValueKind::file, "", 0, 0, "",
+             "write each pixel's modelled microseconds as a heat-map PNG", OptionGroup::outputs, ""}};
+}
+
+void declare_options(CLI::App &app)
+{
+    const std::string output_help = "PNG image to write; with --frames/--camera-path a pattern like out_%04d.png";
+    add_common_options(app, output_help, {"scene", "--size"});
+    add_spec_option(app, render_option_specs()[0]);
+    add_common_options(app, output_help, {"--cells", "--max-depth", "--min-weight", "--timing-profile", "--timing"});
+    add_common_options(app, output_help, {"--output", "--stats"});
+    add_spec_option(app, render_option_specs()[1]);
+    for (const OptionSpec &spec : animation_option_specs()) add_spec_option(app, spec);
+    add_common_options(app, output_help, {"--memory-budget", "--quiet"});
+    set_help_layout(app, "Usage: torusrt-render SCENE -o FILE [OPTIONS]",
+                    "A bare number is decimal: 010 and 0x10 are refused.",
+                    "  torusrt-render scenes/paper-image1.nff -o ref.png\n"
+                    "  torusrt-render scenes/paper-image2.nff -o ref.png --size 64x64 --stats ref.json\n"
+                    "  torusrt-render scenes/paper-image1.nff -o 'f_%02d.png' --frames 12 --orbit 360\n");
 }
 
 }  // namespace
@@ -258,10 +286,13 @@ int main(int argc, char **argv)
     RenderOptions opt;
     CLI::App app{"torusrt-render: the sequential reference renderer (the golden image).\n"
                  "Runs the kernel's packet step over one work queue with one owner for every cell."};
-    add_common_options(app, opt.common, "PNG image to write; with --frames/--camera-path a pattern like out_%04d.png");
-    app.add_flag("--brute-force", opt.brute_force, "test every object for every ray (the test oracle)");
-    add_animation_options(app, opt.anim);
-    app.add_option("--cost-image", opt.cost_image, "write each pixel's modelled microseconds as a heat-map PNG")
-        ->type_name("FILE");
-    return run_cli("torusrt-render", app, argc, argv, [&] { return run(opt); });
+    declare_options(app);
+    return run_cli("torusrt-render", app, argc, argv, [&] {
+        std::map<std::string, std::string> given = given_options(app);
+        opt.common = common_options_given(given);
+        opt.anim = animation_options_given(given);
+        opt.brute_force = given.count("--brute-force") > 0;
+        if (given.count("--cost-image")) opt.cost_image = given["--cost-image"];
+        return run(opt);
+    });
 }

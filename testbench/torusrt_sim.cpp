@@ -3,8 +3,9 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
+#include <memory>
 #include <optional>
-#include <set>
 #include <stdexcept>
 #include <string>
 #include <systemc>
@@ -21,9 +22,13 @@
 #include "model_run.h"
 #include "option_parsing.h"
 #include "output_files.h"
+#include "packet_pool.h"
 #include "scene_setup.h"
 #include "sim_config.h"
 #include "mapping_setup.h"
+#include "option_registration.h"
+#include "option_spec.h"
+#include "remap_policy.h"
 #include "systemc_messages.h"
 #include "user_error.h"
 #include "wall_clock.h"
@@ -32,104 +37,73 @@ using namespace torusrt;
 
 namespace {
 
+// The command line, parsed once: the options given (by long name, as typed) and the run's
+// settings that are no part of SimConfig.
 struct CommandLine {
-    CommonOptions common;  // scene, -o, --stats, cells, size, step limits, memory, timing, -q
-    // The machine: --config reads these, --dump-config writes them (machine_options.cpp).
-    std::string ips = "1", map = "cyclic", topology = "torus", style = "at", quantum = "0", data = "replicated";
-    std::string arbiter = "round-robin", dispatch = "round-robin", link_us, packet_bytes, link_bytes_per_us;
-    std::string flow = "classes";
-    long long queue = 0;
-    int cluster = 1;
-    MappingOptions mapping;
-    bool map_given = false; // --map was on the command line or in the --config file
-    // The run: the command line only.
-    std::string vcd, trace_ips, trace_from, trace_to, t1, time_limit;
-    bool dump_config = false;
-    // Animation (run options too: the frames are the workload).
+    std::map<std::string, std::string> given;
+    CommonOptions common;  // scene, -o, --stats, size, memory, -q
     AnimationOptions anim;
-    std::string remap, remap_pilot, remap_window, remap_margin, frames_csv;
+    RemapPolicy remap = RemapPolicy::static_map;
+    AdaptiveSettings adaptive;
     std::string config_file;  // the --config file read, if any (no output may replace it)
+    bool dump_config = false, with_timing = false;
+
+    bool has(const std::string &name) const { return given.count(name) > 0; }
+    std::string text(const std::string &name) const
+    {
+        auto it = given.find(name);
+        return it == given.end() ? "" : it->second;
+    }
 };
 
-rt_map_kind parse_mapping(const std::string &text, int &block)
+// The run's options (the command line only: a machine file names no files and no limits).
+std::vector<OptionSpec> run_option_specs()
 {
-    if (text == "block") return RT_MAP_BLOCK;
-    if (text == "cyclic") return RT_MAP_CYCLIC;
-    if (text == "cost") return RT_MAP_COST;
-    if (text.compare(0, 5, "cost:") == 0) {
-        block = parse_dims_1_to_3("--map cost:K", text.substr(5), 1, 64)[0];
-        return RT_MAP_COST;
-    }
-    const std::string prefix = "block-cyclic:";
-    if (text.compare(0, prefix.size(), prefix) == 0) {
-        block = parse_dims_1_to_3("--map block-cyclic:B", text.substr(prefix.size()), 1, 1 << 20)[0];
-        return RT_MAP_BLOCK_CYCLIC;
-    }
-    throw UserError("--map '" + text + "': expected block, cyclic, block-cyclic:B, cost or cost:K", 2);
-}
-
-std::vector<int> parse_list(const std::string &option, const std::string &text)
-{
-    std::vector<int> out;
-    size_t pos = 0;
-    while (pos <= text.size()) {
-        size_t comma = text.find(',', pos);
-        std::string item = text.substr(pos, comma == std::string::npos ? std::string::npos : comma - pos);
-        out.push_back(parse_dims_1_to_3(option, item, 0, 1 << 20)[0]);
-        if (comma == std::string::npos) break;
-        pos = comma + 1;
-    }
-    return out;
-}
-
-// X.vcd -> X.gtkw; any other name gets ".gtkw" appended.
-std::string save_file_path(const std::string &vcd)
-{
-    const std::string ext = ".vcd";
-    bool has_ext = vcd.size() > ext.size() && vcd.compare(vcd.size() - ext.size(), ext.size(), ext) == 0;
-    return (has_ext ? vcd.substr(0, vcd.size() - ext.size()) : vcd) + ".gtkw";
-}
-
-// --link-us, --packet-bytes, --link-bytes-per-us on top of the profile and the timing file.
-void apply_timing_overrides(const CommandLine &cl, rt_timing &timing)
-{
-    char msg[RT_MSG_LEN] = "";
-    auto set = [&](const char *key, const std::string &opt, const std::string &text, bool is_time) {
-        if (text.empty()) return;
-        double v = is_time ? parse_time_us(opt, text) : parse_non_negative(opt, text);
-        if (rt_timing_set(&timing, key, v, msg, sizeof msg) != RT_OK) throw UserError(opt + ": " + msg, 2);
+    using G = OptionGroup;
+    using K = ValueKind;
+    const double max_s = kMaxSimTimeS;
+    return {
+        {"--write-map", "FILE", K::file, "", 0, 0, "", "write the cell -> node table this run used", G::outputs, ""},
+        {"--load-map", "FILE", K::file, "", 0, 0, "", "write the cells' work and owners as a PNG", G::outputs, ""},
+        {"--frames-csv", "FILE", K::file, "", 0, 0, "", "write one CSV row per frame of an animation", G::outputs, ""},
+        {"--t1", "TIME", K::time, "", 0, max_s, "s",
+         "T(1) for the efficiency T(1)/(n T(n)) (default: run the model with one processor)", G::outputs, ""},
+        {"--vcd", "FILE", K::file, "", 0, 0, "",
+         "write a VCD trace (IP busy, queue depths, link and bus activity) and a GTKWave save file beside "
+         "it (X.gtkw for X.vcd)", G::tracing, ""},
+        {"--trace-from", "TIME", K::time, "0", 0, max_s, "s", "trace only from this simulated time", G::tracing, ""},
+        {"--trace-to", "TIME", K::time, "", 0, max_s, "s", "trace only up to this simulated time (default: the end)",
+         G::tracing, ""},
+        {"--trace-ips", "N,N,...", K::text, "", 0, kMaxNodes - 1, "", "trace only these nodes, e.g. 0,1,5 (default all)",
+         G::tracing, ""},
+        {"--remap", "POLICY", K::text, "static", 0, 0, "",
+         "mapping across the frames: static (the first frame's), every-frame, adaptive or oracle", G::animation, ""},
+        {"--remap-pilot", "FRACTION", K::real, "0", 0, 1, "",
+         "adaptive's host preview of each frame: this fraction of the pixels (0: no preview, guesses of the load "
+         "from earlier frames)", G::animation, ""},
+        {"--remap-window", "N", K::integer, std::to_string(default_remap_window), 1, double(max_remap_window), "",
+         "adaptive without a preview: judge its guesses over this many past frames", G::animation, ""},
+        {"--remap-margin", "FRACTION", K::real, number_text(default_remap_margin), 0, 1, "",
+         "adaptive without a preview: keep the previous frame's load as the guess unless another's back-test "
+         "is better by more than this fraction", G::animation, ""},
+        {"--time-limit", "TIME", K::time, "1e7s", 0, max_s, "s",
+         "stop with an error (exit 1) when simulated time passes this (at most 1e7 s: SystemC's 64-bit "
+         "picosecond time holds 1.8e7 s)", G::run, ""},
     };
-    set("link", "--link-us", cl.link_us, true);
-    set("packet_bytes", "--packet-bytes", cl.packet_bytes, false);
-    set("link_bytes_per_us", "--link-bytes-per-us", cl.link_bytes_per_us, false);
 }
 
-// The machine the options describe; values that do not parse are errors here, ranges are the
-// validator's.
-MachineConfig machine_from(const CommandLine &cl, const CommonSettings &common)
+const OptionSpec &run_spec(const std::string &name)
 {
-    MachineConfig m;
-    m.cells = common.cells;
-    m.step = common.step;
-    m.timing = common.timing;
-    m.timing_profile = common.timing_label;
-    m.timing_base = common.timing_base;
-    m.timing_file = cl.common.timing_file;
-    apply_timing_overrides(cl, m.timing);
-    m.ips = parse_dims_1_to_3("--ips", cl.ips, 1, kMaxNodes);
-    m.mapping = parse_mapping(cl.map, m.block);
-    m.topology = value_named("--topology", cl.topology, kTopologyNames);
-    m.flow = value_named("--flow", cl.flow, kFlowNames);
-    if (cl.queue < 0 || cl.queue > kMaxQueue)
-        throw UserError("--queue: must be 0 (unbounded) to " + std::to_string(kMaxQueue), 2);
-    m.queue_capacity = static_cast<unsigned>(cl.queue);
-    m.style = value_named("--style", cl.style, kStyleNames);
-    m.quantum_us = parse_time_us("--quantum", cl.quantum);
-    m.cluster = cl.cluster;
-    m.data = value_named("--data", cl.data, kDataModeNames);
-    m.arbiter = value_named("--arbiter", cl.arbiter, kArbiterNames);
-    m.dispatch = value_named("--dispatch", cl.dispatch, kDispatchNames);
-    return m;
+    static const std::vector<OptionSpec> specs = run_option_specs();
+    for (const OptionSpec &s : specs)
+        if (s.long_name() == name) return s;
+    throw std::logic_error("no run option " + name);
+}
+
+// A time option of the run in microseconds (a bare number is seconds).
+double run_time_us(const CommandLine &cl, const std::string &name)
+{
+    return parse_time(name, cl.text(name), 0, -6);
 }
 
 RunOptions run_from(const CommandLine &cl, const CommonSettings &common)
@@ -140,128 +114,104 @@ RunOptions run_from(const CommandLine &cl, const CommonSettings &common)
     r.width = common.size[0];
     r.height = common.size[1];
     r.memory = rt_budget_make(common.memory_bytes);
-    r.vcd_path = cl.vcd;
-    if (!cl.trace_ips.empty()) r.trace_ips = parse_list("--trace-ips", cl.trace_ips);
-    if (!cl.t1.empty()) r.t1_s = parse_non_negative("--t1", cl.t1);
-    if (!cl.time_limit.empty()) r.time_limit_s = parse_time_us("--time-limit", cl.time_limit) * 1e-6;
-    if (!cl.trace_from.empty()) r.trace_from_us = parse_time_us("--trace-from", cl.trace_from);
-    if (!cl.trace_to.empty()) r.trace_to_us = parse_time_us("--trace-to", cl.trace_to);
+    r.vcd_path = cl.text("--vcd");
+    if (cl.has("--trace-ips")) r.trace_ips = parse_integer_list("--trace-ips", cl.text("--trace-ips"), 0, kMaxNodes - 1);
+    if (cl.has("--t1")) r.t1_s = parse_time("--t1", cl.text("--t1"), 0, 0);
+    if (cl.has("--time-limit")) r.time_limit_s = parse_time("--time-limit", cl.text("--time-limit"), 0, 0);
+    if (cl.has("--trace-from")) r.trace_from_us = run_time_us(cl, "--trace-from");
+    if (cl.has("--trace-to")) r.trace_to_us = run_time_us(cl, "--trace-to");
+    r.write_map = cl.text("--write-map");
+    if (!r.write_map.empty()) check_output_folder("--write-map", r.write_map);
+    if (cl.has("--load-map")) check_output_folder("--load-map", cl.text("--load-map"));
     return r;
 }
 
-// The machine's options: configurable, so that --config reads them (a new machine option goes
-// here, in MachineConfig, machine_from, machine_options.cpp and the validator).
-void declare_machine_options(CLI::App &app, CommandLine &cl)
+// The names of the machine options' keys a machine file may hold, and those whose bare number
+// would be seconds.
+std::vector<std::string> machine_keys(bool timed_only)
 {
-    app.add_option("--ips", cl.ips, "torus nodes: P, PXxPY or PXxPYxPZ (default 1, at most 4096)")->type_name("DIMS");
-    app.add_option("--map", cl.map, "cell mapping: block, cyclic (default), block-cyclic:B, cost or cost:K")->type_name("KIND");
-    app.add_option("--topology", cl.topology, "torus (default, rings) or mesh (no wrap-around)")->type_name("KIND");
-    app.add_option("--queue", cl.queue, "capacity of every packet buffer (of each class), 0 = unbounded (default)")
-        ->type_name("N");
-    app.add_option("--flow", cl.flow, "flow control: classes (default, deadlock-free class-split buffers) or none\n"
-                                     "(one class; finite buffers may deadlock, exit 3)")->type_name("SCHEME");
-    app.add_option("--link-us", cl.link_us, "time per packet on a link: microseconds, or with a unit ns, us, ms, s\n"
-                                         "(default 50)")->type_name("TIME");
-    app.add_option("--packet-bytes", cl.packet_bytes, "packet size on the wire in bytes (default 28)")->type_name("BYTES");
-    app.add_option("--link-bytes-per-us", cl.link_bytes_per_us,
-                   "link bandwidth; when > 0 a packet takes packet-bytes / this (default 0: use --link-us)")
-        ->type_name("RATE");
-    app.add_option("--style", cl.style, "timing style: at (approximately timed, default) or lt (loosely timed)")
-        ->type_name("at|lt");
-    app.add_option("--quantum", cl.quantum, "loosely-timed global quantum, same syntax as --link-us, e.g. 500us, 10ms")
-        ->type_name("TIME");
-    app.add_option("--cluster", cl.cluster, "processors per torus node on a shared bus (default 1)")->type_name("N");
-    app.add_option("--data", cl.data, "object data in a cluster: replicated (default) or shared")->type_name("KIND");
-    app.add_option("--arbiter", cl.arbiter, "cluster bus arbiter: round-robin (default) or fixed-priority")->type_name("KIND");
-    app.add_option("--dispatch", cl.dispatch, "cluster packet dispatch: round-robin (default) or shortest-queue")
-        ->type_name("KIND");
-    add_mapping_options(app, cl.mapping); // --map-file, --pilot-size; the run's --write-map, --load-map
+    std::vector<std::string> keys;
+    for (const MachineOption &o : machine_option_table())
+        if (!timed_only || (o.spec.kind == ValueKind::time && o.spec.unit == "s")) keys.push_back(o.spec.key);
+    return keys;
 }
 
-// The run's options: the command line only (a machine file names no files and no limits).
-void declare_run_options(CLI::App &app, CommandLine &cl)
+const char *const kUsage = "Usage: torusrt-sim SCENE -o FILE [OPTIONS]\n"
+                           "       torusrt-sim --dump-config [--with-timing] [MACHINE OPTIONS]";
+const char *const kRules = "Numbers are decimal (010 and 0x10 are refused). A time takes a unit ns, us, ms or s; a\n"
+                           "bare number is seconds, except for an option whose name carries its unit (--link-us).";
+const char *const kExamples =
+    "  torusrt-sim scenes/paper-image1.nff -o sim.png --ips 4x2x2 --stats sim.json\n"
+    "  torusrt-sim scenes/paper-image2.nff -o sim.png --ips 4x4 --map block --link-us 500 --queue 64\n"
+    "  torusrt-sim scenes/paper-image1.nff -o 'f_%02d.png' --ips 2x2 --frames 12 --orbit 360\n";
+
+void declare_options(CLI::App &app, std::shared_ptr<MachineFileReader> reader)
 {
-    app.add_option("--vcd", cl.vcd, "write a VCD trace (IP busy, queue depths, link and bus activity) and a GTKWave\n"
-                               "save file beside it (X.gtkw for X.vcd)")->type_name("FILE");
-    app.add_option("--trace-from", cl.trace_from, "trace only from this simulated time (default 0)")->type_name("TIME");
-    app.add_option("--trace-to", cl.trace_to, "trace only up to this simulated time (default: the end)")->type_name("TIME");
-    app.add_option("--trace-ips", cl.trace_ips, "trace only these nodes, e.g. 0,1,5 (default all)")->type_name("N,N,...");
-    app.add_option("--t1", cl.t1, "T(1) in seconds for the efficiency T(1)/(n T(n)) (default: run the model with one processor)")
-        ->type_name("SECONDS");
-    app.add_option("--time-limit", cl.time_limit, "stop with an error (exit 1) when simulated time passes this\n"
-                   "(default and maximum 1e7 s, SystemC's 64-bit picosecond time holds 1.8e7 s)")->type_name("TIME");
-    add_animation_options(app, cl.anim);
-    app.add_option("--remap", cl.remap, "mapping across the frames: static (default: the first frame's), every-frame,\n"
-                   "adaptive or oracle")->type_name("POLICY");
-    app.add_option("--remap-pilot", cl.remap_pilot, "adaptive's host preview of each frame: this fraction of the pixels\n"
-                   "(default 0: no preview, guesses of the load from earlier frames)")->type_name("FRACTION");
-    app.add_option("--remap-window", cl.remap_window, "adaptive without a preview: judge its guesses over this many past\n"
-                   "frames (default " + std::to_string(default_remap_window) + ")")->type_name("N");
-    char margin_default[32];
-    std::snprintf(margin_default, sizeof margin_default, "%g", default_remap_margin);
-    app.add_option("--remap-margin", cl.remap_margin, std::string("adaptive without a preview: keep the previous frame's load as the\n"
-                   "guess unless another's back-test is better by more than this fraction (default ") +
-                   margin_default + ")")->type_name("FRACTION");
-    app.add_option("--frames-csv", cl.frames_csv, "write one CSV row per frame of an animation")->type_name("FILE");
-    for (const char *name : {"--vcd", "--trace-from", "--trace-to", "--trace-ips", "--t1", "--time-limit", "--remap",
-                             "--remap-pilot", "--remap-window", "--remap-margin", "--frames-csv"})
-        app.get_option(name)->configurable(false);
+    const std::string output_help = "PNG image to write; with --frames/--camera-path a pattern like out_%04d.png";
+    add_common_options(app, output_help, {"scene", "--size"});
+    app.set_config("--config", "", wrapped("read the machine from this TOML file (as --dump-config writes it); "
+                                           "options on the command line take precedence", kHelpColumns - 31))
+        ->type_name("FILE")
+        ->group(group_title(OptionGroup::machine))
+        ->check(input_file_check(kMachineFileMaxBytes));  // before CLI11's own blocking read
+    app.allow_config_extras(CLI::config_extras_mode::error);  // an unknown key is an error
+    app.config_formatter(reader);
+    add_spec_option(app, {"--dump-config", "", ValueKind::flag, "", 0, 0, "",
+                          "print the machine as TOML and exit without running", OptionGroup::machine, ""});
+    add_spec_option(app, {"--with-timing", "", ValueKind::flag, "", 0, 0, "",
+                          "with --dump-config: write every timing value (timing-values), so that the file needs "
+                          "no timing file", OptionGroup::machine, ""});
+    for (const MachineOption &o : machine_option_table()) add_spec_option(app, o.spec);
+    add_common_options(app, output_help, {"--output", "--stats"});
+    for (const OptionSpec &spec : run_option_specs())
+        if (spec.group == OptionGroup::outputs || spec.group == OptionGroup::tracing) add_spec_option(app, spec);
+    for (const OptionSpec &spec : animation_option_specs()) add_spec_option(app, spec);
+    for (const OptionSpec &spec : run_option_specs())
+        if (spec.group == OptionGroup::animation || spec.group == OptionGroup::run) add_spec_option(app, spec);
+    add_common_options(app, output_help, {"--memory-budget", "--quiet"});
+    set_help_layout(app, kUsage, kRules, kExamples);
 }
 
-// The animation options checked before any file is read (exit 2).
+// The animation's run options parsed once, checked before any file is read (exit 2).
 void check_animation(CommandLine &cl)
 {
     check_animation_options(cl.anim);
     if (!cl.anim.animated()) {
-        for (const auto &[name, value] : {std::pair<const char *, const std::string &>{"--remap-pilot", cl.remap_pilot},
-                                          {"--remap-window", cl.remap_window},
-                                          {"--remap-margin", cl.remap_margin}})
-            if (!value.empty()) throw UserError(std::string(name) + ": only for an animation with --remap adaptive", 2);
-        if (!cl.remap.empty() || !cl.frames_csv.empty())
-            throw UserError(std::string(cl.remap.empty() ? "--frames-csv" : "--remap") +
+        for (const char *name : {"--remap-pilot", "--remap-window", "--remap-margin"})
+            if (cl.has(name)) throw UserError(std::string(name) + ": only for an animation with --remap adaptive", 2);
+        if (cl.has("--remap") || cl.has("--frames-csv"))
+            throw UserError(std::string(cl.has("--remap") ? "--remap" : "--frames-csv") +
                                 ": only for an animation (--frames N with --orbit DEG, or --camera-path FILE)", 2);
         return;
     }
-    if (!cl.remap.empty()) parse_remap_policy(cl.remap);
-    if (!cl.remap_pilot.empty()) {
-        parse_remap_pilot(cl.remap_pilot);
-        if (cl.remap != "adaptive") throw UserError("--remap-pilot: only with --remap adaptive", 2);
+    if (cl.has("--remap")) cl.remap = parse_remap_policy(cl.text("--remap"));
+    auto real = [&cl](const char *name) {
+        const OptionSpec &s = run_spec(name);
+        return parse_real(name, cl.text(name), s.min, s.max);
+    };
+    if (cl.has("--remap-pilot")) {
+        cl.adaptive.pilot_fraction = real("--remap-pilot");
+        if (cl.remap != RemapPolicy::adaptive) throw UserError("--remap-pilot: only with --remap adaptive", 2);
     }
     // --remap-window and --remap-margin tune how adaptive judges its guesses, which a preview replaces.
     auto guess_option = [&cl](const std::string &name) {
-        if (cl.remap != "adaptive") throw UserError(name + ": only with --remap adaptive", 2);
-        if (!cl.remap_pilot.empty() && parse_remap_pilot(cl.remap_pilot) > 0)
+        if (cl.remap != RemapPolicy::adaptive) throw UserError(name + ": only with --remap adaptive", 2);
+        if (cl.adaptive.pilot_fraction > 0)
             throw UserError(name + ": only without a preview (--remap-pilot 0); the preview judges the tables", 2);
     };
-    if (!cl.remap_window.empty()) {
-        parse_remap_window(cl.remap_window);
+    if (cl.has("--remap-window")) {
+        const OptionSpec &s = run_spec("--remap-window");
+        cl.adaptive.window = static_cast<size_t>(
+            parse_integer("--remap-window", cl.text("--remap-window"), static_cast<long long>(s.min),
+                          static_cast<long long>(s.max)));
         guess_option("--remap-window");
     }
-    if (!cl.remap_margin.empty()) {
-        parse_remap_margin(cl.remap_margin);
+    if (cl.has("--remap-margin")) {
+        cl.adaptive.margin = real("--remap-margin");
         guess_option("--remap-margin");
     }
-    if (!cl.t1.empty()) throw UserError("--t1: not used by an animation (each frame's T(1) is its pilot's work)", 2);
+    if (cl.has("--t1")) throw UserError("--t1: not used by an animation (each frame's T(1) is its pilot's work)", 2);
     if (!cl.common.output.empty()) check_frame_pattern("-o", cl.common.output);
-}
-
-void declare_options(CLI::App &app, CommandLine &cl)
-{
-    add_common_options(app, cl.common, "PNG image to write");
-    declare_machine_options(app, cl);
-    declare_run_options(app, cl);
-    app.allow_config_extras(CLI::config_extras_mode::error);  // an unknown key is an error
-    app.config_formatter(std::make_shared<MachineFileReader>());  // '#' in a quoted path, no repeated key
-    app.set_config("--config", "", "read the machine from this TOML file (as --dump-config writes it);\n"
-                                   "options on the command line take precedence")
-        ->type_name("FILE")
-        ->check(input_file_check(kMachineFileMaxBytes));  // before CLI11's own blocking read
-    app.add_flag("--dump-config", cl.dump_config, "print the machine as TOML and exit without running")
-        ->configurable(false);
-    for (CLI::Option *opt : app.get_options())  // --help shows which options make the machine
-        if (!opt->get_positional() && opt != app.get_help_ptr() && opt != app.get_config_ptr() &&
-            opt->get_name() != "--dump-config")
-            opt->group(opt->get_configurable() ? "Machine (a --config file may hold these)" : "Run");
 }
 
 bool on_command_line(int argc, char **argv, const std::string &name)
@@ -272,28 +222,24 @@ bool on_command_line(int argc, char **argv, const std::string &name)
 }
 
 // A bad setting (exit 2) whose option came from the --config file, not the command line: the
-// message names the file too (the validator names only the option).
-UserError naming_config_file(const CLI::App &app, const UserError &e, int argc, char **argv)
+// message names the file and its line too (the option's parser names only the option).
+UserError naming_config_file(const CommandLine &cl, const MachineFileReader &reader, const UserError &e, int argc,
+                             char **argv)
 {
     std::string what = e.what();
-    size_t end = what.find_first_of(" :");
-    std::string name = what.substr(0, end);
-    const CLI::Option *config = app.get_config_ptr();
-    const CLI::Option *opt = name.rfind("--", 0) == 0 ? app.get_option_no_throw(name) : nullptr;
-    if (e.exit_code() != 2 || config == nullptr || config->count() == 0 || opt == nullptr ||
-        !opt->get_configurable() || opt->count() == 0 || on_command_line(argc, argv, name))
-        return e;
-    return UserError(config->as<std::string>() + ": " + what, 2);
+    std::string name = what.substr(0, what.find_first_of(" :"));
+    int line = name.rfind("--", 0) == 0 ? reader.line_of(name.substr(2)) : 0;
+    if (e.exit_code() != 2 || cl.config_file.empty() || line == 0 || on_command_line(argc, argv, name)) return e;
+    return UserError(shown_text(cl.config_file) + ":" + std::to_string(line) + ": " + what, 2);
 }
 
 // --map and --map-file exclude each other; one on the command line replaces the other from a
-// --config file (both in one place is an error, reported by apply_mapping_options).
-void resolve_mapping_sources(const CLI::App &app, CommandLine &cl, int argc, char **argv)
+// --config file (both in one place is an error, reported by machine_from_texts).
+void resolve_mapping_sources(CommandLine &cl, int argc, char **argv)
 {
     bool map_here = on_command_line(argc, argv, "--map"), file_here = on_command_line(argc, argv, "--map-file");
-    cl.map_given = app.count("--map") > 0;
-    if (map_here && !file_here) cl.mapping.map_file.clear();
-    if (file_here && !map_here) cl.map_given = false;
+    if (map_here && !file_here) cl.given.erase("--map-file");
+    if (file_here && !map_here) cl.given.erase("--map");
 }
 
 // The options turned into a checked configuration (UserError on a bad value).
@@ -301,44 +247,30 @@ SimConfig checked_config(const CommandLine &cl)
 {
     CommonSettings common = parse_common_options(cl.common);
     SimConfig config;
-    static_cast<MachineConfig &>(config) = machine_from(cl, common);
+    static_cast<MachineConfig &>(config) = machine_from_texts(cl.given);
     static_cast<RunOptions &>(config) = run_from(cl, common);
-    apply_mapping_options(config, cl.mapping, cl.map_given);
     validate(config);
     return config;
 }
 
-// Every option a machine file may hold must be written by --dump-config, or the file would
-// not give the same machine.
-void check_dump_covers_options(const CLI::App &app, const OptionList &written)
-{
-    std::set<std::string> keys;
-    for (const auto &kv : written) keys.insert(kv.first);
-    keys.insert("map");  // left out with --map-file
-    for (const CLI::Option *opt : app.get_options()) {
-        if (!opt->get_configurable() || opt == app.get_config_ptr() || opt == app.get_help_ptr() ||
-            opt == app.get_option_no_throw("--version"))
-            continue;
-        if (!keys.count(opt->get_single_name()))
-            throw std::logic_error("--" + opt->get_single_name() +
-                                   " can come from a machine file but machine_options() does not write it");
-    }
-}
-
 // --dump-config: the machine of the command line and --config, checked as a run would check
 // it, as TOML on stdout.
-int dump_config(const CLI::App &app, const CommandLine &cl)
+int dump_config(const CommandLine &cl)
 {
     route_systemc_messages(cl.common.quiet);
     SimConfig config = checked_config(cl);
     std::vector<int32_t> owner;  // the table a run would read, checked as the run checks it
     if (config.mapping == RT_MAP_FILE) read_map_file(config, config.cells.data(), owner);
-    check_dump_covers_options(app, machine_options(config));
-    for (const auto &kv : machine_options(config))  // a key="value" line cannot hold a line break
-        if (kv.second.find_first_of("\r\n") != std::string::npos)
-            throw UserError("--" + kv.first + ": a value with a line break cannot be written to a machine file", 2);
-    std::fputs(machine_options_toml(config).c_str(), stdout);
+    std::fputs(machine_options_toml(config, cl.with_timing).c_str(), stdout);
     return 0;
+}
+
+// X.vcd -> X.gtkw; any other name gets ".gtkw" appended.
+std::string save_file_path(const std::string &vcd)
+{
+    const std::string ext = ".vcd";
+    bool has_ext = vcd.size() > ext.size() && vcd.compare(vcd.size() - ext.size(), ext.size(), ext) == 0;
+    return (has_ext ? vcd.substr(0, vcd.size() - ext.size()) : vcd) + ".gtkw";
 }
 
 // Every output of the run (every frame's included), registered and checked against the inputs
@@ -359,16 +291,16 @@ void stage_outputs(const CommandLine &cl, SimConfig &config, size_t frames, Stag
     }
     if (!cl.common.stats.empty()) out.stats = out.set.add("--stats", cl.common.stats);
     std::optional<OutputSet::Id> vcd, gtkw;
-    if (!cl.vcd.empty()) {
-        vcd = out.set.add("--vcd", cl.vcd);
+    if (cl.has("--vcd")) {
+        vcd = out.set.add("--vcd", cl.text("--vcd"));
         if (!out.set.special(*vcd)) {  // no save file beside /dev/null
-            config.gtkw_path = save_file_path(cl.vcd);
+            config.gtkw_path = save_file_path(cl.text("--vcd"));
             gtkw = out.set.add("--vcd (save file)", config.gtkw_path);
         }
     }
-    if (!cl.mapping.write_map.empty()) out.write_map = out.set.add("--write-map", cl.mapping.write_map);
-    if (!cl.mapping.load_map.empty()) out.load_map = out.set.add("--load-map", cl.mapping.load_map);
-    if (!cl.frames_csv.empty()) out.frames_csv = out.set.add("--frames-csv", cl.frames_csv);
+    if (cl.has("--write-map")) out.write_map = out.set.add("--write-map", cl.text("--write-map"));
+    if (cl.has("--load-map")) out.load_map = out.set.add("--load-map", cl.text("--load-map"));
+    if (cl.has("--frames-csv")) out.frames_csv = out.set.add("--frames-csv", cl.text("--frames-csv"));
     out.set.add_input("scene", cl.common.scene);
     out.set.add_input("--config", cl.config_file);
     out.set.add_input("--timing", config.timing_file);
@@ -383,7 +315,7 @@ void print_written(const CommandLine &cl, const SimConfig &config)
 {
     std::printf("  wrote        %s", cl.common.output.c_str());
     if (!cl.common.stats.empty()) std::printf(", %s", cl.common.stats.c_str());
-    if (!cl.vcd.empty()) std::printf(", %s", cl.vcd.c_str());
+    if (cl.has("--vcd")) std::printf(", %s", cl.text("--vcd").c_str());
     if (!config.gtkw_path.empty()) std::printf(" (gtkwave %s)", config.gtkw_path.c_str());
     std::printf("\n");
 }
@@ -413,13 +345,8 @@ int animate(const CommandLine &cl, SimConfig &config, LoadedScene &loaded, const
     size_t n = rt_camera_path_count(path.get());
     std::vector<std::string> files;
     for (size_t k = 0; k < n; k++) files.push_back(outputs.set.path(outputs.first_frame + k));
-    RemapPolicy policy = cl.remap.empty() ? RemapPolicy::static_map : parse_remap_policy(cl.remap);
-    AdaptiveSettings adaptive;
-    if (!cl.remap_pilot.empty()) adaptive.pilot_fraction = parse_remap_pilot(cl.remap_pilot);
-    if (!cl.remap_window.empty()) adaptive.window = parse_remap_window(cl.remap_window);
-    if (!cl.remap_margin.empty()) adaptive.margin = parse_remap_margin(cl.remap_margin);
     AnimationOutcome out =
-        run_animation(config, scene, loaded.grid.get(), path.get(), files, policy, adaptive, wall_start);
+        run_animation(config, scene, loaded.grid.get(), path.get(), files, cl.remap, cl.adaptive, wall_start);
     out.report.mapping = mapping_facts;
     out.report.camera_source = cl.anim.orbit.empty() ? "camera-path" : "orbit";
     out.report.output_pattern = cl.common.output;
@@ -434,14 +361,14 @@ int animate(const CommandLine &cl, SimConfig &config, LoadedScene &loaded, const
         write_png_file(outputs.set.staged(outputs.first_frame + k), files[k], cam->width, cam->height, out.images[k]);
     write_stats(outputs, cl, out.report);
     if (outputs.frames_csv)
-        write_text_file(outputs.set.staged(*outputs.frames_csv), cl.frames_csv, frames_csv(out.frames));
+        write_text_file(outputs.set.staged(*outputs.frames_csv), cl.text("--frames-csv"), frames_csv(out.frames));
     outputs.set.commit();
     if (!config.quiet) {
         print_summary_stdout(out.report);
         std::printf("  wrote        %zu frames %s", n, cl.common.output.c_str());
         if (!cl.common.stats.empty()) std::printf(", %s", cl.common.stats.c_str());
-        if (!cl.frames_csv.empty()) std::printf(", %s", cl.frames_csv.c_str());
-        if (!cl.vcd.empty()) std::printf(", %s", cl.vcd.c_str());
+        if (cl.has("--frames-csv")) std::printf(", %s", cl.text("--frames-csv").c_str());
+        if (cl.has("--vcd")) std::printf(", %s", cl.text("--vcd").c_str());
         std::printf("\n");
     }
     return 0;
@@ -454,11 +381,15 @@ int run(CommandLine &cl, double wall_start)
     check_animation(cl);
     SimConfig config = checked_config(cl);
     warn_about_settings("torusrt-sim", config.step, config.quiet);
+    if (config.style == TimingStyle::lt && config.quantum_us == 0 && !config.quiet)
+        std::fprintf(stderr, "torusrt-sim: warning: --style lt without --quantum: a quantum of 0 synchronises at "
+                             "every transfer, as --style at does (give --quantum, e.g. 1ms)\n");
     CameraPathPtr file = read_camera_path_file(cl.anim);
     StagedOutputs outputs;
     stage_outputs(cl, config, cl.anim.animated() ? animation_frame_count(cl.anim, file.get()) : 0, outputs);
     LoadedScene loaded = load_scene(config.scene_path, config.width, config.height, config.cells, config.quiet,
                                     &config.memory);
+    check_shade_tree(config.scene_path, loaded.scene.get(), config.step, config.memory, PacketPool::bytes_per_packet());
     nlohmann::json mapping_facts = prepare_mapping(config, loaded.scene.get(), loaded.grid.get());
     if (cl.anim.animated()) {
         write_mapping_outputs(config, loaded.scene.get(), loaded.grid.get(), outputs.set, outputs.write_map,
@@ -502,15 +433,23 @@ int sc_main(int argc, char **argv)
     CommandLine cl;
     CLI::App app{"torusrt-sim: a SystemC/TLM-2.0 model of the object-space-parallel ray-tracing\n"
                  "multiprocessor (Kubota et al.): intersection processors on a torus exchange ray packets."};
-    declare_options(app, cl);
+    auto reader = std::make_shared<MachineFileReader>(machine_keys(false), machine_keys(true));
+    declare_options(app, reader);
     return run_cli("torusrt-sim", app, argc, argv,
                    [&] {
-                       resolve_mapping_sources(app, cl, argc, argv);
+                       cl.given = given_options(app);
+                       resolve_mapping_sources(cl, argc, argv);
                        if (app.get_config_ptr()->count() > 0) cl.config_file = app.get_config_ptr()->as<std::string>();
+                       cl.common = common_options_given(cl.given);
+                       cl.anim = animation_options_given(cl.given);
+                       cl.dump_config = cl.has("--dump-config");
+                       cl.with_timing = cl.has("--with-timing");
                        try {
-                           return cl.dump_config ? dump_config(app, cl) : run(cl, wall_start);
+                           if (cl.with_timing && !cl.dump_config)
+                               throw UserError("--with-timing: only with --dump-config", 2);
+                           return cl.dump_config ? dump_config(cl) : run(cl, wall_start);
                        } catch (const UserError &e) {
-                           throw naming_config_file(app, e, argc, argv);
+                           throw naming_config_file(cl, *reader, e, argc, argv);
                        }
                    },
                    "  3 deadlock: the network stalled with packets outstanding\n");

@@ -31,17 +31,6 @@ png_compare_tool() {
   echo "$exe"
 }
 
-# quantum_seconds Q: a quantum with a unit (0, 10us, 3ms, 1s, 500ns) in seconds.
-quantum_seconds() {
-  awk -v q="$1" 'BEGIN {
-    if (q == "0") { print 0; exit }
-    if (!match(q, /^[0-9.]+(e[-+]?[0-9]+)?/)) { print "bad"; exit 1 }
-    v = substr(q, 1, RLENGTH) + 0; u = substr(q, RLENGTH + 1)
-    f = (u == "s") ? 1 : (u == "ms") ? 1e-3 : (u == "us") ? 1e-6 : (u == "ns") ? 1e-9 : (u == "ps") ? 1e-12 : -1
-    if (f < 0) { print "bad"; exit 1 }
-    printf "%.12g\n", v * f }'
-}
-
 # median V...: the median of numbers.
 median() { printf '%s\n' "$@" | sort -g | awk '{ v[NR] = $1 } END { if (NR % 2) print v[(NR + 1) / 2]; else printf "%.9g\n", (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
 

@@ -40,7 +40,12 @@ while [ $# -gt 0 ]; do
 done
 [[ $REPS =~ ^[1-9][0-9]*$ ]] || die "--reps: a positive integer"
 need_build
-for q in $QUANTA; do [ "$(quantum_seconds "$q" 2>/dev/null)" != bad ] || die "--quanta: bad quantum '$q'"; done
+# quantum_seconds Q: Q in seconds, as torusrt-sim reads it (its --dump-config writes microseconds).
+quantum_seconds() {
+  "$BUILD/torusrt-sim" --dump-config --style lt --quantum "$1" 2>/dev/null |
+    sed -n 's/^quantum="\(.*\)us"$/\1/p' | awk '{ printf "%.12g\n", $1 * 1e-6 }'
+}
+for q in $QUANTA; do [ -n "$(quantum_seconds "$q")" ] || die "--quanta: bad quantum '$q'"; done
 
 csv_start "scene,ips,processors,style,quantum,quantum_s,sim_time_s,efficiency_busy,efficiency_t1,err_time_pct,err_eff_pct,wall_s,sim_wall_s,speedup,speedup_sim,events,events_per_s,packet_hops,packet_hops_per_s,delta_cycles,image_equal,deterministic,t1_s"
 

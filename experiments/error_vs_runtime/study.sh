@@ -7,6 +7,7 @@
 #
 # Usage: study.sh [--build DIR] [--results DIR] [--doc FILE] [--img-dir DIR] [--reps N]
 #                 [--only quantum|pruning|report] [--quick]
+#                 [--backend local|ssh:HOSTFILE|slurm] [-j JOBS] [--slurm-args "..."] [--per-task K]
 #   --build DIR     folder with torusrt-sim and torusrt-render (default $TORUSRT_BUILD, else REPO/build)
 #   --results DIR   where the CSVs go (default experiments/error_vs_runtime/results)
 #   --doc FILE      the document (default docs/error-vs-runtime.md); --img-dir its plots (docs/img)
@@ -14,10 +15,16 @@
 #   --only STEP     run one step (report: regenerate the document from the existing CSVs)
 #   --quick         a smoke run: paper-image2 at 48x48 on 4x2x2 only, one repetition, a few
 #                   quanta; results into a temporary folder unless --results/--doc are given
+#   --backend ...   where the points run (experiments/backend; docs/cluster-runs.md): a point
+#                   is one scene and torus size of quantum.sh, or one scene of pruning.sh, its
+#                   CSV in RESULTS/points/ (done when it is there, so a re-run resumes; delete
+#                   the folder to recompute); -j JOBS points at once (default 1, since the
+#                   points measure wall times)
 # Takes about 5 minutes on 2 cores with the defaults.
 set -euo pipefail
 # shellcheck source=experiments/error_vs_runtime/common.sh
 source "$(dirname "$0")/common.sh"
+source "$(dirname "$0")/../lib.sh"
 
 RESULTS=$EVR_DIR/results
 DOC=$REPO/docs/error-vs-runtime.md
@@ -26,7 +33,9 @@ REPS=""
 ONLY=""
 QUICK=0
 ARGS_SEEN=()
+JOBS=1
 while [ $# -gt 0 ]; do
+  if backend_option "$@"; then shift "$SHIFT"; continue; fi
   case $1 in
     --build) BUILD=$2; shift 2 ;;
     --results) RESULTS=$2; ARGS_SEEN+=(results); shift 2 ;;
@@ -42,7 +51,7 @@ done
 case $ONLY in ""|quantum|pruning|report) ;; *) die "--only: quantum, pruning or report" ;; esac
 export TORUSRT_BUILD=$BUILD
 
-qargs=() pargs=()
+qargs=() pargs=() SCENES="paper-image1 paper-image2" IPS="4x2x2 4x4x4"
 command_line="experiments/error_vs_runtime/study.sh"
 if [ "$QUICK" = 1 ]; then
   if [[ " ${ARGS_SEEN[*]-} " != *" results "* ]]; then
@@ -52,18 +61,42 @@ if [ "$QUICK" = 1 ]; then
     [[ " ${ARGS_SEEN[*]-} " == *" doc "* ]] || DOC=$QTMP/doc/error-vs-runtime.md
     [[ " ${ARGS_SEEN[*]-} " == *" img "* ]] || IMG=$QTMP/doc/img
   fi
-  qargs=(--scenes paper-image2 --ips 4x2x2 --size 48x48 --quanta "0 1ms 100ms 1s 100s" --reps "${REPS:-1}")
-  pargs=(--scenes paper-image2 --ips 4x2x2 --size 48x48 --depths "0 2 4 8" --weights "1/512 1/64 1/8" --reps "${REPS:-1}")
+  SCENES=paper-image2 IPS=4x2x2
+  qargs=(--size 48x48 --quanta "0 1ms 100ms 1s 100s" --reps "${REPS:-1}")
+  pargs=(--size 48x48 --depths "0 2 4 8" --weights "1/512 1/64 1/8" --reps "${REPS:-1}")
   command_line+=" --quick"
 else
   [ -n "$REPS" ] && qargs=(--reps "$REPS") && pargs=(--reps "$REPS")
 fi
-mkdir -p "$RESULTS"
-if [ -z "$ONLY" ] || [ "$ONLY" = quantum ]; then
-  "$EVR_DIR/quantum.sh" --out "$RESULTS/quantum.csv" "${qargs[@]}"
-fi
-if [ -z "$ONLY" ] || [ "$ONLY" = pruning ]; then
-  "$EVR_DIR/pruning.sh" --out "$RESULTS/pruning.csv" "${pargs[@]}"
+mkdir -p "$RESULTS/points"
+RESULTS=$(cd "$RESULTS" && pwd)
+work=$RESULTS/points
+# point_line STEP CSV ARGS...: one line of a point list: done when CSV exists.
+point_line() { printf '%s\t%s\n' "$2" "$(printf '%q ' "$EVR_DIR/$1.sh" --build "$BUILD" --out "$2" "${@:3}")"; }
+: >"$work/quantum.list"
+: >"$work/pruning.list"
+for s in $SCENES; do
+  if [ -z "$ONLY" ] || [ "$ONLY" = quantum ]; then
+    for ips in $IPS; do point_line quantum "$work/quantum-$s-$ips.csv" "${qargs[@]}" --scenes "$s" --ips "$ips"; done >>"$work/quantum.list"
+  fi
+  if [ -z "$ONLY" ] || [ "$ONLY" = pruning ]; then
+    point_line pruning "$work/pruning-$s.csv" "${pargs[@]}" --scenes "$s" --ips "$IPS" >>"$work/pruning.list"
+  fi
+done
+# merge_csv LIST OUT: the CSVs of LIST's points, in its order, under one header.
+merge_csv() {
+  local csv _ first=1
+  [ -s "$1" ] || return 0
+  while IFS=$'\t' read -r csv _; do
+    if [ $first = 1 ]; then cat "$csv"; first=0; else tail -n +2 "$csv"; fi
+  done <"$1" >"$2.tmp"
+  mv -f "$2.tmp" "$2"
+}
+if [ -z "$ONLY" ] || [ "$ONLY" != report ]; then
+  cat "$work/quantum.list" "$work/pruning.list" >"$work/points.list"
+  run_points "$work/run" error-vs-runtime "$work/points.list"
+  merge_csv "$work/quantum.list" "$RESULTS/quantum.csv"
+  merge_csv "$work/pruning.list" "$RESULTS/pruning.csv"
 fi
 if [ -z "$ONLY" ] || [ "$ONLY" = report ]; then
   python3 "$REPO/experiments/report" error-vs-runtime --quantum "$RESULTS/quantum.csv" \

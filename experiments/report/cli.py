@@ -123,7 +123,7 @@ def main(argv):
     p.add_argument("--command", default="experiments/error_vs_runtime/study.sh",
                    help="the command line the page says produced it")
     p.set_defaults(run=error_vs_runtime)
-    p = sub.add_parser("sweep-plan", help="(experiments/sweep) write OUT/points.tsv, print one command per point")
+    p = sub.add_parser("sweep-plan", help="(experiments/sweep) write OUT/points.tsv, print the point list (JSON, tab, command)")
     p.add_argument("--out", required=True)
     p.add_argument("--sim", required=True)
     p.add_argument("--scene", required=True)

@@ -2,25 +2,44 @@
 
 The report's config.options holds the machine as torusrt-sim --dump-config writes it: the
 option names without dashes and their values as the options take them. A machine file is
-key="value" lines (the subset of TOML that --dump-config writes).
+key="value" lines (the subset of TOML that --dump-config writes), in --dump-config's order.
 """
+import tomllib
+
+# The keys in --dump-config's order (its option table, model/run/machine_options.cpp); the CLI
+# test machine_file_order checks that the two agree.
+DUMP_ORDER = ("ips", "map", "topology", "cells", "queue", "flow", "timing-profile", "timing", "timing-values",
+              "link-us", "packet-bytes", "link-bytes-per-us", "max-depth", "min-weight", "style", "quantum",
+              "cluster", "data", "arbiter", "dispatch", "map-file", "pilot-size")
 
 
 def from_report(report):
-    """The (key, value) pairs of a report's machine, in the report's order."""
+    """The (key, value) pairs of a report's machine, in --dump-config's order (keys it does not
+    know after them, in the report's order)."""
     options = report.get("config", {}).get("options")
     if not isinstance(options, dict):
         raise ValueError("the report has no config.options (written by torusrt-sim 0.1.0 and later)")
-    return [(str(k), str(v)) for k, v in options.items()]
+    rank = {key: i for i, key in enumerate(DUMP_ORDER)}
+    keys = sorted(options, key=lambda k: rank.get(k, len(DUMP_ORDER)))
+    return [(str(k), str(options[k])) for k in keys]
+
+
+def toml_string(value):
+    """A TOML basic string, escaped as --dump-config escapes it."""
+    out = []
+    for c in value:
+        if c in '"\\':
+            out.append("\\" + c)
+        elif ord(c) < 0x20 or ord(c) == 0x7f:
+            out.append("\\u%04X" % ord(c))
+        else:
+            out.append(c)
+    return '"' + "".join(out) + '"'
 
 
 def toml_text(pairs):
     """key="value" lines, as --dump-config writes them."""
-    lines = []
-    for key, value in pairs:
-        quote = "'" if '"' in value else '"'
-        lines.append("%s=%s%s%s\n" % (key, quote, value, quote))
-    return "".join(lines)
+    return "".join("%s=%s\n" % (key, toml_string(value)) for key, value in pairs)
 
 
 def without_comment(line):
@@ -43,13 +62,16 @@ def read_machine_file(text, name="machine file"):
         line = without_comment(line).strip()
         if not line:
             continue
-        key, sep, value = line.partition("=")
-        key, value = key.strip(), value.strip()
-        if not sep or len(value) < 2 or value[0] not in "\"'" or value[-1] != value[0]:
+        try:  # each line is a TOML document of one key (escapes as TOML has them)
+            pair = tomllib.loads(line)
+        except tomllib.TOMLDecodeError:
+            pair = None
+        if not pair or len(pair) != 1 or not isinstance(next(iter(pair.values())), str):
             raise ValueError("%s:%d: expected key=\"value\"" % (name, number))
+        key, value = next(iter(pair.items()))
         if key in values:
             raise ValueError("%s:%d: %s given twice" % (name, number, key))
-        values[key] = value[1:-1]
+        values[key] = value
     return values
 
 

@@ -30,8 +30,9 @@ def point_name(names, values):
 
 
 def plan(out, sim, scene, axes, fixed):
-    """Writes OUT/points.tsv (name and axis values per point) and prints one shell command line
-    per point; a point whose JSON exists is skipped by its command, so a re-run resumes."""
+    """Writes OUT/points.tsv (name and axis values per point) and prints the point list
+    (experiments/backend): the point's JSON, a tab and its shell command line; a point whose JSON
+    exists is skipped, so a re-run resumes."""
     names = [n for n, _ in axes]
     points = os.path.join(out, "points")
     os.makedirs(points, exist_ok=True)
@@ -46,8 +47,8 @@ def plan(out, sim, scene, axes, fixed):
             for n, v in zip(names, values):
                 args += ["--" + n, v]
             run = " ".join(shlex.quote(a) for a in args)
-            print("[ -s {j} ] || {{ {run} >{log} 2>&1 && mv {t} {j}; }}".format(
-                j=shlex.quote(base + ".json"), t=shlex.quote(base + ".json.tmp"), run=run,
+            print("{done}\t[ -s {j} ] || {{ {run} >{log} 2>&1 && mv {t} {j}; }}".format(
+                done=base + ".json", j=shlex.quote(base + ".json"), t=shlex.quote(base + ".json.tmp"), run=run,
                 log=shlex.quote(base + ".log")))
 
 

@@ -131,6 +131,7 @@ void elaborate(const SimConfig &config, const rt_scene *scene, const rt_grid *gr
                                                            m.fb.get()));
     if (!config.vcd_path.empty()) m.tracer = std::make_unique<Tracer>(config, *m.top);
     finish_elaboration();
+    check_budget_before_start(m.ledger, m.memory);
     m.elaboration_wall_s = wall_clock_s() - start;
 }
 
@@ -149,7 +150,7 @@ AnimationOutcome run_animation(const SimConfig &config, rt_scene *scene, const r
     size_t n = rt_camera_path_count(path);
     Machine m;
     m.memory = config.memory;
-    m.ledger.set_limit(rt_budget_packets_allowed(&m.memory, sizeof(rt_packet)));
+    m.ledger.set_limit(rt_budget_packets_allowed(&m.memory, PacketPool::bytes_per_packet()));
     Routing routing(config.ips, config.topology == Topology::torus);
     RemapContext ctx{config, scene, grid, routing};
     set_camera(scene, path, 0);

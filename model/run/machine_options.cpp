@@ -1,9 +1,16 @@
-// machine_options.cpp - the canonical text of each machine setting. A value read back by its
-// option gives the same setting bit for bit: numbers are written with 17 significant digits.
+// machine_options.cpp - the machine's option table. A value written back reads back as the same
+// setting bit for bit: numbers are written with 17 significant digits, times in microseconds
+// with their unit.
 #include "machine_options.h"
 
 #include <cstdio>
 #include <cstring>
+
+#include "option_parsing.h"
+#include "rt_grid.h"
+#include "timing_choice.h"
+#include "timing_limits.h"
+#include "user_error.h"
 
 namespace torusrt {
 
@@ -21,9 +28,35 @@ std::string dims(const std::array<int, 3> &d)
     return std::to_string(d[0]) + "x" + std::to_string(d[1]) + "x" + std::to_string(d[2]);
 }
 
-std::string size_text(const std::array<unsigned, 2> &s)
+double timing_value(const rt_timing &t, const char *key)
 {
-    return s[0] == 0 ? "" : std::to_string(s[0]) + "x" + std::to_string(s[1]);
+    for (size_t i = 0; i < rt_timing_key_count(); i++)
+        if (std::strcmp(rt_timing_key_name(i), key) == 0) return rt_timing_get(&t, i);
+    return 0;
+}
+
+void set_timing(const OptionSpec &spec, rt_timing &t, const char *key, double v)
+{
+    char msg[RT_MSG_LEN] = "";
+    if (rt_timing_set(&t, key, v, msg, sizeof msg) != RT_OK) throw UserError(spec.long_name() + ": " + msg, 2);
+}
+
+// block, cyclic, block-cyclic:B, cost, cost:K.
+rt_map_kind parse_mapping(const std::string &option, const std::string &text, int &block)
+{
+    size_t colon = text.find(':');
+    std::string name = text.substr(0, colon);
+    for (const auto &entry : kMappingNames) {
+        if (name != entry.name || entry.value == RT_MAP_FILE) continue;
+        bool parameter = entry.value == RT_MAP_BLOCK_CYCLIC || entry.value == RT_MAP_COST;
+        if (colon == std::string::npos && entry.value != RT_MAP_BLOCK_CYCLIC) return entry.value;
+        if (colon == std::string::npos || !parameter) break;
+        const bool cost = entry.value == RT_MAP_COST;
+        block = static_cast<int>(parse_integer(option + (cost ? " cost:K" : " block-cyclic:B"), text.substr(colon + 1),
+                                               1, cost ? 64 : 1 << 20));
+        return entry.value;
+    }
+    throw UserError(option + " '" + shown_text(text) + "': expected " + mapping_forms(), 2);
 }
 
 std::string map_text(const MachineConfig &m)
@@ -34,50 +67,267 @@ std::string map_text(const MachineConfig &m)
     return name;
 }
 
-double timing_value(const rt_timing &t, const char *key)
+// "KEY=VALUE,..." of every timing key.
+void read_timing_values(const OptionSpec &spec, const std::string &text, MachineConfig &m)
 {
+    size_t pos = 0;
+    while (pos < text.size()) {
+        size_t comma = text.find(',', pos);
+        std::string item = text.substr(pos, comma == std::string::npos ? std::string::npos : comma - pos);
+        size_t eq = item.find('=');
+        if (eq == std::string::npos)
+            throw UserError(spec.long_name() + " '" + shown_text(item) + "': expected KEY=VALUE", 2);
+        std::string key = item.substr(0, eq);
+        set_timing(spec, m.timing, key.c_str(),
+                   parse_real(spec.long_name() + " " + key, item.substr(eq + 1), 0, kMaxTimingUs));
+        if (comma == std::string::npos) break;
+        pos = comma + 1;
+    }
+    m.timing_file.clear();
+    m.timing_profile = m.timing_base + " + values";
+}
+
+std::string timing_values_text(const MachineConfig &m)
+{
+    std::string s;
     for (size_t i = 0; i < rt_timing_key_count(); i++)
-        if (std::strcmp(rt_timing_key_name(i), key) == 0) return rt_timing_get(&t, i);
-    return 0;
+        s += std::string(i ? "," : "") + rt_timing_key_name(i) + "=" + number(rt_timing_get(&m.timing, i));
+    return s;
+}
+
+template <typename E, size_t N>
+std::string choice_help(const char *what, const NamedValue<E> (&table)[N])
+{
+    return std::string(what) + ": " + names_of(table);
+}
+
+std::vector<MachineOption> build_table()
+{
+    using G = OptionGroup;
+    using K = ValueKind;
+    const double max_time_s = kMaxSimTimeS;
+    return {
+        {{"--ips", "DIMS", K::text, "1", 1, kMaxNodes, "",
+          "torus nodes: P, PXxPY or PXxPYxPZ, at most " + std::to_string(kMaxNodes), G::machine, "ips"},
+         [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
+             m.ips = parse_dims_1_to_3(s.long_name(), t, 1, kMaxNodes);
+         },
+         [](const MachineConfig &m) { return dims(m.ips); }},
+        {{"--map", "KIND", K::text, "cyclic", 0, 0, "", "cell mapping: " + mapping_forms(), G::machine, "map"},
+         [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
+             m.mapping = parse_mapping(s.long_name(), t, m.block);
+         },
+         map_text},
+        {{"--topology", "KIND", K::text, "torus", 0, 0, "",
+          choice_help("network", kTopologyNames) + " (mesh: no wrap-around)", G::machine, "topology"},
+         [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
+             m.topology = value_named(s.long_name(), t, kTopologyNames);
+         },
+         [](const MachineConfig &m) { return std::string(topology_name(m.topology)); }},
+        {common_option_spec("--cells"),
+         [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
+             m.cells = parse_triple(s.long_name(), t, 1, static_cast<int>(s.max));
+         },
+         [](const MachineConfig &m) { return dims(m.cells); }},
+        {{"--queue", "N", K::integer, "0", 0, double(kMaxQueue), "packets",
+          "capacity of every packet buffer (of each class), 0 = unbounded", G::machine, "queue"},
+         [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
+             m.queue_capacity = static_cast<unsigned>(parse_integer(s.long_name(), t, 0, kMaxQueue));
+         },
+         [](const MachineConfig &m) { return std::to_string(m.queue_capacity); }},
+        {{"--flow", "SCHEME", K::text, "classes", 0, 0, "",
+          choice_help("flow control", kFlowNames) + " (none: one class, finite buffers may deadlock, exit 3)",
+          G::machine, "flow"},
+         [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
+             m.flow = value_named(s.long_name(), t, kFlowNames);
+         },
+         [](const MachineConfig &m) { return std::string(flow_name(m.flow)); }},
+        {common_option_spec("--timing-profile"),
+         [](const OptionSpec &, const std::string &t, MachineConfig &m) {
+             m.timing_profile = choose_timing(t, "", &m.timing);
+             m.timing_base = t;
+         },
+         [](const MachineConfig &m) { return m.timing_base; }},
+        {common_option_spec("--timing"),
+         [](const OptionSpec &, const std::string &t, MachineConfig &m) {
+             if (t.empty()) return;
+             m.timing_profile = choose_timing(m.timing_base, t, &m.timing);
+             m.timing_file = t;
+             // The table as loaded is input: a value out of range is the file's fault.
+             std::string problem = timing_limit_problem(m.timing);
+             if (!problem.empty()) throw UserError(shown_text(t) + ": " + problem);
+         },
+         [](const MachineConfig &m) { return m.timing_file; }},
+        {{"--timing-values", "LIST", K::text, "", 0, 0, "",
+          "KEY=VALUE,... for every key of the timing table, in place of a profile's and a file's "
+          "(--dump-config --with-timing writes it)",
+          G::machine, "timing-values"},
+         [](const OptionSpec &s, const std::string &t, MachineConfig &m) { read_timing_values(s, t, m); },
+         nullptr},
+        {{"--link-us", "TIME", K::time, "50", 0, kMaxTimingUs, "us",
+          "time per packet on a link; a bare number is microseconds", G::machine, "link-us"},
+         [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
+             double us = parse_time(s.long_name(), t, -6, -6);
+             if (us > s.max)
+                 throw UserError(s.long_name() + " '" + shown_text(t) + "': must be at most " + number_text(s.max) +
+                                     " us (1 s)", 2);
+             set_timing(s, m.timing, "link", us);
+         },
+         [](const MachineConfig &m) { return number(timing_value(m.timing, "link")); }},
+        {{"--packet-bytes", "BYTES", K::real, "28", 0, kMaxTimingUs, "bytes", "packet size on the wire",
+          G::machine, "packet-bytes"},
+         [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
+             set_timing(s, m.timing, "packet_bytes", parse_real(s.long_name(), t, s.min, s.max));
+         },
+         [](const MachineConfig &m) { return number(timing_value(m.timing, "packet_bytes")); }},
+        {{"--link-bytes-per-us", "RATE", K::real, "0", 0, HUGE_VAL, "bytes/us",
+          "link bandwidth; when > 0 a packet takes packet-bytes / this (0: --link-us)", G::machine,
+          "link-bytes-per-us"},
+         [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
+             set_timing(s, m.timing, "link_bytes_per_us", parse_real(s.long_name(), t, s.min, s.max));
+         },
+         [](const MachineConfig &m) { return number(timing_value(m.timing, "link_bytes_per_us")); }},
+        {common_option_spec("--max-depth"),
+         [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
+             m.step.max_depth = static_cast<int>(parse_integer(s.long_name(), t, 0, static_cast<long long>(s.max)));
+         },
+         [](const MachineConfig &m) { return std::to_string(m.step.max_depth); }},
+        {common_option_spec("--min-weight"),
+         [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
+             m.step.min_weight = parse_fraction(s.long_name(), t);
+         },
+         [](const MachineConfig &m) { return number(m.step.min_weight); }},
+        {{"--style", "at|lt", K::text, "at", 0, 0, "",
+          choice_help("timing style", kStyleNames) + " (approximately or loosely timed; lt needs --quantum)",
+          G::machine, "style"},
+         [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
+             m.style = value_named(s.long_name(), t, kStyleNames);
+         },
+         [](const MachineConfig &m) { return std::string(style_name(m.style)); }},
+        {{"--quantum", "TIME", K::time, "0", 0, max_time_s, "s", "loosely-timed global quantum, e.g. 500us, 10ms",
+          G::machine, "quantum"},
+         [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
+             m.quantum_us = parse_time(s.long_name(), t, 0, -6);
+         },
+         [](const MachineConfig &m) { return number(m.quantum_us) + "us"; }},
+        {{"--cluster", "N", K::integer, "1", 1, kMaxCluster, "processors",
+          "processors per torus node on a shared bus", G::machine, "cluster"},
+         [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
+             m.cluster = static_cast<int>(parse_integer(s.long_name(), t, 1, kMaxCluster));
+         },
+         [](const MachineConfig &m) { return std::to_string(m.cluster); }},
+        {{"--data", "KIND", K::text, "replicated", 0, 0, "", choice_help("object data in a cluster", kDataModeNames),
+          G::machine, "data"},
+         [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
+             m.data = value_named(s.long_name(), t, kDataModeNames);
+         },
+         [](const MachineConfig &m) { return std::string(data_mode_name(m.data)); }},
+        {{"--arbiter", "KIND", K::text, "round-robin", 0, 0, "", choice_help("cluster bus arbiter", kArbiterNames),
+          G::machine, "arbiter"},
+         [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
+             m.arbiter = value_named(s.long_name(), t, kArbiterNames);
+         },
+         [](const MachineConfig &m) { return std::string(arbiter_name(m.arbiter)); }},
+        {{"--dispatch", "KIND", K::text, "round-robin", 0, 0, "",
+          choice_help("cluster packet dispatch", kDispatchNames), G::machine, "dispatch"},
+         [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
+             m.dispatch = value_named(s.long_name(), t, kDispatchNames);
+         },
+         [](const MachineConfig &m) { return std::string(dispatch_name(m.dispatch)); }},
+        {{"--map-file", "FILE", K::file, "", 0, 0, "", "explicit cell -> node table (torusrt-map 1 format)",
+          G::machine, "map-file"},
+         [](const OptionSpec &, const std::string &t, MachineConfig &m) {
+             if (t.empty()) return;
+             m.mapping = RT_MAP_FILE;
+             m.map_file = t;
+         },
+         [](const MachineConfig &m) { return m.map_file; }},
+        {{"--pilot-size", "WxH", K::text, "", 0, 0, "", "image size of the --map cost pilot run (default the image's)",
+          G::machine, "pilot-size"},
+         [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
+             if (!t.empty()) m.pilot_size = parse_size(s.long_name(), t);
+         },
+         [](const MachineConfig &m) {
+             return m.pilot_size[0] == 0 ? std::string()
+                                         : std::to_string(m.pilot_size[0]) + "x" + std::to_string(m.pilot_size[1]);
+         }},
+    };
+}
+
+// A TOML basic string: quotes, backslashes and control bytes escaped; bytes that are not
+// UTF-8 cannot be written at all (TOML files are UTF-8).
+std::string toml_string(const std::string &key, const std::string &v)
+{
+    std::string out = "\"";
+    for (size_t i = 0; i < v.size(); i++) {
+        unsigned char c = static_cast<unsigned char>(v[i]);
+        if (c == '"' || c == '\\') {
+            out += '\\';
+            out += static_cast<char>(c);
+        } else if (c < 0x20 || c == 0x7f) {
+            char esc[8];
+            std::snprintf(esc, sizeof esc, "\\u%04X", c);
+            out += esc;
+        } else if (c >= 0x80) {  // one UTF-8 sequence, checked
+            size_t n = c >= 0xf0 && c < 0xf5 ? 4 : c >= 0xe0 ? 3 : c >= 0xc2 && c < 0xe0 ? 2 : 0;
+            bool ok = n > 0 && i + n <= v.size();
+            for (size_t k = 1; ok && k < n; k++) ok = (static_cast<unsigned char>(v[i + k]) & 0xc0) == 0x80;
+            if (!ok)
+                throw UserError("--" + key + " '" + shown_text(v) +
+                                    "': a value that is not UTF-8 cannot be written to a machine file", 2);
+            out.append(v, i, n);
+            i += n - 1;
+        } else {
+            out += static_cast<char>(c);
+        }
+    }
+    return out + "\"";
 }
 
 }  // namespace
 
-OptionList machine_options(const MachineConfig &m)
+std::string mapping_forms() { return "block, cyclic, block-cyclic:B, cost or cost:K"; }
+
+const std::vector<MachineOption> &machine_option_table()
 {
-    OptionList o;
-    o.emplace_back("ips", dims(m.ips));
-    if (m.mapping != RT_MAP_FILE) o.emplace_back("map", map_text(m));
-    o.emplace_back("topology", topology_name(m.topology));
-    o.emplace_back("cells", dims(m.cells));
-    o.emplace_back("queue", std::to_string(m.queue_capacity));
-    o.emplace_back("flow", flow_name(m.flow));
-    o.emplace_back("timing", m.timing_file);
-    o.emplace_back("link-us", number(timing_value(m.timing, "link")));
-    o.emplace_back("packet-bytes", number(timing_value(m.timing, "packet_bytes")));
-    o.emplace_back("link-bytes-per-us", number(timing_value(m.timing, "link_bytes_per_us")));
-    o.emplace_back("max-depth", std::to_string(m.step.max_depth));
-    o.emplace_back("min-weight", number(m.step.min_weight));
-    o.emplace_back("style", style_name(m.style));
-    o.emplace_back("quantum", number(m.quantum_us));
-    o.emplace_back("cluster", std::to_string(m.cluster));
-    o.emplace_back("data", data_mode_name(m.data));
-    o.emplace_back("arbiter", arbiter_name(m.arbiter));
-    o.emplace_back("dispatch", dispatch_name(m.dispatch));
-    o.emplace_back("timing-profile", m.timing_base);
-    o.emplace_back("map-file", m.map_file);
-    o.emplace_back("pilot-size", size_text(m.pilot_size));
-    return o;
+    static const std::vector<MachineOption> table = build_table();
+    return table;
 }
 
-std::string machine_options_toml(const MachineConfig &m)
+MachineConfig machine_from_texts(const std::map<std::string, std::string> &given)
+{
+    MachineConfig m;
+    m.step = rt_step_params_default();
+    m.timing_base = rt_timing_default_profile();
+    m.timing_profile = choose_timing(m.timing_base, "", &m.timing);
+    if (given.count("--map") && given.count("--map-file") && !given.at("--map-file").empty())
+        throw UserError("--map-file: give either --map or --map-file, not both", 2);
+    for (const MachineOption &o : machine_option_table()) {
+        auto it = given.find(o.spec.long_name());
+        if (it != given.end()) o.read(o.spec, it->second, m);
+    }
+    return m;
+}
+
+OptionList machine_options(const MachineConfig &m, bool with_timing)
+{
+    OptionList list;
+    for (const MachineOption &o : machine_option_table()) {
+        const std::string &key = o.spec.key;
+        if (key == "map" && m.mapping == RT_MAP_FILE) continue;
+        if (key == "timing-values") {
+            if (with_timing) list.emplace_back(key, timing_values_text(m));
+            continue;
+        }
+        list.emplace_back(key, key == "timing" && with_timing ? std::string() : o.write(m));
+    }
+    return list;
+}
+
+std::string machine_options_toml(const MachineConfig &m, bool with_timing)
 {
     std::string s;
-    for (const auto &kv : machine_options(m)) {
-        // A literal string when the value holds a double quote (a path could).
-        char quote = kv.second.find('"') == std::string::npos ? '"' : '\'';
-        s += kv.first + "=" + quote + kv.second + quote + "\n";
-    }
+    for (const auto &kv : machine_options(m, with_timing)) s += kv.first + "=" + toml_string(kv.first, kv.second) + "\n";
     return s;
 }
 

@@ -1,26 +1,53 @@
-// machine_options.h - a machine written back as the options that rebuild it: the keys are the
-// option names without dashes, the values as an option takes them. --dump-config prints them
-// as a TOML file for --config; the JSON report carries them as config.options.
+// machine_options.h - the machine's option table: every option a machine file may hold,
+// declared once with its spec (name, kind, default, range, unit, help, group, key), how its text
+// sets the machine and how the machine writes it back. The command line (torusrt-sim) registers
+// these, --config files feed them, --dump-config and the JSON report's config.options write
+// them, in the table's order. Adding a machine option is one entry here plus its field in
+// MachineConfig (sim_config.h) and its use. No CLI11 here.
 #pragma once
 
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "option_spec.h"
 #include "sim_config.h"
 
 namespace torusrt {
 
+struct MachineOption {
+    OptionSpec spec;
+    // Sets the machine from the option's text (UserError naming the option, exit 2).
+    void (*read)(const OptionSpec &spec, const std::string &text, MachineConfig &machine);
+    // The text that reads back to the same setting.
+    std::string (*write)(const MachineConfig &machine);
+};
+
+// Every machine option, in --dump-config's order.
+const std::vector<MachineOption> &machine_option_table();
+
+// The machine that the options given (long name -> text, from the command line or a machine
+// file) describe on top of the defaults, read in the table's order (the timing profile before
+// the timing file, the file before single timing keys). Ranges of single values are checked
+// here; combinations are the validator's (validate_machine).
+MachineConfig machine_from_texts(const std::map<std::string, std::string> &given);
+
 using OptionList = std::vector<std::pair<std::string, std::string>>;
 
-// Every machine option, in the order of --help; with --map-file there is no "map" key.
-OptionList machine_options(const MachineConfig &machine);
+// Every machine option as key and text; with --map-file there is no "map" key. With
+// `with_timing`, "timing-values" holds every value of the timing table and "timing" is empty, so
+// that the machine needs no timing file.
+OptionList machine_options(const MachineConfig &machine, bool with_timing = false);
 
-// key="value" lines (TOML, as CLI11 reads them back).
-std::string machine_options_toml(const MachineConfig &machine);
+// key = "value" lines, TOML basic strings with every byte a path may hold escaped.
+std::string machine_options_toml(const MachineConfig &machine, bool with_timing = false);
 
 // {"key": "value", ...}.
 nlohmann::json machine_options_json(const MachineConfig &machine);
+
+// The names a --map value may take, for the help and messages: "block, cyclic, ...".
+std::string mapping_forms();
 
 }  // namespace torusrt

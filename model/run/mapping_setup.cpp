@@ -5,7 +5,6 @@
 #include <vector>
 
 #include "cost_mapping.h"
-#include "option_parsing.h"
 #include "output_files.h"
 #include "rt_cost_map.h"
 #include "rt_load_image.h"
@@ -14,29 +13,6 @@
 #include "user_error.h"
 
 namespace torusrt {
-
-void add_mapping_options(CLI::App &app, MappingOptions &o)
-{
-    app.add_option("--map-file", o.map_file, "explicit cell -> node table (torusrt-map 1 format)")->type_name("FILE");
-    app.add_option("--write-map", o.write_map, "write the cell -> node table this run used")->type_name("FILE")
-        ->configurable(false);  // an output: not from a --config file
-    app.add_option("--pilot-size", o.pilot_size, "image size WxH of the --map cost pilot run")->type_name("WxH");
-    app.add_option("--load-map", o.load_map, "write the cells' work and owners as a PNG")->type_name("FILE")
-        ->configurable(false);
-}
-
-void apply_mapping_options(SimConfig &config, const MappingOptions &o, bool map_given)
-{
-    if (!o.map_file.empty()) {
-        if (map_given) throw UserError("--map-file: give either --map or --map-file, not both", 2);
-        config.mapping = RT_MAP_FILE;
-        config.map_file = o.map_file;
-    }
-    config.write_map = o.write_map;
-    if (!o.write_map.empty()) check_output_folder("--write-map", o.write_map);
-    if (!o.load_map.empty()) check_output_folder("--load-map", o.load_map);
-    if (!o.pilot_size.empty()) config.pilot_size = parse_size("--pilot-size", o.pilot_size);
-}
 
 namespace {
 

@@ -4,7 +4,6 @@
 
 #include <optional>
 
-#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -14,19 +13,6 @@
 #include "sim_config.h"
 
 namespace torusrt {
-
-// The mapping options as typed (their own block on the command line).
-struct MappingOptions {
-    std::string map_file, write_map, pilot_size, load_map;
-};
-
-// Registers --map-file and --pilot-size (machine options) and --write-map and --load-map (the
-// run's outputs, never from a machine file).
-void add_mapping_options(CLI::App &app, MappingOptions &options);
-
-// Checks the options against --map (and the output folders) and stores them in `config`
-// (UserError, exit 2); validate() checks the result.
-void apply_mapping_options(SimConfig &config, const MappingOptions &options, bool map_given);
 
 // Fills config.owner_table for the loaded scene and returns what the report says about it
 // (JSON `mapping`: kind, cells per node, pilot and mapper costs for `cost`).

@@ -36,7 +36,7 @@ bool run_finished(const SimConfig &config, TorusSystem &top, const PacketLedger 
 {
     char msg[RT_MSG_LEN] = "";
     if (ledger.over_limit()) {
-        rt_budget_packets_exceeded(&memory, ledger.outstanding_over_limit(), sizeof(rt_packet), msg,
+        rt_budget_packets_exceeded(&memory, ledger.outstanding_over_limit(), PacketPool::bytes_per_packet(), msg,
                                    sizeof msg);
         throw UserError(msg); // the tracer's destructor removes the partial trace
     }
@@ -48,6 +48,14 @@ bool run_finished(const SimConfig &config, TorusSystem &top, const PacketLedger 
         throw UserError(text);
     }
     return finished;
+}
+
+void check_budget_before_start(const PacketLedger &ledger, rt_budget &memory)
+{
+    if (!ledger.over_limit()) return;  // sc_stop was called in elaboration: sc_start would fail (E546)
+    char msg[RT_MSG_LEN] = "";
+    rt_budget_packets_exceeded(&memory, ledger.outstanding_over_limit(), sizeof(rt_packet), msg, sizeof msg);
+    throw UserError(std::string("before the simulation started: ") + msg);
 }
 
 void check_conservation(const PacketLedger &ledger)
@@ -107,7 +115,7 @@ ModelOutcome run_model(const SimConfig &config, const rt_scene *scene, const rt_
 
     PacketLedger ledger;
     rt_budget memory = config.memory;
-    ledger.set_limit(rt_budget_packets_allowed(&memory, sizeof(rt_packet)));
+    ledger.set_limit(rt_budget_packets_allowed(&memory, PacketPool::bytes_per_packet()));
     Progress progress("torusrt-sim", config.quiet);
     ledger.set_progress(show_progress, &progress);
     if (config.style == TimingStyle::lt)
@@ -119,6 +127,7 @@ ModelOutcome run_model(const SimConfig &config, const rt_scene *scene, const rt_
     if (!config.vcd_path.empty()) tracer = std::make_unique<Tracer>(config, top);
 
     finish_elaboration();
+    check_budget_before_start(ledger, memory);
     double sim_start = wall_clock_s();
     // Stopping at the limit keeps SystemC's 64-bit time from wrapping: every single delay is
     // bounded (check_timing_limits), so none can jump from below the limit past the maximum.

@@ -45,6 +45,10 @@ bool run_finished(const SimConfig &config, TorusSystem &top, const PacketLedger 
 // before sc_start: completes SystemC's elaboration (binding, end_of_elaboration, start_of_simulation,
 // the processes made ready to run), so that sc_start's wall time is the simulation's alone;
 void finish_elaboration();
+
+// Throws the memory budget's UserError when the packets made while elaborating already exceed
+// it, before sc_start is called.
+void check_budget_before_start(const PacketLedger &ledger, rt_budget &memory);
 // UserError unless created = consumed.
 void check_conservation(const PacketLedger &ledger);
 

@@ -166,41 +166,7 @@ void adaptive_choice(const RemapContext &ctx, const std::vector<int32_t> &curren
     d.owner = std::move(candidates[best].owner);
 }
 
-// `text` as a number in [0, 1], or false.
-bool unit_fraction(const std::string &text, double &f)
-{
-    char *end = nullptr;
-    f = std::strtod(text.c_str(), &end);
-    return !text.empty() && *end == '\0' && f >= 0 && f <= 1;
-}
-
 }  // namespace
-
-double parse_remap_pilot(const std::string &text)
-{
-    double f;
-    if (!unit_fraction(text, f))
-        throw UserError("--remap-pilot '" + text + "': expected a fraction of the pixels in [0, 1] (0: no preview)", 2);
-    return f;
-}
-
-size_t parse_remap_window(const std::string &text)
-{
-    bool digits = !text.empty() && text.size() <= 7 && text.find_first_not_of("0123456789") == std::string::npos;
-    unsigned long n = digits ? std::strtoul(text.c_str(), nullptr, 10) : 0;
-    if (n < 1 || n > max_remap_window)
-        throw UserError("--remap-window '" + text + "': expected a whole number of frames in [1, " +
-                            std::to_string(max_remap_window) + "]", 2);
-    return static_cast<size_t>(n);
-}
-
-double parse_remap_margin(const std::string &text)
-{
-    double f;
-    if (!unit_fraction(text, f))
-        throw UserError("--remap-margin '" + text + "': expected a fraction in [0, 1] (0: the least mean ratio alone)", 2);
-    return f;
-}
 
 RemapPolicy parse_remap_policy(const std::string &text)
 {

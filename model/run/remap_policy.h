@@ -125,24 +125,15 @@ struct RemapContext {
 // --remap-pilot's default (chosen by the animation study, docs/animation.md).
 constexpr double default_remap_pilot = 0;
 
-// --remap-pilot: a fraction in [0, 1]; UserError (exit 2) otherwise.
-double parse_remap_pilot(const std::string &text);
-
 // --remap-window's default: adaptive judges its guesses over this many past frames (chosen by
 // the animation study, docs/animation.md).
 constexpr size_t default_remap_window = 1;
 constexpr size_t max_remap_window = 1000000;
 
-// --remap-window: an integer in [1, 1000000]; UserError (exit 2) otherwise.
-size_t parse_remap_window(const std::string &text);
-
 // --remap-margin's default: another guess replaces `frame` when its back-test is better at all
 // (0). A margin such as 0.03 suits long animations that turn little per frame, where one frame's
 // back-test is mostly noise, and costs up to 3 % at 11 degrees a frame (docs/animation.md).
 constexpr double default_remap_margin = 0;
-
-// --remap-margin: a fraction in [0, 1]; UserError (exit 2) otherwise.
-double parse_remap_margin(const std::string &text);
 
 // Adaptive's settings (--remap-pilot, --remap-window, --remap-margin).
 struct AdaptiveSettings {

@@ -1,63 +1,62 @@
 // animation_options.cpp - parsing and checking --frames, --orbit and --camera-path.
 #include "animation_options.h"
 
-#include <cerrno>
 #include <cmath>
-#include <cstdlib>
 
+#include "option_parsing.h"
 #include "user_error.h"
 
 namespace torusrt {
 
 namespace {
 
-double parse_degrees(const std::string &text)
-{
-    const char *s = text.c_str();
-    char *end = nullptr;
-    errno = 0;
-    double v = std::strtod(s, &end);
-    bool plain = text.find_first_not_of("0123456789+-.eE") == std::string::npos;
-    if (!plain || end == s || *end != '\0' || !std::isfinite(v))
-        throw UserError("--orbit '" + text + "': expected a finite number of degrees", 2);
-    return v;
-}
+double parse_degrees(const std::string &text) { return parse_real("--orbit", text, -HUGE_VAL, HUGE_VAL); }
 
 }  // namespace
 
-void add_animation_options(CLI::App &app, AnimationOptions &opt)
+std::vector<OptionSpec> animation_option_specs()
 {
-    app.add_option("--frames", opt.frames_text, "frames of an animation (needs --orbit; 1 to " +
-                                               std::to_string(RT_CAMERA_PATH_MAX_FRAMES) + ")")
-        ->type_name("N")
-        ->configurable(false);  // the frames are the run's workload, never a machine file's
-    app.add_option("--orbit", opt.orbit,
-                   "turn the eye about 'at' around 'up' by DEG degrees over the frames")
-        ->type_name("DEG")
-        ->configurable(false);
-    app.add_option("--camera-path", opt.camera_path,
-                   "camera path file: one 'from at up angle' line (10 numbers) per frame")
-        ->type_name("FILE")
-        ->configurable(false);
+    using G = OptionGroup;
+    using K = ValueKind;
+    return {
+        {"--frames", "N", K::integer, "", 1, RT_CAMERA_PATH_MAX_FRAMES, "",
+         "frames of an animation (with --orbit; 1 to " + std::to_string(RT_CAMERA_PATH_MAX_FRAMES) + ")",
+         G::animation, ""},
+        {"--orbit", "DEG", K::real, "", 0, 0, "", "turn the eye about 'at' around 'up' by DEG degrees over the frames",
+         G::animation, ""},
+        {"--camera-path", "FILE", K::file, "", 0, 0, "",
+         "camera path file: one 'from at up angle' line (10 numbers) per frame", G::animation, ""},
+    };
+}
+
+AnimationOptions animation_options_given(const std::map<std::string, std::string> &given)
+{
+    AnimationOptions opt;
+    auto take = [&given](const char *name, std::string &field) {
+        auto it = given.find(name);
+        if (it != given.end()) field = it->second;
+    };
+    take("--frames", opt.frames_text);
+    take("--orbit", opt.orbit);
+    take("--camera-path", opt.camera_path);
+    return opt;
 }
 
 void check_animation_options(AnimationOptions &opt)
 {
     const long long max = RT_CAMERA_PATH_MAX_FRAMES;
     opt.frames = -1;
-    if (!opt.frames_text.empty()) {
-        const std::string &t = opt.frames_text;
-        bool digits = t.size() <= 7 && t.find_first_not_of("0123456789") == std::string::npos;
-        long long n = digits ? std::stoll(t) : 0;
-        if (!digits || n < 1 || n > max)
-            throw UserError("--frames " + t + ": must be a whole number from 1 to " + std::to_string(max), 2);
-        opt.frames = n;
-    }
+    if (!opt.frames_text.empty()) opt.frames = parse_integer("--frames", opt.frames_text, 1, max);
     if (!opt.orbit.empty() && !opt.camera_path.empty())
         throw UserError("--orbit and --camera-path: give one of them, not both", 2);
     if (!opt.orbit.empty()) {
-        parse_degrees(opt.orbit);
-        if (opt.frames < 0) throw UserError("--orbit " + opt.orbit + ": needs --frames N", 2);
+        double degrees = parse_degrees(opt.orbit);
+        if (opt.frames < 0) throw UserError("--orbit " + shown_text(opt.orbit) + ": needs --frames N", 2);
+        // Frame k turns by k x DEG / N degrees: the product must stay finite for the last frame.
+        if (!std::isfinite(static_cast<double>(opt.frames - 1) * degrees))
+            throw UserError("--orbit " + shown_text(opt.orbit) + ": the last frame's angle (" +
+                                std::to_string(opt.frames - 1) + " x DEG / " + std::to_string(opt.frames) +
+                                ") would not be a finite number", 2);
     }
     if (opt.frames >= 0 && opt.orbit.empty() && opt.camera_path.empty())
         throw UserError("--frames " + std::to_string(opt.frames) +
@@ -76,7 +75,7 @@ CameraPathPtr read_camera_path_file(const AnimationOptions &opt)
     CameraPathPtr path(raw);
     size_t count = rt_camera_path_count(raw);
     if (opt.frames >= 0 && static_cast<size_t>(opt.frames) != count)
-        throw UserError("--frames " + std::to_string(opt.frames) + ": " + opt.camera_path +
+        throw UserError("--frames " + std::to_string(opt.frames) + ": " + shown_text(opt.camera_path) +
                             " holds " + std::to_string(count) + " camera lines (one per frame)",
                         2);
     return path;

@@ -2,12 +2,13 @@
 // --camera-path, shared by the executables.
 #pragma once
 
-#include <CLI/CLI.hpp>
+#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include "rt_camera_path.h"
+#include "option_spec.h"
 #include "rt_scene.h"
 #include "stats_json.h" // camera_pose_json
 
@@ -25,10 +26,13 @@ struct AnimationOptions {
     bool animated() const { return !frames_text.empty() || !orbit.empty() || !camera_path.empty(); }
 };
 
-void add_animation_options(CLI::App &app, AnimationOptions &opt);
+// --frames, --orbit and --camera-path (the run's workload, never a machine file's).
+std::vector<OptionSpec> animation_option_specs();
+// Their texts from the options given (given_options()).
+AnimationOptions animation_options_given(const std::map<std::string, std::string> &given);
 // Checks the combination before any file is read; throws UserError (exit 2) naming the option.
 // --frames N needs --orbit (and --orbit needs --frames); --camera-path gives the frame count
-// itself, and --frames beside it must agree.
+// itself, and --frames beside it must agree. Every frame's orbit angle must be finite.
 void check_animation_options(AnimationOptions &opt);
 // The --camera-path file's poses, read before the scene so that every frame's output can be
 // checked first (nullptr for --orbit). A bad file is exit 2 with FILE:LINE, and so is --frames

@@ -4,6 +4,9 @@
 #include <cstdio>
 #include <string>
 
+#include "machine_file_reader.h"
+#include "option_parsing.h"
+#include "option_registration.h"
 #include "user_error.h"
 
 namespace torusrt {
@@ -29,12 +32,46 @@ std::string empty_value_option(const CLI::App &app, int argc, char **argv)
     return "";
 }
 
+// A message as printed: control bytes escaped as \xNN (the user's bytes in it are quoted with
+// shown_text already; this keeps any that were not from reaching the terminal raw); its line
+// breaks stay.
+std::string printable(const std::string &message)
+{
+    std::string out;
+    for (char ch : message) {
+        unsigned char c = static_cast<unsigned char>(ch);
+        if ((c < 0x20 && c != '\n') || c == 0x7f) {
+            char esc[8];
+            std::snprintf(esc, sizeof esc, "\\x%02x", c);
+            out += esc;
+        } else {
+            out += ch;
+        }
+    }
+    return out;
+}
+
+// CLI11's words for an option it does not know, with the nearest name as a hint.
+std::string with_suggestion(const CLI::App &app, const CLI::ParseError &e, const std::string &what)
+{
+    if (dynamic_cast<const CLI::ExtrasError *>(&e) == nullptr) return what;
+    std::string hints;
+    for (const std::string &extra : app.remaining()) {
+        std::string name = extra.substr(0, extra.find('='));
+        std::string hint = name.rfind("-", 0) == 0 ? option_suggestion(app, name) : "";
+        if (!hint.empty()) hints += "\n" + name + ": " + hint;
+    }
+    return what + hints;
+}
+
 }  // namespace
 
 int run_cli(const char *program, CLI::App &app, int argc, char **argv, const std::function<int()> &body,
             const char *extra_exit_statuses)
 {
-    app.set_version_flag("--version", std::string(program) + " " + TORUSRT_VERSION);
+    app.set_version_flag("--version", std::string(program) + " " + TORUSRT_VERSION, "print the version and exit")
+        ->group(group_title(OptionGroup::run));
+    app.set_help_flag("-h,--help", "print this help and exit")->group(group_title(OptionGroup::run));  // listed last
     app.footer(std::string("Exit status:\n  0 success\n  1 bad input file or failed run (a write error included)\n"
                            "  2 bad command line\n") + extra_exit_statuses);
     std::string empty = empty_value_option(app, argc, argv);
@@ -46,23 +83,24 @@ int run_cli(const char *program, CLI::App &app, int argc, char **argv, const std
         app.parse(argc, argv);
     } catch (const CLI::ParseError &e) {
         if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
-        std::string what = e.what();
+        std::string what = with_suggestion(app, e, e.what());
         const CLI::Option *config = app.get_config_ptr();  // name the --config file its errors come from
         if (dynamic_cast<const CLI::ConfigError *>(&e) && config != nullptr && config->count() > 0) {
             const std::string unknown = "INI was not able to parse ";  // CLI11's words for an unknown key
             if (what.rfind(unknown, 0) == 0) what = what.substr(unknown.size()) + ": not a machine option";
-            what = config->as<std::string>() + ": " + what;
+            bool at_line = dynamic_cast<const MachineFileError *>(&e) != nullptr;  // "LINE: ..."
+            what = shown_text(config->as<std::string>()) + (at_line ? ":" : ": ") + what;
         }
-        std::fprintf(stderr, "%s: %s\nRun with --help for more information.\n", program, what.c_str());
+        std::fprintf(stderr, "%s: %s\nRun with --help for more information.\n", program, printable(what).c_str());
         return 2;
     }
     try {
         return body();
     } catch (const UserError &e) {
-        std::fprintf(stderr, "%s: %s\n", program, e.what());
+        std::fprintf(stderr, "%s: %s\n", program, printable(e.what()).c_str());
         return e.exit_code();
     } catch (const std::exception &e) {
-        std::fprintf(stderr, "%s: %s\n", program, e.what());
+        std::fprintf(stderr, "%s: %s\n", program, printable(e.what()).c_str());
         return 1;
     }
 }

@@ -1,11 +1,13 @@
 // common_options.h - the options both executables have (scene, -o, --stats, --cells, --size,
-// --max-depth, --min-weight, --memory-budget, --timing, --timing-profile, -q), declared once and
-// parsed once. --version and the exit statuses are cli_main's; the frames are animation_options'.
+// --max-depth, --min-weight, --memory-budget, --timing, --timing-profile, -q), declared once
+// (common_option_specs, option_spec.h) and parsed once. --version and the exit statuses are
+// cli_main's; the frames are animation_options'.
 #pragma once
 
 #include <CLI/CLI.hpp>
 #include <array>
 #include <cstdint>
+#include <map>
 #include <string>
 
 #include "rt_step.h"
@@ -13,19 +15,22 @@
 
 namespace torusrt {
 
-// As typed.
+// As typed (the defaults as the help states them).
 struct CommonOptions {
-    std::string scene, output, stats, cells = "24", size, min_weight = "1/512", memory_budget = "4G";
+    std::string scene, output, stats, cells = "24", size, max_depth = "8", min_weight = "1/512",
+                                      memory_budget = "4G";
     std::string timing_file, timing_profile;
-    int max_depth = 8;
     bool quiet = false;
 };
 
-// Registers the options; `output_help` describes -o. The scene, the outputs, the size, the
-// memory budget and -q belong to a run, never to a machine file (configurable(false)).
-void add_common_options(CLI::App &app, CommonOptions &options, const std::string &output_help);
+// Registers the shared options whose long names `only` lists (all when empty), from their
+// specs; `output_help` describes -o.
+void add_common_options(CLI::App &app, const std::string &output_help, const std::vector<std::string> &only = {});
 
-// "scene is required" / "--output is required" (UserError, exit 2): checked after parsing, so
+// The shared options' texts from the options given (given_options()).
+CommonOptions common_options_given(const std::map<std::string, std::string> &given);
+
+// "SCENE is required" / "-o FILE is required" (UserError, exit 2): checked after parsing, so
 // that a command can go without them (torusrt-sim --dump-config).
 void require_scene_and_output(const CommonOptions &options);
 

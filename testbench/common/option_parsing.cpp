@@ -1,143 +1,243 @@
-// option_parsing.cpp - parsers for shared option values; every error names its option.
+// option_parsing.cpp - the one parser of option and machine-file values; every error names its
+// option and quotes the value escaped.
 #include "option_parsing.h"
 
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
-#include <vector>
 
 #include "rt_budget.h"
+#include "rt_text.h"
 #include "user_error.h"
 
 namespace torusrt {
 
 namespace {
+
+constexpr size_t kShownChars = 200;
+
 [[noreturn]] void bad(const std::string &option, const std::string &text, const std::string &why)
 {
-    throw UserError(option + " '" + text + "': " + why, 2);
+    throw UserError(option + " '" + shown_text(text) + "': " + why, 2);
 }
 
-bool parse_int(const std::string &s, long &out)
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
+// Why `text` is not a decimal number ("" if it may be one): octal-looking and hex forms are
+// named, as old scripts may hold them.
+std::string not_decimal(const std::string &text)
 {
-    if (s.empty() || s.size() > 9) return false;
-    for (char c : s)
-        if (c < '0' || c > '9') return false;
-    out = std::strtol(s.c_str(), nullptr, 10);
-    return true;
+    size_t i = text[0] == '-' ? 1 : 0;
+    if (text.size() > i + 1 && text[i] == '0' && (text[i + 1] == 'x' || text[i + 1] == 'X'))
+        return "decimal only (hexadecimal is not accepted)";
+    if (text.size() > i + 1 && text[i] == '0' && is_digit(text[i + 1]))
+        return "decimal only (no leading zero: '010' could be read as octal 8)";
+    return "";
 }
 
-std::vector<std::string> split_x(const std::string &text)
+// [-]DIGITS[.DIGITS][(e|E)[+-]DIGITS]
+bool real_syntax(const std::string &s)
+{
+    size_t i = 0, n = s.size();
+    if (i < n && s[i] == '-') i++;
+    size_t start = i;
+    while (i < n && is_digit(s[i])) i++;
+    if (i == start) return false;
+    if (i < n && s[i] == '.') {
+        size_t frac = ++i;
+        while (i < n && is_digit(s[i])) i++;
+        if (i == frac) return false;
+    }
+    if (i < n && (s[i] == 'e' || s[i] == 'E')) {
+        i++;
+        if (i < n && (s[i] == '+' || s[i] == '-')) i++;
+        size_t exp = i;
+        while (i < n && is_digit(s[i])) i++;
+        if (i == exp) return false;
+    }
+    return i == n;
+}
+
+double read_real(const std::string &option, const std::string &text)
+{
+    std::string why = text.empty() ? "" : not_decimal(text);
+    if (!why.empty()) bad(option, text, why);
+    if (!real_syntax(text)) bad(option, text, "expected a decimal number such as 2, 0.5 or 1e-3");
+    errno = 0;
+    double v = std::strtod(text.c_str(), nullptr);
+    if (!std::isfinite(v)) bad(option, text, "too large");
+    return v;
+}
+
+std::vector<std::string> split(const std::string &text, char sep)
 {
     std::vector<std::string> parts;
-    std::string cur;
-    for (char c : text) {
-        if (c == 'x' || c == 'X') {
-            parts.push_back(cur);
-            cur.clear();
-        } else {
-            cur += c;
-        }
+    size_t pos = 0;
+    for (;;) {
+        size_t next = text.find(sep, pos);
+        parts.push_back(text.substr(pos, next == std::string::npos ? std::string::npos : next - pos));
+        if (next == std::string::npos) return parts;
+        pos = next + 1;
     }
-    parts.push_back(cur);
-    return parts;
 }
 
-bool parse_double(const std::string &s, double &out)
-{
-    if (s.empty()) return false;
-    char *end = nullptr;
-    errno = 0;
-    out = std::strtod(s.c_str(), &end);
-    return end && *end == '\0' && errno == 0 && std::isfinite(out) &&
-           s.find_first_of("xXpPnN") == std::string::npos;
-}
+std::string range_text(double lo, double hi) { return number_text(lo) + " to " + number_text(hi); }
+
 }  // namespace
 
-std::array<int, 3> parse_dims_1_to_3(const std::string &option, const std::string &text,
-                                     int min_value, int max_value)
+std::string shown_text(const std::string &bytes)
 {
-    auto parts = split_x(text);
+    // Each byte takes at most 4 characters escaped; the buffer ends the text with "..." at 200.
+    std::string buf(kShownChars + 1, '\0');
+    rt_escape_bytes(bytes.data(), bytes.size(), 0, &buf[0], buf.size());
+    buf.resize(std::char_traits<char>::length(buf.c_str()));
+    return buf;
+}
+
+std::string number_text(double v)
+{
+    char buf[40];
+    for (int digits = 1; digits <= 17; digits++) {
+        std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+        if (std::strtod(buf, nullptr) == v) break;
+    }
+    // Integral values below 2^53 are written whole: 1000000, not 1e+06.
+    if (std::isfinite(v) && std::fabs(v) < 9007199254740992.0 && v == std::floor(v))
+        std::snprintf(buf, sizeof buf, "%.0f", v);
+    return buf;
+}
+
+long long parse_integer(const std::string &option, const std::string &text, long long min_value, long long max_value)
+{
+    if (text.empty()) bad(option, text, "expected a whole number");
+    std::string why = not_decimal(text);
+    if (!why.empty()) bad(option, text, why);
+    for (char c : text)
+        if (!is_digit(c)) bad(option, text, "expected a whole decimal number (digits only)");
+    if (text.size() > 18) bad(option, text, "must be " + std::to_string(min_value) + " to " + std::to_string(max_value));
+    long long v = std::strtoll(text.c_str(), nullptr, 10);
+    if (v < min_value || v > max_value)
+        bad(option, text, "must be " + std::to_string(min_value) + " to " + std::to_string(max_value));
+    return v;
+}
+
+double parse_real(const std::string &option, const std::string &text, double min_value, double max_value)
+{
+    double v = read_real(option, text);
+    if (v < min_value && min_value == 0) bad(option, text, "must not be negative");
+    if (v < min_value || v > max_value) {
+        if (!std::isfinite(max_value)) bad(option, text, "must be at least " + number_text(min_value));
+        bad(option, text, "must be " + range_text(min_value, max_value));
+    }
+    return v;
+}
+
+namespace {
+
+struct TimeUnitSuffix {
+    const char *suffix;
+    int exponent;  // power of ten of a second
+};
+constexpr TimeUnitSuffix kTimeUnits[] = {{"ns", -9}, {"us", -6}, {"ms", -3}, {"s", 0}};
+
+const TimeUnitSuffix *time_unit_of(const std::string &text)
+{
+    for (const auto &u : kTimeUnits) {
+        std::string suf = u.suffix;
+        if (text.size() > suf.size() && text.compare(text.size() - suf.size(), suf.size(), suf) == 0) return &u;
+    }
+    return nullptr;
+}
+
+}  // namespace
+
+bool has_time_unit(const std::string &text) { return time_unit_of(text) != nullptr; }
+
+double parse_time(const std::string &option, const std::string &text, int bare_exponent, int result_exponent)
+{
+    const TimeUnitSuffix *unit = time_unit_of(text);
+    std::string num = unit ? text.substr(0, text.size() - std::char_traits<char>::length(unit->suffix)) : text;
+    int shift = (unit ? unit->exponent : bare_exponent) - result_exponent;
+    const char *bare = bare_exponent == 0 ? "seconds" : "microseconds";
+    if (num.empty() || (!real_syntax(num) && not_decimal(num).empty()))
+        bad(option, text, std::string("expected a time: a decimal number of ") + bare +
+                              ", or with a unit ns, us, ms or s (e.g. 500us)");
+    double v = read_real(option, num);
+    if (v < 0) bad(option, text, "must not be negative");
+    // Whole powers of ten multiply or divide exactly once: "10ms" is 10000 us, "500us" 0.0005 s.
+    double scale = std::pow(10.0, std::abs(shift));
+    double t = shift >= 0 ? v * scale : v / scale;
+    if (!std::isfinite(t)) bad(option, text, "too large");
+    return t;
+}
+
+std::array<int, 3> parse_dims_1_to_3(const std::string &option, const std::string &text, int min_value,
+                                     int max_value)
+{
+    std::string lower = text;
+    for (char &c : lower) c = c == 'X' ? 'x' : c;
+    if (lower.rfind("0x", 0) == 0 && lower.size() > 2 && lower.find('x', 2) == std::string::npos)
+        bad(option, text, "decimal only (hexadecimal is not accepted)");
+    auto parts = split(lower, 'x');
     if (parts.size() > 3) bad(option, text, "expected N, NXxNY or NXxNYxNZ");
     std::array<int, 3> out{1, 1, 1};
     for (size_t i = 0; i < parts.size(); i++) {
-        long v;
-        if (!parse_int(parts[i], v)) bad(option, text, "expected whole numbers like 4x2x2");
-        if (v < min_value || v > max_value)
-            bad(option, text, "each number must be " + std::to_string(min_value) + " to " + std::to_string(max_value));
-        out[i] = static_cast<int>(v);
+        if (parts[i].empty()) bad(option, text, "expected whole numbers like 4x2x2");
+        out[i] = static_cast<int>(parse_integer(option, parts[i], min_value, max_value));
     }
     return out;
 }
 
-std::array<int, 3> parse_triple(const std::string &option, const std::string &text, int min_value,
-                                int max_value)
+std::array<int, 3> parse_triple(const std::string &option, const std::string &text, int min_value, int max_value)
 {
-    auto parts = split_x(text);
-    if (parts.size() == 1) {
-        auto one = parse_dims_1_to_3(option, text, min_value, max_value);
-        return {one[0], one[0], one[0]};
-    }
-    if (parts.size() != 3) bad(option, text, "expected N or NXxNYxNZ");
-    return parse_dims_1_to_3(option, text, min_value, max_value);
+    auto dims = parse_dims_1_to_3(option, text, min_value, max_value);
+    size_t xs = 0;
+    for (char c : text) xs += c == 'x' || c == 'X';
+    if (xs == 0) return {dims[0], dims[0], dims[0]};
+    if (xs != 2) bad(option, text, "expected N or NXxNYxNZ");
+    return dims;
 }
 
 std::array<unsigned, 2> parse_size(const std::string &option, const std::string &text)
 {
-    auto parts = split_x(text);
-    long w, h;
-    if (parts.size() != 2 || !parse_int(parts[0], w) || !parse_int(parts[1], h))
+    std::string lower = text;
+    for (char &c : lower) c = c == 'X' ? 'x' : c;
+    auto parts = split(lower, 'x');
+    if (parts.size() != 2 || parts[0].empty() || parts[1].empty())
         bad(option, text, "expected WIDTHxHEIGHT, e.g. 144x144");
-    if (w < 1 || h < 1 || w > 16384 || h > 16384) bad(option, text, "each side must be 1 to 16384");
-    return {static_cast<unsigned>(w), static_cast<unsigned>(h)};
-}
-
-double parse_non_negative(const std::string &option, const std::string &text)
-{
-    double v;
-    if (!parse_double(text, v)) bad(option, text, "expected a number");
-    if (v < 0) bad(option, text, "must not be negative");
-    return v;
-}
-
-double parse_time_us(const std::string &option, const std::string &text)
-{
-    static const struct { const char *suffix; double us; } units[] = {
-        {"ns", 1e-3}, {"us", 1.0}, {"ms", 1e3}, {"s", 1e6}};
-    std::string num = text;
-    double scale = 1.0;  // a bare number is microseconds
-    for (const auto &u : units) {
-        std::string suf = u.suffix;
-        if (text.size() > suf.size() && text.compare(text.size() - suf.size(), suf.size(), suf) == 0) {
-            num = text.substr(0, text.size() - suf.size());
-            scale = u.us;
-            break;
-        }
+    try {
+        return {static_cast<unsigned>(parse_integer(option, parts[0], 1, 16384)),
+                static_cast<unsigned>(parse_integer(option, parts[1], 1, 16384))};
+    } catch (const UserError &) {
+        bad(option, text, "expected WIDTHxHEIGHT, each side a decimal number 1 to 16384 (e.g. 144x144)");
     }
-    double v;
-    if (!parse_double(num, v)) bad(option, text, "expected a time: microseconds, or with a unit ns, us, ms or s (e.g. 500us)");
-    if (v < 0) bad(option, text, "must not be negative");
-    if (!std::isfinite(v * scale)) bad(option, text, "too large");
-    return v * scale;
+}
+
+std::vector<int> parse_integer_list(const std::string &option, const std::string &text, int min_value, int max_value)
+{
+    std::vector<int> out;
+    for (const std::string &item : split(text, ',')) {
+        if (item.empty()) bad(option, text, "expected decimal numbers separated by commas, e.g. 0,1,5");
+        out.push_back(static_cast<int>(parse_integer(option, item, min_value, max_value)));
+    }
+    return out;
 }
 
 double parse_fraction(const std::string &option, const std::string &text)
 {
     auto slash = text.find('/');
-    double v;
-    if (slash == std::string::npos) {
-        if (!parse_double(text, v)) bad(option, text, "expected a number like 0.002 or 1/512");
-    } else {
-        double a, b;
-        if (!parse_double(text.substr(0, slash), a) || !parse_double(text.substr(slash + 1), b) || b == 0)
-            bad(option, text, "expected a number like 0.002 or 1/512");
-        v = a / b;
-    }
-    if (v < 0) bad(option, text, "must not be negative");
-    return v;
+    if (slash == std::string::npos) return parse_real(option, text, 0, HUGE_VAL);
+    double a = parse_real(option, text.substr(0, slash), 0, HUGE_VAL);
+    double b = parse_real(option, text.substr(slash + 1), 0, HUGE_VAL);
+    if (b == 0) bad(option, text, "the divisor must not be 0");
+    return a / b;
 }
 
 uint64_t parse_memory_size(const std::string &option, const std::string &text)
 {
+    std::string why = text.empty() ? "" : not_decimal(text);
+    if (!why.empty()) bad(option, text, why);
     uint64_t bytes = 0;
     char msg[RT_MSG_LEN] = "";
     if (rt_budget_parse(text.c_str(), &bytes, msg, sizeof msg) != RT_OK) bad(option, text, msg);

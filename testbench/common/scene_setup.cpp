@@ -6,6 +6,7 @@
 #include "rt_framebuffer.h"
 #include "rt_grid.h"
 #include "rt_nff.h"
+#include "rt_shade_tree.h"
 #include "rt_text.h"
 #include "user_error.h"
 
@@ -52,6 +53,14 @@ LoadedScene load_scene(const std::string &path, unsigned width, unsigned height,
     if (!out.grid && std::string(msg).rfind("memory budget", 0) == 0) throw UserError(shown_path(path) + ": " + msg);
     if (!out.grid) throw UserError(std::string("--cells: ") + msg, 2);
     return out;
+}
+
+void check_shade_tree(const std::string &path, const rt_scene *scene, const rt_step_params &step,
+                      const rt_budget &budget, uint64_t packet_bytes)
+{
+    char msg[RT_MSG_LEN] = "";
+    if (rt_shade_tree_check(scene, &step, &budget, packet_bytes, msg, sizeof msg) != RT_OK)
+        throw UserError(shown_path(path) + ": " + msg);
 }
 
 }  // namespace torusrt

@@ -6,6 +6,7 @@
 
 #include "kernel_handles.h"
 #include "rt_budget.h"
+#include "rt_step.h"
 
 namespace torusrt {
 
@@ -23,5 +24,10 @@ std::string shown_path(const std::string &path);
 
 LoadedScene load_scene(const std::string &path, unsigned width, unsigned height,
                        const std::array<int, 3> &cells, bool quiet, rt_budget *budget = nullptr);
+
+// Refuses (UserError, exit 1) a run whose one pixel's worst-case shade tree, at
+// `packet_bytes` a packet, cannot fit in what is left of `budget` (rt_shade_tree.h).
+void check_shade_tree(const std::string &path, const rt_scene *scene, const rt_step_params &step,
+                      const rt_budget &budget, uint64_t packet_bytes);
 
 }  // namespace torusrt

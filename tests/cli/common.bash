@@ -112,3 +112,9 @@ render_ok() {
     fail "$name: torusrt-render $* did not produce $out: $(head -c 300 "$log")"
     return 1
 }
+# nowall CSV [SEPARATOR]: the CSV (default separator ',') without its wall-clock columns (those
+# whose header names wall), for comparing two runs of the same points.
+nowall() {
+    awk -F"${2:-,}" 'NR == 1 { for (i = 1; i <= NF; i++) keep[i] = $i !~ /wall/ }
+        { s = ""; for (i = 1; i <= NF; i++) if (keep[i]) s = s (s == "" ? "" : FS) $i; print s }' "$1"
+}

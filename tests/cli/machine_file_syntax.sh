@@ -41,20 +41,20 @@ from_file() {  # from_file EXPECTED CONTENT OPTIONS...
     check "'$expect' exits 2 (got $rc)" test $rc -eq 2
     check "message '$expect' ($(head -1 "$TMP/err"))" grep -q -- "$expect" "$TMP/err"
 }
-from_file "m.toml: --ips 'zz'" 'ips="zz"\n'
-from_file "m.toml: --quantum: only meaningful with --style lt" 'style="lt"\nquantum="10"\n' --style at
-"$sim" --dump-config --config "$TMP/m.toml" --style at --quantum 10 > "$TMP/out" 2> "$TMP/err"
+from_file "m.toml:1: --ips 'zz'" 'ips="zz"\n'
+from_file "m.toml:2: --quantum: only meaningful with --style lt" 'style="lt"\nquantum="10us"\n' --style at
+"$sim" --dump-config --config "$TMP/m.toml" --style at --quantum 10us > "$TMP/out" 2> "$TMP/err"
 check "an option from the command line is named without the file ($(head -1 "$TMP/err"))" \
     grep -q "^torusrt-sim: --quantum: only meaningful" "$TMP/err"
 
-# A value the file format cannot hold (a line break in a path) is refused by the dump, not
-# written as a file that does not read back.
-cp "$SRC/timing/literal.timing" "$TMP/two"$'\n'"lines.timing"
-"$sim" --dump-config --timing "$TMP/two"$'\n'"lines.timing" > "$TMP/out" 2> "$TMP/err"
-rc=$?
-check "--dump-config of a path with a line break exits 2 (got $rc)" test $rc -eq 2
-check "--dump-config of a path with a line break names --timing ($(head -1 "$TMP/err"))" grep -q -- "--timing" "$TMP/err"
-check "--dump-config of a path with a line break writes nothing" test ! -s "$TMP/out"
+# A path with a line break, a backslash and both quotes is written escaped (a TOML basic
+# string) and reads back to the same machine.
+odd="$TMP/two"$'\n'"lines \\ \"q\" 'l'.timing"
+cp "$SRC/timing/literal.timing" "$odd"
+"$sim" --dump-config --timing "$odd" > "$TMP/odd.toml" 2> "$TMP/err"
+check "--dump-config of a path with a line break exits 0 ($(head -1 "$TMP/err"))" test $? -eq 0
+"$sim" --dump-config --config "$TMP/odd.toml" > "$TMP/odd-again.toml" 2> "$TMP/err"
+check "the escaped path reads back ($(head -1 "$TMP/err"))" cmp -s "$TMP/odd.toml" "$TMP/odd-again.toml"
 
 # bad_file EXPECTED CONTENT: exit 2, stderr matches EXPECTED, nothing on stdout.
 bad_file() {
@@ -65,8 +65,8 @@ bad_file() {
     check "'$2': message '$1' ($(head -1 "$TMP/err"))" grep -q -- "$1" "$TMP/err"
     check "'$2': no dump" test ! -s "$TMP/out"
 }
-bad_file "bad.toml: line 3: ips: given twice" 'ips="2"\nmap="block"\nips="3"\n'
-bad_file "bad.toml: line 2: ips: given twice" 'ips="2"\n ips = "2"\n'
-bad_file "bad.toml: line 1: \[machine\]: a machine file has no sections" '[machine]\nips="2"\n'
-bad_file "bad.toml: frobnicate: not a machine option" 'ips="2"\nfrobnicate="2"\n'
+bad_file "bad.toml:3: ips: given twice" 'ips="2"\nmap="block"\nips="3"\n'
+bad_file "bad.toml:2: ips: given twice" 'ips="2"\n ips = "2"\n'
+bad_file "bad.toml:1: \[machine\]: a machine file has no sections" '[machine]\nips="2"\n'
+bad_file "bad.toml:2: frobnicate: not a machine option" 'ips="2"\nfrobnicate="2"\n'
 finish

@@ -126,8 +126,9 @@ if [ $have_clusters = 1 ]; then
     check "shared memory ($sh) below replicated ($re) at m = 16" gt "$re" "$sh"
 fi
 
-# 6. The point list is one command per line, and the Slurm script runs line i of it.
+# 6. points.sh prints one command per point; the backend's lists are JSON, tab, command.
 check "points.sh prints one command per point" \
     test "$(bash "$EXP/points.sh" --build "$BUILD" "${clusters[@]}" quick "$TMP/res2" | wc -l)" -eq $((20 + expect10))
-check "slurm.sbatch is valid bash" bash -n "$EXP/slurm.sbatch"
+check "the phase lists are JSON<TAB>command" \
+    test "$(cat "$RES"/points.phase[12] | awk -F'\t' 'NF != 2 || $1 !~ /^\/.*\.json$/ || $2 !~ /run_point.sh/' | wc -l)" -eq 0
 finish

@@ -32,7 +32,7 @@ bad "--quantum" --quantum 5ms
 # Below SystemC's 1 ps resolution a time would be rounded to nothing: refused.
 bad "--link-us: .*1 ps" --link-us 1e-7
 bad "--link-bytes-per-us: .*1 ps" --packet-bytes 0.0001 --link-bytes-per-us 1e6
-bad "--quantum: .*1 ps" --style lt --quantum 1e-7
+bad "--quantum: .*1 ps" --style lt --quantum 1e-7us
 bad "--style" --style fast
 bad "--cluster" --cluster 0
 bad "--queue" --queue -1

@@ -42,9 +42,10 @@ c=$(run_time --link-us 0.5ms) || fail "--link-us 0.5ms"
 check "--link-us 500 = 500us = 0.5ms ($a $b $c)" test -n "$a" -a "$a" = "$b" -a "$b" = "$c"
 d=$(run_time --link-us 50) || fail "--link-us 50"
 check "--link-us 500 is slower than 50 ($a > $d)" awk -v a="$a" -v d="$d" 'BEGIN { exit !(a > d) }'
-q1=$(run_time --style lt --quantum 500) || fail "--quantum 500"
+# A bare time is seconds, except for --link-us (whose name carries its unit).
+q1=$(run_time --style lt --quantum 0.0005) || fail "--quantum 0.0005"
 q2=$(run_time --style lt --quantum 500us) || fail "--quantum 500us"
-check "--quantum 500 = 500us ($q1 $q2)" test -n "$q1" -a "$q1" = "$q2"
+check "--quantum 0.0005 = 500us ($q1 $q2)" test -n "$q1" -a "$q1" = "$q2"
 
 # Warnings (stderr) unless -q. 2x2x2 cells mapped cyclically onto 3x3x3 nodes: each cell's node
 # is (x mod 3, y mod 3, z mod 3), so 8 nodes own cells and 19 stay idle.

@@ -16,7 +16,7 @@ class MachineFile(unittest.TestCase):
         pairs = mf.from_report(REPORT)
         text = mf.toml_text(pairs)
         self.assertIn('ips="2x2x1"\n', text)
-        self.assertIn("timing='a\"b.timing'\n", text)  # a double quote goes in a literal string
+        self.assertIn('timing="a\\"b.timing"\n', text)  # a double quote is escaped
         self.assertEqual(mf.read_machine_file(text), dict(pairs))
 
     def test_differences_name_every_key(self):

@@ -1,0 +1,131 @@
+"""The command line of the backend package: `run` runs point lists, `task` is a Slurm array task."""
+import argparse
+import datetime
+import os
+import resource
+import signal
+import sys
+import time
+
+from . import local, points, slurm, task
+
+RUNS_HEADER = ["started_utc", "mode", "jobs", "hosts", "cores", "points", "points_run", "failed", "wall_s",
+               "cpu_s", "load1"]
+
+
+def parse_backend(text):
+    """'local', 'slurm' or 'ssh:HOSTFILE' -> (kind, hostfile)."""
+    if text in ("local", "slurm"):
+        return text, None
+    if text.startswith("ssh:") and len(text) > 4:
+        hostfile = text[4:]
+        if not os.path.isfile(hostfile):
+            raise ValueError("--backend %s: no such sshlogin file '%s'" % (text, hostfile))
+        return "ssh", os.path.abspath(hostfile)
+    raise ValueError("--backend must be local, ssh:HOSTFILE or slurm, not '%s'" % text)
+
+
+def say(text):
+    print(text, flush=True)
+
+
+def record_run(path, label, jobs, hosts, total, ran, failed, wall, cpu):
+    new = not os.path.exists(path) or os.path.getsize(path) == 0
+    try:
+        load1 = open("/proc/loadavg").read().split()[0]
+    except OSError:
+        load1 = ""
+    started = datetime.datetime.fromtimestamp(time.time() - wall, datetime.timezone.utc)
+    row = [started.strftime("%Y-%m-%dT%H:%M:%SZ"), label, str(jobs), hosts, str(os.cpu_count()), str(total),
+           str(ran), str(failed), "%.1f" % wall, "" if cpu is None else "%.1f" % cpu, load1]
+    with open(path, "a") as f:
+        if new:
+            f.write("\t".join(RUNS_HEADER) + "\n")
+        f.write("\t".join(row) + "\n")
+
+
+def report_failures(state, pending, status):
+    """Lists every point that was to run and has no result, writes STATE/failed.tsv; returns their number."""
+    failed = [p for p in pending if not p.is_done()]
+    with open(os.path.join(state, "failed.tsv"), "w") as f:
+        for p in failed:
+            why = status.get(p, "no result")
+            f.write("%s\t%s\t%s\t%s\n" % (why, p.done, p.log, p.command))
+            print("backend: FAILED (%s): %s\n    log %s: %s" % (why, p.command, p.log, points.log_tail(p.log)),
+                  file=sys.stderr)
+    return len(failed)
+
+
+def run(args):
+    kind, hostfile = parse_backend(args.backend)
+    state = os.path.abspath(args.state)
+    os.makedirs(os.path.join(state, "logs"), exist_ok=True)
+    phases = [points.read(os.path.abspath(f)) for f in args.lists]
+    points.assign_logs(phases, os.path.join(state, "logs"))
+    todo = []
+    for number, phase in enumerate(phases, 1):
+        pending = [p for p in phase if not p.is_done()]
+        path = os.path.join(state, "phase%d.todo" % number)
+        points.write_todo(path, pending)
+        todo.append((path, pending))
+    total = sum(len(p) for p in phases)
+    to_run = sum(len(p) for _, p in todo)
+    jobs = args.jobs or (None if kind == "slurm" else os.cpu_count())
+    where = {"local": "this machine", "ssh": "the machines of %s" % hostfile, "slurm": "Slurm"}[kind]
+    say("backend: %d points in %d phase(s), %d already done, %d to run on %s%s"
+        % (total, len(phases), total - to_run, to_run, where, " (-j %d)" % jobs if jobs else ""))
+    start, cpu0 = time.time(), resource.getrusage(resource.RUSAGE_CHILDREN)
+    if kind == "slurm":  # the CPU time of the points, as the tasks measured it
+        status, cpu = slurm.run(todo, state, args.per_task, jobs, args.slurm_args, args.name, say)
+    else:
+        status = local.run(todo, state, jobs, hostfile, say)
+        cpu1 = resource.getrusage(resource.RUSAGE_CHILDREN)
+        cpu = (cpu1.ru_utime - cpu0.ru_utime) + (cpu1.ru_stime - cpu0.ru_stime)
+    wall = time.time() - start
+    failed = report_failures(state, [p for _, pend in todo for p in pend], status)
+    ran = sum(1 for _, pend in todo for p in pend if p.is_done())
+    say("backend: %d points run, %d failed, %.1f s wall%s" % (ran, failed, wall, "" if cpu is None else
+                                                              ", %.1f s CPU" % cpu))
+    if args.runs:
+        hosts = {"local": "local", "ssh": "sshloginfile %s" % os.path.basename(hostfile or ""), "slurm": "slurm"}[kind]
+        record_run(args.runs, args.label, jobs or "", hosts, total, ran, failed, wall, cpu)
+    return 1 if failed else 0
+
+
+def interrupted(signum, frame):
+    raise KeyboardInterrupt
+
+
+def main(argv):
+    parser = argparse.ArgumentParser(prog="experiments/backend", description=__doc__)
+    sub = parser.add_subparsers(dest="command", required=True)
+    p = sub.add_parser("run", help="run point lists (one per phase, in order): DONE-FILE<TAB>COMMAND per line")
+    p.add_argument("lists", nargs="+", metavar="LIST")
+    p.add_argument("--state", required=True, help="folder for the run's todo lists, joblogs, logs, Slurm output")
+    p.add_argument("--backend", default="local", help="local (default), ssh:HOSTFILE or slurm")
+    p.add_argument("-j", "--jobs", type=int, default=0, help="points in flight (default: local one per core, "
+                   "ssh per machine as the sshlogin file says, slurm unlimited)")
+    p.add_argument("--slurm-args", default="", help="more sbatch options, e.g. \"--partition=short --time=0:20:00\"")
+    p.add_argument("--per-task", type=int, default=4, help="points per Slurm array task (default 4)")
+    p.add_argument("--name", default="torusrt", help="the Slurm job name's prefix")
+    p.add_argument("--runs", help="append one line about this run to this TSV file")
+    p.add_argument("--label", default="", help="the mode column of that line")
+    p.set_defaults(run=run)
+    p = sub.add_parser("task", help="(inside a Slurm array task) run this task's lines of a todo list")
+    p.add_argument("todo")
+    p.add_argument("per_task", type=int)
+    p.add_argument("rcdir")
+    p.set_defaults(run=lambda a: task.run(a.todo, a.per_task, a.rcdir))
+    args = parser.parse_args(argv)
+    if args.command == "run" and (args.per_task < 1 or args.jobs < 0):
+        parser.error("--per-task must be at least 1 and -j positive")
+    signal.signal(signal.SIGTERM, interrupted)
+    signal.signal(signal.SIGINT, signal.default_int_handler)  # even where the shell started us ignoring it
+    try:
+        return args.run(args)
+    except KeyboardInterrupt:
+        print("experiments/backend: interrupted", file=sys.stderr)
+        return 130
+    except (OSError, ValueError, RuntimeError) as e:
+        print("experiments/backend: %s" % e, file=sys.stderr)
+        return 2
