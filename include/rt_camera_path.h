@@ -25,7 +25,8 @@
  * "FILE:LINE: message": wrong field count, a malformed or non-finite number, a magnitude above
  * 1e30, from == at, up zero or parallel to the view direction, angle outside (0, 180), a line
  * longer than RT_CAMERA_PATH_MAX_LINE bytes, more than RT_CAMERA_PATH_MAX_FRAMES frames, no
- * frame at all. Only a regular file is read.
+ * frame at all. The file is read as every input is (rt_file_read.h): a regular text file of
+ * at most RT_CAMERA_PATH_MAX_BYTES.
  */
 #ifndef RT_CAMERA_PATH_H
 #define RT_CAMERA_PATH_H
@@ -44,6 +45,7 @@ extern "C" {
 /* Documented limits: more frames or a longer line is rejected with RT_ERR_LIMIT. */
 #define RT_CAMERA_PATH_MAX_FRAMES 100000u
 #define RT_CAMERA_PATH_MAX_LINE 4096u
+#define RT_CAMERA_PATH_MAX_BYTES (64u * 1024u * 1024u)
 
 typedef struct rt_camera_pose {
     rt_vec3 from;  /* eye position, scene units */

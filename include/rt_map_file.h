@@ -2,7 +2,7 @@
  *
  * Usage:
  *   rt_map_file_read("my.map", dims, nodes, owner, msg, sizeof msg);
- *   rt_map_file_write("used.map", dims, nodes, owner, msg, sizeof msg);
+ *   rt_map_file_write(fp, "used.map", dims, nodes, owner, msg, sizeof msg);
  *
  * Format: a header `torusrt-map 1 NX NY NZ NODES` (format version 1, the grid's
  * cells per axis, the number of nodes), then one node id (0..NODES-1) per cell
@@ -10,13 +10,16 @@
  * space and line breaks. `#` starts a comment to the end of the line.
  * Reading checks the header against the run's grid and node count, every id's
  * range, and the cell count; failures return RT_ERR_IO (cannot open) or
- * RT_ERR_PARSE with "FILE:LINE: message", and leave owner[] unspecified.
+ * RT_ERR_PARSE with "FILE:LINE: message", and leave owner[] unspecified. The file is read
+ * as every input is (rt_file_read.h): a regular text file of at most
+ * rt_map_file_max_bytes(dims): room for every cell's id with spaces and comments.
  */
 #ifndef RT_MAP_FILE_H
 #define RT_MAP_FILE_H
 
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 
 #include "rt_status.h"
 
@@ -24,12 +27,19 @@
 extern "C" {
 #endif
 
+/* The largest map file read for this grid: 16 bytes per cell and 1 MiB more. */
+size_t rt_map_file_max_bytes(const int dims[3]);
+
 /* owner must hold dims[0] * dims[1] * dims[2] entries. */
+rt_status rt_map_file_parse(const char *name, const char *text, size_t length, const int dims[3], int nodes,
+                            int32_t *owner, char *msg, size_t msg_len);
+/* The same, read from the file PATH. */
 rt_status rt_map_file_read(const char *path, const int dims[3], int nodes, int32_t *owner, char *msg,
                            size_t msg_len);
 
-/* Writes the table; RT_ERR_IO naming the file if it cannot be written. */
-rt_status rt_map_file_write(const char *path, const int dims[3], int nodes, const int32_t *owner,
+/* Writes the table to a stream the caller owns (flushed, not closed); RT_ERR_IO naming `name`
+ * if it cannot be written. */
+rt_status rt_map_file_write(FILE *fp, const char *name, const int dims[3], int nodes, const int32_t *owner,
                             char *msg, size_t msg_len);
 
 #ifdef __cplusplus

@@ -1,11 +1,11 @@
 /* rt_png.h - writing and reading 8-bit RGB PNG files (libpng).
  *
  * Usage:
- *   if (rt_png_write("out.png", w, h, rgb8, msg, sizeof msg) != RT_OK) ...
+ *   if (rt_png_write_stream(fp, "out.png", w, h, rgb8, msg, sizeof msg) != RT_OK) ...
  *
- * Writing goes to "PATH.tmp.PID" and is renamed to PATH only when complete,
- * so a failed write never leaves a partial PATH. Returns RT_ERR_IO with a
- * message on failure.
+ * The kernel writes to a stream its caller owns: the caller chooses the file (a temporary
+ * it renames when the run is done, or a device written in place), so the kernel never
+ * replaces a file. Returns RT_ERR_IO with a message on failure.
  */
 #ifndef RT_PNG_H
 #define RT_PNG_H
@@ -21,12 +21,8 @@
 extern "C" {
 #endif
 
-rt_status rt_png_write(const char *path, uint32_t width, uint32_t height, const uint8_t *rgb8,
-                       char *msg, size_t msg_len);
-
 /* Encodes an 8-bit RGB PNG into an open stream (flushed, not closed); `name` is used in
- * messages. RT_ERR_IO when encoding or a write fails. For callers that choose the file
- * themselves (a device, or a temporary they rename). */
+ * messages. RT_ERR_IO when encoding or a write fails ("NAME: cannot write: ERRNO TEXT"). */
 rt_status rt_png_write_stream(FILE *fp, const char *name, uint32_t width, uint32_t height,
                               const uint8_t *rgb8, char *msg, size_t msg_len);
 

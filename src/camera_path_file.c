@@ -1,16 +1,14 @@
 /* camera_path_file.c - reading a camera path file: one `from at up angle` line per frame. */
 #include <errno.h>
-#include <fcntl.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include "camera_path_internal.h"
 #include "rt_camera_path.h"
+#include "rt_file_read.h"
 
 #define FIELDS 10
 #define LAYOUT "from_x from_y from_z at_x at_y at_z up_x up_y up_z angle"
@@ -117,20 +115,22 @@ static rt_status parse_line(reader *r, char *buf, rt_camera_pose *pose, int *has
     return RT_OK;
 }
 
-/* Opens FILE for reading only if it is a regular file (a FIFO would block, a device never end). */
-static rt_status open_regular(reader *r)
+/* Reads FILE through the one input reader (regular files only, bounded, text) and reads its
+ * lines from memory. */
+static rt_status open_regular(reader *r, char **text)
 {
-    int fd = open(r->file, O_RDONLY | O_NONBLOCK);
-    struct stat info;
-    if (fd < 0) return fail(r, RT_ERR_IO, "cannot open: %s", strerror(errno));
-    if (fstat(fd, &info) != 0 || !S_ISREG(info.st_mode)) {
-        close(fd);
-        return fail(r, RT_ERR_IO, "not a regular file");
+    size_t length = 0;
+    char why[RT_MSG_LEN];
+    rt_status st = rt_read_regular_file(r->file, RT_CAMERA_PATH_MAX_BYTES, text, &length, why, sizeof why);
+    if (st != RT_OK) {
+        if (r->msg && r->msg_len) snprintf(r->msg, r->msg_len, "%s", why);
+        return st;
     }
-    r->f = fdopen(fd, "rb");
+    r->f = length ? fmemopen(*text, length, "rb") : fopen("/dev/null", "rb");
     if (!r->f) {
-        close(fd);
-        return fail(r, RT_ERR_IO, "cannot open: %s", strerror(errno));
+        free(*text);
+        *text = NULL;
+        return fail(r, RT_ERR_NOMEM, "out of memory");
     }
     return RT_OK;
 }
@@ -174,12 +174,14 @@ rt_status rt_camera_path_load(const char *file, rt_camera_path **out, char *msg,
 {
     *out = NULL;
     reader r = {file, NULL, 0, msg, msg_len};
-    rt_status st = open_regular(&r);
+    char *text = NULL;
+    rt_status st = open_regular(&r, &text);
     if (st != RT_OK) return st;
     rt_camera_pose *poses = NULL;
     size_t count = 0;
     st = read_poses(&r, &poses, &count);
     fclose(r.f);
+    free(text);
     rt_camera_path *path = NULL;
     if (st == RT_OK && camera_path_new(0, &path) != RT_OK) st = fail(&r, RT_ERR_NOMEM, "out of memory");
     if (st != RT_OK) {

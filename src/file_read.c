@@ -1,5 +1,5 @@
-/* file_read.c - whole-file reads of regular files only. */
-#include "file_read.h"
+/* file_read.c - whole-file reads of regular text files only. */
+#include "rt_file_read.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -64,6 +64,52 @@ static rt_status read_all(int fd, const char *shown, size_t max_bytes, size_t ca
     return RT_OK;
 }
 
+const char *rt_file_kind(unsigned mode)
+{
+    mode_t m = (mode_t)mode;
+    return S_ISREG(m)    ? "a regular file"
+           : S_ISDIR(m)  ? "a folder"
+           : S_ISFIFO(m) ? "a FIFO"
+           : S_ISCHR(m)  ? "a character device"
+           : S_ISBLK(m)  ? "a block device"
+           : S_ISSOCK(m) ? "a socket"
+                         : "a special file";
+}
+
+/* Leaves out a UTF-8 byte-order mark and refuses a NUL byte, naming its line. */
+static rt_status check_text(const char *shown, char *text, size_t *length, char *msg, size_t msg_len)
+{
+    if (*length >= 3 && memcmp(text, "\xEF\xBB\xBF", 3) == 0) {
+        memmove(text, text + 3, *length - 3 + 1); /* + 1: the NUL after the last byte */
+        *length -= 3;
+    }
+    const char *nul = memchr(text, '\0', *length);
+    if (!nul) return RT_OK;
+    long line = 1;
+    for (const char *p = text; p < nul; p++) line += *p == '\n';
+    return fail(msg, msg_len, RT_ERR_PARSE,
+                "%s:%ld: binary data (a NUL byte at offset %zu): only text files are read", shown, line,
+                (size_t)(nul - text));
+}
+
+/* The open descriptor is a regular file of at most max_bytes, set back to blocking reads. */
+static rt_status check_opened(int fd, const char *shown, size_t max_bytes, struct stat *info, char *msg,
+                              size_t msg_len)
+{
+    if (fstat(fd, info) != 0)
+        return fail(msg, msg_len, RT_ERR_IO, "%s: cannot read: %s", shown, strerror(errno));
+    if (!S_ISREG(info->st_mode))
+        return fail(msg, msg_len, RT_ERR_IO, "%s: is %s, not a regular file", shown,
+                    rt_file_kind((unsigned)info->st_mode));
+    if ((uintmax_t)info->st_size > max_bytes)
+        return fail(msg, msg_len, RT_ERR_LIMIT, "%s:1: the file is %jd bytes, more than the limit of %zu",
+                    shown, (intmax_t)info->st_size, max_bytes);
+    int flags = fcntl(fd, F_GETFL);
+    if (flags < 0 || fcntl(fd, F_SETFL, flags & ~O_NONBLOCK) < 0)
+        return fail(msg, msg_len, RT_ERR_IO, "%s: cannot read: %s", shown, strerror(errno));
+    return RT_OK;
+}
+
 rt_status rt_read_regular_file(const char *path, size_t max_bytes, char **text, size_t *length,
                                char *msg, size_t msg_len)
 {
@@ -75,30 +121,15 @@ rt_status rt_read_regular_file(const char *path, size_t max_bytes, char **text, 
     int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
     if (fd < 0) return fail(msg, msg_len, RT_ERR_IO, "%s: cannot open: %s", shown, strerror(errno));
     struct stat info;
-    rt_status st = RT_OK;
-    if (fstat(fd, &info) != 0)
-        st = fail(msg, msg_len, RT_ERR_IO, "%s: cannot read: %s", shown, strerror(errno));
-    else if (S_ISDIR(info.st_mode))
-        st = fail(msg, msg_len, RT_ERR_IO, "%s: cannot read: %s", shown, strerror(EISDIR));
-    else if (!S_ISREG(info.st_mode))
-        st = fail(msg, msg_len, RT_ERR_IO,
-                  "%s: not a regular file (a %s): only regular files are read", shown,
-                  S_ISFIFO(info.st_mode)  ? "pipe"
-                  : S_ISCHR(info.st_mode) ? "character device"
-                  : S_ISBLK(info.st_mode) ? "block device"
-                  : S_ISSOCK(info.st_mode) ? "socket"
-                                           : "special file");
-    else if ((uintmax_t)info.st_size > max_bytes)
-        st = fail(msg, msg_len, RT_ERR_LIMIT, "%s:1: the file is %jd bytes, more than the limit of %zu",
-                  shown, (intmax_t)info.st_size, max_bytes);
-    else {
-        int flags = fcntl(fd, F_GETFL);
-        if (flags < 0 || fcntl(fd, F_SETFL, flags & ~O_NONBLOCK) < 0)
-            st = fail(msg, msg_len, RT_ERR_IO, "%s: cannot read: %s", shown, strerror(errno));
-    }
+    rt_status st = check_opened(fd, shown, max_bytes, &info, msg, msg_len);
     if (st == RT_OK)
         /* + 1: the end of file is seen in the first read when the size holds. */
         st = read_all(fd, shown, max_bytes, (size_t)info.st_size + 1, text, length, msg, msg_len);
     close(fd);
+    if (st == RT_OK && (st = check_text(shown, *text, length, msg, msg_len)) != RT_OK) {
+        free(*text);
+        *text = NULL;
+        *length = 0;
+    }
     return st;
 }

@@ -8,13 +8,13 @@
 #include "rt_load_map.h"
 #include "rt_png.h"
 
-static rt_status finish(rt_canvas *c, const char *path, char *msg, size_t msg_len)
+static rt_status finish(rt_canvas *c, FILE *fp, const char *name, char *msg, size_t msg_len)
 {
     if (!c) {
-        if (msg && msg_len) snprintf(msg, msg_len, "%s: out of memory for the picture", path);
+        if (msg && msg_len) snprintf(msg, msg_len, "%s: out of memory for the picture", name);
         return RT_ERR_NOMEM;
     }
-    rt_status st = rt_png_write(path, c->width, c->height, c->rgb, msg, msg_len);
+    rt_status st = rt_png_write_stream(fp, name, c->width, c->height, c->rgb, msg, msg_len);
     rt_canvas_free(c);
     return st;
 }
@@ -26,7 +26,7 @@ static double max_of(const double *v, size_t n)
     return m;
 }
 
-rt_status rt_cost_image_write(const char *path, uint32_t w, uint32_t h, const double *cost, char *msg,
+rt_status rt_cost_image_write(FILE *fp, const char *name, uint32_t w, uint32_t h, const double *cost, char *msg,
                               size_t msg_len)
 {
     int s = h < 256 ? (int)((256 + h - 1) / h) : 1; /* small images are enlarged */
@@ -41,11 +41,11 @@ rt_status rt_cost_image_write(const char *path, uint32_t w, uint32_t h, const do
             }
         rt_canvas_heat_bar(c, (int)w * s + 10, 4, 16, (int)c->height - 8, 0.0, hi, "us");
     }
-    return finish(c, path, msg, msg_len);
+    return finish(c, fp, name, msg, msg_len);
 }
 
-rt_status rt_load_map_write(const char *path, const int d[3], const double *work, const int32_t *owner, int nodes,
-                            char *msg, size_t msg_len)
+rt_status rt_load_map_write(FILE *fp, const char *name, const int d[3], const double *work, const int32_t *owner,
+                            int nodes, char *msg, size_t msg_len)
 {
-    return finish(rt_load_map_draw(d, work, owner, nodes), path, msg, msg_len);
+    return finish(rt_load_map_draw(d, work, owner, nodes), fp, name, msg, msg_len);
 }

@@ -5,14 +5,18 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "rt_file_read.h"
 #include "rt_map_file.h"
 
-/* A word-at-a-time reader that knows its line number and skips `#` comments. */
+/* A word-at-a-time reader over the file's text that knows its line number and skips `#`
+ * comments. */
 typedef struct words {
-    FILE *f;
+    const char *p, *end;
     long line;
     char word[64];
 } words;
+
+static int next_char(words *w) { return w->p < w->end ? (unsigned char)*w->p++ : EOF; }
 
 /* Next word into w->word; 0 at end of file. A word too long to be a number is cut
  * (and then fails to parse). */
@@ -20,11 +24,11 @@ static int next_word(words *w)
 {
     int c;
     for (;;) {
-        c = fgetc(w->f);
+        c = next_char(w);
         if (c == EOF) return 0;
         if (c == '\n') w->line++;
         else if (c == '#') {
-            while ((c = fgetc(w->f)) != EOF && c != '\n') {}
+            while ((c = next_char(w)) != EOF && c != '\n') {}
             if (c == EOF) return 0;
             w->line++;
         } else if (!isspace(c)) break;
@@ -32,10 +36,10 @@ static int next_word(words *w)
     size_t n = 0;
     while (c != EOF && !isspace(c) && c != '#') {
         if (n + 1 < sizeof w->word) w->word[n++] = (char)c;
-        c = fgetc(w->f);
+        c = next_char(w);
     }
     w->word[n] = '\0';
-    if (c != EOF) ungetc(c, w->f);
+    if (c != EOF) w->p--;
     return 1;
 }
 
@@ -83,24 +87,25 @@ static rt_status read_header(words *w, const char *path, const int dims[3], int 
     return RT_OK;
 }
 
-rt_status rt_map_file_read(const char *path, const int dims[3], int nodes, int32_t *owner, char *msg,
-                           size_t msg_len)
+size_t rt_map_file_max_bytes(const int dims[3])
 {
-    words w = {fopen(path, "r"), 1, ""};
-    if (!w.f) {
-        if (msg && msg_len) snprintf(msg, msg_len, "%s: cannot open: %s", path, strerror(errno));
-        return RT_ERR_IO;
-    }
-    rt_status st = read_header(&w, path, dims, nodes, msg, msg_len);
+    return (size_t)dims[0] * (size_t)dims[1] * (size_t)dims[2] * 16u + 1024u * 1024u;
+}
+
+rt_status rt_map_file_parse(const char *name, const char *text, size_t length, const int dims[3], int nodes,
+                            int32_t *owner, char *msg, size_t msg_len)
+{
+    words w = {text, text + length, 1, ""};
+    rt_status st = read_header(&w, name, dims, nodes, msg, msg_len);
     size_t cells = (size_t)dims[0] * (size_t)dims[1] * (size_t)dims[2], i = 0;
     while (st == RT_OK && next_word(&w)) {
         long v;
         if (i == cells) {
-            st = fail(msg, msg_len, path, w.line, "more node ids than the grid's cells, first extra", w.word);
+            st = fail(msg, msg_len, name, w.line, "more node ids than the grid's cells, first extra", w.word);
         } else if (!word_int(w.word, 0, nodes - 1, &v)) {
             char why[96];
             snprintf(why, sizeof why, "cell %zu: expected a node id 0..%d, found", i, nodes - 1);
-            st = fail(msg, msg_len, path, w.line, why, w.word);
+            st = fail(msg, msg_len, name, w.line, why, w.word);
         } else {
             owner[i++] = (int32_t)v;
         }
@@ -108,34 +113,36 @@ rt_status rt_map_file_read(const char *path, const int dims[3], int nodes, int32
     if (st == RT_OK && i < cells) {
         char why[96];
         snprintf(why, sizeof why, "only %zu node ids for %zu cells", i, cells);
-        st = fail(msg, msg_len, path, w.line, why, NULL);
+        st = fail(msg, msg_len, name, w.line, why, NULL);
     }
-    if (st == RT_OK && ferror(w.f)) {
-        if (msg && msg_len) snprintf(msg, msg_len, "%s: read error", path);
-        st = RT_ERR_IO;
-    }
-    fclose(w.f);
     return st;
 }
 
-rt_status rt_map_file_write(const char *path, const int dims[3], int nodes, const int32_t *owner,
+rt_status rt_map_file_read(const char *path, const int dims[3], int nodes, int32_t *owner, char *msg,
+                           size_t msg_len)
+{
+    char *text = NULL;
+    size_t length = 0;
+    rt_status st = rt_read_regular_file(path, rt_map_file_max_bytes(dims), &text, &length, msg, msg_len);
+    if (st != RT_OK) return st;
+    char shown[256];
+    rt_escape_bytes(path, strlen(path), 0, shown, sizeof shown);
+    st = rt_map_file_parse(shown, text, length, dims, nodes, owner, msg, msg_len);
+    free(text);
+    return st;
+}
+
+rt_status rt_map_file_write(FILE *f, const char *name, const int dims[3], int nodes, const int32_t *owner,
                             char *msg, size_t msg_len)
 {
-    FILE *f = fopen(path, "w");
-    if (!f) {
-        if (msg && msg_len) snprintf(msg, msg_len, "%s: cannot write: %s", path, strerror(errno));
-        return RT_ERR_IO;
-    }
     fprintf(f, "torusrt-map 1 %d %d %d %d\n# one node id per cell, x fastest; a line per (y, z) row\n",
             dims[0], dims[1], dims[2], nodes);
     size_t i = 0;
     for (int z = 0; z < dims[2]; z++)
         for (int y = 0; y < dims[1]; y++)
             for (int x = 0; x < dims[0]; x++) fprintf(f, "%d%c", owner[i++], x + 1 < dims[0] ? ' ' : '\n');
-    int bad = ferror(f);
-    if (fclose(f) != 0 || bad) {
-        if (msg && msg_len) snprintf(msg, msg_len, "%s: write error", path);
-        remove(path);
+    if (fflush(f) != 0 || ferror(f)) {
+        if (msg && msg_len) snprintf(msg, msg_len, "%s: cannot write: %s", name, strerror(errno ? errno : EIO));
         return RT_ERR_IO;
     }
     return RT_OK;

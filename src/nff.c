@@ -22,7 +22,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "file_read.h"
+#include "rt_file_read.h"
 #include "nff_tokens.h"
 #include "rt_nff.h"
 

@@ -2,7 +2,7 @@
  * one token of look-ahead, strict decimal numbers, and "file:line: message" errors. */
 #include "nff_tokens.h"
 
-#include "file_read.h"
+#include "rt_file_read.h"
 
 #include <errno.h>
 #include <math.h>

@@ -13,11 +13,13 @@
  * defined after a longjmp. */
 typedef struct png_errors {
     char text[200];
+    int err; /* errno when libpng gave up: a failed write's cause */
 } png_errors;
 
 static void on_error(png_structp png, png_const_charp message)
 {
     png_errors *e = png_get_error_ptr(png);
+    e->err = errno;
     snprintf(e->text, sizeof e->text, "%s", message);
     png_longjmp(png, 1);
 }
@@ -55,56 +57,6 @@ static int encode(FILE *fp, uint32_t width, uint32_t height, const uint8_t *rgb8
     return 1;
 }
 
-rt_status rt_png_write(const char *path, uint32_t width, uint32_t height, const uint8_t *rgb8,
-                       char *msg, size_t msg_len)
-{
-    if (!path || !rgb8 || width == 0 || height == 0 || width > PNG_UINT_31_MAX ||
-        height > PNG_UINT_31_MAX || (size_t)width > SIZE_MAX / 3u / (size_t)height) {
-        if (msg && msg_len)
-            snprintf(msg, msg_len, "%s: cannot write a %ux%u image", path ? path : "(no path)",
-                     (unsigned)width, (unsigned)height);
-        return RT_ERR_INVALID;
-    }
-    size_t tmp_len = strlen(path) + 32;
-    char *tmp = malloc(tmp_len);
-    if (!tmp) {
-        if (msg && msg_len) snprintf(msg, msg_len, "%s: out of memory", path);
-        return RT_ERR_IO;
-    }
-    snprintf(tmp, tmp_len, "%s.tmp.%ld", path, (long)getpid());
-
-    FILE *fp = fopen(tmp, "wb");
-    if (!fp) {
-        if (msg && msg_len) snprintf(msg, msg_len, "%s: cannot create: %s", path, strerror(errno));
-        free(tmp);
-        return RT_ERR_IO;
-    }
-    png_errors e = {""};
-    int ok = encode(fp, width, height, rgb8, &e);
-    /* A full disk often shows only at flush or close. */
-    int io_failed = fflush(fp) != 0 || ferror(fp);
-    int err = errno;
-    if (fclose(fp) != 0 && !io_failed) {
-        io_failed = 1;
-        err = errno;
-    }
-    if (ok && !io_failed && rename(tmp, path) != 0) {
-        io_failed = 1;
-        err = errno;
-    }
-    if (!ok || io_failed) {
-        remove(tmp);
-        free(tmp);
-        if (msg && msg_len) {
-            if (!ok) snprintf(msg, msg_len, "%s: PNG write failed: %s", path, e.text);
-            else snprintf(msg, msg_len, "%s: cannot write: %s", path, strerror(err));
-        }
-        return RT_ERR_IO;
-    }
-    free(tmp);
-    return RT_OK;
-}
-
 rt_status rt_png_write_stream(FILE *fp, const char *name, uint32_t width, uint32_t height,
                               const uint8_t *rgb8, char *msg, size_t msg_len)
 {
@@ -115,12 +67,15 @@ rt_status rt_png_write_stream(FILE *fp, const char *name, uint32_t width, uint32
                      (unsigned)width, (unsigned)height);
         return RT_ERR_INVALID;
     }
-    png_errors e = {""};
+    png_errors e = {"", 0};
     int ok = encode(fp, width, height, rgb8, &e);
     if (ok && fflush(fp) == 0 && !ferror(fp)) return RT_OK;
     if (msg && msg_len) {
-        if (!ok) snprintf(msg, msg_len, "%s: PNG write failed: %s", name ? name : "", e.text);
-        else snprintf(msg, msg_len, "%s: cannot write: %s", name ? name : "", strerror(errno));
+        /* A failed write (a full disk) is told by its errno, not libpng's "Write Error". */
+        if (ok || ferror(fp))
+            snprintf(msg, msg_len, "%s: cannot write: %s", name ? name : "",
+                     strerror(ok ? errno : e.err ? e.err : EIO));
+        else snprintf(msg, msg_len, "%s: PNG write failed: %s", name ? name : "", e.text);
     }
     return RT_ERR_IO;
 }
@@ -198,7 +153,7 @@ rt_status rt_png_read(const char *path, uint32_t *width, uint32_t *height, uint8
         if (msg && msg_len) snprintf(msg, msg_len, "%s: not a PNG file", path);
         return RT_ERR_INVALID;
     }
-    png_errors e = {""};
+    png_errors e = {"", 0};
     rt_status st = decode(fp, &e, width, height, rgb8);
     fclose(fp);
     if (st != RT_OK && msg && msg_len) snprintf(msg, msg_len, "%s: %s", path, e.text);

@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "file_read.h"
+#include "rt_file_read.h"
 #include "rt_timing.h"
 
 typedef struct timing_key {

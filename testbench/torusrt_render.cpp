@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -115,13 +116,33 @@ double seconds_since(std::chrono::steady_clock::time_point t0)
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-int run_single(const RenderOptions &opt, RenderSetup &setup, std::chrono::steady_clock::time_point t0)
+// Every output of the run (every frame's included), registered and checked against the inputs
+// and each other before the scene is read.
+struct RenderOutputs {
+    OutputSet set;
+    OutputSet::Id png = 0;  // the image, or frame 0 (the frames' ids follow it)
+    std::optional<OutputSet::Id> stats, cost;
+};
+
+void stage_outputs(const RenderOptions &opt, size_t frames, RenderOutputs &outs)
 {
-    OutputSet outputs;
-    std::string png_path = outputs.add("-o", opt.common.output, opt.common.scene);
-    std::string stats_path = opt.common.stats.empty() ? "" : outputs.add("--stats", opt.common.stats, opt.common.scene);
-    std::string cost_path = opt.cost_image.empty() ? "" : outputs.add("--cost-image", opt.cost_image, opt.common.scene);
-    outputs.check_not_input("--timing", opt.common.timing_file);
+    if (!opt.anim.animated()) outs.png = outs.set.add("-o", opt.common.output);
+    for (size_t k = 0; k < frames; k++) {
+        OutputSet::Id id = outs.set.add("-o", frame_file_name(opt.common.output, k));
+        if (k == 0) outs.png = id;
+    }
+    if (!opt.common.stats.empty()) outs.stats = outs.set.add("--stats", opt.common.stats);
+    if (!opt.cost_image.empty()) outs.cost = outs.set.add("--cost-image", opt.cost_image);
+    outs.set.add_input("scene", opt.common.scene);
+    outs.set.add_input("--timing", opt.common.timing_file);
+    outs.set.add_input("--camera-path", opt.anim.camera_path);
+    outs.set.check();
+}
+
+int run_single(const RenderOptions &opt, RenderSetup &setup, RenderOutputs &outs,
+               std::chrono::steady_clock::time_point t0)
+{
+    OutputSet &outputs = outs.set;
     const rt_camera *cam = rt_scene_camera(setup.loaded.scene.get());
     CostImage cost(opt.cost_image, cam->width, cam->height, &setup.settings.timing);
     FrameResult fr = render_frame(setup, "torusrt-render", opt, &cost);
@@ -131,9 +152,9 @@ int run_single(const RenderOptions &opt, RenderSetup &setup, std::chrono::steady
         js = stats_json(opt, setup, fr.st, fr.t1_s, wall);
         js["cost_image"] = cost.json();
     }
-    write_png_file(png_path, opt.common.output, cam->width, cam->height, fr.rgb);
-    if (!cost_path.empty()) cost.write(cost_path);
-    if (!opt.common.stats.empty()) write_text_file(stats_path, opt.common.stats, js.dump(2) + "\n");
+    write_png_file(outputs.staged(outs.png), opt.common.output, cam->width, cam->height, fr.rgb);
+    if (outs.cost) cost.write(outputs.staged(*outs.cost));
+    if (outs.stats) write_text_file(outputs.staged(*outs.stats), opt.common.stats, js.dump(2) + "\n");
     outputs.commit();
     if (!opt.common.quiet)
         std::printf("%s: %ux%u, %zu objects, %llu packets, T(1) %.3f s (%s timing), wall %.3f s\n",
@@ -151,16 +172,13 @@ int run_single(const RenderOptions &opt, RenderSetup &setup, std::chrono::steady
 }
 
 // Every frame's PNG (and the statistics) is staged and committed together at the end.
-int run_frames(const RenderOptions &opt, RenderSetup &setup, std::chrono::steady_clock::time_point t0)
+int run_frames(const RenderOptions &opt, RenderSetup &setup, RenderOutputs &outs, CameraPathPtr file,
+               std::chrono::steady_clock::time_point t0)
 {
     rt_scene *scene = setup.loaded.scene.get();
-    CameraPathPtr path = make_camera_path(opt.anim, scene);
+    CameraPathPtr path = make_camera_path(opt.anim, scene, std::move(file));
     size_t n = rt_camera_path_count(path.get());
-    OutputSet outputs;
-    std::vector<std::string> frame_paths;
-    for (size_t k = 0; k < n; k++)
-        frame_paths.push_back(outputs.add("-o", frame_file_name(opt.common.output, k), opt.common.scene));
-    std::string stats_path = opt.common.stats.empty() ? "" : outputs.add("--stats", opt.common.stats, opt.common.scene);
+    OutputSet &outputs = outs.set;
     rt_render_stats total{};
     double t1_total = 0.0;
     nlohmann::json frames = nlohmann::json::array();
@@ -172,8 +190,8 @@ int run_frames(const RenderOptions &opt, RenderSetup &setup, std::chrono::steady
         std::string label = "torusrt-render frame " + std::to_string(k + 1) + "/" + std::to_string(n);
         FrameResult fr = render_frame(setup, label, opt);
         const rt_camera *cam = rt_scene_camera(scene);
-        std::string file = frame_file_name(opt.common.output, k);
-        write_png_file(frame_paths[k], file, cam->width, cam->height, fr.rgb);
+        const std::string &file = outputs.path(outs.png + k);
+        write_png_file(outputs.staged(outs.png + k), file, cam->width, cam->height, fr.rgb);
         rt_ops_add(&total.ops, &fr.st.ops);
         for (int kind = 0; kind < RT_PACKET_KINDS; kind++) {
             total.packets.created[kind] += fr.st.packets.created[kind];
@@ -194,7 +212,7 @@ int run_frames(const RenderOptions &opt, RenderSetup &setup, std::chrono::steady
         js["camera_source"] = opt.anim.orbit.empty() ? "camera-path" : "orbit";
         js["output_pattern"] = opt.common.output;
         js["frames"] = frames;
-        write_text_file(stats_path, opt.common.stats, js.dump(2) + "\n");
+        write_text_file(outputs.staged(*outs.stats), opt.common.stats, js.dump(2) + "\n");
     }
     outputs.commit();
     if (!opt.common.quiet)
@@ -231,6 +249,9 @@ int run(RenderOptions &opt)
     setup.settings = parse_common_options(opt.common);
     validate_render(setup.settings, opt);
     warn_about_settings("torusrt-render", setup.settings.step, opt.common.quiet);
+    CameraPathPtr file = read_camera_path_file(opt.anim);
+    RenderOutputs outs;
+    stage_outputs(opt, opt.anim.animated() ? animation_frame_count(opt.anim, file.get()) : 0, outs);
 
     setup.budget = rt_budget_make(setup.settings.memory_bytes);
     setup.loaded = load_scene(opt.common.scene, setup.settings.size[0], setup.settings.size[1], setup.settings.cells,
@@ -240,7 +261,7 @@ int run(RenderOptions &opt)
     setup.ro.step = setup.settings.step;
     setup.ro.step.brute_force = opt.brute_force;
     setup.ro.budget = &setup.budget;
-    return opt.anim.animated() ? run_frames(opt, setup, t0) : run_single(opt, setup, t0);
+    return opt.anim.animated() ? run_frames(opt, setup, outs, std::move(file), t0) : run_single(opt, setup, outs, t0);
 }
 
 // The renderer's own options.

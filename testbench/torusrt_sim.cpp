@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <map>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <systemc>
@@ -15,6 +16,7 @@
 #include "common_options.h"
 #include "frame_pattern.h"
 #include "huge_pages.h"
+#include "input_file_check.h"
 #include "machine_file_reader.h"
 #include "machine_options.h"
 #include "model_run.h"
@@ -150,7 +152,8 @@ void declare_options(CLI::App &app, std::shared_ptr<MachineFileReader> reader)
     app.set_config("--config", "", wrapped("read the machine from this TOML file (as --dump-config writes it); "
                                            "options on the command line take precedence", kHelpColumns - 31))
         ->type_name("FILE")
-        ->group(group_title(OptionGroup::machine));
+        ->group(group_title(OptionGroup::machine))
+        ->check(input_file_check(kMachineFileMaxBytes));  // before CLI11's own blocking read
     app.allow_config_extras(CLI::config_extras_mode::error);  // an unknown key is an error
     app.config_formatter(reader);
     add_spec_option(app, {"--dump-config", "", ValueKind::flag, "", 0, 0, "",
@@ -270,30 +273,42 @@ std::string save_file_path(const std::string &vcd)
     return (has_ext ? vcd.substr(0, vcd.size() - ext.size()) : vcd) + ".gtkw";
 }
 
-// Every output's temporary, named before anything runs.
+// Every output of the run (every frame's included), registered and checked against the inputs
+// and each other before the scene is read.
 struct StagedOutputs {
     OutputSet set;
-    std::string png, stats, write_map, load_map;
+    std::optional<OutputSet::Id> png, stats, write_map, load_map, frames_csv;
+    OutputSet::Id first_frame = 0;  // frame k is first_frame + k
 };
 
-void stage_outputs(const CommandLine &cl, SimConfig &config, StagedOutputs &out)
+void stage_outputs(const CommandLine &cl, SimConfig &config, size_t frames, StagedOutputs &out)
 {
-    const std::string &scene = cl.common.scene;
-    if (!cl.anim.animated()) out.png = out.set.add("-o", cl.common.output, scene);  // frames: animate()
-    if (!cl.common.stats.empty()) out.stats = out.set.add("--stats", cl.common.stats, scene);
-    const std::string vcd = cl.text("--vcd");
-    if (!vcd.empty()) {
-        config.vcd_write_path = out.set.add("--vcd", vcd, scene);
-        if (!is_special_file(vcd)) {  // no save file beside /dev/null
-            config.gtkw_path = save_file_path(vcd);
-            config.gtkw_write_path = out.set.add("--vcd (save file)", config.gtkw_path, scene);
+    const std::string &pattern = cl.common.output;
+    if (!cl.anim.animated()) out.png = out.set.add("-o", pattern);
+    for (size_t k = 0; k < frames; k++) {
+        OutputSet::Id id = out.set.add("-o", frame_file_name(pattern, k));
+        if (k == 0) out.first_frame = id;
+    }
+    if (!cl.common.stats.empty()) out.stats = out.set.add("--stats", cl.common.stats);
+    std::optional<OutputSet::Id> vcd, gtkw;
+    if (cl.has("--vcd")) {
+        vcd = out.set.add("--vcd", cl.text("--vcd"));
+        if (!out.set.special(*vcd)) {  // no save file beside /dev/null
+            config.gtkw_path = save_file_path(cl.text("--vcd"));
+            gtkw = out.set.add("--vcd (save file)", config.gtkw_path);
         }
     }
-    if (cl.has("--write-map")) out.write_map = out.set.add("--write-map", cl.text("--write-map"), scene);
-    if (cl.has("--load-map")) out.load_map = out.set.add("--load-map", cl.text("--load-map"), scene);
-    out.set.check_not_input("--config", cl.config_file);
-    out.set.check_not_input("--timing", config.timing_file);
-    out.set.check_not_input("--map-file", config.map_file);
+    if (cl.has("--write-map")) out.write_map = out.set.add("--write-map", cl.text("--write-map"));
+    if (cl.has("--load-map")) out.load_map = out.set.add("--load-map", cl.text("--load-map"));
+    if (cl.has("--frames-csv")) out.frames_csv = out.set.add("--frames-csv", cl.text("--frames-csv"));
+    out.set.add_input("scene", cl.common.scene);
+    out.set.add_input("--config", cl.config_file);
+    out.set.add_input("--timing", config.timing_file);
+    out.set.add_input("--map-file", config.map_file);
+    out.set.add_input("--camera-path", cl.anim.camera_path);
+    out.set.check();
+    if (vcd) config.vcd_write_path = out.set.staged(*vcd);
+    if (gtkw) config.gtkw_write_path = out.set.staged(*gtkw);
 }
 
 // The summary's last line: every output written, FIRST (the image or the frames) first.
@@ -315,28 +330,23 @@ void report_deadlock(const SimConfig &config, double sim_time_s, const std::stri
                  sim_time_s, config.queue_capacity, details.c_str());
 }
 
-void write_stats(const StagedOutputs &outputs, const CommandLine &cl, const RunReport &report)
+void write_stats(StagedOutputs &outputs, const CommandLine &cl, const RunReport &report)
 {
-    if (outputs.stats.empty()) return;
+    if (!outputs.stats) return;
     std::string text = to_json(report).dump(2);  // the tree is freed before the file is written
     text += '\n';
-    write_text_file(outputs.stats, cl.common.stats, text);
+    write_text_file(outputs.set.staged(*outputs.stats), cl.common.stats, text);
 }
 
 // An animation: every frame's PNG, the statistics and the CSV commit together.
 int animate(const CommandLine &cl, SimConfig &config, LoadedScene &loaded, const nlohmann::json &mapping_facts,
-            StagedOutputs &outputs, double wall_start)
+            StagedOutputs &outputs, CameraPathPtr file, double wall_start)
 {
     rt_scene *scene = loaded.scene.get();
-    CameraPathPtr path = make_camera_path(cl.anim, scene);
+    CameraPathPtr path = make_camera_path(cl.anim, scene, std::move(file));
     size_t n = rt_camera_path_count(path.get());
-    std::vector<std::string> files, staged;
-    for (size_t k = 0; k < n; k++) {
-        files.push_back(frame_file_name(cl.common.output, k));
-        staged.push_back(outputs.set.add("-o", files.back(), cl.common.scene));
-    }
-    const std::string frames_csv_path = cl.text("--frames-csv");
-    std::string csv = frames_csv_path.empty() ? "" : outputs.set.add("--frames-csv", frames_csv_path, cl.common.scene);
+    std::vector<std::string> files;
+    for (size_t k = 0; k < n; k++) files.push_back(outputs.set.path(outputs.first_frame + k));
     AnimationOutcome out =
         run_animation(config, scene, loaded.grid.get(), path.get(), files, cl.remap, cl.adaptive, wall_start);
     out.report.mapping = mapping_facts;
@@ -349,9 +359,11 @@ int animate(const CommandLine &cl, SimConfig &config, LoadedScene &loaded, const
         return 3;
     }
     const rt_camera *cam = rt_scene_camera(scene);
-    for (size_t k = 0; k < n; k++) write_png_file(staged[k], files[k], cam->width, cam->height, out.images[k]);
+    for (size_t k = 0; k < n; k++)
+        write_png_file(outputs.set.staged(outputs.first_frame + k), files[k], cam->width, cam->height, out.images[k]);
     write_stats(outputs, cl, out.report);
-    if (!csv.empty()) write_text_file(csv, frames_csv_path, frames_csv(out.frames));
+    if (outputs.frames_csv)
+        write_text_file(outputs.set.staged(*outputs.frames_csv), cl.text("--frames-csv"), frames_csv(out.frames));
     outputs.set.commit();
     if (!config.quiet) {
         print_summary_stdout(out.report);
@@ -370,15 +382,17 @@ int run(CommandLine &cl, double wall_start)
     if (config.style == TimingStyle::lt && config.quantum_us == 0 && !config.quiet)
         std::fprintf(stderr, "torusrt-sim: warning: --style lt without --quantum: a quantum of 0 synchronises at "
                              "every transfer, as --style at does (give --quantum, e.g. 1ms)\n");
+    CameraPathPtr file = read_camera_path_file(cl.anim);
     StagedOutputs outputs;
-    stage_outputs(cl, config, outputs);
+    stage_outputs(cl, config, cl.anim.animated() ? animation_frame_count(cl.anim, file.get()) : 0, outputs);
     LoadedScene loaded = load_scene(config.scene_path, config.width, config.height, config.cells, config.quiet,
                                     &config.memory);
     check_shade_tree(config.scene_path, loaded.scene.get(), config.step, config.memory, PacketPool::bytes_per_packet());
     nlohmann::json mapping_facts = prepare_mapping(config, loaded.scene.get(), loaded.grid.get());
     if (cl.anim.animated()) {
-        write_mapping_outputs(config, loaded.scene.get(), loaded.grid.get(), outputs.write_map, outputs.load_map);
-        return animate(cl, config, loaded, mapping_facts, outputs, wall_start);
+        write_mapping_outputs(config, loaded.scene.get(), loaded.grid.get(), outputs.set, outputs.write_map,
+                              outputs.load_map);
+        return animate(cl, config, loaded, mapping_facts, outputs, std::move(file), wall_start);
     }
     double t1 = config.t1_s;
     std::string t1_source = "passed with --t1";
@@ -395,8 +409,9 @@ int run(CommandLine &cl, double wall_start)
         return 3;
     }
     const rt_camera *cam = rt_scene_camera(loaded.scene.get());
-    write_mapping_outputs(config, loaded.scene.get(), loaded.grid.get(), outputs.write_map, outputs.load_map);
-    write_png_file(outputs.png, cl.common.output, cam->width, cam->height, out.rgb8);
+    write_mapping_outputs(config, loaded.scene.get(), loaded.grid.get(), outputs.set, outputs.write_map,
+                          outputs.load_map);
+    write_png_file(outputs.set.staged(*outputs.png), cl.common.output, cam->width, cam->height, out.rgb8);
     write_stats(outputs, cl, out.report);
     outputs.set.commit();
     if (!config.quiet) {

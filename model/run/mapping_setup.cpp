@@ -58,37 +58,44 @@ nlohmann::json prepare_mapping(SimConfig &config, rt_scene *scene, const rt_grid
 
 namespace {
 
-void write_mapping(const SimConfig &config, const rt_grid *grid, const std::string &path)
+void write_mapping(const SimConfig &config, const rt_grid *grid, const std::string &path, const std::string &shown)
 {
     if (path.empty()) return;
     int dims[3];
     rt_grid_dims(grid, dims);
-    char msg[RT_MSG_LEN] = "";
-    if (rt_map_file_write(path.c_str(), dims, config.node_count(), config.owner_table.data(), msg,
-                          sizeof msg) != RT_OK)
-        throw UserError(std::string("--write-map: ") + msg);
+    write_stream_file(path, shown, "--write-map", [&](FILE *fp, char *msg, size_t msg_len) {
+        return rt_map_file_write(fp, shown.c_str(), dims, config.node_count(), config.owner_table.data(), msg,
+                                 msg_len);
+    });
 }
 
-void write_load_map(const SimConfig &config, rt_scene *scene, const rt_grid *grid, const std::string &path)
+void write_load_map(const SimConfig &config, rt_scene *scene, const rt_grid *grid, const std::string &path,
+                    const std::string &shown)
 {
     if (path.empty()) return;
     rt_cost_pilot pilot;
     char msg[RT_MSG_LEN] = "";
     if (rt_cost_pilot_run(scene, grid, &config.step, &config.timing, &pilot, msg, sizeof msg) != RT_OK)
         throw UserError(std::string("--load-map: pilot run: ") + msg);
-    rt_status st = rt_load_map_write(path.c_str(), pilot.dims, pilot.work_us, config.owner_table.data(),
-                                     config.node_count(), msg, sizeof msg);
+    try {
+        write_stream_file(path, shown, "--load-map", [&](FILE *fp, char *why, size_t why_len) {
+            return rt_load_map_write(fp, shown.c_str(), pilot.dims, pilot.work_us, config.owner_table.data(),
+                                     config.node_count(), why, why_len);
+        });
+    } catch (...) {
+        rt_cost_pilot_release(&pilot);
+        throw;
+    }
     rt_cost_pilot_release(&pilot);
-    if (st != RT_OK) throw UserError(std::string("--load-map: ") + msg);
 }
 
 }  // namespace
 
-void write_mapping_outputs(const SimConfig &config, rt_scene *scene, const rt_grid *grid,
-                           const std::string &write_map_path, const std::string &load_map_path)
+void write_mapping_outputs(const SimConfig &config, rt_scene *scene, const rt_grid *grid, OutputSet &outputs,
+                           std::optional<OutputSet::Id> write_map, std::optional<OutputSet::Id> load_map)
 {
-    write_mapping(config, grid, write_map_path);
-    write_load_map(config, scene, grid, load_map_path);
+    if (write_map) write_mapping(config, grid, outputs.staged(*write_map), outputs.path(*write_map));
+    if (load_map) write_load_map(config, scene, grid, outputs.staged(*load_map), outputs.path(*load_map));
 }
 
 }  // namespace torusrt

@@ -2,11 +2,14 @@
 // a regular mapping, an explicit --map-file, or --map cost (pilot run + Scotch).
 #pragma once
 
+#include <optional>
+
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include "rt_grid.h"
 #include "rt_scene.h"
+#include "output_files.h"
 #include "sim_config.h"
 
 namespace torusrt {
@@ -20,10 +23,10 @@ void read_map_file(const SimConfig &config, const int dims[3], std::vector<int32
 
 nlohmann::json prepare_mapping(SimConfig &config, rt_scene *scene, const rt_grid *grid);
 
-// Writes the files asked for to the paths given (empty: not asked; UserError on failure):
-// --write-map (config.owner_table) and --load-map (a pilot run's per-cell work beside the
-// owners, as a PNG). The paths are the run's output set's, committed with its other outputs.
-void write_mapping_outputs(const SimConfig &config, rt_scene *scene, const rt_grid *grid,
-                           const std::string &write_map_path, const std::string &load_map_path);
+// Writes the files asked for into the run's output set (UserError on failure), committed with
+// its other outputs: --write-map (config.owner_table) and --load-map (a pilot run's per-cell
+// work beside the owners, as a PNG).
+void write_mapping_outputs(const SimConfig &config, rt_scene *scene, const rt_grid *grid, OutputSet &outputs,
+                           std::optional<OutputSet::Id> write_map, std::optional<OutputSet::Id> load_map);
 
 }  // namespace torusrt

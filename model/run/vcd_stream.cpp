@@ -9,6 +9,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "signal_cleanup.h"
 #include "user_error.h"
 
 namespace torusrt {
@@ -99,6 +100,8 @@ VcdStream::VcdStream(const std::string &out_path, const std::string &shown, uint
     m_dir = pattern;
     m_sc_name = m_dir + "/trace";
     std::string fifo = m_sc_name + ".vcd";
+    m_dir_slot = remove_on_signal(m_dir, true);
+    m_fifo_slot = remove_on_signal(fifo);
     // The second, write-only descriptor keeps the FIFO open, so reads block (instead of seeing
     // end of file) until SystemC has opened and closed it and finish() drops this one.
     if (mkfifo(fifo.c_str(), 0600) != 0 || (m_read_fd = open(fifo.c_str(), O_RDONLY | O_NONBLOCK)) < 0 ||
@@ -113,6 +116,7 @@ VcdStream::VcdStream(const std::string &out_path, const std::string &shown, uint
         stop();
         throw UserError(shown + ": cannot write: " + std::strerror(err));
     }
+    SignalsBlocked blocked;  // the copy thread inherits the mask: stopping signals go to the main thread
     m_thread = std::thread([this] { copy_loop(); });
 }
 
@@ -171,6 +175,8 @@ void VcdStream::stop()
     if (!m_dir.empty()) {
         unlink((m_sc_name + ".vcd").c_str());
         rmdir(m_dir.c_str());
+        forget_on_signal(m_fifo_slot);
+        forget_on_signal(m_dir_slot);
         m_dir.clear();
     }
 }

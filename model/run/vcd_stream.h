@@ -3,6 +3,7 @@
 // (a full disk fails the run) and, given a time window, keeps only the changes inside it.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <thread>
@@ -30,6 +31,7 @@ class VcdStream {
     uint64_t m_from_ps, m_to_ps;
     int m_read_fd = -1, m_hold_fd = -1, m_out_fd = -1;
     int m_error = 0;  // errno of the first failed write or close
+    size_t m_dir_slot = 0, m_fifo_slot = 0;  // their signal_cleanup registrations
     std::thread m_thread;
 };
 

@@ -64,20 +64,14 @@ void check_animation_options(AnimationOptions &opt)
                         2);
 }
 
-CameraPathPtr make_camera_path(const AnimationOptions &opt, const rt_scene *scene)
+CameraPathPtr read_camera_path_file(const AnimationOptions &opt)
 {
+    if (opt.camera_path.empty()) return nullptr;
     char msg[RT_MSG_LEN] = "";
     rt_camera_path *raw = nullptr;
-    if (!opt.orbit.empty()) {
-        rt_camera_pose start = rt_camera_pose_of(rt_scene_camera(scene));
-        if (rt_camera_path_orbit(&start, parse_degrees(opt.orbit), static_cast<uint32_t>(opt.frames),
-                                 &raw, msg, sizeof msg) != RT_OK)
-            throw UserError(std::string("--orbit: ") + msg);
-        return CameraPathPtr(raw);
-    }
     // A camera path, like a --map-file, is part of the command line: a bad one is exit 2.
     if (rt_camera_path_load(opt.camera_path.c_str(), &raw, msg, sizeof msg) != RT_OK)
-        throw UserError(msg, 2);
+        throw UserError(std::string("--camera-path: ") + msg, 2);
     CameraPathPtr path(raw);
     size_t count = rt_camera_path_count(raw);
     if (opt.frames >= 0 && static_cast<size_t>(opt.frames) != count)
@@ -85,6 +79,23 @@ CameraPathPtr make_camera_path(const AnimationOptions &opt, const rt_scene *scen
                             " holds " + std::to_string(count) + " camera lines (one per frame)",
                         2);
     return path;
+}
+
+size_t animation_frame_count(const AnimationOptions &opt, const rt_camera_path *file)
+{
+    return file ? rt_camera_path_count(file) : static_cast<size_t>(opt.frames);
+}
+
+CameraPathPtr make_camera_path(const AnimationOptions &opt, const rt_scene *scene, CameraPathPtr file)
+{
+    if (file) return file;
+    char msg[RT_MSG_LEN] = "";
+    rt_camera_path *raw = nullptr;
+    rt_camera_pose start = rt_camera_pose_of(rt_scene_camera(scene));
+    if (rt_camera_path_orbit(&start, parse_degrees(opt.orbit), static_cast<uint32_t>(opt.frames), &raw, msg,
+                             sizeof msg) != RT_OK)
+        throw UserError(std::string("--orbit: ") + msg);
+    return CameraPathPtr(raw);
 }
 
 }  // namespace torusrt

@@ -34,8 +34,14 @@ AnimationOptions animation_options_given(const std::map<std::string, std::string
 // --frames N needs --orbit (and --orbit needs --frames); --camera-path gives the frame count
 // itself, and --frames beside it must agree. Every frame's orbit angle must be finite.
 void check_animation_options(AnimationOptions &opt);
-// The frames' camera poses: the orbit from the scene's own camera, or the file (exit 1 with
-// FILE:LINE for a bad file, exit 2 if --frames disagrees with it).
-CameraPathPtr make_camera_path(const AnimationOptions &opt, const rt_scene *scene);
+// The --camera-path file's poses, read before the scene so that every frame's output can be
+// checked first (nullptr for --orbit). A bad file is exit 2 with FILE:LINE, and so is --frames
+// disagreeing with it.
+CameraPathPtr read_camera_path_file(const AnimationOptions &opt);
+// The number of frames: the file's poses, or --frames.
+size_t animation_frame_count(const AnimationOptions &opt, const rt_camera_path *file);
+// The frames' camera poses: the file's (read_camera_path_file), or the orbit from the scene's
+// own camera.
+CameraPathPtr make_camera_path(const AnimationOptions &opt, const rt_scene *scene, CameraPathPtr file);
 
 }  // namespace torusrt

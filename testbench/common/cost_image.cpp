@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "output_files.h"
 #include "rt_load_image.h"
 #include "user_error.h"
 
@@ -31,9 +32,9 @@ void CostImage::attach(rt_render_options *o)
 void CostImage::write(const std::string &write_path) const
 {
     if (m_path.empty()) return;
-    char msg[RT_MSG_LEN] = "";
-    if (rt_cost_image_write(write_path.c_str(), m_width, m_height, m_us.data(), msg, sizeof msg) != RT_OK)
-        throw UserError(std::string("--cost-image: ") + msg);
+    write_stream_file(write_path, m_path, "--cost-image", [this](FILE *fp, char *msg, size_t msg_len) {
+        return rt_cost_image_write(fp, m_path.c_str(), m_width, m_height, m_us.data(), msg, msg_len);
+    });
 }
 
 nlohmann::json CostImage::json() const

@@ -143,11 +143,11 @@ bad angle0 2 "$good""0 0 30 0 0 0 0 1 0 -5\n"
 bad empty 2 "# nothing\n\n"
 bad long 2 "$good$(printf '%5000s' '')\n"
 # Not a regular file, and a missing file: named, exit 2, no output.
-rejected 2 "$TMP: not a regular file" -o "$out" --camera-path "$TMP"
+rejected 2 "--camera-path: $TMP: is a folder, not a regular file" -o "$out" --camera-path "$TMP"
 rejected 2 "$TMP/missing.txt: cannot open" -o "$out" --camera-path "$TMP/missing.txt"
 if command -v mkfifo >/dev/null; then
     mkfifo "$TMP/fifo"
-    rejected 2 "not a regular file" -o "$out" --camera-path "$TMP/fifo"
+    rejected 2 "$TMP/fifo: is a FIFO, not a regular file" -o "$out" --camera-path "$TMP/fifo"
 fi
 
 finish

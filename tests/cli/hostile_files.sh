@@ -29,10 +29,10 @@ expect_refused() {
 }
 
 for exe in torusrt-render torusrt-sim; do
-    expect_refused "$exe-timing-dev-zero" "$exe" "/dev/zero: not a regular file" "$scene" --timing /dev/zero
-    expect_refused "$exe-timing-fifo" "$exe" "$TMP/fifo: not a regular file" "$scene" --timing "$TMP/fifo"
-    expect_refused "$exe-scene-fifo" "$exe" "$TMP/fifo: not a regular file" "$TMP/fifo"
-    expect_refused "$exe-scene-dir" "$exe" "$TMP: cannot read" "$TMP"
+    expect_refused "$exe-timing-dev-zero" "$exe" "/dev/zero: is a character device, not a regular file" "$scene" --timing /dev/zero
+    expect_refused "$exe-timing-fifo" "$exe" "$TMP/fifo: is a FIFO, not a regular file" "$scene" --timing "$TMP/fifo"
+    expect_refused "$exe-scene-fifo" "$exe" "$TMP/fifo: is a FIFO, not a regular file" "$TMP/fifo"
+    expect_refused "$exe-scene-dir" "$exe" "$TMP: is a folder, not a regular file" "$TMP"
     expect_refused "$exe-escaped" "$exe" "e\\x1bc.nff:2: unknown keyword '\\xc2\\x9b2J'" "$TMP/e${esc}c.nff"
     check "$exe: a raw ESC byte reached stderr" [ "$(tr -d -c '\033' <"$TMP/$exe-escaped.stderr" | wc -c)" -eq 0 ]
 done

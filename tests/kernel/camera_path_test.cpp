@@ -200,7 +200,7 @@ TEST(CameraPathFile, OnlyRegularFilesAreRead)
     rt_camera_path *cp = nullptr;
     char msg[RT_MSG_LEN] = "";
     EXPECT_EQ(rt_camera_path_load(testing::TempDir().c_str(), &cp, msg, sizeof msg), RT_ERR_IO);
-    EXPECT_NE(std::string(msg).find("not a regular file"), std::string::npos) << msg;
+    EXPECT_NE(std::string(msg).find("is a folder, not a regular file"), std::string::npos) << msg;
     EXPECT_EQ(rt_camera_path_load("/nonexistent/path.txt", &cp, msg, sizeof msg), RT_ERR_IO);
     EXPECT_NE(std::string(msg).find("/nonexistent/path.txt: "), std::string::npos) << msg;
     EXPECT_EQ(cp, nullptr);

@@ -127,7 +127,7 @@ TEST(NffBad, HandCheckedLineNumbers)
         {"polygon-count-two.nff", 9, RT_ERR_PARSE, "at least 3"},
         {"truncated-cone.nff", 11, RT_ERR_PARSE, "'c' at line 9 is missing its apex z"},
         {"truncated-view.nff", 5, RT_ERR_PARSE, "end of file"},
-        {"binary-garbage.nff", 9, RT_ERR_PARSE, "binary data"},
+        {"binary-garbage.nff", 10, RT_ERR_PARSE, "binary data"},  // the file reader finds its NUL first
         {"utf16-text.nff", 1, RT_ERR_PARSE, "binary data"},
         {"nul-byte.nff", 8, RT_ERR_PARSE, "binary data"},
         {"negative-radius.nff", 9, RT_ERR_PARSE,
