@@ -222,7 +222,7 @@ int run(RenderOptions &opt)
 
     setup.budget = rt_budget_make(setup.settings.memory_bytes);
     setup.loaded = load_scene(opt.common.scene, setup.settings.size[0], setup.settings.size[1], setup.settings.cells,
-                              opt.common.quiet, &setup.budget);
+                              opt.common.quiet, &setup.budget, setup.settings.preprocess_count);
     setup.ro = rt_render_options_default();
     setup.ro.step = setup.settings.step;
     setup.ro.step.brute_force = opt.brute_force;

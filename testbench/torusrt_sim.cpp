@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 #include <systemc>
+#include <tuple>
 
 #include "animation_options.h"
 #include "animation_run.h"
@@ -37,6 +38,7 @@ struct CommandLine {
     std::string arbiter = "round-robin", dispatch = "round-robin", link_us, packet_bytes, link_bytes_per_us;
     std::string flow = "classes";
     long long queue = 0;
+    long long cell_header_bytes = 4, list_entry_bytes = 4, object_record_bytes = 0;  // memory accounting
     int cluster = 1;
     MappingOptions mapping;
     bool map_given = false; // --map was on the command line or in the --config file
@@ -108,6 +110,7 @@ MachineConfig machine_from(const CommandLine &cl, const CommonSettings &common)
 {
     MachineConfig m;
     m.cells = common.cells;
+    m.preprocess_count = common.preprocess_count;
     m.step = common.step;
     m.timing = common.timing;
     m.timing_profile = common.timing_label;
@@ -127,6 +130,15 @@ MachineConfig machine_from(const CommandLine &cl, const CommonSettings &common)
     m.data = value_named("--data", cl.data, kDataModeNames);
     m.arbiter = value_named("--arbiter", cl.arbiter, kArbiterNames);
     m.dispatch = value_named("--dispatch", cl.dispatch, kDispatchNames);
+    for (const auto &[name, value, field] :
+         {std::tuple<const char *, long long, uint32_t *>{"--cell-header-bytes", cl.cell_header_bytes,
+                                                          &m.memory_layout.cell_header_bytes},
+          {"--list-entry-bytes", cl.list_entry_bytes, &m.memory_layout.list_entry_bytes},
+          {"--object-record-bytes", cl.object_record_bytes, &m.memory_layout.object_record_bytes}}) {
+        if (value < 0 || value > kMaxRecordBytes)
+            throw UserError(std::string(name) + ": must be 0 to " + std::to_string(kMaxRecordBytes), 2);
+        *field = static_cast<uint32_t>(value);
+    }
     return m;
 }
 
@@ -173,6 +185,12 @@ void declare_machine_options(CLI::App &app, CommandLine &cl)
     app.add_option("--arbiter", cl.arbiter, "cluster bus arbiter: round-robin (default) or fixed-priority")->type_name("KIND");
     app.add_option("--dispatch", cl.dispatch, "cluster packet dispatch: round-robin (default) or shortest-queue")
         ->type_name("KIND");
+    app.add_option("--cell-header-bytes", cl.cell_header_bytes, "memory accounting: bytes per cell list (default 4)")
+        ->type_name("BYTES");
+    app.add_option("--list-entry-bytes", cl.list_entry_bytes, "memory accounting: bytes per object in a cell list (default 4)")
+        ->type_name("BYTES");
+    app.add_option("--object-record-bytes", cl.object_record_bytes,
+                   "memory accounting: bytes per object record (default 0: each kind's own size)")->type_name("BYTES");
     add_mapping_options(app, cl.mapping); // --map-file, --pilot-size; the run's --write-map, --load-map
 }
 
@@ -280,6 +298,20 @@ UserError naming_config_file(const CLI::App &app, const UserError &e, int argc, 
         !opt->get_configurable() || opt->count() == 0 || on_command_line(argc, argv, name))
         return e;
     return UserError(config->as<std::string>() + ": " + what, 2);
+}
+
+// A relative --timing or --map-file path read from a --config file names a file beside the
+// machine file, so that a machine file and its timing file travel together.
+void resolve_config_relative_paths(const CLI::App &app, CommandLine &cl, int argc, char **argv)
+{
+    if (cl.config_file.empty()) return;
+    size_t slash = cl.config_file.find_last_of('/');
+    if (slash == std::string::npos) return;  // the machine file is in the working folder
+    std::string dir = cl.config_file.substr(0, slash + 1);
+    for (const auto &[name, path] : {std::pair<const char *, std::string *>{"--timing", &cl.common.timing_file},
+                                     {"--map-file", &cl.mapping.map_file}})
+        if (app.count(name) > 0 && !on_command_line(argc, argv, name) && !path->empty() && (*path)[0] != '/')
+            *path = dir + *path;
 }
 
 // --map and --map-file exclude each other; one on the command line replaces the other from a
@@ -442,7 +474,7 @@ int run(CommandLine &cl, double wall_start)
     StagedOutputs outputs;
     stage_outputs(cl, config, outputs);
     LoadedScene loaded = load_scene(config.scene_path, config.width, config.height, config.cells, config.quiet,
-                                    &config.memory);
+                                    &config.memory, config.preprocess_count);
     nlohmann::json mapping_facts = prepare_mapping(config, loaded.scene.get(), loaded.grid.get());
     if (cl.anim.animated()) {
         write_mapping_outputs(config, loaded.scene.get(), loaded.grid.get(), outputs.write_map, outputs.load_map);
@@ -489,6 +521,7 @@ int sc_main(int argc, char **argv)
                    [&] {
                        resolve_mapping_sources(app, cl, argc, argv);
                        if (app.get_config_ptr()->count() > 0) cl.config_file = app.get_config_ptr()->as<std::string>();
+                       resolve_config_relative_paths(app, cl, argc, argv);
                        try {
                            return cl.dump_config ? dump_config(app, cl) : run(cl, wall_start);
                        } catch (const UserError &e) {

@@ -50,6 +50,7 @@ OptionList machine_options(const MachineConfig &m)
     if (m.mapping != RT_MAP_FILE) o.emplace_back("map", map_text(m));
     o.emplace_back("topology", topology_name(m.topology));
     o.emplace_back("cells", dims(m.cells));
+    o.emplace_back("preprocess-count", preprocess_count_name(m.preprocess_count));
     o.emplace_back("queue", std::to_string(m.queue_capacity));
     o.emplace_back("flow", flow_name(m.flow));
     o.emplace_back("timing", m.timing_file);
@@ -64,6 +65,9 @@ OptionList machine_options(const MachineConfig &m)
     o.emplace_back("data", data_mode_name(m.data));
     o.emplace_back("arbiter", arbiter_name(m.arbiter));
     o.emplace_back("dispatch", dispatch_name(m.dispatch));
+    o.emplace_back("cell-header-bytes", std::to_string(m.memory_layout.cell_header_bytes));
+    o.emplace_back("list-entry-bytes", std::to_string(m.memory_layout.list_entry_bytes));
+    o.emplace_back("object-record-bytes", std::to_string(m.memory_layout.object_record_bytes));
     o.emplace_back("timing-profile", m.timing_base);
     o.emplace_back("map-file", m.map_file);
     o.emplace_back("pilot-size", size_text(m.pilot_size));

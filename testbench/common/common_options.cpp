@@ -29,6 +29,9 @@ void add_common_options(CLI::App &app, CommonOptions &o, const std::string &outp
                    std::string("timing profile: calibrated or literal (default ") + rt_timing_default_profile() +
                        "); --timing FILE overrides single keys on top")
         ->type_name("NAME");
+    app.add_option("--preprocess-count", o.preprocess_count,
+                   "how preprocessing units are counted: sequential (default), per-plane or bounding-sphere")
+        ->type_name("RULE");
     app.add_flag("-q,--quiet", o.quiet, "print nothing but errors; no progress")->configurable(false);
 }
 
@@ -46,6 +49,7 @@ CommonSettings parse_common_options(const CommonOptions &o)
     s.step = rt_step_params_default();
     s.step.max_depth = o.max_depth;
     s.step.min_weight = parse_fraction("--min-weight", o.min_weight);
+    s.preprocess_count = value_named("--preprocess-count", o.preprocess_count, kPreprocessCountNames);
     s.memory_bytes = parse_memory_size("--memory-budget", o.memory_budget);
     s.timing_label = choose_timing(o.timing_profile, o.timing_file, &s.timing);
     s.timing_base = o.timing_profile.empty() ? rt_timing_default_profile() : o.timing_profile;

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <string>
 
+#include "preprocess_count.h"
 #include "rt_step.h"
 #include "rt_timing.h"
 
@@ -16,7 +17,7 @@ namespace torusrt {
 // As typed.
 struct CommonOptions {
     std::string scene, output, stats, cells = "24", size, min_weight = "1/512", memory_budget = "4G";
-    std::string timing_file, timing_profile;
+    std::string timing_file, timing_profile, preprocess_count = "sequential";
     int max_depth = 8;
     bool quiet = false;
 };
@@ -39,6 +40,7 @@ struct CommonSettings {
     rt_timing timing{};
     std::string timing_label;                // the profile, with " + FILE" for a timing file
     std::string timing_base;                 // the profile
+    rt_preprocess_count preprocess_count = RT_COUNT_SEQUENTIAL;
 };
 CommonSettings parse_common_options(const CommonOptions &options);
 

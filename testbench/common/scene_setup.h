@@ -6,6 +6,7 @@
 
 #include "kernel_handles.h"
 #include "rt_budget.h"
+#include "rt_grid.h"
 
 namespace torusrt {
 
@@ -22,6 +23,7 @@ struct LoadedScene {
 std::string shown_path(const std::string &path);
 
 LoadedScene load_scene(const std::string &path, unsigned width, unsigned height,
-                       const std::array<int, 3> &cells, bool quiet, rt_budget *budget = nullptr);
+                       const std::array<int, 3> &cells, bool quiet, rt_budget *budget = nullptr,
+                       rt_preprocess_count count = RT_COUNT_SEQUENTIAL);
 
 }  // namespace torusrt
