@@ -26,6 +26,7 @@ abspath() { local d; d=$(cd "$(dirname "$1")" && pwd) || return 1; echo "$d/$(ba
 #   TORUSRT_LB_MAP         what the load-balancing ("cyclic") points run (default cyclic)
 #   TORUSRT_SCENE_IMAGE1/2 the scene files of image 1 and image 2 (default scenes/paper-imageN.nff)
 #   TORUSRT_POINT_ARGS     more torusrt-sim arguments for every point, split at spaces
+#   TORUSRT_MAPS           the full mode's mappings (default "block cyclic bc2 bc3")
 SHAPE16=${TORUSRT_SHAPE16:-4x2x2}
 read -r -a POINT_ARGS <<<"${TORUSRT_POINT_ARGS:-}"
 # The paper's 3D torus shapes for each IP count.
@@ -48,7 +49,7 @@ define_mode() {
             SIZE=144x144
             SCENES=(image1 image2)
             NLIST=(1 2 4 8 16 32 64 128 256 512)
-            MAPS=(block cyclic bc2 bc3)
+            read -r -a MAPS <<<"${TORUSRT_MAPS:-block cyclic bc2 bc3}"
             MLIST=(1 2 4 8 12 16 32 64)
             DATAS=(replicated shared)
             CLUSTER_SCENES=(image1 image2)
