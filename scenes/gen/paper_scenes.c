@@ -150,6 +150,29 @@ void build_paper_image1_tree(scene *sc, double factor)
     image1_setting(sc);
 }
 
+/* Image 2's spheres and setting: the glass and the mirror sphere, then the 121 small ones,
+ * on the horizontal plane y = 0 (floor) or on the vertical plane z = -7 (wall); the camera. */
+static void image2(scene *sc, int wall, vec3 from, vec3 at)
+{
+    mat(sc, 0.95, 0.97, 1.0, 0.05, 0.1, 60, 0.9, 1.5);
+    sphere(sc, v3(-2.3, 2.5, -2.0), 2.0);
+    mat(sc, 0.85, 0.85, 0.9, 0.1, 0.9, 60, 0, 1);
+    sphere(sc, v3(2.3, 2.5, -2.0), 2.0);
+    for (int j = 0; j < 11; ++j) {
+        for (int i = 0; i < 11; ++i) {
+            diffuse(sc, q9(0.9 - 0.06 * i), q9(0.3 + 0.05 * j), q9(0.25 + 0.065 * i), 0.85);
+            vec3 c = wall ? v3(1.5 * (i - 5), 2.5 + 1.5 * (5 - j), -7.0) : v3(1.5 * (i - 5), 0, -1.5 * j);
+            sphere(sc, c, 0.5);
+        }
+    }
+    view(sc, from, at, v3(0, 1, 0), 0, 144, 144);
+    frame_all(sc, 1.02);
+    background(sc, 0.12, 0.16, 0.32);
+    ambient(sc, 0.1, 0.1, 0.1);
+    add_light(sc, v3(-10, 18, 14), 0.8, 0.8, 0.8);
+    add_light(sc, v3(12, 10, 6), 0.45, 0.45, 0.5);
+}
+
 /* Image 2: a glass and a mirror sphere in front of an 11 x 11 plane of small spheres. */
 void build_paper_image2(scene *sc, double factor)
 {
@@ -159,23 +182,7 @@ void build_paper_image2(scene *sc, double factor)
     note(sc, "11 x 11, 1.5 apart) laid out in the horizontal plane y = 0 reaching behind them;");
     note(sc, "123 objects. Colour of the small spheres shades with column and row.");
     note(sc, "The camera looks down on the plane so it shows behind, through and in the big ones.");
-
-    mat(sc, 0.95, 0.97, 1.0, 0.05, 0.1, 60, 0.9, 1.5);
-    sphere(sc, v3(-2.3, 2.5, -2.0), 2.0);
-    mat(sc, 0.85, 0.85, 0.9, 0.1, 0.9, 60, 0, 1);
-    sphere(sc, v3(2.3, 2.5, -2.0), 2.0);
-    for (int j = 0; j < 11; ++j) {
-        for (int i = 0; i < 11; ++i) {
-            diffuse(sc, q9(0.9 - 0.06 * i), q9(0.3 + 0.05 * j), q9(0.25 + 0.065 * i), 0.85);
-            sphere(sc, v3(1.5 * (i - 5), 0, -1.5 * j), 0.5);
-        }
-    }
-    view(sc, v3(0, 15, 10), v3(0, 0.5, -6), v3(0, 1, 0), 0, 144, 144);
-    frame_all(sc, 1.02);
-    background(sc, 0.12, 0.16, 0.32);
-    ambient(sc, 0.1, 0.1, 0.1);
-    add_light(sc, v3(-10, 18, 14), 0.8, 0.8, 0.8);
-    add_light(sc, v3(12, 10, 6), 0.45, 0.45, 0.5);
+    image2(sc, 0, v3(0, 15, 10), v3(0, 0.5, -6));
 }
 
 /* Image 2, wall arrangement: the 121 small spheres on a vertical plane behind the big ones. */
@@ -185,20 +192,5 @@ void build_paper_image2_wall(scene *sc, double factor)
     note(sc, "Image 2, wall arrangement (docs/fidelity.md): paper-image2's glass and mirror spheres");
     note(sc, "(radius 2) in front of its 121 small diffuse spheres (radius 0.5, 11 x 11, 1.5 apart)");
     note(sc, "standing in the vertical plane z = -7 behind them, facing the eye; 123 objects.");
-    mat(sc, 0.95, 0.97, 1.0, 0.05, 0.1, 60, 0.9, 1.5);
-    sphere(sc, v3(-2.3, 2.5, -2.0), 2.0);
-    mat(sc, 0.85, 0.85, 0.9, 0.1, 0.9, 60, 0, 1);
-    sphere(sc, v3(2.3, 2.5, -2.0), 2.0);
-    for (int j = 0; j < 11; ++j) {
-        for (int i = 0; i < 11; ++i) {
-            diffuse(sc, q9(0.9 - 0.06 * i), q9(0.3 + 0.05 * j), q9(0.25 + 0.065 * i), 0.85);
-            sphere(sc, v3(1.5 * (i - 5), 2.5 + 1.5 * (5 - j), -7.0), 0.5);
-        }
-    }
-    view(sc, v3(0, 4, 14), v3(0, 2.5, -4), v3(0, 1, 0), 0, 144, 144);
-    frame_all(sc, 1.02);
-    background(sc, 0.12, 0.16, 0.32);
-    ambient(sc, 0.1, 0.1, 0.1);
-    add_light(sc, v3(-10, 18, 14), 0.8, 0.8, 0.8);
-    add_light(sc, v3(12, 10, 6), 0.45, 0.45, 0.5);
+    image2(sc, 1, v3(0, 4, 14), v3(0, 2.5, -4));
 }
