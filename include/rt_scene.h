@@ -112,7 +112,7 @@ rt_box rt_scene_object_bounds(const rt_scene *scene, size_t index);
 int rt_scene_has_transmission(const rt_scene *scene);
 
 /* Data memory model (bytes) of one object as an IP would store it:
- * 4-byte floats and a 4-byte material index; see README "Memory model". */
+ * 4-byte floats and a 4-byte material index; see docs/memory.md. */
 uint32_t rt_scene_object_bytes(const rt_scene *scene, size_t index);
 /* Bytes of one material record. */
 uint32_t rt_scene_material_bytes(void);

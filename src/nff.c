@@ -7,7 +7,7 @@
  * and numbers are read by nff_tokens.c; this file reads the entities and
  * builds the scene only through the public builder of rt_scene.h.
  *
- * Decisions (for the NFF section of the project README):
+ * Decisions (as docs/scenes.md gives them):
  *  - a negative sphere or cone radius (NFF's "inside only") is rejected;
  *  - `hither` is read and ignored;
  *  - Shine >= 0 of any size; ior is checked (> 0) only when T > 0; colours and

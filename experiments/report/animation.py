@@ -104,7 +104,7 @@ def verdict(rows):
     return checks
 
 
-# Adaptive's totals in the study before, whose back-test re-made each guess of frame k-1 from the
+# Adaptive's totals with a back-test that re-made each guess of frame k-1 from the
 # table then in force instead of scoring the tables the guesses gave before frame k-1 ran.
 BEFORE = {("paper-image2", 512): 30.180, ("paper-image2", 64): 82.032,
           ("paper-image1", 512): 10.580, ("paper-image1", 64): 45.356}
@@ -115,8 +115,8 @@ BEFORE_DENSE = {("paper-image2", 512, 128): 119.345, ("paper-image2", 512, 256):
 
 
 VARIANTS_TEXT = (
-    "- Variants tried (32 frames, measured while designing, not regenerated here; paper-image1 at "
-    "512 / 64 nodes, total s): the trend alone as before 11.771 / 45.420; the work field itself moved "
+    "- Variants tried (32 frames, separate runs, not regenerated here; paper-image1 at "
+    "512 / 64 nodes, total s): the trend alone 11.771 / 45.420; the work field itself moved "
     "with the camera (trilinear splat), its weight against the unmoved field in {0, 0.5, 1} "
     "back-tested, 11.483 / 46.863; the rays moved instead (work per ray stays) 11.223 / 46.776 - the "
     "back-test took the unmoved field in 27 of the 30 frames it could test: the work sits where the "
@@ -125,7 +125,7 @@ VARIANTS_TEXT = (
     "with half of a cell's work kept 11.103 (512), a quarter kept 10.899 / 46.574, blurred twice "
     "11.346 (512); the trend added to the back-tested guesses, every guess blurred, 10.662 / 46.091 "
     "(paper-image2: 30.200 / 83.581), none blurred 46.107 (64; paper-image2 at 64: 80.883); blurred "
-    "and sharp guesses both back-tested (the default of the study before) 10.580 (512; paper-image2 at 64: "
+    "and sharp guesses both back-tested (re-made from the table in force) 10.580 (512; paper-image2 at 64: "
     "82.032). With "
     "every guess blurred, the back-test never took a moved one (0 of 31 frames in each "
     "of the four cases), so the camera's motion does not help predict where the work goes here.")
@@ -151,7 +151,7 @@ MARGIN_TEXT = (
 
 
 WINDOW_TEXT = (
-    "- A longer window (`--remap-window`; measured while designing, not regenerated here; total s at "
+    "- A longer window (`--remap-window`; separate runs, not regenerated here; total s at "
     "windows 1 / 4 / 8): at 32 frames paper-image2 at 512 nodes 30.098 / 30.407 / 30.407, at 64 nodes "
     "81.795 / 81.748 / 82.059, paper-image1 at 512 nodes 10.498 / 10.656 / 10.628, at 64 nodes "
     "44.892 / 45.469 / 45.552; at 128 frames on 64 nodes (windows 1 / 4 / 16) paper-image2 295.870 / "
@@ -160,7 +160,7 @@ WINDOW_TEXT = (
 
 
 TWO_PASS_TEXT = (
-    "- The machine's own preview instead of the host's (measured while designing, not regenerated here; "
+    "- The machine's own preview instead of the host's (separate runs, not regenerated here; "
     "paper-image1 at 512 nodes, 64x64, 32 frames): each frame in two passes, first the pixels on every "
     "second (fourth) row and column under the table adaptive picks, then the rest under a remap fitted "
     "to the first pass's measured per-cell work scaled to the remaining pixels, taken when its predicted "
@@ -175,7 +175,7 @@ TWO_PASS_TEXT = (
 )
 
 ROBUST_TEXT = (
-    "- Tables made robust to the guess's error (32 frames, measured while designing, not regenerated "
+    "- Tables made robust to the guess's error (32 frames, separate runs, not regenerated "
     "here; total s, paper-image1 at 512 nodes / paper-image2 at 64 / paper-image1 at 64, against the "
     "default's 10.580 / 82.032 / 45.356): a hedge guess (cell-wise max of frame k-1 and the trend, "
     "sharp and blurred) added to the back-tested guesses 10.607 / 82.843; every guess remapped and the "
@@ -198,7 +198,7 @@ ROBUST_TEXT = (
 
 
 RESOLUTION_TEXT = (
-    "- Four times the pixels (measured while designing, not regenerated here; 128x128, 32 frames, "
+    "- Four times the pixels (separate runs, not regenerated here; 128x128, 32 frames, "
     "total s, adaptive / every-frame / oracle): paper-image2 at 512 nodes 105.738 / 113.176 / 101.239 "
     "(adaptive +4.4 % against oracle), at 64 nodes 300.103 / 339.805 / 269.723 (+11.3 %); "
     "paper-image1 at 512 nodes 37.478 / 40.192 / 28.731 (+30.4 %), at 64 nodes 171.019 / 178.061 / "
@@ -222,12 +222,12 @@ def guess_counts(frames, keys):
 
 
 def before_text(runs, keys):
-    """Adaptive now against the adaptive of the study before, per case."""
+    """Adaptive against a back-test that re-makes its guesses, per case."""
     parts = []
     for scene, n in keys:
         if (scene, n) in BEFORE:
             a, b = float(by_policy(runs, scene, n)["adaptive"]["total_s"]), BEFORE[(scene, n)]
-            parts.append(f"{scene} at {n} nodes {b:.3f} s then, {a:.3f} s now ({gap_pct(a, b):+.1f} %)")
+            parts.append(f"{scene} at {n} nodes {b:.3f} s re-made, {a:.3f} s scored ({gap_pct(a, b):+.1f} %)")
     return "; ".join(parts)
 
 
@@ -266,7 +266,7 @@ def findings(runs, frames, keys):
             "did, while the orbit turns the view by 11.25 degrees a frame and the work moves to other cells; "
             "oracle alone maps each frame from its own load (and pays no migration, which the figures above "
             "show is not what it gains from). Remapping from frame k's own load (not a policy: it is the "
-            "oracle's privilege; measured while designing, not regenerated here) gave paper-image1 at 512 "
+            "oracle's privilege; separate runs, not regenerated here) gave paper-image1 at 512 "
             "nodes 8.387 s against oracle's 8.368 s: the remapping is not what is missing, the prediction is.",
             "- Adaptive's prediction: six guesses of frame k's load from what earlier frames measured and "
             "the camera path - frame k-1's (`frame`), the trend max(0, 2 x frame k-1 - frame k-2) (`trend`), "
@@ -277,9 +277,8 @@ def findings(runs, frames, keys):
             "table is scored by the measured work on its busiest nodes, as a ratio to the best of them; the "
             "guess taken is the one with the least mean ratio over the last `--remap-window` frames (default "
             "1: the frame just run). Guesses taken: " + guess_counts(frames, keys) + ".",
-            "- Against the adaptive of the study before, whose back-test re-made each guess of frame k-1 from "
-            "the table in force after it instead of scoring the table the guess had given before frame k-1 "
-            "ran: " + before_text(runs, keys) + ".",
+            "- Against a back-test that re-makes each guess of frame k-1 from the table in force after it "
+            "instead of scoring the table the guess had given before frame k-1 ran (separate runs): " + before_text(runs, keys) + ".",
             MARGIN_TEXT,
             WINDOW_TEXT,
             VARIANTS_TEXT,
@@ -298,7 +297,7 @@ def findings(runs, frames, keys):
             f"inside a frame has {pixels / hi:.0f} to {pixels / lo:.0f} of the {pixels} pixels; the busiest "
             "nodes' work in so sparse a sample is mostly sampling noise, and a larger preview costs the host "
             "more than a better table gains. Fitting the tables to the preview itself was worse still "
-            "(measured while designing the policy, not regenerated here): judged on the load they were "
+            "(separate runs, not regenerated here): judged on the load they were "
             "fitted to, those tables always looked best and ran slow - paper-image1 at 512 nodes took "
             "110.1 s at 1/16 of the pixels (51.7 s of it host time charged) and 146.8 s at 1/64 with the "
             "preview's own remap and fresh map among the candidates, 13.9 s at 1/256 fitted to the mean of "
@@ -327,14 +326,14 @@ def frame_table(frames, scene, n):
 
 
 MEAN_GUESS_TEXT = (
-    "- Less noise in the guess does not close the rest (measured while designing, not regenerated here): "
+    "- Less noise in the guess does not close the rest (separate runs, not regenerated here): "
     "with the mean of frames k-1 and k-2, sharp and blurred, added to the back-tested guesses, paper-image1 "
     "at 512 nodes in 128 frames took 36.690 s against 36.679 s without them (the back-test took the mean in "
-    "52 of the 127 frames), and 10.580 s in 32 frames, as without (never taken); both with the back-test of "
-    "the study before.")
+    "52 of the 127 frames), and 10.580 s in 32 frames, as without (never taken); both with a back-test that "
+    "re-makes each guess from the table in force.")
 
 NO_BACKTEST_TEXT = (
-    "- Without the back-test (measured while designing, not regenerated here): adaptive taking frame k-1's "
+    "- Without the back-test (separate runs, not regenerated here): adaptive taking frame k-1's "
     "load as its only guess, and keeping its table when the predicted gain does not exceed the migration, "
     "took (total s, 32 / 128 / 256 frames) paper-image1 at 64 nodes 47.853 / 169.236 / 329.596, at 512 nodes "
     "11.431 / 36.692 / 71.021, paper-image2 at 64 nodes 85.622 / 296.595 / 582.275, at 512 nodes 33.680 / "
@@ -426,9 +425,9 @@ def density_section(runs, dense, keys, nframes):
             pol = {r["policy"]: r for r in dense if r["scene"] == scene and int(r["n"]) == n and int(r["frames"]) == c}
             if "adaptive" in pol and (scene, n, c) in BEFORE_DENSE:
                 a, b = float(pol["adaptive"]["total_s"]), BEFORE_DENSE[(scene, n, c)]
-                before.append(f"{scene} at {n} nodes in {c} frames {b:.3f} s then, {a:.3f} s now ({gap_pct(a, b):+.1f} %)")
+                before.append(f"{scene} at {n} nodes in {c} frames {b:.3f} s re-made, {a:.3f} s scored ({gap_pct(a, b):+.1f} %)")
     if before:
-        out.append("- Adaptive against the study before (its back-test re-made the guesses of frame k-1): "
+        out.append("- Adaptive against a back-test that re-makes the guesses of frame k-1 (separate runs): "
                    + "; ".join(before) + ".")
     return out + [MEAN_GUESS_TEXT, NO_BACKTEST_TEXT, ""]
 

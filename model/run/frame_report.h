@@ -46,7 +46,7 @@ nlohmann::json frame_json(const FrameRecord &frame);
 // Totals: frame_count, policy (and adaptive's pilot_fraction, window and margin), total_s = sum of
 // image times + charged migration + charged host pilot time, and its parts.
 nlohmann::json animation_json(const std::vector<FrameRecord> &frames, const RemapSettings &remap);
-// One header line and one row per frame (columns as README "Animation in torusrt-sim").
+// One header line and one row per frame (columns in docs/frames.md).
 std::string frames_csv(const std::vector<FrameRecord> &frames);
 // The summary's table (nothing for a single image).
 void print_frame_table(const std::vector<FrameRecord> &frames, const RemapSettings &remap, std::FILE *out);

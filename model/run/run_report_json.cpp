@@ -1,4 +1,4 @@
-// run_report_json.cpp - the JSON report, written from a RunReport (keys in README.md).
+// run_report_json.cpp - the JSON report, written from a RunReport (keys in docs/report.md).
 #include <algorithm>
 #include <cstdlib>
 #include <utility>

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Every key of a flat, a cluster, a deadlock and an animation JSON report is in README.md's key table (or the
-# Clusters section's JSON paragraph), and every key the table lists unconditionally is written.
+# Every key of a flat, a cluster, a deadlock and an animation JSON report is in docs/report.md's key table (or
+# its Cluster keys section), and every key the table lists unconditionally is written.
 source "$(dirname "$0")/common.bash" "$@"
 need_exe torusrt-sim
 f="$SRC/scenes/paper-image1.nff"
@@ -12,12 +12,11 @@ check "the deadlock run exits 3" test $? -eq 3
 "$BUILD/torusrt-sim" "$f" -q --size 16x16 -o "$TMP/an_%d.png" --stats "$TMP/an.json" --ips 2 --frames 3 --orbit 10 \
     --remap adaptive ||
     fail "animation run"
-python3 - "$SRC/README.md" "$TMP/flat.json" "$TMP/cl.json" "$TMP/dl.json" "$TMP/an.json" > "$TMP/keys.txt" <<'PY'
+python3 - "$SRC/docs/report.md" "$TMP/flat.json" "$TMP/cl.json" "$TMP/dl.json" "$TMP/an.json" > "$TMP/keys.txt" <<'PY'
 import json, re, sys
 readme = open(sys.argv[1]).read()
-table = readme[readme.index("**JSON keys**"):readme.index("**Reading the two efficiencies")]
-cluster = readme[readme.index("## Clusters"):]
-cluster = cluster[cluster.index("JSON: "):cluster.index("The VCD holds")]
+table = readme[readme.index("## The JSON report of `torusrt-sim`"):readme.index("## Cluster keys")]
+cluster = readme[readme.index("## Cluster keys"):readme.index("## Reading the two efficiencies")]
 def expand(s):  # a.{b,c{d,e}} -> a.b, a.c.d, a.c.e
     i = s.find("{")
     if i < 0:
