@@ -14,14 +14,8 @@
  *       none gives first = f-1;
  *   (b) k = first+1..f-1: "hi >= plane_k - tol?"; the first no gives
  *       last = k-1, all yes give last = f-1.
- * That is the sequential counting rule (RT_COUNT_SEQUENTIAL, the default);
- * RT_COUNT_PER_PLANE counts one unit per plane examined, the test placing
- * the extent wholly above, across or wholly below it at once (scan k =
- * 1..f-1 until the extent lies wholly below plane_k), and
- * RT_COUNT_BOUNDING_SPHERE does the same with the box of the object's
- * bounding sphere (a sphere's own). Every rule finds the same slab ranges
- * (or, for the bounding sphere, wider ones that the exact test prunes), so
- * the cell lists do not depend on the rule; only the units do.
+ * (RT_COUNT_SEQUENTIAL; PER_PLANE: one unit a plane, BOUNDING_SPHERE: the
+ * same on the bounding sphere's box; the lists never depend on the rule).
  * A factor of 1 costs nothing. Each sub-space in the product of the three
  * ranges is then kept only if an exact overlap test (not counted in units)
  * says the object meets it, and kept ones are split again down to single
@@ -200,30 +194,18 @@ static void slab_range(build *bd, int axis, int c0, int f, int m, int *first, in
     const rt_grid *g = bd->g;
     double lo = axis_of(bd->extent.lo, axis), hi = axis_of(bd->extent.hi, axis);
     double tol = g->tolerance;
-    *first = f - 1;
-    *last = f - 1;
-    if (bd->rule != RT_COUNT_SEQUENTIAL) {
-        /* One test per plane says above, across or below. */
-        int found = 0;
-        for (int k = 1; k < f; k++) {
+    *first = *last = f - 1;
+    if (bd->rule != RT_COUNT_SEQUENTIAL) { /* one test a plane: above, across or below */
+        for (int k = 1, found = 0; k < f; k++) {
             bd->units++;
-            if (!found && lo <= rt_grid_plane(g, axis, c0 + k * m) + tol) {
-                *first = k - 1;
-                found = 1;
-            }
-            if (found && !(hi >= rt_grid_plane(g, axis, c0 + k * m) - tol)) {
-                *last = k - 1;
-                break;
-            }
+            if (!found && lo <= rt_grid_plane(g, axis, c0 + k * m) + tol) *first = k - 1, found = 1;
+            if (found && !(hi >= rt_grid_plane(g, axis, c0 + k * m) - tol)) { *last = k - 1; break; }
         }
         return;
     }
     for (int k = 1; k < f; k++) {
         bd->units++;
-        if (lo <= rt_grid_plane(g, axis, c0 + k * m) + tol) {
-            *first = k - 1;
-            break;
-        }
+        if (lo <= rt_grid_plane(g, axis, c0 + k * m) + tol) { *first = k - 1; break; }
     }
     for (int k = *first + 1; k < f; k++) {
         bd->units++;
@@ -301,13 +283,11 @@ static int prepare_object(build *bd, size_t o)
     const rt_object *ob = &s->objects[o];
     bd->obj = ob;
     bd->extent = ob->bounds;
-    if (bd->rule == RT_COUNT_BOUNDING_SPHERE && ob->kind != RT_OBJ_SPHERE) {
-        /* The box of the sphere round the object's box. */
+    if (bd->rule == RT_COUNT_BOUNDING_SPHERE && ob->kind != RT_OBJ_SPHERE) { /* the sphere's box */
         rt_vec3 c = rt_vec_scale(rt_vec_add(ob->bounds.lo, ob->bounds.hi), 0.5);
         rt_vec3 e = rt_vec_sub(ob->bounds.hi, ob->bounds.lo);
         double r = 0.5 * hypot(hypot(e.x, e.y), e.z);
-        bd->extent.lo = rt_vec(c.x - r, c.y - r, c.z - r);
-        bd->extent.hi = rt_vec(c.x + r, c.y + r, c.z + r);
+        bd->extent = (rt_box){rt_vec(c.x - r, c.y - r, c.z - r), rt_vec(c.x + r, c.y + r, c.z + r)};
     }
     if (ob->kind == RT_OBJ_POLYGON) {
         const rt_polygon_data *p = &ob->u.polygon;
