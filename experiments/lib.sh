@@ -20,13 +20,22 @@ set_build() {
 # abspath PATH: absolute form of a path whose parent exists (the path itself need not).
 abspath() { local d; d=$(cd "$(dirname "$1")" && pwd) || return 1; echo "$d/$(basename "$1")"; }
 
+# The readings of the paper's unknowns a sweep runs under (docs/fidelity.md), each from the
+# environment, today's reading when unset:
+#   TORUSRT_SHAPE16        the arrangement of 16 nodes, flat and clustered (default 4x2x2)
+#   TORUSRT_LB_MAP         what the load-balancing ("cyclic") points run (default cyclic)
+#   TORUSRT_SCENE_IMAGE1/2 the scene files of image 1 and image 2 (default scenes/paper-imageN.nff)
+#   TORUSRT_POINT_ARGS     more torusrt-sim arguments for every point, split at spaces
+#   TORUSRT_MAPS           the full mode's mappings (default "block cyclic bc2 bc3")
+SHAPE16=${TORUSRT_SHAPE16:-4x2x2}
+read -r -a POINT_ARGS <<<"${TORUSRT_POINT_ARGS:-}"
 # The paper's 3D torus shapes for each IP count.
-declare -A SHAPE=([1]=1x1x1 [2]=2x1x1 [4]=2x2x1 [8]=2x2x2 [16]=4x2x2 [32]=4x4x2 [64]=4x4x4
+declare -A SHAPE=([1]=1x1x1 [2]=2x1x1 [4]=2x2x1 [8]=2x2x2 [16]=$SHAPE16 [32]=4x4x2 [64]=4x4x4
                   [128]=8x4x4 [256]=8x8x4 [512]=8x8x8)
 # Mapping short names (used in point names and CSVs) and torusrt-sim arguments.
-declare -A MAPARG=([block]=block [cyclic]=cyclic [bc2]=block-cyclic:2 [bc3]=block-cyclic:3)
+declare -A MAPARG=([block]=block [cyclic]=${TORUSRT_LB_MAP:-cyclic} [bc2]=block-cyclic:2 [bc3]=block-cyclic:3)
 # The cluster study: 16 clusters on a 4x2x2 torus, load-balancing mapping at the cluster level.
-CLUSTER_SHAPE=4x2x2
+CLUSTER_SHAPE=$SHAPE16
 CLUSTER_NODES=16
 # The timing profiles swept (torusrt-sim --timing-profile), the default first: each has its own
 # results folder RESULTS/PROFILE with the same points, CSVs and plots.
@@ -40,7 +49,7 @@ define_mode() {
             SIZE=144x144
             SCENES=(image1 image2)
             NLIST=(1 2 4 8 16 32 64 128 256 512)
-            MAPS=(block cyclic bc2 bc3)
+            read -r -a MAPS <<<"${TORUSRT_MAPS:-block cyclic bc2 bc3}"
             MLIST=(1 2 4 8 12 16 32 64)
             DATAS=(replicated shared)
             CLUSTER_SCENES=(image1 image2)
@@ -59,7 +68,13 @@ define_mode() {
     MODE=$1
 }
 
-scene_file() { echo "$REPO/scenes/paper-$1.nff"; }
+scene_file() {
+    case $1 in
+        image1) echo "${TORUSRT_SCENE_IMAGE1:-$REPO/scenes/paper-image1.nff}" ;;
+        image2) echo "${TORUSRT_SCENE_IMAGE2:-$REPO/scenes/paper-image2.nff}" ;;
+        *) echo "$REPO/scenes/paper-$1.nff" ;;
+    esac
+}
 
 # The backend every study runs its points on (experiments/backend): set by backend_option from
 # --backend local|ssh:HOSTFILE|slurm, -j N (points in flight), --slurm-args "..." and

@@ -47,7 +47,7 @@ emit() {
     local json=$RES/$fig/$name.json cmd
     cmd=$(printf '%q ' "$EXP/run_point.sh" "$json")
     [ -n "$t1" ] && cmd+=$(printf '%q ' --t1-from "$t1")
-    cmd+=$(printf '%q ' -- "$SIM" "$(scene_file "$scene")" --size "$SIZE" --timing-profile "$profile" "$@")
+    cmd+=$(printf '%q ' -- "$SIM" "$(scene_file "$scene")" --size "$SIZE" --timing-profile "$profile" "${POINT_ARGS[@]}" "$@")
     cmd=${cmd% }
     if [ "$tsv" = 1 ]; then
         printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$fig" "$name" "$scene" "$map" "$n" "$shape" "$m" "$data" "$json" "$cmd"
@@ -68,7 +68,7 @@ if [ "$phase" != 1 ]; then
         for s in "${CLUSTER_SCENES[@]}"; do
             for d in "${DATAS[@]}"; do
                 emit fig10_12 "$s-$d-m$m" "$s" cyclic "$((CLUSTER_NODES * m))" "$CLUSTER_SHAPE" "$m" "$d" \
-                    "$RES/t1/$s.json" --ips "$CLUSTER_SHAPE" --map cyclic --cluster "$m" --data "$d"
+                    "$RES/t1/$s.json" --ips "$CLUSTER_SHAPE" --map "${MAPARG[cyclic]}" --cluster "$m" --data "$d"
             done
         done
     done

@@ -33,12 +33,24 @@ extern "C" {
 
 typedef struct rt_grid rt_grid;
 
+/* How preprocessing units are counted while an object's slabs are located on one axis
+ * (docs/fidelity.md gives each as an algorithm). The cell lists are the same under each. */
+typedef enum rt_preprocess_count {
+    RT_COUNT_SEQUENTIAL = 0,      /* one unit per one-sided test: low end, then high end */
+    RT_COUNT_PER_PLANE = 1,       /* one unit per plane, placing the extent on both sides */
+    RT_COUNT_BOUNDING_SPHERE = 2  /* per-plane on the object's bounding sphere */
+} rt_preprocess_count;
+
 rt_grid *rt_grid_new(const rt_scene *scene, int nx, int ny, int nz, char *msg, size_t msg_len);
 /* The same within a memory budget (NULL: none): the grid's tables and 8 bytes per cell-list
  * entry are reserved before they are allocated; when the lists would pass what is left,
  * listing stops and NULL comes back with a "memory budget exceeded: ..." message. */
 rt_grid *rt_grid_new_budget(const rt_scene *scene, int nx, int ny, int nz, rt_budget *budget,
                             char *msg, size_t msg_len);
+/* The same with a counting rule (rt_grid_new_budget counts RT_COUNT_SEQUENTIAL); NULL as
+ * rt_grid_new_budget. */
+rt_grid *rt_grid_new_counted(const rt_scene *scene, int nx, int ny, int nz, rt_preprocess_count rule,
+                             rt_budget *budget, char *msg, size_t msg_len);
 void rt_grid_free(rt_grid *grid);
 
 /* Cells per axis. */

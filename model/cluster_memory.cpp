@@ -37,11 +37,11 @@ int shared_holder(const std::vector<uint32_t> &node_objects, uint32_t object, in
 }
 
 ClusterMemoryFigures cluster_memory_figures(const rt_scene *scene, const rt_grid *grid, const int32_t *cell_owner,
-                                            int nodes, int m)
+                                            int nodes, int m, const rt_memory_layout *layout)
 {
     ClusterMemoryFigures f;
     std::vector<rt_memory_use> use(nodes);
-    if (rt_memory_per_owner(scene, grid, cell_owner, nodes, use.data()) != RT_OK) throw std::bad_alloc();
+    if (rt_memory_per_owner_layout(scene, grid, cell_owner, nodes, layout, use.data()) != RT_OK) throw std::bad_alloc();
     f.replicated_per_node.resize(nodes);
     f.shared_per_ip.assign(nodes, std::vector<uint64_t>(m, 0));
     for (int n = 0; n < nodes; n++) {
@@ -52,7 +52,7 @@ ClusterMemoryFigures cluster_memory_figures(const rt_scene *scene, const rt_grid
         std::vector<std::unordered_set<const rt_material *>> materials(m);
         for (size_t j = 0; j < objects.size(); j++) {
             int k = static_cast<int>(j % m);
-            f.shared_per_ip[n][k] += rt_scene_object_bytes(scene, objects[j]);
+            f.shared_per_ip[n][k] += rt_memory_object_bytes(scene, objects[j], layout);
             if (materials[k].insert(rt_scene_object_material(scene, objects[j])).second)
                 f.shared_per_ip[n][k] += rt_scene_material_bytes();
         }

@@ -9,8 +9,10 @@
 #include <vector>
 
 #include "named_values.h"
+#include "preprocess_count.h"
 #include "rt_budget.h"
 #include "rt_mapping.h"
+#include "rt_memory.h"
 #include "rt_step.h"
 #include "rt_timing.h"
 
@@ -25,6 +27,7 @@ constexpr int kMaxNodes = 4096;
 constexpr int kMaxProcessors = 4096;
 constexpr int kMaxCluster = 256;
 constexpr unsigned kMaxQueue = 100000000;  // packets per queue
+constexpr unsigned kMaxRecordBytes = 4096;  // --cell-header-bytes, --list-entry-bytes, --object-record-bytes
 
 enum class Topology { torus, mesh };
 enum class TimingStyle { at, lt };
@@ -55,6 +58,7 @@ struct MachineConfig {
     std::array<int, 3> ips{1, 1, 1};        // torus nodes per axis
     Topology topology = Topology::torus;    // rings in every dimension, or a mesh
     std::array<int, 3> cells{24, 24, 24};   // grid cells per axis (the object space's division)
+    rt_preprocess_count preprocess_count = RT_COUNT_SEQUENTIAL; // how preprocessing units are counted
     rt_map_kind mapping = RT_MAP_CYCLIC;    // cell-to-node mapping
     int block = 1;                          // block size of block-cyclic, K of cost:K
     std::string map_file;                   // --map-file: explicit cell -> node table
@@ -72,6 +76,7 @@ struct MachineConfig {
     DataMode data = DataMode::replicated;   // object data in a cluster
     ArbiterPolicy arbiter = ArbiterPolicy::round_robin;
     DispatchPolicy dispatch = DispatchPolicy::round_robin;
+    rt_memory_layout memory_layout = rt_memory_layout_default(); // what the memory report charges
 
     int node_count() const { return ips[0] * ips[1] * ips[2]; }
     int processor_count() const { return node_count() * cluster; }

@@ -14,6 +14,8 @@
  *       none gives first = f-1;
  *   (b) k = first+1..f-1: "hi >= plane_k - tol?"; the first no gives
  *       last = k-1, all yes give last = f-1.
+ * (RT_COUNT_SEQUENTIAL; PER_PLANE: one unit a plane, BOUNDING_SPHERE: the
+ * same on the bounding sphere's box; the lists never depend on the rule).
  * A factor of 1 costs nothing. Each sub-space in the product of the three
  * ranges is then kept only if an exact overlap test (not counted in units)
  * says the object meets it, and kept ones are split again down to single
@@ -67,6 +69,7 @@ typedef struct build {
     rt_vec3 normal;               /* plane: dot(normal, p) == offset */
     double offset;
     int drop;                     /* axis dropped for the 2D inside test */
+    rt_preprocess_count rule;     /* how half-space tests are counted */
     uint64_t units;
 
     /* Cells met, in object order; pair_start[o] is object o's first. */
@@ -208,21 +211,25 @@ static int object_meets(const build *bd, const rt_box *b)
 }
 
 /* Slabs [first, last] of f (each m cells from cell c0) that the extent
- * reaches on one axis, one unit per half-space test. */
+ * reaches on one axis, counted by the build's rule. */
 static void slab_range(build *bd, int axis, int c0, int f, int m, int *first, int *last)
 {
     const rt_grid *g = bd->g;
     double lo = axis_of(bd->extent.lo, axis), hi = axis_of(bd->extent.hi, axis);
     double tol = g->tolerance;
-    *first = f - 1;
+    *first = *last = f - 1;
+    if (bd->rule != RT_COUNT_SEQUENTIAL) { /* one test a plane: above, across or below */
+        for (int k = 1, found = 0; k < f; k++) {
+            bd->units++;
+            if (!found && lo <= rt_grid_plane(g, axis, c0 + k * m) + tol) *first = k - 1, found = 1;
+            if (found && !(hi >= rt_grid_plane(g, axis, c0 + k * m) - tol)) { *last = k - 1; break; }
+        }
+        return;
+    }
     for (int k = 1; k < f; k++) {
         bd->units++;
-        if (lo <= rt_grid_plane(g, axis, c0 + k * m) + tol) {
-            *first = k - 1;
-            break;
-        }
+        if (lo <= rt_grid_plane(g, axis, c0 + k * m) + tol) { *first = k - 1; break; }
     }
-    *last = f - 1;
     for (int k = *first + 1; k < f; k++) {
         bd->units++;
         if (!(hi >= rt_grid_plane(g, axis, c0 + k * m) - tol)) {
@@ -311,6 +318,12 @@ static int prepare_object(build *bd, size_t o)
     const rt_object *ob = &s->objects[o];
     bd->obj = ob;
     bd->extent = ob->bounds;
+    if (bd->rule == RT_COUNT_BOUNDING_SPHERE && ob->kind != RT_OBJ_SPHERE) { /* the sphere's box */
+        rt_vec3 c = rt_vec_scale(rt_vec_add(ob->bounds.lo, ob->bounds.hi), 0.5);
+        rt_vec3 e = rt_vec_sub(ob->bounds.hi, ob->bounds.lo);
+        double r = 0.5 * hypot(hypot(e.x, e.y), e.z);
+        bd->extent = (rt_box){rt_vec(c.x - r, c.y - r, c.z - r), rt_vec(c.x + r, c.y + r, c.z + r)};
+    }
     if (ob->kind == RT_OBJ_POLYGON) {
         const rt_polygon_data *p = &ob->u.polygon;
         if (!reserve_loop(bd, p->count)) return 0;
@@ -545,6 +558,12 @@ rt_grid *rt_grid_new(const rt_scene *scene, int nx, int ny, int nz, char *msg, s
 rt_grid *rt_grid_new_budget(const rt_scene *scene, int nx, int ny, int nz, rt_budget *budget,
                             char *msg, size_t msg_len)
 {
+    return rt_grid_new_counted(scene, nx, ny, nz, RT_COUNT_SEQUENTIAL, budget, msg, msg_len);
+}
+
+rt_grid *rt_grid_new_counted(const rt_scene *scene, int nx, int ny, int nz, rt_preprocess_count rule,
+                             rt_budget *budget, char *msg, size_t msg_len)
+{
     if (!scene) {
         set_msg(msg, msg_len, "no scene given for the grid");
         return NULL;
@@ -604,6 +623,7 @@ rt_grid *rt_grid_new_budget(const rt_scene *scene, int nx, int ny, int nz, rt_bu
     memset(&bd, 0, sizeof bd);
     bd.scene = scene;
     bd.g = g;
+    bd.rule = rule;
     setup_levels(&bd, dims);
 
     uint64_t allowed = rt_budget_left(budget) / ENTRY_BYTES;

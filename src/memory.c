@@ -6,9 +6,27 @@
 #include "rt_memory.h"
 #include "scene_internal.h"
 
+uint32_t rt_memory_object_bytes(const rt_scene *scene, size_t i, const rt_memory_layout *layout)
+{
+    if (layout && layout->object_record_bytes) return layout->object_record_bytes;
+    return rt_scene_object_bytes(scene, i);
+}
+
 rt_status rt_memory_per_owner(const rt_scene *scene, const rt_grid *grid, const int32_t *owner,
                               int owners, rt_memory_use *use)
 {
+    return rt_memory_per_owner_layout(scene, grid, owner, owners, NULL, use);
+}
+
+rt_memory_use rt_memory_whole_scene(const rt_scene *scene, const rt_grid *grid)
+{
+    return rt_memory_whole_scene_layout(scene, grid, NULL);
+}
+
+rt_status rt_memory_per_owner_layout(const rt_scene *scene, const rt_grid *grid, const int32_t *owner,
+                                     int owners, const rt_memory_layout *layout, rt_memory_use *use)
+{
+    rt_memory_layout l = layout ? *layout : rt_memory_layout_default();
     if (!scene || !grid || !owner || !use || owners < 1) return RT_ERR_INVALID;
     /* The grid must have been built from this scene. */
     if (grid->object_count != scene->object_count) return RT_ERR_INVALID;
@@ -44,13 +62,13 @@ rt_status rt_memory_per_owner(const rt_scene *scene, const rt_grid *grid, const 
         for (size_t k = start[o]; k < start[o + 1]; k++) {
             size_t count;
             const uint32_t *list = rt_grid_cell_objects(grid, by_owner[k], &count);
-            u->list_bytes += 4u + 4u * (uint64_t)count;
+            u->list_bytes += l.cell_header_bytes + l.list_entry_bytes * (uint64_t)count;
             for (size_t j = 0; j < count; j++) {
                 uint32_t ob = list[j];
                 if (obj_seen[ob] == o) continue;
                 obj_seen[ob] = o;
                 u->objects++;
-                u->object_bytes += rt_scene_object_bytes(scene, ob);
+                u->object_bytes += rt_memory_object_bytes(scene, ob, &l);
                 uint32_t m = scene->objects[ob].material;
                 if (mat_seen[m] == o) continue;
                 mat_seen[m] = o;
@@ -65,12 +83,14 @@ rt_status rt_memory_per_owner(const rt_scene *scene, const rt_grid *grid, const 
     return RT_OK;
 }
 
-rt_memory_use rt_memory_whole_scene(const rt_scene *scene, const rt_grid *grid)
+rt_memory_use rt_memory_whole_scene_layout(const rt_scene *scene, const rt_grid *grid,
+                                           const rt_memory_layout *layout)
 {
+    rt_memory_layout l = layout ? *layout : rt_memory_layout_default();
     rt_memory_use u = {0, 0, 0, 0};
     size_t n = scene->object_count;
     u.objects = n;
-    for (size_t i = 0; i < n; i++) u.object_bytes += rt_scene_object_bytes(scene, i);
+    for (size_t i = 0; i < n; i++) u.object_bytes += rt_memory_object_bytes(scene, i, &l);
 
     unsigned char *used = calloc(scene->material_count ? scene->material_count : 1, 1);
     uint64_t materials = 0;
@@ -88,6 +108,7 @@ rt_memory_use rt_memory_whole_scene(const rt_scene *scene, const rt_grid *grid)
         materials = scene->material_count;
     }
     u.material_bytes = materials * rt_scene_material_bytes();
-    u.list_bytes = 4u * (uint64_t)rt_grid_cell_count(grid) + 4u * rt_grid_list_entries(grid);
+    u.list_bytes = (uint64_t)l.cell_header_bytes * rt_grid_cell_count(grid) +
+                   (uint64_t)l.list_entry_bytes * rt_grid_list_entries(grid);
     return u;
 }

@@ -255,7 +255,7 @@ int run(RenderOptions &opt)
 
     setup.budget = rt_budget_make(setup.settings.memory_bytes);
     setup.loaded = load_scene(opt.common.scene, setup.settings.size[0], setup.settings.size[1], setup.settings.cells,
-                              opt.common.quiet, &setup.budget);
+                              opt.common.quiet, &setup.budget, setup.settings.preprocess_count);
     check_shade_tree(opt.common.scene, setup.loaded.scene.get(), setup.settings.step, setup.budget, sizeof(rt_packet));
     setup.ro = rt_render_options_default();
     setup.ro.step = setup.settings.step;
@@ -278,7 +278,8 @@ void declare_options(CLI::App &app)
     const std::string output_help = "PNG image to write; with --frames/--camera-path a pattern like out_%04d.png";
     add_common_options(app, output_help, {"scene", "--size"});
     add_spec_option(app, render_option_specs()[0]);
-    add_common_options(app, output_help, {"--cells", "--max-depth", "--min-weight", "--timing-profile", "--timing"});
+    add_common_options(app, output_help, {"--cells", "--max-depth", "--min-weight", "--timing-profile", "--timing",
+                                             "--preprocess-count"});
     add_common_options(app, output_help, {"--output", "--stats"});
     add_spec_option(app, render_option_specs()[1]);
     for (const OptionSpec &spec : animation_option_specs()) add_spec_option(app, spec);

@@ -233,6 +233,21 @@ UserError naming_config_file(const CommandLine &cl, const MachineFileReader &rea
     return UserError(shown_text(cl.config_file) + ":" + std::to_string(line) + ": " + what, 2);
 }
 
+// A relative --timing or --map-file path read from a --config file names a file beside the
+// machine file, so that a machine file and its timing file travel together.
+void resolve_config_relative_paths(CommandLine &cl, int argc, char **argv)
+{
+    if (cl.config_file.empty()) return;
+    size_t slash = cl.config_file.find_last_of('/');
+    if (slash == std::string::npos) return;  // the machine file is in the working folder
+    std::string dir = cl.config_file.substr(0, slash + 1);
+    for (const char *name : {"--timing", "--map-file"}) {
+        auto it = cl.given.find(name);
+        if (it != cl.given.end() && !on_command_line(argc, argv, name) && !it->second.empty() && it->second[0] != '/')
+            it->second = dir + it->second;
+    }
+}
+
 // --map and --map-file exclude each other; one on the command line replaces the other from a
 // --config file (both in one place is an error, reported by machine_from_texts).
 void resolve_mapping_sources(CommandLine &cl, int argc, char **argv)
@@ -386,7 +401,7 @@ int run(CommandLine &cl, double wall_start)
     StagedOutputs outputs;
     stage_outputs(cl, config, cl.anim.animated() ? animation_frame_count(cl.anim, file.get()) : 0, outputs);
     LoadedScene loaded = load_scene(config.scene_path, config.width, config.height, config.cells, config.quiet,
-                                    &config.memory);
+                                    &config.memory, config.preprocess_count);
     check_shade_tree(config.scene_path, loaded.scene.get(), config.step, config.memory, PacketPool::bytes_per_packet());
     nlohmann::json mapping_facts = prepare_mapping(config, loaded.scene.get(), loaded.grid.get());
     if (cl.anim.animated()) {
@@ -438,6 +453,7 @@ int sc_main(int argc, char **argv)
                        cl.given = given_options(app);
                        resolve_mapping_sources(cl, argc, argv);
                        if (app.get_config_ptr()->count() > 0) cl.config_file = app.get_config_ptr()->as<std::string>();
+                       resolve_config_relative_paths(cl, argc, argv);
                        cl.common = common_options_given(cl.given);
                        cl.anim = animation_options_given(cl.given);
                        cl.dump_config = cl.has("--dump-config");

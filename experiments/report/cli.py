@@ -146,6 +146,8 @@ def main(argv):
     p.add_argument("report")
     p.add_argument("--compare", metavar="M.toml", help="compare with this machine file key by key instead")
     p.set_defaults(run=machine)
+    from . import fidelity
+    fidelity.add_commands(sub)
     args = parser.parse_args(argv)
     try:
         return args.run(args)

@@ -129,6 +129,11 @@ std::vector<MachineOption> build_table()
              m.cells = parse_triple(s.long_name(), t, 1, static_cast<int>(s.max));
          },
          [](const MachineConfig &m) { return dims(m.cells); }},
+        {common_option_spec("--preprocess-count"),
+         [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
+             m.preprocess_count = value_named(s.long_name(), t, kPreprocessCountNames);
+         },
+         [](const MachineConfig &m) { return std::string(preprocess_count_name(m.preprocess_count)); }},
         {{"--queue", "N", K::integer, "0", 0, double(kMaxQueue), "packets",
           "capacity of every packet buffer (of each class), 0 = unbounded", G::machine, "queue"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
@@ -234,6 +239,24 @@ std::vector<MachineOption> build_table()
              m.dispatch = value_named(s.long_name(), t, kDispatchNames);
          },
          [](const MachineConfig &m) { return std::string(dispatch_name(m.dispatch)); }},
+        {{"--cell-header-bytes", "BYTES", K::integer, "4", 0, double(kMaxRecordBytes), "bytes", "memory accounting: bytes per cell list", G::machine,
+          "cell-header-bytes"},
+         [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
+             m.memory_layout.cell_header_bytes = static_cast<uint32_t>(parse_integer(s.long_name(), t, 0, kMaxRecordBytes));
+         },
+         [](const MachineConfig &m) { return std::to_string(m.memory_layout.cell_header_bytes); }},
+        {{"--list-entry-bytes", "BYTES", K::integer, "4", 1, double(kMaxRecordBytes), "bytes", "memory accounting: bytes per object in a cell list", G::machine,
+          "list-entry-bytes"},
+         [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
+             m.memory_layout.list_entry_bytes = static_cast<uint32_t>(parse_integer(s.long_name(), t, 1, kMaxRecordBytes));
+         },
+         [](const MachineConfig &m) { return std::to_string(m.memory_layout.list_entry_bytes); }},
+        {{"--object-record-bytes", "BYTES", K::integer, "0", 0, double(kMaxRecordBytes), "bytes", "memory accounting: bytes per object record (0: each kind's own size)", G::machine,
+          "object-record-bytes"},
+         [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
+             m.memory_layout.object_record_bytes = static_cast<uint32_t>(parse_integer(s.long_name(), t, 0, kMaxRecordBytes));
+         },
+         [](const MachineConfig &m) { return std::to_string(m.memory_layout.object_record_bytes); }},
         {{"--map-file", "FILE", K::file, "", 0, 0, "", "explicit cell -> node table (torusrt-map 1 format)",
           G::machine, "map-file"},
          [](const OptionSpec &, const std::string &t, MachineConfig &m) {

@@ -19,7 +19,8 @@ MemoryReport flat_memory(const SimConfig &config, const rt_scene *scene, const r
                          const int32_t *cell_owner, uint64_t pixel_partitioned)
 {
     std::vector<rt_memory_use> use(static_cast<size_t>(config.node_count()));
-    if (rt_memory_per_owner(scene, grid, cell_owner, config.node_count(), use.data()) != RT_OK)
+    if (rt_memory_per_owner_layout(scene, grid, cell_owner, config.node_count(), &config.memory_layout,
+                                   use.data()) != RT_OK)
         throw UserError("cannot compute the data memory per node (out of memory or an inconsistent cell table)");
     MemoryReport m;
     for (const auto &u : use) m.max_per_ip_bytes = std::max(m.max_per_ip_bytes, rt_memory_total(&u));
@@ -91,7 +92,7 @@ RunReport collect(const SimConfig &config, TorusSystem &top, const PacketLedger 
     r.conserved = ledger.conserved();
 
     int n = config.processor_count();
-    rt_memory_use whole = rt_memory_whole_scene(scene, grid);
+    rt_memory_use whole = rt_memory_whole_scene_layout(scene, grid, &config.memory_layout);
     uint64_t pixel_partitioned = rt_memory_total(&whole) * static_cast<uint64_t>(n);
     r.memory = config.cluster == 1 ? flat_memory(config, scene, grid, cell_owner, pixel_partitioned)
                                    : cluster_memory(config, scene, grid, cell_owner, pixel_partitioned);

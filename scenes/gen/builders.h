@@ -12,6 +12,10 @@
 /* paper_scenes.c */
 void build_paper_image1(scene *sc, double factor);
 void build_paper_image2(scene *sc, double factor);
+void build_paper_image1_planar_z(scene *sc, double factor);
+void build_paper_image1_cube(scene *sc, double factor);
+void build_paper_image1_tree(scene *sc, double factor);
+void build_paper_image2_wall(scene *sc, double factor);
 
 /* stiff_scenes.c */
 void build_axis_rays(scene *sc, double factor);

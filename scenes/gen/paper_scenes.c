@@ -4,15 +4,66 @@
 #include "builders.h"
 #include "nff_writer.h"
 
+/* Image 1's two-level flake: a sphere of radius R, 8 children of radius R/2 along the
+ * cube-corner directions, 4 grandchildren of radius R/4 on each child (41 spheres). */
+static void flake(scene *sc, vec3 centre, const double bc[3])
+{
+    const double R = 1.0;           /* radius of a group's big sphere */
+    const double child_dist = 1.6;  /* child centre from its parent's centre, x parent radius */
+    diffuse(sc, bc[0], bc[1], bc[2], 0.8);
+    sphere(sc, centre, R);
+
+    vec3 child_centre[8], child_dir[8];
+    for (int k = 0; k < 8; ++k) {
+        vec3 d = vnorm(v3((k & 1) ? 1 : -1, (k & 2) ? 1 : -1, (k & 4) ? 1 : -1));
+        child_dir[k] = d;
+        child_centre[k] = vadd(centre, vmul(d, child_dist * R));
+    }
+    diffuse(sc, 0.95, 0.8, 0.45, 0.8);
+    for (int k = 0; k < 8; ++k)
+        sphere(sc, child_centre[k], R / 2);
+
+    diffuse(sc, 0.92, 0.92, 0.95, 0.8);
+    for (int k = 0; k < 8; ++k) {
+        vec3 d = child_dir[k];
+        vec3 e1 = vnorm(vcross(d, v3(0, 1, 0)));
+        vec3 e2 = vcross(d, e1);
+        for (int j = 0; j < 4; ++j) {
+            double phi = (45.0 + 90.0 * j) * PI / 180;
+            vec3 side = vadd(vmul(e1, cos(phi)), vmul(e2, sin(phi)));
+            vec3 gdir = vadd(vmul(d, 0.5), vmul(side, sqrt(3.0) / 2));
+            sphere(sc, vadd(child_centre[k], vmul(gdir, child_dist * R / 2)), R / 4);
+        }
+    }
+}
+
+static const double big_colour[3][3] = {{0.85, 0.22, 0.18}, {0.18, 0.42, 0.85}, {0.22, 0.68, 0.32}};
+
+/* Image 1's camera, lights and background, shared by its layouts. */
+static void image1_setting(scene *sc)
+{
+    view(sc, v3(4, 5, 30), v3(0, 0, 0), v3(0, 1, 0), 0, 144, 144);
+    frame_all(sc, 1.03);
+    background(sc, 0.04, 0.04, 0.08);
+    ambient(sc, 0.1, 0.1, 0.1);
+    add_light(sc, v3(-20, 25, 30), 0.85, 0.85, 0.85);
+    add_light(sc, v3(25, 5, 20), 0.4, 0.4, 0.45);
+}
+
+/* Nine flakes on the 3 x 3 grid of x and y, 5 apart; column gx at z = z_step * (gx - 1). */
+static void flake_grid(scene *sc, double z_step)
+{
+    const double spacing = 5.0;     /* between group centres on the 3 x 3 grid */
+    for (int gy = 0; gy < 3; ++gy)
+        for (int gx = 0; gx < 3; ++gx)
+            flake(sc, v3(spacing * (gx - 1), spacing * (1 - gy), z_step == 0.0 ? 0.0 : z_step * (gx - 1)),
+                  big_colour[(gy * 3 + gx) % 3]);
+}
+
 /* Image 1: nine copies of a two-level recursive "flake" of diffuse spheres. */
 void build_paper_image1(scene *sc, double factor)
 {
     (void)factor;
-    const double R = 1.0;           /* radius of a group's big sphere */
-    const double spacing = 5.0;     /* between group centres on the 3 x 3 grid */
-    const double child_dist = 1.6;  /* child centre from its parent's centre, x parent radius */
-    static const double big_colour[3][3] = {
-        {0.85, 0.22, 0.18}, {0.18, 0.42, 0.85}, {0.22, 0.68, 0.32}};
     note(sc, "The paper's image 1: 369 diffuse spheres, large and small, defined recursively.");
     note(sc, "Recursion: 9 groups on a 3x3 grid in the plane z = 0 (centres 5 apart); each group");
     note(sc, "is a sphere of radius 1, 8 children of radius 1/2 centred 1.6 x 1 from it along the");
@@ -20,45 +71,106 @@ void build_paper_image1(scene *sc, double factor)
     note(sc, "radius 1/4 centred 1.6 x 1/2 from it, tilted 60 degrees off the child's outward");
     note(sc, "direction at azimuths 45+90k degrees: 9 x (1 + 8 + 8 x 4) = 9 x 41 = 369 spheres.");
     note(sc, "All diffuse (Ks = 0, T = 0); two lights, ambient 0.1; angle fitted to frame all.");
+    flake_grid(sc, 0.0);
+    image1_setting(sc);
+}
 
-    for (int gy = 0; gy < 3; ++gy) {
-        for (int gx = 0; gx < 3; ++gx) {
-            int g = gy * 3 + gx;
-            vec3 centre = v3(spacing * (gx - 1), spacing * (1 - gy), 0);
-            const double *bc = big_colour[g % 3];
-            diffuse(sc, bc[0], bc[1], bc[2], 0.8);
-            sphere(sc, centre, R);
+/* Image 1, planar-z layout: the grid's three columns at z = -5, 0 and +5. */
+void build_paper_image1_planar_z(scene *sc, double factor)
+{
+    (void)factor;
+    note(sc, "Image 1, planar-z layout (docs/fidelity.md): paper-image1's nine flakes of 41");
+    note(sc, "spheres, the three columns of the 3x3 grid moved to z = -5, 0 and +5: 369 spheres.");
+    flake_grid(sc, 5.0);
+    image1_setting(sc);
+}
 
-            vec3 child_centre[8], child_dir[8];
-            for (int k = 0; k < 8; ++k) {
-                vec3 d = vnorm(v3((k & 1) ? 1 : -1, (k & 2) ? 1 : -1, (k & 4) ? 1 : -1));
-                child_dir[k] = d;
-                child_centre[k] = vadd(centre, vmul(d, child_dist * R));
-            }
-            diffuse(sc, 0.95, 0.8, 0.45, 0.8);
-            for (int k = 0; k < 8; ++k)
-                sphere(sc, child_centre[k], R / 2);
+/* Image 1, cube layout: the groups repeat the flake's 1 + 8 recursion. */
+void build_paper_image1_cube(scene *sc, double factor)
+{
+    (void)factor;
+    note(sc, "Image 1, cube layout (docs/fidelity.md): paper-image1's flake of 41 spheres at the");
+    note(sc, "centre and at the eight corners (+-5,+-5,+-5) of a cube: 9 x 41 = 369 spheres.");
+    flake(sc, v3(0, 0, 0), big_colour[0]);
+    for (int k = 0; k < 8; ++k)
+        flake(sc, v3((k & 1) ? 5 : -5, (k & 2) ? 5 : -5, (k & 4) ? 5 : -5), big_colour[1 + k % 2]);
+    image1_setting(sc);
+}
 
-            diffuse(sc, 0.92, 0.92, 0.95, 0.8);
-            for (int k = 0; k < 8; ++k) {
-                vec3 d = child_dir[k];
-                vec3 e1 = vnorm(vcross(d, v3(0, 1, 0)));
-                vec3 e2 = vcross(d, e1);
-                for (int j = 0; j < 4; ++j) {
-                    double phi = (45.0 + 90.0 * j) * PI / 180;
-                    vec3 side = vadd(vmul(e1, cos(phi)), vmul(e2, sin(phi)));
-                    vec3 gdir = vadd(vmul(d, 0.5), vmul(side, sqrt(3.0) / 2));
-                    sphere(sc, vadd(child_centre[k], vmul(gdir, child_dist * R / 2)), R / 4);
-                }
-            }
+/* Two unit vectors perpendicular to d and to each other. */
+static void perpendiculars(vec3 d, vec3 *e1, vec3 *e2)
+{
+    vec3 helper = fabs(d.y) < 0.9 ? v3(0, 1, 0) : v3(1, 0, 0);
+    *e1 = vnorm(vcross(d, helper));
+    *e2 = vcross(d, *e1);
+}
+
+/* Direction tilted `tilt` degrees off d at azimuth `azimuth` degrees. */
+static vec3 tilted(vec3 d, double tilt, double azimuth)
+{
+    vec3 e1, e2;
+    perpendiculars(d, &e1, &e2);
+    double t = tilt * PI / 180, a = azimuth * PI / 180;
+    vec3 side = vadd(vmul(e1, cos(a)), vmul(e2, sin(a)));
+    return vnorm(vadd(vmul(d, cos(t)), vmul(side, sin(t))));
+}
+
+/* Image 1, tree layout: one four-level sphereflake-like tree. */
+void build_paper_image1_tree(scene *sc, double factor)
+{
+    (void)factor;
+    const double R = 4.0, dist = 1.6;  /* root radius; child centre at 1.6 x the parent's radius */
+    note(sc, "Image 1, tree layout (docs/fidelity.md): one recursive tree, 1 + 8 + 72 + 288 = 369");
+    note(sc, "diffuse spheres. Root radius 4; 8 children of radius 2 centred 1.6 x 4 from it along");
+    note(sc, "the cube-corner directions; on each child 9 grandchildren of radius 1 centred 1.6 x 2");
+    note(sc, "from it (one along the child's outward direction, four tilted 60 degrees off it at");
+    note(sc, "azimuths 90k, four tilted 100 degrees at azimuths 45+90k); on each grandchild 4 of");
+    note(sc, "radius 1/2 centred 1.6 x 1 from it, tilted 60 degrees at azimuths 45+90k.");
+    diffuse(sc, big_colour[0][0], big_colour[0][1], big_colour[0][2], 0.8);
+    sphere(sc, v3(0, 0, 0), R);
+    vec3 c1[8], d1[8], c2[72], d2[72];
+    for (int k = 0; k < 8; ++k) {
+        d1[k] = vnorm(v3((k & 1) ? 1 : -1, (k & 2) ? 1 : -1, (k & 4) ? 1 : -1));
+        c1[k] = vmul(d1[k], dist * R);
+    }
+    diffuse(sc, 0.95, 0.8, 0.45, 0.8);
+    for (int k = 0; k < 8; ++k) sphere(sc, c1[k], R / 2);
+    for (int k = 0; k < 8; ++k)
+        for (int j = 0; j < 9; ++j) {
+            vec3 d = j == 0 ? d1[k] : j < 5 ? tilted(d1[k], 60, 90.0 * (j - 1)) : tilted(d1[k], 100, 45 + 90.0 * (j - 5));
+            d2[9 * k + j] = d;
+            c2[9 * k + j] = vadd(c1[k], vmul(d, dist * R / 2));
+        }
+    diffuse(sc, big_colour[1][0], big_colour[1][1], big_colour[1][2], 0.8);
+    for (int i = 0; i < 72; ++i) sphere(sc, c2[i], R / 4);
+    diffuse(sc, 0.92, 0.92, 0.95, 0.8);
+    for (int i = 0; i < 72; ++i)
+        for (int j = 0; j < 4; ++j)
+            sphere(sc, vadd(c2[i], vmul(tilted(d2[i], 60, 45 + 90.0 * j), dist * R / 4)), R / 8);
+    image1_setting(sc);
+}
+
+/* Image 2's spheres and setting: the glass and the mirror sphere, then the 121 small ones,
+ * on the horizontal plane y = 0 (floor) or on the vertical plane z = -7 (wall); the camera. */
+static void image2(scene *sc, int wall, vec3 from, vec3 at)
+{
+    mat(sc, 0.95, 0.97, 1.0, 0.05, 0.1, 60, 0.9, 1.5);
+    sphere(sc, v3(-2.3, 2.5, -2.0), 2.0);
+    mat(sc, 0.85, 0.85, 0.9, 0.1, 0.9, 60, 0, 1);
+    sphere(sc, v3(2.3, 2.5, -2.0), 2.0);
+    for (int j = 0; j < 11; ++j) {
+        for (int i = 0; i < 11; ++i) {
+            diffuse(sc, q9(0.9 - 0.06 * i), q9(0.3 + 0.05 * j), q9(0.25 + 0.065 * i), 0.85);
+            vec3 c = wall ? v3(1.5 * (i - 5), 2.5 + 1.5 * (5 - j), -7.0) : v3(1.5 * (i - 5), 0, -1.5 * j);
+            sphere(sc, c, 0.5);
         }
     }
-    view(sc, v3(4, 5, 30), v3(0, 0, 0), v3(0, 1, 0), 0, 144, 144);
-    frame_all(sc, 1.03);
-    background(sc, 0.04, 0.04, 0.08);
+    view(sc, from, at, v3(0, 1, 0), 0, 144, 144);
+    frame_all(sc, 1.02);
+    background(sc, 0.12, 0.16, 0.32);
     ambient(sc, 0.1, 0.1, 0.1);
-    add_light(sc, v3(-20, 25, 30), 0.85, 0.85, 0.85);
-    add_light(sc, v3(25, 5, 20), 0.4, 0.4, 0.45);
+    add_light(sc, v3(-10, 18, 14), 0.8, 0.8, 0.8);
+    add_light(sc, v3(12, 10, 6), 0.45, 0.45, 0.5);
 }
 
 /* Image 2: a glass and a mirror sphere in front of an 11 x 11 plane of small spheres. */
@@ -70,21 +182,15 @@ void build_paper_image2(scene *sc, double factor)
     note(sc, "11 x 11, 1.5 apart) laid out in the horizontal plane y = 0 reaching behind them;");
     note(sc, "123 objects. Colour of the small spheres shades with column and row.");
     note(sc, "The camera looks down on the plane so it shows behind, through and in the big ones.");
+    image2(sc, 0, v3(0, 15, 10), v3(0, 0.5, -6));
+}
 
-    mat(sc, 0.95, 0.97, 1.0, 0.05, 0.1, 60, 0.9, 1.5);
-    sphere(sc, v3(-2.3, 2.5, -2.0), 2.0);
-    mat(sc, 0.85, 0.85, 0.9, 0.1, 0.9, 60, 0, 1);
-    sphere(sc, v3(2.3, 2.5, -2.0), 2.0);
-    for (int j = 0; j < 11; ++j) {
-        for (int i = 0; i < 11; ++i) {
-            diffuse(sc, q9(0.9 - 0.06 * i), q9(0.3 + 0.05 * j), q9(0.25 + 0.065 * i), 0.85);
-            sphere(sc, v3(1.5 * (i - 5), 0, -1.5 * j), 0.5);
-        }
-    }
-    view(sc, v3(0, 15, 10), v3(0, 0.5, -6), v3(0, 1, 0), 0, 144, 144);
-    frame_all(sc, 1.02);
-    background(sc, 0.12, 0.16, 0.32);
-    ambient(sc, 0.1, 0.1, 0.1);
-    add_light(sc, v3(-10, 18, 14), 0.8, 0.8, 0.8);
-    add_light(sc, v3(12, 10, 6), 0.45, 0.45, 0.5);
+/* Image 2, wall arrangement: the 121 small spheres on a vertical plane behind the big ones. */
+void build_paper_image2_wall(scene *sc, double factor)
+{
+    (void)factor;
+    note(sc, "Image 2, wall arrangement (docs/fidelity.md): paper-image2's glass and mirror spheres");
+    note(sc, "(radius 2) in front of its 121 small diffuse spheres (radius 0.5, 11 x 11, 1.5 apart)");
+    note(sc, "standing in the vertical plane z = -7 behind them, facing the eye; 123 objects.");
+    image2(sc, 1, v3(0, 4, 14), v3(0, 2.5, -4));
 }

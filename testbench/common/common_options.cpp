@@ -37,6 +37,7 @@ CommonOptions common_options_given(const std::map<std::string, std::string> &giv
     take("--memory-budget", o.memory_budget);
     take("--timing", o.timing_file);
     take("--timing-profile", o.timing_profile);
+    take("--preprocess-count", o.preprocess_count);
     o.quiet = given.count("--quiet") > 0;
     return o;
 }
@@ -56,6 +57,7 @@ CommonSettings parse_common_options(const CommonOptions &o)
     s.step = rt_step_params_default();
     s.step.max_depth = static_cast<int>(parse_integer("--max-depth", o.max_depth, 0, static_cast<long long>(depth.max)));
     s.step.min_weight = parse_fraction("--min-weight", o.min_weight);
+    s.preprocess_count = value_named("--preprocess-count", o.preprocess_count, kPreprocessCountNames);
     s.memory_bytes = parse_memory_size("--memory-budget", o.memory_budget);
     s.timing_label = choose_timing(o.timing_profile, o.timing_file, &s.timing);
     s.timing_base = o.timing_profile.empty() ? rt_timing_default_profile() : o.timing_profile;

@@ -10,6 +10,7 @@
 #include <map>
 #include <string>
 
+#include "preprocess_count.h"
 #include "rt_step.h"
 #include "rt_timing.h"
 
@@ -19,7 +20,7 @@ namespace torusrt {
 struct CommonOptions {
     std::string scene, output, stats, cells = "24", size, max_depth = "8", min_weight = "1/512",
                                       memory_budget = "4G";
-    std::string timing_file, timing_profile;
+    std::string timing_file, timing_profile, preprocess_count = "sequential";
     bool quiet = false;
 };
 
@@ -44,6 +45,7 @@ struct CommonSettings {
     rt_timing timing{};
     std::string timing_label;                // the profile, with " + FILE" for a timing file
     std::string timing_base;                 // the profile
+    rt_preprocess_count preprocess_count = RT_COUNT_SEQUENTIAL;
 };
 CommonSettings parse_common_options(const CommonOptions &options);
 

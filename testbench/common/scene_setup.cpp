@@ -26,7 +26,7 @@ std::string shown_path(const std::string &path)
 }
 
 LoadedScene load_scene(const std::string &path, unsigned width, unsigned height,
-                       const std::array<int, 3> &cells, bool quiet, rt_budget *budget)
+                       const std::array<int, 3> &cells, bool quiet, rt_budget *budget, rt_preprocess_count count)
 {
     char msg[RT_MSG_LEN] = "";
     rt_scene *raw = nullptr;
@@ -49,7 +49,7 @@ LoadedScene load_scene(const std::string &path, unsigned width, unsigned height,
     if (rt_budget_reserve(budget, rt_framebuffer_bytes(cam->width, cam->height), fb_what.c_str(), msg,
                           sizeof msg) != RT_OK)
         throw UserError(shown_path(path) + ": " + msg);
-    out.grid.reset(rt_grid_new_budget(raw, cells[0], cells[1], cells[2], budget, msg, sizeof msg));
+    out.grid.reset(rt_grid_new_counted(raw, cells[0], cells[1], cells[2], count, budget, msg, sizeof msg));
     if (!out.grid && std::string(msg).rfind("memory budget", 0) == 0) throw UserError(shown_path(path) + ": " + msg);
     if (!out.grid) throw UserError(std::string("--cells: ") + msg, 2);
     return out;

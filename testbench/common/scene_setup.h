@@ -7,6 +7,7 @@
 #include "kernel_handles.h"
 #include "rt_budget.h"
 #include "rt_step.h"
+#include "rt_grid.h"
 
 namespace torusrt {
 
@@ -23,7 +24,8 @@ struct LoadedScene {
 std::string shown_path(const std::string &path);
 
 LoadedScene load_scene(const std::string &path, unsigned width, unsigned height,
-                       const std::array<int, 3> &cells, bool quiet, rt_budget *budget = nullptr);
+                       const std::array<int, 3> &cells, bool quiet, rt_budget *budget = nullptr,
+                       rt_preprocess_count count = RT_COUNT_SEQUENTIAL);
 
 // Refuses (UserError, exit 1) a run whose one pixel's worst-case shade tree, at
 // `packet_bytes` a packet, cannot fit in what is left of `budget` (rt_shade_tree.h).

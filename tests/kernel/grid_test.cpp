@@ -656,6 +656,62 @@ TEST(GridUnits, HandCountedTinySphere)
     EXPECT_EQ(std::count(l.begin(), l.end(), 2u), 1);
 }
 
+// The same scene under the per-plane rule: one unit per plane examined, so a factor-2 split
+// costs 1 unit per axis wherever the extent lies, and a factor-3 split min(last + 1, 2).
+//   2x2x2: 1 + 1 + 1 = 3.
+//   24^3, x = 2:  1 + 1 + 1 + slab 2 of 3: 2 -> 5
+//         y = 16: 1 + 1 + 1 + slab 1 of 3: 2 -> 5
+//         z = 7:  1 + 1 + 1 + slab 1 of 3: 2 -> 5; total 15.
+// A sphere's bounding sphere is itself: bounding-sphere counts what per-plane counts. The cell
+// lists do not depend on the rule.
+TEST(GridUnits, HandCountedPerPlaneAndBoundingSphere)
+{
+    ScenePtr s(rt_scene_new());
+    ASSERT_EQ(rt_scene_add_sphere(s.get(), rt_vec(0, 0, 0), 1.0), RT_OK);
+    ASSERT_EQ(rt_scene_add_sphere(s.get(), rt_vec(100, 100, 100), 1.0), RT_OK);
+    ASSERT_EQ(rt_scene_add_sphere(s.get(), rt_vec(10, 70, 30), 0.01), RT_OK);
+    char msg[RT_MSG_LEN] = "";
+    for (rt_preprocess_count rule : {RT_COUNT_PER_PLANE, RT_COUNT_BOUNDING_SPHERE}) {
+        GridPtr g2(rt_grid_new_counted(s.get(), 2, 2, 2, rule, nullptr, msg, sizeof msg));
+        ASSERT_TRUE(g2) << msg;
+        EXPECT_EQ(rt_grid_units_of_object(g2.get(), 2), 3u) << "rule " << rule;
+        GridPtr g(rt_grid_new_counted(s.get(), 24, 24, 24, rule, nullptr, msg, sizeof msg));
+        ASSERT_TRUE(g) << msg;
+        EXPECT_EQ(rt_grid_units_of_object(g.get(), 2), 15u) << "rule " << rule;
+        GridPtr seq = make_grid(s.get(), 24, 24, 24);
+        ASSERT_TRUE(seq);
+        EXPECT_EQ(rt_grid_list_entries(g.get()), rt_grid_list_entries(seq.get()));
+        for (size_t c = 0; c < rt_grid_cell_count(g.get()); c++)
+            ASSERT_EQ(cell_list(g.get(), c), cell_list(seq.get(), c)) << "cell " << c;
+    }
+}
+
+// A polygon whose box lies in slab 0 of 3 but whose bounding sphere reaches past plane 1.
+// Spheres at x = 0 and 119 (r 1) make x span [-1, 120]: planes at ~39.3 and ~79.7; y and z are
+// one cell each (no tests). The square at x = 35, y and z in [-5, 5], has the box x = [35, 35]
+// and the bounding sphere of radius sqrt(200) / 2 ~ 7.07, x = [27.9, 42.1].
+//   sequential:      "lo <= p1?" yes, "hi >= p1?" no                  -> 2 units
+//   per-plane:       plane 1: the box lies below it                   -> 1 unit
+//   bounding-sphere: plane 1: across; plane 2: below                  -> 2 units
+TEST(GridUnits, HandCountedBoundingSphereOfAPolygon)
+{
+    ScenePtr s(rt_scene_new());
+    ASSERT_EQ(rt_scene_add_sphere(s.get(), rt_vec(0, 0, 0), 1.0), RT_OK);
+    ASSERT_EQ(rt_scene_add_sphere(s.get(), rt_vec(119, 0, 0), 1.0), RT_OK);
+    const rt_vec3 square[4] = {rt_vec(35, -5, -5), rt_vec(35, 5, -5), rt_vec(35, 5, 5), rt_vec(35, -5, 5)};
+    ASSERT_EQ(rt_scene_add_polygon(s.get(), square, 4), RT_OK);
+    char msg[RT_MSG_LEN] = "";
+    const std::pair<rt_preprocess_count, uint64_t> want[] = {
+        {RT_COUNT_SEQUENTIAL, 2}, {RT_COUNT_PER_PLANE, 1}, {RT_COUNT_BOUNDING_SPHERE, 2}};
+    for (const auto &[rule, units] : want) {
+        GridPtr g(rt_grid_new_counted(s.get(), 3, 1, 1, rule, nullptr, msg, sizeof msg));
+        ASSERT_TRUE(g) << msg;
+        EXPECT_EQ(rt_grid_units_of_object(g.get(), 2), units) << "rule " << rule;
+        EXPECT_EQ(cell_list(g.get(), 0), (std::vector<uint32_t>{0, 2})) << "rule " << rule;
+        EXPECT_EQ(cell_list(g.get(), 1), (std::vector<uint32_t>{})) << "rule " << rule;
+    }
+}
+
 // Prime factors in ascending order, shorter lists padded with 1s: a prime
 // axis of 7 is split at the first level only (6 planes: up to 6 + 6 tests).
 TEST(GridUnits, PrimeAxisSplitsOnce)
