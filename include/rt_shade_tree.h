@@ -7,8 +7,9 @@
  *
  * Only reflective (Ks > 0) and transparent (T > 0) surfaces make ray packets, so a scene
  * without either makes one ray and one shadow packet per light, at any depth. The bound is the
- * worst case: every ray hits a surface with the largest Ks and the largest T of the scene (both
- * branches where one material has both), and no ray leaves the scene.
+ * worst case: every ray hits whichever surface makes the most rays below it (weights rounded up
+ * to steps of 2^(1/16); without a cut by weight, the largest Ks and T on every hit), and no ray
+ * leaves the scene.
  */
 #ifndef RT_SHADE_TREE_H
 #define RT_SHADE_TREE_H

@@ -6,6 +6,7 @@
 #include <stdint.h>
 
 #include "rt_grid.h"
+#include "scene_internal.h"
 
 struct rt_grid {
     int dims[3];            /* cells per axis */
@@ -29,5 +30,8 @@ static inline double rt_grid_plane(const struct rt_grid *g, int axis, int k)
     if (k >= g->dims[axis]) return hi;
     return lo + (hi - lo) * ((double)k / (double)g->dims[axis]);
 }
+
+/* 1 if two objects are the same sphere, triangle or cone, so they meet the same cells. */
+int rt_grid_same_shape(const rt_object *a, const rt_object *b);
 
 #endif

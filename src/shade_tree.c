@@ -40,20 +40,82 @@ static double tree_rays(double a, double b, int max_depth, double min_weight)
     return fmin(rays, SATURATED);
 }
 
+/* Bins of weight per halving in the per-material count: a weight is rounded up to the next
+ * 2^(-k/16), so the count stays an upper bound. */
+#define BINS_PER_HALVING 16
+#define MAX_PAIRS 16
+#define MAX_WORK 2e8
+
+/* The worst case over the materials, node by node: a node of weight bin k at depth d has
+ * 1 + max over materials of its children's counts (rows from the deepest level up). Returns a
+ * negative number when the work would be too large (the caller takes the coarser bound). */
+static double per_material_rays(const double (*pair)[2], int pairs, int max_depth, double min_weight)
+{
+    int bins = (int)ceil(-log2(min_weight) * BINS_PER_HALVING) + 1;
+    if (bins < 1 || (double)bins * max_depth * pairs > MAX_WORK) return -1.0;
+    double *next = calloc((size_t)bins, sizeof *next), *cur = calloc((size_t)bins, sizeof *cur);
+    int shift[MAX_PAIRS][2];
+    for (int m = 0; m < pairs; m++)
+        for (int c = 0; c < 2; c++) /* bins a child falls by (a factor of 0: no child) */
+            shift[m][c] = pair[m][c] > 0.0 ? (int)floor(-log2(pair[m][c]) * BINS_PER_HALVING) : -1;
+    if (!next || !cur) {
+        free(next);
+        free(cur);
+        return -1.0;
+    }
+    /* next[] is the level below; at the deepest level every node is a leaf. */
+    for (int d = max_depth; d >= 0; d--) {
+        for (int k = 0; k < bins; k++) {
+            double best = 0.0;
+            for (int m = 0; d < max_depth && m < pairs; m++) {
+                double sum = 0.0;
+                for (int c = 0; c < 2; c++)
+                    if (shift[m][c] >= 0 && k + shift[m][c] < bins) sum += next[k + shift[m][c]];
+                best = fmax(best, sum);
+            }
+            cur[k] = fmin(1.0 + best, SATURATED);
+        }
+        double *t = next;
+        next = cur;
+        cur = t;
+    }
+    double rays = next[0];
+    free(next);
+    free(cur);
+    return rays;
+}
+
 double rt_shade_tree_packets(const rt_scene *s, int max_depth, double min_weight)
 {
     double ks = 0.0, t = 0.0;
-    int both = 0;
+    int both = 0, pairs = 0, all_below_one = 1;
+    double pair[MAX_PAIRS][2];
     for (size_t i = 0; i < s->object_count; i++) {
         const rt_material *m = &s->materials[s->objects[i].material];
-        if (m->ks > 0.0) ks = fmax(ks, m->ks);
-        if (m->t > 0.0) t = fmax(t, m->t);
-        both |= m->ks > 0.0 && m->t > 0.0;
+        double mk = m->ks > 0.0 ? m->ks : 0.0, mt = m->t > 0.0 ? m->t : 0.0;
+        if (mk == 0.0 && mt == 0.0) continue;
+        ks = fmax(ks, mk);
+        t = fmax(t, mt);
+        both |= mk > 0.0 && mt > 0.0;
+        all_below_one &= mk < 1.0 && mt < 1.0;
+        int seen = 0;
+        for (int p = 0; p < pairs && !seen; p++) seen = pair[p][0] == mk && pair[p][1] == mt;
+        if (!seen && pairs < MAX_PAIRS) {
+            pair[pairs][0] = mk;
+            pair[pairs][1] = mt;
+        }
+        if (!seen) pairs++;
     }
     double rays = 1.0;
-    if (max_depth > 0 && (ks > 0.0 || t > 0.0))
-        rays = both ? tree_rays(ks, t, max_depth, min_weight)
-                    : tree_rays(fmax(ks, t), 0.0, max_depth, min_weight);
+    if (max_depth > 0 && (ks > 0.0 || t > 0.0)) {
+        rays = -1.0;
+        /* Weights that only fall, a cut by weight and few kinds of surface: node by node. */
+        if (all_below_one && min_weight > 0.0 && pairs <= MAX_PAIRS)
+            rays = per_material_rays((const double (*)[2])pair, pairs, max_depth, min_weight);
+        if (rays < 0.0)
+            rays = both ? tree_rays(ks, t, max_depth, min_weight)
+                        : tree_rays(fmax(ks, t), 0.0, max_depth, min_weight);
+    }
     /* Every ray that hits sends one shadow packet per light at most. */
     return fmin(rays * (1.0 + (double)s->light_count), SATURATED);
 }
