@@ -46,7 +46,14 @@ void check_animation_options(AnimationOptions &opt)
 {
     const long long max = RT_CAMERA_PATH_MAX_FRAMES;
     opt.frames = -1;
-    if (!opt.frames_text.empty()) opt.frames = parse_integer("--frames", opt.frames_text, 1, max);
+    if (!opt.frames_text.empty()) {
+        try {
+            opt.frames = parse_integer("--frames", opt.frames_text, 1, max);
+        } catch (const UserError &e) {  // "--frames 0: ..." as the option was typed
+            throw UserError("--frames " + shown_text(opt.frames_text) + ": must be a whole decimal number from 1 to " +
+                                std::to_string(max) + " (" + e.what() + ")", 2);
+        }
+    }
     if (!opt.orbit.empty() && !opt.camera_path.empty())
         throw UserError("--orbit and --camera-path: give one of them, not both", 2);
     if (!opt.orbit.empty()) {

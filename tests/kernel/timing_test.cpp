@@ -121,10 +121,9 @@ TEST(Timing, LoadParsesCommentsAndBothForms)
                         "link_bytes_per_us 14\n"
                         "bus_cycle 0.125\n"
                         "shading 1e3\n"
-                        "test_miss 600\n"  // a repeated key: the last one wins
                         "\t# indented comment\n");
     ASSERT_EQ(r.status, RT_OK) << r.msg;
-    EXPECT_EQ(r.timing.test_miss_us, 600);
+    EXPECT_EQ(r.timing.test_miss_us, 650);
     EXPECT_EQ(r.timing.test_hit_us, 875);
     EXPECT_EQ(r.timing.dda_step_us, 170);
     EXPECT_EQ(r.timing.link_bytes_per_us, 14);
@@ -149,8 +148,10 @@ TEST(Timing, LoadErrorsCarryFileAndLine)
         {"# c\n\ntest_miss -5\n", ":3: 'test_miss' needs a non-negative number"},
         {"test_hit\n", ":1: expected 'key value'"},
         {"test_hit =\n", ":1: expected 'key value'"},
-        {"link 1\nlink fast\n", ":2: 'link' needs a non-negative number"},
-        {"link 12us\n", ":1: 'link' needs a non-negative number"},
+        {"link 1\nlink fast\n", ":2: 'link' given twice"},
+        {"link fast\n", ":1: 'link' needs a decimal number"},
+        {"link 12us\n", ":1: 'link' needs a decimal number"},
+        {"link 0x1p3\n", ":1: 'link' needs a decimal number"},
         {"link 1 2\n", ":1: expected 'key value'"},
         {"packet_bytes 0\n", ":1: 'packet_bytes' needs a positive number"},
     };
