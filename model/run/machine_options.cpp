@@ -101,11 +101,11 @@ std::string choice_help(const char *what, const NamedValue<E> (&table)[N])
     return std::string(what) + ": " + names_of(table);
 }
 
-std::vector<MachineOption> build_table()
+// In the dump's order: the machine options of the network: nodes, mapping, topology, grid, buffers and flow control.
+std::vector<MachineOption> network_options()
 {
     using G = OptionGroup;
     using K = ValueKind;
-    const double max_time_s = kMaxSimTimeS;
     return {
         {{"--ips", "DIMS", K::text, "1", 1, kMaxNodes, "",
           "torus nodes: P, PXxPY or PXxPYxPZ, at most " + std::to_string(kMaxNodes), G::machine, "ips"},
@@ -147,6 +147,16 @@ std::vector<MachineOption> build_table()
              m.flow = value_named(s.long_name(), t, kFlowNames);
          },
          [](const MachineConfig &m) { return std::string(flow_name(m.flow)); }},
+    };
+}
+
+// In the dump's order: the machine options of the timing: profile, file, link and step limits, timing style.
+std::vector<MachineOption> timing_options()
+{
+    using G = OptionGroup;
+    using K = ValueKind;
+    const double max_time_s = kMaxSimTimeS;
+    return {
         {common_option_spec("--timing-profile"),
          [](const OptionSpec &, const std::string &t, MachineConfig &m) {
              m.timing_profile = choose_timing(t, "", &m.timing);
@@ -215,6 +225,15 @@ std::vector<MachineOption> build_table()
              m.quantum_us = parse_time(s.long_name(), t, 0, -6);
          },
          [](const MachineConfig &m) { return number(m.quantum_us) + "us"; }},
+    };
+}
+
+// In the dump's order: the machine options of clusters and the memory accounting.
+std::vector<MachineOption> cluster_options()
+{
+    using G = OptionGroup;
+    using K = ValueKind;
+    return {
         {{"--cluster", "N", K::integer, "1", 1, kMaxCluster, "processors",
           "processors per torus node on a shared bus", G::machine, "cluster"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
@@ -239,24 +258,36 @@ std::vector<MachineOption> build_table()
              m.dispatch = value_named(s.long_name(), t, kDispatchNames);
          },
          [](const MachineConfig &m) { return std::string(dispatch_name(m.dispatch)); }},
-        {{"--cell-header-bytes", "BYTES", K::integer, "4", 0, double(kMaxRecordBytes), "bytes", "memory accounting: bytes per cell list", G::machine,
-          "cell-header-bytes"},
+        {{"--cell-header-bytes", "BYTES", K::integer, "4", 0, double(kMaxRecordBytes), "bytes",
+          "memory accounting: bytes per cell list", G::machine, "cell-header-bytes"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
-             m.memory_layout.cell_header_bytes = static_cast<uint32_t>(parse_integer(s.long_name(), t, 0, kMaxRecordBytes));
+             m.memory_layout.cell_header_bytes =
+                 static_cast<uint32_t>(parse_integer(s.long_name(), t, 0, kMaxRecordBytes));
          },
          [](const MachineConfig &m) { return std::to_string(m.memory_layout.cell_header_bytes); }},
-        {{"--list-entry-bytes", "BYTES", K::integer, "4", 1, double(kMaxRecordBytes), "bytes", "memory accounting: bytes per object in a cell list", G::machine,
-          "list-entry-bytes"},
+        {{"--list-entry-bytes", "BYTES", K::integer, "4", 1, double(kMaxRecordBytes), "bytes",
+          "memory accounting: bytes per object in a cell list", G::machine, "list-entry-bytes"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
-             m.memory_layout.list_entry_bytes = static_cast<uint32_t>(parse_integer(s.long_name(), t, 1, kMaxRecordBytes));
+             m.memory_layout.list_entry_bytes =
+                 static_cast<uint32_t>(parse_integer(s.long_name(), t, 1, kMaxRecordBytes));
          },
          [](const MachineConfig &m) { return std::to_string(m.memory_layout.list_entry_bytes); }},
-        {{"--object-record-bytes", "BYTES", K::integer, "0", 0, double(kMaxRecordBytes), "bytes", "memory accounting: bytes per object record (0: each kind's own size)", G::machine,
-          "object-record-bytes"},
+        {{"--object-record-bytes", "BYTES", K::integer, "0", 0, double(kMaxRecordBytes), "bytes",
+          "memory accounting: bytes per object record (0: each kind's own size)", G::machine, "object-record-bytes"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
-             m.memory_layout.object_record_bytes = static_cast<uint32_t>(parse_integer(s.long_name(), t, 0, kMaxRecordBytes));
+             m.memory_layout.object_record_bytes =
+                 static_cast<uint32_t>(parse_integer(s.long_name(), t, 0, kMaxRecordBytes));
          },
          [](const MachineConfig &m) { return std::to_string(m.memory_layout.object_record_bytes); }},
+    };
+}
+
+// In the dump's order: the machine options of an explicit map and the cost pilot.
+std::vector<MachineOption> mapping_file_options()
+{
+    using G = OptionGroup;
+    using K = ValueKind;
+    return {
         {{"--map-file", "FILE", K::file, "", 0, 0, "", "explicit cell -> node table (torusrt-map 1 format)",
           G::machine, "map-file"},
          [](const OptionSpec &, const std::string &t, MachineConfig &m) {
@@ -275,6 +306,16 @@ std::vector<MachineOption> build_table()
                                          : std::to_string(m.pilot_size[0]) + "x" + std::to_string(m.pilot_size[1]);
          }},
     };
+}
+
+std::vector<MachineOption> build_table()
+{
+    std::vector<MachineOption> table;
+    for (auto part : {network_options, timing_options, cluster_options, mapping_file_options}) {
+        std::vector<MachineOption> options = part();
+        table.insert(table.end(), options.begin(), options.end());
+    }
+    return table;
 }
 
 // A TOML basic string: quotes, backslashes and control bytes escaped; bytes that are not
