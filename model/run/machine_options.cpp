@@ -101,7 +101,7 @@ std::string choice_help(const char *what, const NamedValue<E> (&table)[N])
     return std::string(what) + ": " + names_of(table);
 }
 
-// In the dump's order: the machine options of the network: nodes, mapping, topology, grid, buffers and flow control.
+// Machine options of the network (nodes, mapping, topology, grid, buffers, flow), in dump order.
 std::vector<MachineOption> network_options()
 {
     using G = OptionGroup;
@@ -150,7 +150,7 @@ std::vector<MachineOption> network_options()
     };
 }
 
-// In the dump's order: the machine options of the timing: profile, file, link and step limits, timing style.
+// Machine options of the timing (profile, file, link, step limits, style), in dump order.
 std::vector<MachineOption> timing_options()
 {
     using G = OptionGroup;
@@ -228,7 +228,7 @@ std::vector<MachineOption> timing_options()
     };
 }
 
-// In the dump's order: the machine options of clusters and the memory accounting.
+// Machine options of clusters and the memory accounting, in dump order.
 std::vector<MachineOption> cluster_options()
 {
     using G = OptionGroup;
@@ -282,7 +282,7 @@ std::vector<MachineOption> cluster_options()
     };
 }
 
-// In the dump's order: the machine options of an explicit map and the cost pilot.
+// Machine options of an explicit map and the cost pilot, in dump order.
 std::vector<MachineOption> mapping_file_options()
 {
     using G = OptionGroup;
