@@ -20,8 +20,9 @@ class Point:
             return False
 
     def wrapped(self):
-        """The command line the backends run: the point's command, its output into its log."""
-        return "( %s ) >%s 2>&1" % (self.command, shlex.quote(self.log))
+        """The command line the backends run: the point's command, its output into its log; its
+        file descriptor 3 is the backend's own output, for a point's progress line."""
+        return "( %s ) 3>&1 >%s 2>&1" % (self.command, shlex.quote(self.log))
 
 
 def read(path):

@@ -8,9 +8,10 @@ import tomllib
 
 # The keys in --dump-config's order (its option table, model/run/machine_options.cpp); the CLI
 # test machine_file_order checks that the two agree.
-DUMP_ORDER = ("ips", "map", "topology", "cells", "queue", "flow", "timing-profile", "timing", "timing-values",
-              "link-us", "packet-bytes", "link-bytes-per-us", "max-depth", "min-weight", "style", "quantum",
-              "cluster", "data", "arbiter", "dispatch", "map-file", "pilot-size")
+DUMP_ORDER = ("ips", "map", "topology", "cells", "preprocess-count", "queue", "flow", "timing-profile", "timing",
+              "timing-values", "link-us", "packet-bytes", "link-bytes-per-us", "max-depth", "min-weight", "style",
+              "quantum", "cluster", "data", "arbiter", "dispatch", "cell-header-bytes", "list-entry-bytes",
+              "object-record-bytes", "map-file", "pilot-size")
 
 
 def from_report(report):

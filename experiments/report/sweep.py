@@ -64,7 +64,7 @@ def plan(out, sim, scene, axes, fixed):
                 args += ["--" + n, v]
             run = " ".join(shlex.quote(a) for a in args)
             j, t = shlex.quote(base + ".json"), shlex.quote(base + ".json.tmp")
-            progress = "echo %s" % shlex.quote("sweep: [%d/%d] %s" % (k, len(combos), name))
+            progress = "echo >&3 %s" % shlex.quote("sweep: [%d/%d] %s" % (k, len(combos), name))
             print(base + ".json\t" +
                   "[ -s {j} ] && {p}: done before || {{ {run} >{log} 2>&1; rc=$?; "
                   "if [ $rc -eq 0 ] || {{ [ $rc -eq 3 ] && [ -s {t} ]; }}; then mv {t} {j}; {p}: "
