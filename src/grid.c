@@ -359,33 +359,6 @@ static void set_msg(char *msg, size_t len, const char *text)
     if (msg && len) snprintf(msg, len, "%s", text);
 }
 
-/* Padded object space; 0 when no object has bounds. */
-static int object_space(const rt_scene *s, rt_box *out)
-{
-    rt_box b = {rt_vec(INFINITY, INFINITY, INFINITY), rt_vec(-INFINITY, -INFINITY, -INFINITY)};
-    int any = 0;
-    for (size_t o = 0; o < s->object_count; o++) {
-        const rt_box *ob = &s->objects[o].bounds;
-        if (box_is_empty(ob)) continue;
-        any = 1;
-        b.lo = rt_vec(fmin(b.lo.x, ob->lo.x), fmin(b.lo.y, ob->lo.y), fmin(b.lo.z, ob->lo.z));
-        b.hi = rt_vec(fmax(b.hi.x, ob->hi.x), fmax(b.hi.y, ob->hi.y), fmax(b.hi.z, ob->hi.z));
-    }
-    if (!any) return 0;
-    rt_vec3 e = rt_vec_sub(b.hi, b.lo);
-    double pad = 1e-6 * hypot(hypot(e.x, e.y), e.z);
-    if (!(pad > 0.0)) pad = 1e-6 * fmax(1.0, fmax(rt_vec_max_abs(b.lo), rt_vec_max_abs(b.hi)));
-    for (int a = 0; a < 3; a++) {
-        double lo = axis_of(b.lo, a), hi = axis_of(b.hi, a);
-        double plo = lo - pad, phi = hi + pad;
-        /* Far from the origin the pad can vanish in rounding: one ulp at least. */
-        if (!(plo < lo)) plo = nextafter(lo, -INFINITY);
-        if (!(phi > hi)) phi = nextafter(hi, INFINITY);
-        set_axis(&out->lo, a, plo);
-        set_axis(&out->hi, a, phi);
-    }
-    return 1;
-}
 
 /* Entries are 8 bytes while the lists are built (4 staged, 4 listed). */
 #define ENTRY_BYTES 8u
@@ -581,7 +554,7 @@ rt_grid *rt_grid_new_counted(const rt_scene *scene, int nx, int ny, int nz, rt_p
         return NULL;
     }
 
-    if (!object_space(scene, &g->bounds)) {
+    if (!rt_grid_object_space(scene, &g->bounds)) {
         /* Nothing to list: a unit box that no ray is ever sent into. */
         g->empty = 1;
         g->bounds.lo = rt_vec(-0.5, -0.5, -0.5);

@@ -31,6 +31,9 @@ static inline double rt_grid_plane(const struct rt_grid *g, int axis, int k)
     return lo + (hi - lo) * ((double)k / (double)g->dims[axis]);
 }
 
+/* The padded object space of a scene's objects in *out; 0 when no object has bounds. */
+int rt_grid_object_space(const rt_scene *s, rt_box *out);
+
 /* 1 if two objects are the same sphere, triangle or cone, so they meet the same cells. */
 int rt_grid_same_shape(const rt_object *a, const rt_object *b);
 

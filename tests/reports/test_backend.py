@@ -53,7 +53,7 @@ class PointLists(unittest.TestCase):
         points.assign_logs([[a], [b]], "/s/logs")
         self.assertEqual(a.log, "/s/logs/calibrated__t1__image1.json.log")
         self.assertNotEqual(a.log, b.log)
-        self.assertEqual(a.wrapped(), "( true ) >/s/logs/calibrated__t1__image1.json.log 2>&1")
+        self.assertEqual(a.wrapped(), "( true ) 3>&1 >/s/logs/calibrated__t1__image1.json.log 2>&1")
         with self.assertRaises(ValueError):
             points.assign_logs([[a, points.Point(a.done, "true", "l:3")]], "/s/logs")
 
