@@ -8,6 +8,7 @@
 # daemons run as root): without it the test says so and is skipped (exit 77). When it really
 # ran it writes BUILD/slurm-test.ran, which .ci/run requires.
 # Run: bash backend_slurm.sh BUILD_DIR SOURCE_DIR
+rm -f "$1/slurm-test.ran"  # an earlier run's mark must not stand for this one
 if [ "$(id -u)" -ne 0 ]; then
     echo "SKIP: this test needs root (it starts slurmctld, slurmd and munged)"
     exit 77
