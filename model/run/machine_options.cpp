@@ -228,6 +228,20 @@ std::vector<MachineOption> timing_options()
     };
 }
 
+// A memory-accounting option: bytes of one field of the memory layout, from `min` to
+// kMaxRecordBytes.
+template <uint32_t rt_memory_layout::*Field>
+MachineOption layout_option(const char *name, const char *fallback, int min, const char *help)
+{
+    return {{name, "BYTES", ValueKind::integer, fallback, double(min), double(kMaxRecordBytes), "bytes", help,
+             OptionGroup::machine, name + 2},
+            [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
+                m.memory_layout.*Field =
+                    static_cast<uint32_t>(parse_integer(s.long_name(), t, static_cast<long long>(s.min), kMaxRecordBytes));
+            },
+            [](const MachineConfig &m) { return std::to_string(m.memory_layout.*Field); }};
+}
+
 // Machine options of clusters and the memory accounting, in dump order.
 std::vector<MachineOption> cluster_options()
 {
@@ -258,27 +272,12 @@ std::vector<MachineOption> cluster_options()
              m.dispatch = value_named(s.long_name(), t, kDispatchNames);
          },
          [](const MachineConfig &m) { return std::string(dispatch_name(m.dispatch)); }},
-        {{"--cell-header-bytes", "BYTES", K::integer, "4", 0, double(kMaxRecordBytes), "bytes",
-          "memory accounting: bytes per cell list", G::machine, "cell-header-bytes"},
-         [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
-             m.memory_layout.cell_header_bytes =
-                 static_cast<uint32_t>(parse_integer(s.long_name(), t, 0, kMaxRecordBytes));
-         },
-         [](const MachineConfig &m) { return std::to_string(m.memory_layout.cell_header_bytes); }},
-        {{"--list-entry-bytes", "BYTES", K::integer, "4", 1, double(kMaxRecordBytes), "bytes",
-          "memory accounting: bytes per object in a cell list", G::machine, "list-entry-bytes"},
-         [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
-             m.memory_layout.list_entry_bytes =
-                 static_cast<uint32_t>(parse_integer(s.long_name(), t, 1, kMaxRecordBytes));
-         },
-         [](const MachineConfig &m) { return std::to_string(m.memory_layout.list_entry_bytes); }},
-        {{"--object-record-bytes", "BYTES", K::integer, "0", 0, double(kMaxRecordBytes), "bytes",
-          "memory accounting: bytes per object record (0: each kind's own size)", G::machine, "object-record-bytes"},
-         [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
-             m.memory_layout.object_record_bytes =
-                 static_cast<uint32_t>(parse_integer(s.long_name(), t, 0, kMaxRecordBytes));
-         },
-         [](const MachineConfig &m) { return std::to_string(m.memory_layout.object_record_bytes); }},
+        layout_option<&rt_memory_layout::cell_header_bytes>("--cell-header-bytes", "4", 0,
+                                                            "memory accounting: bytes per cell list"),
+        layout_option<&rt_memory_layout::list_entry_bytes>("--list-entry-bytes", "4", 1,
+                                                           "memory accounting: bytes per object in a cell list"),
+        layout_option<&rt_memory_layout::object_record_bytes>(
+            "--object-record-bytes", "0", 0, "memory accounting: bytes per object record (0: each kind's own size)"),
     };
 }
 
