@@ -4,31 +4,42 @@
 # moved one at a time. Follows the protocol in experiments/fidelity/protocol.md; writes
 # machines/*.toml, machines/timing/fitted.timing and docs/fidelity.md.
 #
-#   bash experiments/fidelity/study.sh [--build DIR] [-j N] [--stage 1]
+#   bash experiments/fidelity/study.sh [--build DIR] [-j N] [--stage 1] [--results DIR]
+#          [--backend local|ssh:HOSTFILE|slurm] [--slurm-args "..."] [--per-task K]
 #
 #   --build DIR   build folder holding torusrt-sim and torusrt-render (default build/)
-#   -j N          parallel runs (default 2)
+#   -j N          runs in flight (default 2)
 #   --stage 1     run the units fit alone (the renderer only) and print its choice
+#   --results DIR the folder of the runs and their tables (default experiments/fidelity/results/)
+#   --backend     where the runs go (experiments/backend, docs/cluster-runs.md): this machine
+#                 (default), the hosts of an ssh login file, or a Slurm job array; --slurm-args
+#                 passes sbatch options, --per-task batches K runs to a Slurm task
 #
-# Every run goes through experiments/run_point.sh into experiments/fidelity/results/, which
-# skips a run whose JSON is there: re-running the study after an interruption is cheap; remove
-# the results folder to start again.
+# Every run goes through experiments/run_point.sh into the results folder, and a run
+# is done when its JSON is there: re-running the study after an interruption recomputes only
+# the missing runs; remove the results folder to start again.
 set -euo pipefail
-here=$(cd "$(dirname "$0")" && pwd)
-root=$(cd "$here/../.." && pwd)
-build=$root/build jobs=2 only=""
+source "$(dirname "$0")/../lib.sh"
+here=$EXP/fidelity root=$REPO
+build=$BUILD JOBS=2 only="" res=$here/results
 while [ $# -gt 0 ]; do
+    if backend_option "$@"; then shift "$SHIFT"; continue; fi
+    case $1 in
+        --build|--stage|--results) [ $# -ge 2 ] || die "$1 needs a value" ;;
+    esac
     case $1 in
         --build) build=$2; shift 2 ;;
-        -j) jobs=$2; shift 2 ;;
         --stage) only=$2; shift 2 ;;
+        --results) res=$2; shift 2 ;;
         -h|--help) sed -n '2,/^set -e/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
-        *) echo "study.sh: unknown argument '$1'" >&2; exit 2 ;;
+        *) die "unknown argument '$1' (see --help)" ;;
     esac
 done
-build=$(cd "$build" && pwd)
+set_build "$build"
+build=$BUILD jobs=${JOBS:-$BACKEND}
 sim=$build/torusrt-sim render=$build/torusrt-render
-res=$here/results runs=$here/results/runs
+mkdir -p "$res"
+res=$(cd "$res" && pwd) runs=$res/runs
 mkdir -p "$runs" "$res/timing"
 fit() { python3 "$root/experiments/report" fidelity "$@"; }
 start=$(date +%s)
@@ -58,36 +69,41 @@ handover_keys() {
         2180) printf 'handover_send 1600\nhandover_receive 580\n' ;;
     esac
 }
-# runs FILE: run the command lines of FILE on $jobs cores.
-runs() { parallel --will-cite --halt never -j "$jobs" <"$1" >/dev/null || { echo "study.sh: some runs of $1 failed" >&2; exit 1; }; }
-point() { printf '%q ' "$root/experiments/run_point.sh" "$@"; echo; }
+# runs LIST: run the points of LIST (JSON, tab, command) on the chosen backend, its state beside
+# the list.
+runs() {
+    local name; name=$(basename "$1" .list)
+    run_points "$res/run-$name" "fidelity-$name" "$1" >/dev/null || die "some runs of $1 failed (see $res/run-$name)"
+}
+# point JSON ARGS...: the list line of one experiments/run_point.sh run writing JSON.
+point() { printf '%s\t' "$1"; printf '%q ' "$root/experiments/run_point.sh" "$@"; echo; }
 
 # ---- stage 1: units (layout x counting rule, the renderer alone)
-: >"$res/stage1.tsv" ; : >"$res/stage1.cmds"
+: >"$res/stage1.tsv" ; : >"$res/stage1.list"
 for l in "${layouts[@]}"; do
     for r in "${rules[@]}"; do
         j=$runs/s1-$l-$r.json
         printf '%s\t%s\t%s\n' "$l" "$r" "$j" >>"$res/stage1.tsv"
-        # The renderer writes its files only when it succeeds; a JSON already there is kept.
-        printf '[ -s %q ] || %q %q --size 8x8 --preprocess-count %q -q -o %q --stats %q\n' "$j" "$render" \
-            "$(scene_of "$l")" "$r" "${j%.json}.png" "$j" >>"$res/stage1.cmds"
+        # The renderer writes its files only when it succeeds: the JSON marks the run done.
+        printf '%s\t%q %q --size 8x8 --preprocess-count %q -q -o %q --stats %q\n' "$j" "$render" \
+            "$(scene_of "$l")" "$r" "${j%.json}.png" "$j" >>"$res/stage1.list"
     done
 done
-runs "$res/stage1.cmds"
+runs "$res/stage1.list"
 read -r layout rule < <(fit fit1 "$res")
 echo "study: stage 1 chose layout $layout, counting rule $rule"
 [ "$only" = 1 ] && exit 0
 image1=$(scene_of "$layout")
 
 # One-processor runs: T(1) of every scene a later stage runs (no hand-over, no bus at n = 1).
-: >"$res/t1.cmds"
+: >"$res/t1.list"
 for s in "$layout" "${image2s[@]}"; do
-    point "$runs/t1-$s.json" -- "$sim" "$(scene_of "$s")" --ips 1 >>"$res/t1.cmds"
+    point "$runs/t1-$s.json" -- "$sim" "$(scene_of "$s")" --ips 1 >>"$res/t1.list"
 done
-runs "$res/t1.cmds"
+runs "$res/t1.list"
 
 # ---- stage 2: the penalty (bus and memory timing), m = 64, today's 4x2x2, cyclic, hand-over 0
-: >"$res/stage2.tsv" ; : >"$res/stage2.cmds"
+: >"$res/stage2.tsv" ; : >"$res/stage2.list"
 for b in "${buses[@]}"; do
     for m in "${memories[@]}"; do
         t=$res/timing/bus-$b-$m.timing
@@ -98,17 +114,17 @@ for b in "${buses[@]}"; do
                 j=$runs/s2-$s-$b-$m-$d.json
                 printf '%s\t%s\t%s\t%s\t%s\n' "$b" "$m" "$img" "$d" "$j" >>"$res/stage2.tsv"
                 point "$j" --t1-from "$runs/t1-$s.json" -- "$sim" "$(scene_of "$s")" --timing "$t" \
-                    --ips 4x2x2 --map cyclic --cluster 64 --data "$d" >>"$res/stage2.cmds"
+                    --ips 4x2x2 --map cyclic --cluster 64 --data "$d" >>"$res/stage2.list"
             done
         done
     done
 done
-runs "$res/stage2.cmds"
+runs "$res/stage2.list"
 read -r bus memory < <(fit fit2 "$res")
 echo "study: stage 2 chose bus_cycle $bus us, memory_access $memory us"
 
 # ---- stage 3: the 1024 times (arrangement x interleave x hand-over x image 2), replicated
-: >"$res/stage3.tsv" ; : >"$res/stage3.cmds"
+: >"$res/stage3.tsv" ; : >"$res/stage3.list"
 for h in "${handovers[@]}"; do
     t=$res/timing/fit-$h.timing
     { printf 'bus_cycle %s\nmemory_access %s\n' "$bus" "$memory"; handover_keys "$h"; } >"$t"
@@ -119,29 +135,29 @@ for h in "${handovers[@]}"; do
                 j=$runs/s3-$s-$h-$sh-${mp//:/}.json
                 printf '%s\t%s\t%s\t%s\t%s\t%s\n' "$sh" "$mp" "$h" "$img" "$s" "$j" >>"$res/stage3.tsv"
                 point "$j" --t1-from "$runs/t1-$s.json" -- "$sim" "$(scene_of "$s")" --timing "$t" \
-                    --ips "$sh" --map "$mp" --cluster 64 --data replicated >>"$res/stage3.cmds"
+                    --ips "$sh" --map "$mp" --cluster 64 --data replicated >>"$res/stage3.list"
             done
         done
     done
 done
-runs "$res/stage3.cmds"
+runs "$res/stage3.list"
 read -r shape lbmap handover image2 < <(fit fit3 "$res")
 echo "study: stage 3 chose $shape, $lbmap, hand-over $handover us, image 2 $image2"
 
 # ---- the fitted machine: its files, and the penalty measured again on it
 fit machines "$res" "$root/machines" --rule "$rule" --bus "$bus" --memory "$memory" --shape "$shape" \
     --map "$lbmap" --handover "$handover"
-: >"$res/check.tsv" ; : >"$res/check.cmds"
+: >"$res/check.tsv" ; : >"$res/check.list"
 for s in "$layout" "$image2"; do
     img=image2; [ "$s" = "$layout" ] && img=image1
     for d in replicated shared; do
         j=$runs/check-$s-$d.json
         printf '%s\t%s\t%s\n' "$img" "$d" "$j" >>"$res/check.tsv"
         point "$j" --t1-from "$runs/t1-$s.json" -- "$sim" "$(scene_of "$s")" \
-            --config "$root/machines/paper-1024-$d.toml" >>"$res/check.cmds"
+            --config "$root/machines/paper-1024-$d.toml" >>"$res/check.list"
     done
 done
-runs "$res/check.cmds"
+runs "$res/check.list"
 
 # ---- validation and robustness: the reproduction's points under each reading
 # reading NAME VAR=VALUE...: the reproduction's points under one reading, run and collected;
@@ -159,12 +175,17 @@ reading() {
     mkdir -p "$dir"
     env "$@" "$root/experiments/points.sh" --build "$build" --tsv full "$dir" >"$dir/points.tsv"
     echo full >"$dir/mode"
-    for ph in 1 2; do
-        env "$@" "$root/experiments/points.sh" --build "$build" --phase $ph full "$dir" >"$dir/points.phase$ph"
-        parallel --will-cite --halt never -j "$jobs" --joblog "$dir/../joblog.phase$ph" <"$dir/points.phase$ph" \
-            >/dev/null || echo "study.sh: reading $name: some points failed (see $dir)" >&2
+    for ph in 1 2; do  # the point lists of experiments/backend: JSON, tab, command
+        env "$@" "$root/experiments/points.sh" --build "$build" --tsv --phase $ph full "$dir" |
+            cut -f9,10 >"$dir/points.phase$ph"
     done
-    { head -n 1 "$dir/../joblog.phase1"; tail -q -n +2 "$dir/../joblog.phase1" "$dir/../joblog.phase2"; } >"$dir/../joblog"
+    run_points "$dir/.." "fidelity-$name" "$dir/points.phase1" "$dir/points.phase2" >/dev/null ||
+        echo "study.sh: reading $name: some points failed (see $dir/..)" >&2
+    rm -f "$dir/../joblog"  # both phases' joblogs in one (GNU parallel backends), for the run facts
+    for f in "$dir"/../joblog.phase[12]; do
+        [ -f "$f" ] || continue
+        if [ -s "$dir/../joblog" ]; then tail -n +2 "$f"; else cat "$f"; fi >>"$dir/../joblog"
+    done
     python3 "$root/experiments/report" collect "$dir" >/dev/null
     printf '%s\t%s\n' "$name" "$*" >>"$res/readings.tsv"
     echo "study: reading $name done ($(($(date +%s) - start)) s)"
