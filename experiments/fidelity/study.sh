@@ -73,7 +73,7 @@ handover_keys() {
 # the list.
 runs() {
     local name; name=$(basename "$1" .list)
-    run_points "$res/run-$name" "fidelity-$name" "$1" >/dev/null || die "some runs of $1 failed (see $res/run-$name)"
+    run_points "$res/run-$name" "fidelity-$name" "$1" || die "some runs of $1 failed (see $res/run-$name)"
 }
 # point JSON ARGS...: the list line of one experiments/run_point.sh run writing JSON.
 point() { printf '%s\t' "$1"; printf '%q ' "$root/experiments/run_point.sh" "$@"; echo; }
@@ -179,7 +179,7 @@ reading() {
         env "$@" "$root/experiments/points.sh" --build "$build" --tsv --phase $ph full "$dir" |
             cut -f9,10 >"$dir/points.phase$ph"
     done
-    run_points "$dir/.." "fidelity-$name" "$dir/points.phase1" "$dir/points.phase2" >/dev/null ||
+    run_points "$dir/.." "fidelity-$name" "$dir/points.phase1" "$dir/points.phase2" ||
         echo "study.sh: reading $name: some points failed (see $dir/..)" >&2
     rm -f "$dir/../joblog"  # both phases' joblogs in one (GNU parallel backends), for the run facts
     for f in "$dir"/../joblog.phase[12]; do
