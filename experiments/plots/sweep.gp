@@ -10,8 +10,14 @@ set key below font ',9'
 set xlabel xname
 set ylabel yname
 set title 'torusrt-sim sweep: '.yname.' against '.xname
-set offsets graph 0.05, graph 0.05, graph 0.05, graph 0.05
-if (ymin0) set yrange [0:*]
+# Offsets: left, right, top, bottom. An axis that starts at 0 gets no bottom offset, which would
+# move it below 0.
+if (ymin0) {
+    set offsets graph 0.05, graph 0.05, graph 0.05, 0
+    set yrange [0:*]
+} else {
+    set offsets graph 0.05, graph 0.05, graph 0.05, graph 0.05
+}
 if (numeric) {
     plot for [i=1:nseries] dat.'/series-'.i.'.dat' using 2:3 with linespoints lw 2 pt 7 title word(titles, i)
 } else {

@@ -3,6 +3,7 @@
 
 #include <sstream>
 
+#include "significant.h"
 #include "stats_json.h"
 
 namespace torusrt {
@@ -101,16 +102,16 @@ void print_frame_table(const std::vector<FrameRecord> &frames, const RemapSettin
                           remap.window == 1 ? "" : "s", remap.margin);
         policy += buf;
     }
-    std::fprintf(out, "  animation    %zu frames, remap %s: total %.6f s = images %.6f s + migration %.6f s (%.1f %%)"
-                 " + host pilot %.6f s\n",
-                 frames.size(), policy.c_str(), a["total_s"].get<double>(), a["image_time_s"].get<double>(),
-                 a["migration_time_s"].get<double>(), 100 * a["migration_share"].get<double>(),
-                 a["host_pilot_charged_s"].get<double>());
-    std::fprintf(out, "  frame   image s  effic.  migr. bytes  migr. s    decision\n");
+    std::fprintf(out, "  animation    %zu frames, remap %s: total %s s = images %s s + migration %s s (%.1f %%)"
+                 " + host pilot %s s\n",
+                 frames.size(), policy.c_str(), sig4(a["total_s"].get<double>()).c_str(),
+                 sig4(a["image_time_s"].get<double>()).c_str(), sig4(a["migration_time_s"].get<double>()).c_str(),
+                 100 * a["migration_share"].get<double>(), sig4(a["host_pilot_charged_s"].get<double>()).c_str());
+    std::fprintf(out, "  frame    image s  effic.  migr. bytes    migr. s  decision\n");
     for (const FrameRecord &f : frames)
-        std::fprintf(out, "  %5zu %9.5f %6.1f%% %12llu %9.6f  %s\n", f.index, f.image_time_s, 100 * f.efficiency(),
-                     static_cast<unsigned long long>(f.migration.bytes()), f.charged_migration_s(),
-                     f.decision.c_str());
+        std::fprintf(out, "  %5zu %10s %6.1f%% %12llu %10s  %s\n", f.index, sig4(f.image_time_s).c_str(),
+                     100 * f.efficiency(), static_cast<unsigned long long>(f.migration.bytes()),
+                     sig4(f.charged_migration_s()).c_str(), f.decision.c_str());
 }
 
 }  // namespace torusrt

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "run_report.h"
+#include "significant.h"
 
 namespace torusrt {
 
@@ -30,20 +31,6 @@ Spread spread(const std::vector<T> &items, F value)
     }
     s.mean = sum / items.size();
     return s;
-}
-
-// A figure with 4 significant digits, without an exponent for the sizes a run produces.
-std::string sig4(double v)
-{
-    char buf[48];
-    double a = std::fabs(v);
-    if (a == 0 || a >= 1e9 || a < 1e-6) {
-        std::snprintf(buf, sizeof buf, "%.4g", v);
-    } else {
-        int decimals = 3 - static_cast<int>(std::floor(std::log10(a)));
-        std::snprintf(buf, sizeof buf, "%.*f", decimals < 0 ? 0 : decimals, v);
-    }
-    return buf;
 }
 
 // The machine as the summary's system line gives it: timing style, buffers and flow control.
@@ -126,8 +113,8 @@ void print_summary(const RunReport &r, std::FILE *out)
         std::fprintf(out, "  image time   %s s simulated   (T(1) %s s, %s)\n", sig4(T).c_str(), sig4(f.t1_s).c_str(),
                      f.t1_source.c_str());
     else
-        std::fprintf(out, "  image time   %s s simulated for %zu frames, from the first frame's start to the last's end"
-                          " (per frame: the table below)\n", sig4(T).c_str(), r.frames.size());
+        std::fprintf(out, "  time         %s s simulated over %zu frames, first frame's start to last's end"
+                          " (frames: below)\n", sig4(T).c_str(), r.frames.size());
     std::fprintf(out, "  efficiency   %.1f %% = T(1)/(n T(n)), n = %d   (load balance %.1f %% = busy/(n T(n)))\n",
                  T > 0 ? 100 * (f.t1_s / (n * T)) : 0.0, n, T > 0 ? 100 * (r.totals.busy_s / (n * T)) : 0.0);
     std::fprintf(out, "  timing       profile %s (hand-over send %g us, receive %g us)\n", c.timing_profile.c_str(),

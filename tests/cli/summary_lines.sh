@@ -31,6 +31,14 @@ check "torusrt-render says what it wrote" grep -qx "  wrote        r.png, r.json
 check "quiet: nothing on stdout" test ! -s "$TMP/qsum"
 (cd "$TMP" && "$BUILD/torusrt-sim" "$f" --size 16x16 -o f_%d.png --ips 2 --orbit 20 --frames 3 --frames-csv f.csv) > "$TMP/an" 2> /dev/null ||
     fail "animation"
-check "animation: the image time spans the frames" grep -q "^  image time   .* s simulated for 3 frames" "$TMP/an"
+check "animation: the time spans the frames" grep -q "^  time         [0-9.]* s simulated over 3 frames" "$TMP/an"
+check "animation: no 'image time' line for the whole animation" test "$(grep -c '^  image time' "$TMP/an")" -eq 0
+check "animation: the total at 4 significant digits" \
+    grep -qE "^  animation    3 frames, remap static: total [0-9]+\.[0-9]+ s = images" "$TMP/an"
+total=$(grep -oE "total [0-9.]+ s" "$TMP/an" | grep -oE "[0-9.]+")
+check "animation: the total has 4 significant digits ($total)" test "$(printf %s "$total" | tr -d . | sed 's/^0*//' | wc -c)" -eq 4
+frame0=$(awk '$1 == "0" && $NF == "first" {print $2}' "$TMP/an")
+check "animation: frame 0's image time at 4 significant digits ($frame0)" \
+    test "$(printf %s "$frame0" | tr -d . | sed 's/^0*//' | wc -c)" -eq 4
 check "animation: wrote the frames and the CSV" grep -qx "  wrote        3 frames f_%d.png, f.csv" "$TMP/an"
 finish
