@@ -99,8 +99,9 @@ def main():
             png = plot(plot_dir, gp, f"{sc}-{prof}", f"{sc}, {prof} profile", rows)
             L += ["", f"![efficiency against n, {sc}, {prof}]({rel}/{png})", ""]
     L += ["## Where the work is, and who owns it (64 nodes, calibrated profile)", "",
-          "Left: cyclic; right: cost. Each picture shows the cells' work summed along x, y and z and",
-          "the owners of the middle z slice.", ""]
+          "Left: cyclic; right: cost (`torusrt-sim --load-map`). Each picture shows the cells' work summed",
+          "along z, the owners of the middle z slice (node numbers, boundaries between nodes drawn) and",
+          "the busy time per node, busiest first, with the mean and the busiest marked.", ""]
     for sc in ("paper-image1", "paper-image2"):
         L += [f"{sc}:", "", f"![cyclic]({rel}/load-{sc}-cyclic.png) ![cost]({rel}/load-{sc}-cost.png)", ""]
     with open(out_md + ".tmp", "w") as f:
