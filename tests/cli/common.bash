@@ -24,7 +24,12 @@ pass() { PASSED=$((PASSED + 1)); }
 fail() { FAILED=$((FAILED + 1)); echo "FAIL: $*"; }
 # check DESCRIPTION COMMAND...: passes if the command succeeds.
 check() { local what=$1; shift; if "$@"; then pass; else fail "$what"; fi; }
-finish() { echo "$PASSED passed, $FAILED failed"; [ "$FAILED" -eq 0 ]; }
+# finish: the summary line; fails when a check failed, and when no check ran at all.
+finish() {
+    echo "$PASSED passed, $FAILED failed"
+    if [ "$PASSED" -eq 0 ] && [ "$FAILED" -eq 0 ]; then echo "FAIL: $TEST_NAME ran no checks"; return 1; fi
+    [ "$FAILED" -eq 0 ]
+}
 # sim_ok NAME ARGS...: a torusrt-sim run ($sim, set by the script) that must succeed, quiet, its
 # stderr in $TMP/NAME.stderr.
 sim_ok() {
