@@ -36,7 +36,7 @@
 typedef struct {
     const char *name;
     const char *desc;
-    void (*build)(scene *sc, double factor);
+    void (*build)(scene *sc);
     double factor; /* scale applied when writing */
 } scene_def;
 
@@ -105,7 +105,8 @@ static int write_one(const char *outdir, const scene_def *def)
         return 1;
     }
     sc->up = v3(0, 1, 0);
-    def->build(sc, def->factor);
+    sc->factor = def->factor;
+    def->build(sc);
     if (sc->failed) {
         fprintf(stderr, "torusrt-genscenes: %s: could not build the scene (out of memory)\n",
                 def->name);

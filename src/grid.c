@@ -96,13 +96,6 @@ static void set_axis(rt_vec3 *v, int a, double x)
     else v->z = x;
 }
 
-static int dominant_axis(rt_vec3 n)
-{
-    double ax = fabs(n.x), ay = fabs(n.y), az = fabs(n.z);
-    if (ax >= ay && ax >= az) return 0;
-    return ay >= az ? 1 : 2;
-}
-
 /* Prime factors of n in ascending order; returns how many. */
 static int factorise(int n, int out[MAX_LEVELS])
 {
@@ -347,7 +340,7 @@ static int prepare_object(build *bd, size_t o)
         if (!reserve_loop(bd, 3)) return 0;
         bd->normal = t->normal;
         bd->offset = rt_vec_dot(t->normal, t->v[0]);
-        bd->drop = dominant_axis(t->normal);
+        bd->drop = rt_dominant_axis(t->normal);
         bd->loop_n = 3;
         memcpy(bd->loop, t->v, 3 * sizeof *bd->loop);
     }

@@ -2,6 +2,15 @@
  * function serves hits and cell lists so both always agree on what is inside. */
 #include "polygon_inside.h"
 
+#include <math.h>
+
+int rt_dominant_axis(rt_vec3 n)
+{
+    double ax = fabs(n.x), ay = fabs(n.y), az = fabs(n.z);
+    if (ax >= ay && ax >= az) return 0;
+    return ay >= az ? 1 : 2;
+}
+
 int rt_polygon_inside(const rt_vec3 *v, size_t n, int drop, rt_vec3 p)
 {
     int ia = drop == 0 ? 1 : 0, ib = drop == 2 ? 1 : 2;

@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "polygon_inside.h"
 #include "scene_internal.h"
 
 /* Grows *buf to hold at least `need` items of `size` bytes. */
@@ -182,13 +183,6 @@ static rt_vec3 newell_normal(const rt_vec3 *v, size_t n)
     return nrm;
 }
 
-static int dominant_axis(rt_vec3 n)
-{
-    double ax = fabs(n.x), ay = fabs(n.y), az = fabs(n.z);
-    if (ax >= ay && ax >= az) return 0;
-    return ay >= az ? 1 : 2;
-}
-
 rt_status rt_scene_add_polygon(rt_scene *s, const rt_vec3 *v, size_t n)
 {
     if (n < 3) return RT_ERR_INVALID;
@@ -234,7 +228,7 @@ rt_status rt_scene_add_polygon(rt_scene *s, const rt_vec3 *v, size_t n)
     for (size_t i = 0; i < n; i++) c = rt_vec_add(c, v[i]);
     c = rt_vec_scale(c, 1.0 / (double)n);
     p->offset = rt_vec_dot(p->normal, c);
-    p->drop_axis = dominant_axis(p->normal);
+    p->drop_axis = rt_dominant_axis(p->normal);
     o->bounds = empty_box();
     if (!p->degenerate)
         for (size_t i = 0; i < n; i++) box_add(&o->bounds, v[i]);

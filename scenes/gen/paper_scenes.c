@@ -61,9 +61,8 @@ static void flake_grid(scene *sc, double z_step)
 }
 
 /* Image 1: nine copies of a two-level recursive "flake" of diffuse spheres. */
-void build_paper_image1(scene *sc, double factor)
+void build_paper_image1(scene *sc)
 {
-    (void)factor;
     note(sc, "The paper's image 1: 369 diffuse spheres, large and small, defined recursively.");
     note(sc, "Recursion: 9 groups on a 3x3 grid in the plane z = 0 (centres 5 apart); each group");
     note(sc, "is a sphere of radius 1, 8 children of radius 1/2 centred 1.6 x 1 from it along the");
@@ -76,9 +75,8 @@ void build_paper_image1(scene *sc, double factor)
 }
 
 /* Image 1, planar-z layout: the grid's three columns at z = -5, 0 and +5. */
-void build_paper_image1_planar_z(scene *sc, double factor)
+void build_paper_image1_planar_z(scene *sc)
 {
-    (void)factor;
     note(sc, "Image 1, planar-z layout (docs/fidelity.md): paper-image1's nine flakes of 41");
     note(sc, "spheres, the three columns of the 3x3 grid moved to z = -5, 0 and +5: 369 spheres.");
     flake_grid(sc, 5.0);
@@ -86,9 +84,8 @@ void build_paper_image1_planar_z(scene *sc, double factor)
 }
 
 /* Image 1, cube layout: the groups repeat the flake's 1 + 8 recursion. */
-void build_paper_image1_cube(scene *sc, double factor)
+void build_paper_image1_cube(scene *sc)
 {
-    (void)factor;
     note(sc, "Image 1, cube layout (docs/fidelity.md): paper-image1's flake of 41 spheres at the");
     note(sc, "centre and at the eight corners (+-5,+-5,+-5) of a cube: 9 x 41 = 369 spheres.");
     flake(sc, v3(0, 0, 0), big_colour[0]);
@@ -116,9 +113,8 @@ static vec3 tilted(vec3 d, double tilt, double azimuth)
 }
 
 /* Image 1, tree layout: one four-level sphereflake-like tree. */
-void build_paper_image1_tree(scene *sc, double factor)
+void build_paper_image1_tree(scene *sc)
 {
-    (void)factor;
     const double R = 4.0, dist = 1.6;  /* root radius; child centre at 1.6 x the parent's radius */
     note(sc, "Image 1, tree layout (docs/fidelity.md): one recursive tree, 1 + 8 + 72 + 288 = 369");
     note(sc, "diffuse spheres. Root radius 4; 8 children of radius 2 centred 1.6 x 4 from it along");
@@ -174,9 +170,8 @@ static void image2(scene *sc, int wall, vec3 from, vec3 at)
 }
 
 /* Image 2: a glass and a mirror sphere in front of an 11 x 11 plane of small spheres. */
-void build_paper_image2(scene *sc, double factor)
+void build_paper_image2(scene *sc)
 {
-    (void)factor;
     note(sc, "The paper's image 2: one large transparent sphere (T 0.9, ior 1.5) and one large");
     note(sc, "mirror sphere (Ks 0.9) side by side in front, 121 small diffuse spheres (radius 0.5,");
     note(sc, "11 x 11, 1.5 apart) laid out in the horizontal plane y = 0 reaching behind them;");
@@ -186,9 +181,8 @@ void build_paper_image2(scene *sc, double factor)
 }
 
 /* Image 2, wall arrangement: the 121 small spheres on a vertical plane behind the big ones. */
-void build_paper_image2_wall(scene *sc, double factor)
+void build_paper_image2_wall(scene *sc)
 {
-    (void)factor;
     note(sc, "Image 2, wall arrangement (docs/fidelity.md): paper-image2's glass and mirror spheres");
     note(sc, "(radius 2) in front of its 121 small diffuse spheres (radius 0.5, 11 x 11, 1.5 apart)");
     note(sc, "standing in the vertical plane z = -7 behind them, facing the eye; 123 objects.");

@@ -82,6 +82,7 @@ typedef struct {
     int nitems, cap;
     int nobjects;
     int failed;     /* out of memory while building */
+    double factor;  /* the scale the scene is written at (set before its builder runs) */
 } scene;
 
 /* ---------------------------------------------------------------- building */

@@ -5,9 +5,8 @@
 #include "builders.h"
 #include "nff_writer.h"
 
-void build_axis_rays(scene *sc, double factor)
+void build_axis_rays(scene *sc)
 {
-    (void)factor;
     note(sc, "33x33 camera looking exactly down -z with up +y: the centre row's rays have a zero");
     note(sc, "y component, the centre column's a zero x component, the centre ray is (0,0,-1).");
     note(sc, "The object space is symmetric in x and y, so the centre ray runs along the cell edge");
@@ -29,9 +28,8 @@ void build_axis_rays(scene *sc, double factor)
     add_light(sc, v3(3, 4, 8), 0.7, 0.7, 0.7);
 }
 
-void build_grid_corners(scene *sc, double factor)
+void build_grid_corners(scene *sc)
 {
-    (void)factor;
     note(sc, "Objects on the integer lattice of the object space [-12,12]^3, whose 24^3 cells are");
     note(sc, "unit cubes: three back walls on the space's faces x,y,z = -12, a reflective sphere");
     note(sc, "at the origin (a cell corner) with radius 3, six radius-2 spheres on the axes at 8,");
@@ -73,9 +71,8 @@ static const double PALETTE6[6][3] = {
     {0.9, 0.25, 0.2}, {0.95, 0.65, 0.15}, {0.85, 0.85, 0.2},
     {0.25, 0.75, 0.3}, {0.2, 0.45, 0.9}, {0.65, 0.3, 0.85}};
 
-void build_eye_inside(scene *sc, double factor)
+void build_eye_inside(scene *sc)
 {
-    (void)factor;
     note(sc, "The eye at the centre of the object space: a ring of 12 spheres around it (some");
     note(sc, "behind the camera), one sphere above, a floor under it; wide 90 degree view.");
     diffuse(sc, 0.7, 0.7, 0.7, 0.8);
@@ -94,9 +91,8 @@ void build_eye_inside(scene *sc, double factor)
     add_light(sc, v3(4, 10, 3), 0.9, 0.9, 0.9);
 }
 
-void build_light_inside(scene *sc, double factor)
+void build_light_inside(scene *sc)
 {
-    (void)factor;
     note(sc, "A point light at the centre of a ring of 8 spheres on a floor: the light lies inside");
     note(sc, "the object space; shadows point outward. Camera above, outside the space.");
     diffuse(sc, 0.8, 0.8, 0.75, 0.8);
@@ -114,9 +110,8 @@ void build_light_inside(scene *sc, double factor)
     add_light(sc, v3(0, 1.5, 0), 1, 1, 1);
 }
 
-void build_grazing(scene *sc, double factor)
+void build_grazing(scene *sc)
 {
-    (void)factor;
     const int res = 63;
     const double angle = 30;
     const vec3 eye = v3(0, 0.25, 10);
@@ -152,9 +147,8 @@ void build_grazing(scene *sc, double factor)
     add_light(sc, v3(10, 0.05, -30), 0.4, 0.4, 0.4);
 }
 
-void build_tir(scene *sc, double factor)
+void build_tir(scene *sc)
 {
-    (void)factor;
     const double a = 30 * PI / 180;
     note(sc, "Total internal reflection: a glass slab (closed box of 6 quads, outward vertex order;");
     note(sc, "T 0.9, ior 1.5, 3.2 x 1.2 x 2.4, turned 30 degrees about y) above a checkered floor");
@@ -185,9 +179,8 @@ void build_tir(scene *sc, double factor)
     add_light(sc, v3(-3, 8, 5), 0.9, 0.9, 0.9);
 }
 
-void build_facing_mirrors(scene *sc, double factor)
+void build_facing_mirrors(scene *sc)
 {
-    (void)factor;
     note(sc, "Two parallel mirror quads (Ks 1, Kd 0), 68 long, in the planes x = -1.5 and x = 1.5");
     note(sc, "facing each other, a diffuse sphere between them 20 ahead of the camera, which looks");
     note(sc, "down the corridor: the sphere repeats in the mirrors and rays bounce until the depth");
@@ -203,9 +196,8 @@ void build_facing_mirrors(scene *sc, double factor)
     add_light(sc, v3(0, 3, -4), 1, 1, 1);
 }
 
-void build_empty(scene *sc, double factor)
+void build_empty(scene *sc)
 {
-    (void)factor;
     note(sc, "A view, a light and a background, and no objects: every pixel is the background.");
     view(sc, v3(0, 0, 5), v3(0, 0, 0), v3(0, 1, 0), 45, 32, 32);
     background(sc, 0.2, 0.3, 0.5);
@@ -213,9 +205,8 @@ void build_empty(scene *sc, double factor)
     add_light(sc, v3(5, 5, 5), 1, 1, 1);
 }
 
-void build_one_big_sphere(scene *sc, double factor)
+void build_one_big_sphere(scene *sc)
 {
-    (void)factor;
     note(sc, "A single sphere of radius 10 is the whole object space: it lies in nearly every one");
     note(sc, "of the cells (all but those near the corners). Partly transparent (T 0.3, ior 1.3)");
     note(sc, "and reflective, so rays also run through its inside.");
@@ -228,9 +219,8 @@ void build_one_big_sphere(scene *sc, double factor)
     add_light(sc, v3(-20, 30, 30), 1, 1, 1);
 }
 
-void build_one_cell(scene *sc, double factor)
+void build_one_cell(scene *sc)
 {
-    (void)factor;
     note(sc, "50 spheres of radius 0.12 packed (fixed-seed LCG, no overlaps) within 0.9 of the");
     note(sc, "origin, plus one more at (100,100,100): the object space is about 101 wide, so its");
     note(sc, "24^3 cells are about 4.2 wide and all 50 clustered spheres lie in cell (0,0,0).");
@@ -266,14 +256,14 @@ void build_one_cell(scene *sc, double factor)
     add_light(sc, v3(-6, 8, -5), 1, 1, 1);
 }
 
-/* The same small scene at several scales; `factor` multiplies every position and length. */
-void build_scaled(scene *sc, double factor)
+/* The same small scene at several scales; sc->factor multiplies every position and length. */
+void build_scaled(scene *sc)
 {
     char buf[40];
     note(sc, "A small scene (floor quad, three diffuse spheres, a glass sphere T 0.9 ior 1.5, a");
     note(sc, "mirror sphere Ks 0.9, one light) with every coordinate, radius, light position,");
-    note(sc, "camera position and hither multiplied by %s; colours, directions and angle as in", 
-         num(buf, sizeof buf, factor));
+    note(sc, "camera position and hither multiplied by %s; colours, directions and angle as in",
+         num(buf, sizeof buf, sc->factor));
     note(sc, "scale-1. Numbers are the exact double products, printed to round-trip.");
     note(sc, "All scale-* images should equal scale-1's.");
     diffuse(sc, 0.8, 0.8, 0.75, 0.8);
@@ -321,8 +311,8 @@ static void build_tiny(scene *sc, int with_huge)
     ambient(sc, 0.1, 0.1, 0.1);
     add_light(sc, v3(2 * u, 8 * u, 3 * u), 1, 1, 1);
 }
-void build_tiny_sphere(scene *sc, double factor) { (void)factor; build_tiny(sc, 1); }
-void build_tiny_alone(scene *sc, double factor) { (void)factor; build_tiny(sc, 0); }
+void build_tiny_sphere(scene *sc) { build_tiny(sc, 1); }
+void build_tiny_alone(scene *sc) { build_tiny(sc, 0); }
 
 /* A hemisphere of radius r on the plane y = c.y as `pp` patches with radial normals:
  * two bands of 4-vertex patches and a cap of triangles, 8 segments round. */
@@ -361,9 +351,8 @@ static void hemisphere_patches(scene *sc, vec3 c, double r)
     }
 }
 
-void build_cones_and_patches(scene *sc, double factor)
+void build_cones_and_patches(scene *sc)
 {
-    (void)factor;
     note(sc, "Every primitive: a floor quad (p 4); an open cone (c, base radius 1, apex radius");
     note(sc, "0.12); an open cylinder (c, both radii 0.75; its inside shows from above); a");
     note(sc, "hemisphere of 24 smooth patches (16 pp 4 + 8 pp 3, radial vertex normals); a concave");
@@ -391,9 +380,8 @@ void build_cones_and_patches(scene *sc, double factor)
     add_light(sc, v3(5, 4, 3), 0.4, 0.4, 0.4);
 }
 
-void build_one_pixel(scene *sc, double factor)
+void build_one_pixel(scene *sc)
 {
-    (void)factor;
     note(sc, "Resolution 1 x 1: the single ray goes along the view direction and hits the centre");
     note(sc, "of a reflective sphere; a second sphere off the axis casts no shadow there.");
     mat(sc, 0.9, 0.3, 0.2, 0.8, 0.3, 30, 0, 1);
@@ -406,9 +394,8 @@ void build_one_pixel(scene *sc, double factor)
     add_light(sc, v3(3, 4, 5), 1, 1, 1);
 }
 
-void build_opposing_normals(scene *sc, double factor)
+void build_opposing_normals(scene *sc)
 {
-    (void)factor;
     note(sc, "A lid of 12 pp triangles around a raised pole whose vertex normals nearly cancel, as");
     note(sc, "at the poles of Haines' teapot: on each triangle the pole's normal is the exact");
     note(sc, "opposite of one rim normal (e.g. (-0.90, -0.43, 0) beside (0.90, 0.43, 0)), so the");
