@@ -42,9 +42,6 @@ void show_progress(void *ctx, uint64_t consumed, int64_t outstanding);
 // after sc_start: UserError if the memory budget's packet limit or the time limit stopped the
 // run; otherwise whether every packet was consumed (false: a deadlock);
 bool run_finished(const SimConfig &config, TorusSystem &top, const PacketLedger &ledger, rt_budget &memory);
-// before sc_start: completes SystemC's elaboration (binding, end_of_elaboration, start_of_simulation,
-// the processes made ready to run), so that sc_start's wall time is the simulation's alone;
-void finish_elaboration();
 
 // Throws the memory budget's UserError when the packets made while elaborating already exceed
 // it, before sc_start is called.
