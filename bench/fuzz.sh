@@ -49,8 +49,8 @@ build_target() {  # NAME: compiles BUILD_DIR/NAME
         "$cc" "${kernel[@]}" "${sanitize[@]}" "$here/tests/fuzz/$name.c" "$build"/kernel/*.o "${libs[@]}" \
             -o "$build/$name" ;;
     machine_fuzz)
-        "$cxx" -std=c++17 "${sanitize[@]}" -I"$here/testbench/common" -I"$here/include" \
-            "$here"/testbench/common/{machine_file_reader,option_parsing,option_spec}.cpp \
+        "$cxx" -std=c++17 "${sanitize[@]}" -I"$here/support" -I"$here/testbench/common" -I"$here/include" \
+            "$here"/testbench/common/machine_file_reader.cpp "$here"/support/{option_parsing,option_spec}.cpp \
             "$here/tests/fuzz/machine_fuzz.cpp" "$build"/kernel/*.o "${libs[@]}" -o "$build/$name" ;;
     *) echo "fuzz.sh: no target $name" >&2; exit 2 ;;
     esac
