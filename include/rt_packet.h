@@ -42,6 +42,14 @@ typedef struct rt_packet {
     uint8_t handed_over; /* 1: handed on by another IP's step, not yet taken up */
 } rt_packet;
 
+/* Packet bookkeeping of a whole render, the renderer's or the model's (created = consumed). */
+typedef struct rt_packet_totals {
+    uint64_t created[RT_PACKET_KINDS];  /* packets made, by kind (primaries included) */
+    uint64_t consumed[RT_PACKET_KINDS]; /* packets that were absorbed or left, by kind */
+    uint64_t forwarded;                 /* hand-overs between owners (0 in the renderer) */
+    uint64_t primary_missed;            /* primary rays that never met the object space */
+} rt_packet_totals;
+
 /* The primary ray of pixel (x, y) (docs/design.md section 3 camera). Sets *enters
  * to 1 and fills *out when the ray meets the object space, to 0 otherwise
  * (the pixel then gets the background). Returns RT_ERR_INVALID if (x, y)

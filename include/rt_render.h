@@ -29,13 +29,6 @@
 extern "C" {
 #endif
 
-typedef struct rt_packet_totals {
-    uint64_t created[RT_PACKET_KINDS];  /* packets made, by kind (primaries included) */
-    uint64_t consumed[RT_PACKET_KINDS]; /* packets that were absorbed or left, by kind */
-    uint64_t forwarded;                 /* hand-overs between owners (0 in the renderer) */
-    uint64_t primary_missed;            /* primary rays that never met the object space */
-} rt_packet_totals;
-
 typedef struct rt_render_options {
     rt_step_params step; /* depth/weight limits, brute force */
     /* Called now and then with pixels done out of total (NULL: not called). */

@@ -31,7 +31,7 @@ class ShortestQueueDispatch : public DispatchPolicyIf {
         int best = 0;
         size_t best_load = SIZE_MAX;
         for (size_t k = 0; k < processors.size(); k++) {
-            size_t load = processors[k]->queue().size() + (processors[k]->busy_trace() ? 1 : 0);
+            size_t load = processors[k]->queue().size() + (processors[k]->busy() ? 1 : 0);
             if (load < best_load) {
                 best = static_cast<int>(k);
                 best_load = load;

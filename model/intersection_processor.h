@@ -99,7 +99,8 @@ class IntersectionProcessor : public PacketSinkIf, public WakeCalendar::Client, 
         m_calendar = &calendar;
         m_calendar_id = calendar.add(*this);
     }
-    bool &busy_trace() { return m_busy_flag; }
+    bool &busy_trace() { return m_busy_flag; }  // the VCD's busy row
+    bool busy() const { return m_busy_flag; }    // working on a packet now
 
   private:
     // What the machine waits for: its timer (m_delay), its queue, its queue or room for its

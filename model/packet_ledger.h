@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <systemc>
 
-#include "rt_render.h"
+#include "rt_packet.h"
 
 namespace torusrt {
 

@@ -19,7 +19,7 @@ sc_core::sc_time offset_of(const sc_core::sc_time &local)
 
 }  // namespace
 
-ProcessorBusPort::ProcessorBusPort(sc_core::sc_module_name name, const MachineConfig &, const rt_scene *scene, int local,
+ProcessorBusPort::ProcessorBusPort(sc_core::sc_module_name name, const rt_scene *scene, int local,
                                    const std::vector<uint32_t> &node_objects, int m)
     : sc_module(name), in("in"), objects("objects"), to_comm_unit("to_comm_unit"), bus_socket("bus_socket"),
       m_scene(scene), m_local(local), m_m(m), m_node_objects(node_objects)

@@ -23,7 +23,6 @@
 #include "object_fetch_if.h"
 #include "packet_sink_if.h"
 #include "rt_scene.h"
-#include "sim_config.h"
 
 namespace torusrt {
 
@@ -36,7 +35,7 @@ class ProcessorBusPort : public sc_core::sc_module, public PacketSinkIf, public 
 
     // `local` = k, the processor's index in its node; `node_objects` (ascending, outliving this
     // port) and `m` give the holder of each object under the placement rule.
-    ProcessorBusPort(sc_core::sc_module_name name, const MachineConfig &config, const rt_scene *scene, int local,
+    ProcessorBusPort(sc_core::sc_module_name name, const rt_scene *scene, int local,
                      const std::vector<uint32_t> &node_objects, int m);
 
     void accept(const TimedPacket &p) override;

@@ -12,6 +12,7 @@
 #include "cluster_bus.h"
 #include "model_test.h"
 #include "processor_bus_port.h"
+#include "sim_config.h"
 #include "time_keeper.h"
 #include "two_port_memory.h"
 
@@ -84,7 +85,7 @@ static Outcome simulate()
 
     // Objects 0..3 in the node; with m = 2 processor 0 holds 0 and 2, processor 1 holds 1 and 3.
     const std::vector<uint32_t> node_objects{0, 1, 2, 3};
-    ProcessorBusPort port("port", config, scene, 0, node_objects, 2);
+    ProcessorBusPort port("port", scene, 0, node_objects, 2);
     auto arbiter = make_arbiter("round-robin", "arbiter", 1, -1);
     ClusterBus bus("bus", config.timing, false, 1);
     bus.arbiter.bind(*arbiter);
