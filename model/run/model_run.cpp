@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "elaboration_mark.h"
+#include "internal_check.h"
 #include "packet_ledger.h"
 #include "progress.h"
 #include "rt_mapping.h"
@@ -61,10 +62,9 @@ void check_budget_before_start(const PacketLedger &ledger, rt_budget &memory)
 
 void check_conservation(const PacketLedger &ledger)
 {
-    if (!ledger.conserved())
-        throw UserError("packet conservation violated: created " +
-                        std::to_string(ledger.totals().created[0] + ledger.totals().created[1]) + ", consumed " +
-                        std::to_string(ledger.totals().consumed[0] + ledger.totals().consumed[1]));
+    const rt_packet_totals &t = ledger.totals();
+    TORUSRT_CHECK(ledger.conserved(), "packets created " + std::to_string(t.created[0] + t.created[1]) +
+                                          ", consumed " + std::to_string(t.consumed[0] + t.consumed[1]));
 }
 
 std::vector<int32_t> owner_table_of(const SimConfig &config, const rt_grid *grid)

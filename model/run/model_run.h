@@ -46,7 +46,7 @@ bool run_finished(const SimConfig &config, TorusSystem &top, const PacketLedger 
 // Throws the memory budget's UserError when the packets made while elaborating already exceed
 // it, before sc_start is called.
 void check_budget_before_start(const PacketLedger &ledger, rt_budget &memory);
-// UserError unless created = consumed.
+// InternalError (a bug of the model) unless created = consumed.
 void check_conservation(const PacketLedger &ledger);
 
 // Prints the human summary of a report on stdout.
