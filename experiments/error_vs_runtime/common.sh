@@ -16,17 +16,12 @@ need_build() {
   command -v jq >/dev/null || die "jq is needed (scripts/setup.sh installs it)"
 }
 
-# png_compare_tool: prints the path of the PNG comparison tool, building it (once, atomically,
-# so concurrent callers do not clash) into BUILD/error_vs_runtime/ when missing or stale.
+# png_compare_tool: prints the path of the PNG comparison tool (the CMake target png_compare).
 png_compare_tool() {
-  local dir="$BUILD/error_vs_runtime" src="$EVR_DIR/png_compare.cpp"
-  local exe="$dir/png_compare"
-  if [ ! -x "$exe" ] || [ "$src" -nt "$exe" ]; then
-    mkdir -p "$dir" || return 1
-    local tmp="$exe.$$.tmp"
-    # shellcheck disable=SC2046
-    g++ -O2 -std=c++17 "$src" -o "$tmp" $(pkg-config --cflags --libs libpng) || { rm -f "$tmp"; return 1; }
-    mv -f "$tmp" "$exe"
+  local exe="$BUILD/png_compare"
+  if [ ! -x "$exe" ]; then
+    echo "error_vs_runtime: no $exe (build the png_compare target: cmake --build $BUILD --target png_compare)" >&2
+    return 1
   fi
   echo "$exe"
 }

@@ -5,79 +5,33 @@
 //   pixels_off_gt2  pixels with some channel differing by more than 2 levels
 //   total_pixels    width x height
 // Exit status: 0 on success, 2 on an unreadable file or a size mismatch.
-// Built by experiments/error_vs_runtime/common.sh:
-//   g++ -O2 -std=c++17 png_compare.cpp -o png_compare $(pkg-config --cflags --libs libpng)
-#include <png.h>
-
+// The CMake target png_compare (BUILD/png_compare); the images are read by the kernel's
+// rt_png_read, as every image torusrt writes is 8-bit RGB.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
 #include <vector>
 
+#include "rt_png.h"
+
 namespace {
 
 struct Image {
-    png_uint_32 width = 0, height = 0;
+    uint32_t width = 0, height = 0;
     std::vector<unsigned char> rgb; // width * height * 3
 };
 
 bool read_png(const char *path, Image &img, std::string &err)
 {
-    std::FILE *f = std::fopen(path, "rb");
-    if (!f) {
-        err = std::string(path) + ": cannot open";
+    uint8_t *rgb = nullptr;
+    char msg[256] = "";
+    if (rt_png_read(path, &img.width, &img.height, &rgb, msg, sizeof msg) != RT_OK) {
+        err = msg;
         return false;
     }
-    unsigned char sig[8];
-    if (std::fread(sig, 1, 8, f) != 8 || png_sig_cmp(sig, 0, 8) != 0) {
-        std::fclose(f);
-        err = std::string(path) + ": not a PNG file";
-        return false;
-    }
-    png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
-    png_infop info = png ? png_create_info_struct(png) : nullptr;
-    if (!png || !info) {
-        png_destroy_read_struct(&png, &info, nullptr);
-        std::fclose(f);
-        err = "out of memory";
-        return false;
-    }
-    std::vector<png_bytep> rows;
-    if (setjmp(png_jmpbuf(png))) {
-        png_destroy_read_struct(&png, &info, nullptr);
-        std::fclose(f);
-        err = std::string(path) + ": corrupt PNG";
-        return false;
-    }
-    png_init_io(png, f);
-    png_set_sig_bytes(png, 8);
-    png_read_info(png, info);
-    int color = png_get_color_type(png, info);
-    int depth = png_get_bit_depth(png, info);
-    // Normalise every kind of PNG to 8-bit RGB.
-    if (depth == 16) png_set_strip_16(png);
-    if (color == PNG_COLOR_TYPE_PALETTE) png_set_palette_to_rgb(png);
-    if (color == PNG_COLOR_TYPE_GRAY && depth < 8) png_set_expand_gray_1_2_4_to_8(png);
-    if (color == PNG_COLOR_TYPE_GRAY || color == PNG_COLOR_TYPE_GRAY_ALPHA) png_set_gray_to_rgb(png);
-    if (color & PNG_COLOR_MASK_ALPHA) png_set_strip_alpha(png);
-    if (png_get_valid(png, info, PNG_INFO_tRNS)) png_set_strip_alpha(png);
-    png_read_update_info(png, info);
-    img.width = png_get_image_width(png, info);
-    img.height = png_get_image_height(png, info);
-    if (png_get_rowbytes(png, info) != static_cast<size_t>(img.width) * 3) {
-        png_destroy_read_struct(&png, &info, nullptr);
-        std::fclose(f);
-        err = std::string(path) + ": unsupported PNG layout";
-        return false;
-    }
-    img.rgb.resize(static_cast<size_t>(img.width) * img.height * 3);
-    rows.resize(img.height);
-    for (png_uint_32 y = 0; y < img.height; y++) rows[y] = img.rgb.data() + static_cast<size_t>(y) * img.width * 3;
-    png_read_image(png, rows.data());
-    png_read_end(png, nullptr);
-    png_destroy_read_struct(&png, &info, nullptr);
-    std::fclose(f);
+    img.rgb.assign(rgb, rgb + static_cast<size_t>(img.width) * img.height * 3);
+    std::free(rgb);
     return true;
 }
 

@@ -9,7 +9,7 @@
 source "$(dirname "$0")/common.bash" "$@"
 
 CMP=$(TORUSRT_BUILD="$BUILD" bash -c 'source "$1/experiments/error_vs_runtime/common.sh"; png_compare_tool' _ "$SRC") ||
-  { fail "cannot build png_compare"; finish; exit 1; }
+  { fail "no png_compare tool"; finish; exit 1; }
 
 # psnr_ge A B: A >= B where either may be "inf".
 psnr_ge() { awk -v a="$1" -v b="$2" 'BEGIN { if (a == "inf") exit 0; if (b == "inf") exit 1; exit !(a + 0 >= b + 0) }'; }
