@@ -113,6 +113,17 @@ run_points() {
 }
 RUN_POINTS_OPTS=()
 
+# merge_joblogs STATE_DIR: STATE_DIR/joblog.phase1 and joblog.phase2 (GNU parallel backends) as
+# one STATE_DIR/joblog with one header, for a report's run facts.
+merge_joblogs() {
+    local f
+    rm -f "$1/joblog"
+    for f in "$1"/joblog.phase[12]; do
+        [ -f "$f" ] || continue
+        if [ -s "$1/joblog" ]; then tail -n +2 "$f"; else cat "$f"; fi >>"$1/joblog"
+    done
+}
+
 # A study's points as scripts any machine can run. study_script WORK "FUNCTIONS" "VARIABLES"
 # writes WORK/point.sh: the study's FUNCTIONS with the VARIABLES they read, running "FUNCTION
 # ARG..." given on its command line. study_list WORK LIST < ARGS turns ARGS (one point per line:

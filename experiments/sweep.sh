@@ -79,11 +79,7 @@ RUN_POINTS_OPTS=(--runs "$RES/runs.tsv" --label "$MODE")
 run_points "$RES" "sweep-$MODE" "$RES/points.phase1" "$RES/points.phase2"
 status=$?
 [ $status -lt 2 ] || exit 2
-rm -f "$RES/joblog"  # both phases' joblogs in one (GNU parallel backends), for the report's run facts
-for f in "$RES"/joblog.phase[12]; do
-    [ -f "$f" ] || continue
-    if [ -s "$RES/joblog" ]; then tail -n +2 "$f"; else cat "$f"; fi >>"$RES/joblog"
-done
+merge_joblogs "$RES"
 
 if [ "$report" = 1 ]; then
     for p in "${PROFILES[@]}"; do

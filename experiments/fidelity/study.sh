@@ -181,11 +181,7 @@ reading() {
     done
     run_points "$dir/.." "fidelity-$name" "$dir/points.phase1" "$dir/points.phase2" ||
         echo "study.sh: reading $name: some points failed (see $dir/..)" >&2
-    rm -f "$dir/../joblog"  # both phases' joblogs in one (GNU parallel backends), for the run facts
-    for f in "$dir"/../joblog.phase[12]; do
-        [ -f "$f" ] || continue
-        if [ -s "$dir/../joblog" ]; then tail -n +2 "$f"; else cat "$f"; fi >>"$dir/../joblog"
-    done
+    merge_joblogs "$dir/.."
     python3 "$root/experiments/report" collect "$dir" >/dev/null
     printf '%s\t%s\n' "$name" "$*" >>"$res/readings.tsv"
     echo "study: reading $name done ($(($(date +%s) - start)) s)"
