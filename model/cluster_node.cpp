@@ -9,7 +9,8 @@
 namespace torusrt {
 
 ClusterNode::ClusterNode(sc_core::sc_module_name name, const MachineConfig &config, const rt_scene *scene,
-                         const rt_grid *grid, const int32_t *cell_owner, int node, PacketLedger &ledger)
+                         const rt_grid *grid, const int32_t *cell_owner, int node, PacketLedger &ledger,
+                         PacketPool *pool, PrimarySource *primaries)
     : sc_module(name), from_comm_unit("from_comm_unit"), to_comm_unit("to_comm_unit"), m_node(node),
       m_node_objects(cluster_node_objects(grid, cell_owner, node))
 {
@@ -26,8 +27,10 @@ ClusterNode::ClusterNode(sc_core::sc_module_name name, const MachineConfig &conf
     std::vector<IntersectionProcessor *> procs;
     for (int k = 0; k < m; k++) {
         int global = node * m + k;
+        ProcessorSetup setup;
+        setup.pool = pool;
         auto ip = std::make_unique<IntersectionProcessor>(("ip_" + std::to_string(global)).c_str(), config, scene, grid,
-                                                          cell_owner, node, global, ledger);
+                                                          cell_owner, node, global, ledger, setup);
         auto mem = std::make_unique<TwoPortMemory>(("mem_" + std::to_string(k)).c_str(), config.timing, m_node_objects,
                                                    shared ? k : 0, shared ? m : 1);
         auto port = std::make_unique<ProcessorBusPort>(("port_" + std::to_string(k)).c_str(), scene, k,
@@ -44,6 +47,8 @@ ClusterNode::ClusterNode(sc_core::sc_module_name name, const MachineConfig &conf
     }
     m_dispatcher = std::make_unique<ClusterDispatcher>("dispatcher", config, procs);
     m_dispatcher->bus_socket.bind(m_bus->target);  // requester m, bound last
+    if (pool) m_dispatcher->inbox().use_pool(*pool);
+    if (primaries) m_dispatcher->inbox().attach(primaries, node);
 }
 
 ClusterNode::~ClusterNode() = default;
@@ -53,12 +58,6 @@ void ClusterNode::accept_pooled(PacketPool &pool, uint32_t handle) { m_dispatche
 bool ClusterNode::can_accept(const TimedPacket &p) const { return m_dispatcher->can_accept(p); }
 void ClusterNode::on_space(const TimedPacket &p, sc_core::sc_event &e) { m_dispatcher->on_space(p, e); }
 BufferSpace *ClusterNode::room_for(const TimedPacket &p) { return m_dispatcher->room_for(p); }
-
-void ClusterNode::use_pool(PacketPool &pool)
-{
-    m_dispatcher->inbox().use_pool(pool);
-    for (auto &p : m_processors) p->queue().use_pool(pool);
-}
 
 void ClusterNode::register_queues(QueueRegistry &reg)
 {

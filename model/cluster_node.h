@@ -34,8 +34,12 @@ class ClusterNode : public sc_core::sc_module, public PacketSinkIf {
     sc_core::sc_export<PacketSinkIf> from_comm_unit;  // packets for this node's cells
     sc_core::sc_port<PacketSinkIf> to_comm_unit;      // the processors' outgoing packets
 
+    // `pool`: the machine's packet pool, for the dispatcher's and the processors' input queues
+    // (null: their own); `primaries`: the host's primaries entering at this node, which the
+    // dispatcher takes (null: none).
     ClusterNode(sc_core::sc_module_name name, const MachineConfig &config, const rt_scene *scene, const rt_grid *grid,
-                const int32_t *cell_owner, int node, PacketLedger &ledger);
+                const int32_t *cell_owner, int node, PacketLedger &ledger, PacketPool *pool = nullptr,
+                PrimarySource *primaries = nullptr);
     ~ClusterNode() override;
 
     void accept(const TimedPacket &p) override;
@@ -44,9 +48,6 @@ class ClusterNode : public sc_core::sc_module, public PacketSinkIf {
     void on_space(const TimedPacket &p, sc_core::sc_event &e) override;
     BufferSpace *room_for(const TimedPacket &p) override;
     std::vector<IntersectionProcessor *> processors() const;
-    // The machine's packet pool, for the dispatcher's and the processors' input queues (call at
-    // elaboration).
-    void use_pool(PacketPool &pool);
     void register_queues(QueueRegistry &reg);  // the processors' and the dispatcher's
 
     int node() const { return m_node; }

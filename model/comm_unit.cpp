@@ -24,11 +24,16 @@ size_t neighbours(const Routing &routing, int node)
 }  // namespace
 
 CommUnit::CommUnit(sc_core::sc_module_name name, int node, const Routing &routing, const rt_grid *grid,
-                   const int32_t *cell_owner, const sc_core::sc_time &lookahead)
+                   const int32_t *cell_owner, const Setup &setup)
     : sc_module(name), link_in("link_in", neighbours(routing, node)), in("in"), local("local"),
-      link_out("link_out"), m_lookahead(lookahead), m_node(node), m_routing(routing), m_grid(grid),
-      m_owner(cell_owner)
+      link_out("link_out"), m_lookahead(setup.lookahead), m_route_at_once(setup.route_at_once), m_node(node),
+      m_flow(setup.flow), m_routing(routing), m_grid(grid), m_owner(cell_owner)
 {
+    if (setup.pool) m_pool = setup.pool;
+    if (setup.calendar) {
+        m_calendar = setup.calendar;
+        m_calendar_id = setup.calendar->add(*this);
+    }
     m_port_of_dir.fill(-1);
     in.bind(*this);
     for (size_t i = 0; i < link_in.size(); i++) {
@@ -66,9 +71,11 @@ void CommUnit::start_of_simulation()
         if (out.link) out.target = out.link->socket.operator->();
 }
 
-void CommUnit::set_link(int dir, ToroidalLink &link, const CommUnit &receiver)
+void CommUnit::connect_link(int dir, ToroidalLink &link, CommUnit &receiver)
 {
+    bind_link_out(dir, link.in);
     m_out_links[dir] = {&link, nullptr, reinterpret_cast<const char *>(&receiver.m_pool)};
+    link.socket.bind(receiver.next_link_in());
 }
 
 int CommUnit::owner_of(const TimedPacket &p) const { return m_owner[rt_packet_cell(m_grid, &p.packet)]; }

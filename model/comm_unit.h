@@ -13,7 +13,7 @@
 // routed as it is handed over when no arrival is due: the processor runs after the delta's
 // deliveries, so this is the order of one delta later.
 //
-// Timed wake-up: in a machine that has one (use_calendar), the unit asks the machine's wake
+// Timed wake-up: in a machine that has one (Setup::calendar), the unit asks the machine's wake
 // calendar (wake_calendar.h) to wake it at its earliest arrival time, and the calendar calls
 // deliver() then, units due at one time in node order; alone, the unit notifies its own timed
 // event. Either way an arrival due now (or pushed in this delta) waits for m_run, one delta on.
@@ -56,6 +56,22 @@
 
 namespace torusrt {
 
+// The machine's choices for this unit, fixed at elaboration; a unit alone takes the defaults.
+struct CommUnitSetup {
+    FlowControl flow = FlowControl::none;          // the flow-control scheme (virtual channels)
+    sc_core::sc_time lookahead = sc_core::SC_ZERO_TIME; // the quantum when loosely timed
+    // The machine's packet pool, shared by every unit so that a packet crosses by handle
+    // (null: the unit's own).
+    PacketPool *pool = nullptr;
+    // The machine's wake calendar, which then wakes the unit for its timed deliveries, units
+    // due at one time in the order they were built (null: an event of the unit's own).
+    WakeCalendar *calendar = nullptr;
+    // Packets from the processor side are routed as they are handed over, not one delta later:
+    // for a flat approximately-timed machine with a positive link time and unbounded buffers,
+    // where the processor hands over after the deliveries of its time, so the order is the same.
+    bool route_at_once = false;
+};
+
 class CommUnit : public sc_core::sc_module, public PacketSinkIf, public WakeCalendar::Client {
   public:
     // Packets from incoming links: one socket per neighbour (none when the node has none).
@@ -66,8 +82,9 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf, public WakeCale
     sc_core::sc_port<PacketSinkIf> local;                         // packets for this node's cells
     sc_core::sc_port<PacketSinkIf, kDirections, sc_core::SC_ZERO_OR_MORE_BOUND> link_out; // outgoing links
 
+    using Setup = CommUnitSetup;
     CommUnit(sc_core::sc_module_name name, int node, const Routing &routing, const rt_grid *grid,
-             const int32_t *cell_owner, const sc_core::sc_time &lookahead = sc_core::SC_ZERO_TIME);
+             const int32_t *cell_owner, const Setup &setup = Setup());
 
     // The next incoming-link socket not yet handed out, for a link to bind to (elaboration). A
     // link's crossings are numbered by its socket, so sources are numbered in this order.
@@ -82,28 +99,17 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf, public WakeCale
     bool can_accept(const TimedPacket &p) const override { return p.from_host || !processor_held(); }
     void on_space(const TimedPacket &p, sc_core::sc_event &e) override;
     BufferSpace *room_for(const TimedPacket &p) override;
-    // Packets from the processor side are routed as they are handed over, not one delta later
-    // (call at elaboration, for a flat approximately-timed machine with a positive link time and
-    // unbounded buffers: there the processor hands over after the deliveries of its time, so
-    // the order is the same).
-    void route_at_once(bool on) { m_route_at_once = on; }
-    // Selects the flow-control scheme (virtual channels; default none).
-    void set_flow(FlowControl flow) { m_flow = flow; }
-    // Records which link_out port index serves direction `dir` (call at elaboration).
-    void set_link_port(int dir, int port_index) { m_port_of_dir[dir] = port_index; }
-    // The link behind direction `dir` and the unit it leads to: packets go on to it by handle
-    // (call at elaboration).
-    void set_link(int dir, ToroidalLink &link, const CommUnit &receiver);
-    // The machine's packet pool, shared by every unit so a packet crosses by handle (call at
-    // elaboration; a unit alone uses its own).
-    void use_pool(PacketPool &pool) { m_pool = &pool; }
-    // The machine's wake calendar, which then wakes this unit for its timed deliveries (call at
-    // elaboration; a unit alone notifies an event of its own).
-    void use_calendar(WakeCalendar &calendar)
+    // Binds link_out to `sink`, the way out in direction `dir` (elaboration; a link's own
+    // connection is connect_link).
+    template <typename Sink>
+    void bind_link_out(int dir, Sink &sink)
     {
-        m_calendar = &calendar;
-        m_calendar_id = calendar.add(*this);
+        m_port_of_dir[dir] = m_links_bound++;
+        link_out.bind(sink);
     }
+    // Connects `link` as the way out in direction `dir`, to `receiver`'s next incoming-link
+    // socket: packets then go on to it by handle (elaboration).
+    void connect_link(int dir, ToroidalLink &link, CommUnit &receiver);
 
     // Whether an arrival due by now still waits for its delivery (in this delta or the next).
     bool arrival_due() const { return !m_arrivals.empty() && m_arrivals.next_time() <= sim_now(); }
@@ -215,6 +221,7 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf, public WakeCale
     sc_core::sc_event m_due, m_run, m_retry, m_processor_room;
     std::vector<sc_core::sc_event *> m_processor_waiters; // on_space(): notified with m_processor_room
     std::array<int, kDirections> m_port_of_dir; // link_out's index per direction (-1: none)
+    int m_links_bound = 0;                      // link_out's bindings so far
 };
 
 }  // namespace torusrt

@@ -13,7 +13,7 @@ namespace torusrt {
 IntersectionProcessor::IntersectionProcessor(sc_core::sc_module_name name, const MachineConfig &config,
                                              const rt_scene *scene, const rt_grid *grid,
                                              const int32_t *cell_owner, int owner_id, int index,
-                                             PacketLedger &ledger)
+                                             PacketLedger &ledger, const ProcessorSetup &setup)
     : sc_module(name), in("in"), out("out"), fetch("fetch"), fb_socket("fb_socket"),
       m_reserving(config.flow != FlowControl::none && config.queue_capacity != 0), m_config(config),
       m_scene(scene), m_grid(grid), m_owner(cell_owner), m_owner_id(owner_id), m_index(index),
@@ -22,6 +22,15 @@ IntersectionProcessor::IntersectionProcessor(sc_core::sc_module_name name, const
 {
     in.bind(*this);
     if (rt_step_result_init(&m_result, scene) != RT_OK) throw std::bad_alloc();
+    if (setup.calendar) {
+        m_calendar = setup.calendar;
+        m_calendar_id = setup.calendar->add(*this);
+    }
+    m_activations = setup.activations;
+    m_unit = setup.order_after;
+    if (setup.order_after) m_queue.tell_reader_at_once(this);
+    if (setup.pool) m_queue.use_pool(*setup.pool);
+    if (setup.primaries) m_queue.attach(setup.primaries, owner_id);
     SC_HAS_PROCESS(IntersectionProcessor);
     if (m_threaded) {
         SC_THREAD(run_thread);

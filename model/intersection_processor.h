@@ -50,6 +50,29 @@ class CommUnit;
 
 // The interfaces come before sc_module so that their virtual-table pointers share the object's
 // first line: the comm unit, the calendar and the queue call in through them at every step.
+// The machine's choices for a processor, fixed at elaboration; a processor alone takes the
+// defaults (its own timer, activation event and queue pool, no primaries).
+struct ProcessorSetup {
+    // The machine's wake calendar, which then ends the method driver's timed waits (without it,
+    // and for a zero wait, the processor notifies its own timer). Processors and units due at one
+    // time wake in the order they were built.
+    WakeCalendar *calendar = nullptr;
+    // The machine's activation queue, which then runs this processor's state machine when it is
+    // woken (null: an event of its own).
+    ActivationQueue *activations = nullptr;
+    // Where nodes do not affect each other within a delta cycle (a flat, approximately-timed
+    // machine with a positive link time and unbounded buffers), what must come before the state
+    // machine in a delta is only the deliveries of its own node's unit: it then runs at once
+    // when none is due, or right after the unit's delivery round, not from the activation queue,
+    // and its queue tells it of a packet in the pushing delta (null: not so).
+    CommUnit *order_after = nullptr;
+    // The machine's packet pool, for the input queue (null: the queue's own).
+    PacketPool *pool = nullptr;
+    // The host's primaries that enter at this processor's node (null: none, as in a cluster,
+    // whose dispatcher takes them).
+    PrimarySource *primaries = nullptr;
+};
+
 class IntersectionProcessor : public PacketSinkIf, public WakeCalendar::Client, public PacketQueue::Reader,
                               public ActivationQueue::Client, public sc_core::sc_module {
   public:
@@ -61,7 +84,7 @@ class IntersectionProcessor : public PacketSinkIf, public WakeCalendar::Client, 
     // `owner_id` is the id the cell-owner table uses for this IP's node.
     IntersectionProcessor(sc_core::sc_module_name name, const MachineConfig &config, const rt_scene *scene,
                           const rt_grid *grid, const int32_t *cell_owner, int owner_id, int index,
-                          PacketLedger &ledger);
+                          PacketLedger &ledger, const ProcessorSetup &setup = ProcessorSetup());
     ~IntersectionProcessor() override;
 
     void accept(const TimedPacket &p) override { m_queue.push_blocking(p); }
@@ -83,22 +106,6 @@ class IntersectionProcessor : public PacketSinkIf, public WakeCalendar::Client, 
                 std::string(name()) + ".queue_depth");
     }
     int index() const { return m_index; }
-    // The machine's wake calendar, which then ends the method driver's timed waits (call at
-    // elaboration; without it, and for a zero wait, the processor notifies its own timer).
-    // The machine's activation queue, which then runs this processor's state machine when it is
-    // woken (call at elaboration; a processor alone notifies an event of its own).
-    void use_activations(ActivationQueue &activations) { m_activations = &activations; }
-    // Where nodes do not affect each other within a delta cycle (a flat, approximately-timed
-    // machine with a positive link time and unbounded buffers), what must come before the state
-    // machine in a delta is only the deliveries of its own node's unit `unit`: it then runs at
-    // once when none is due, or right after the unit's delivery round, not from the activation
-    // queue (call at elaboration, after use_activations).
-    void order_after(CommUnit &unit) { m_unit = &unit; }
-    void use_calendar(WakeCalendar &calendar)
-    {
-        m_calendar = &calendar;
-        m_calendar_id = calendar.add(*this);
-    }
     bool &busy_trace() { return m_busy_flag; }  // the VCD's busy row
     bool busy() const { return m_busy_flag; }    // working on a packet now
 

@@ -5,12 +5,14 @@
 
 namespace torusrt {
 
-ToroidalLink::ToroidalLink(sc_core::sc_module_name name, const MachineConfig &config, int from, int to, int dir)
+ToroidalLink::ToroidalLink(sc_core::sc_module_name name, const MachineConfig &config, int from, int to, int dir,
+                           TransactionPool *transactions)
     : sc_module(name), socket("socket"), in("in"),
       m_packet_time(rt_timing_link_packet_us(&config.timing), sc_core::SC_US),
       m_to(to), m_dir(static_cast<int8_t>(dir)), m_packet_bytes(config.timing.packet_bytes),
       m_spaces(config.queue_capacity), m_from(from)
 {
+    if (transactions) m_transactions = transactions;
     in.bind(*this);
 }
 

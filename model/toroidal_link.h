@@ -32,7 +32,9 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
     tlm_utils::simple_initiator_socket<ToroidalLink> socket; // packets to the receiving comm unit
     sc_core::sc_export<PacketSinkIf> in;                     // packets from the sending comm unit
 
-    ToroidalLink(sc_core::sc_module_name name, const MachineConfig &config, int from, int to, int dir);
+    // `transactions`: the machine's, shared by its links (null: the link's own).
+    ToroidalLink(sc_core::sc_module_name name, const MachineConfig &config, int from, int to, int dir,
+                 TransactionPool *transactions = nullptr);
 
     // Waits (in a thread) for room, then sends. A method caller checks can_accept() first.
     void accept(const TimedPacket &p) override;
@@ -66,9 +68,6 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
     }
     // Traced busy line; asking for it (before sc_start) makes the process that drives it.
     bool &busy_trace();
-    // The machine's transactions, shared by its links (call at elaboration; a link alone uses
-    // its own).
-    void use_transactions(TransactionPool &pool) { m_transactions = &pool; }
     // Where a crossing of this link first touches memory beyond the sender: the link's own hot
     // lines (named by `link` without reading it), the bound target interface (`socket`'s, once
     // elaboration is over) and the receiving unit's first lines. A sender keeps them and asks for

@@ -35,49 +35,37 @@ TorusSystem::TorusSystem(sc_core::sc_module_name name, const MachineConfig &conf
     m_host = std::make_unique<Host>("host", config, scene, grid, cell_owner, ledger);
     m_host->fb_socket.bind(m_fb->socket);
     for (int n = 0; n < nodes; n++) {
-        m_comm.push_back(std::make_unique<CommUnit>(("cu_" + std::to_string(n)).c_str(), n, m_routing, grid, cell_owner,
-                                                    lookahead));
-        m_comm[n]->set_flow(config.flow);
-        m_comm[n]->use_pool(m_pool);
-        m_comm[n]->route_at_once(at_once);
-        if (m_calendar) m_comm[n]->use_calendar(*m_calendar); // node by node: the order of simultaneous wakes
+        // Built node by node: the calendar's order of simultaneous wakes.
+        CommUnit::Setup setup{config.flow, lookahead, &m_pool, m_calendar.get(), at_once};
+        m_comm.push_back(
+            std::make_unique<CommUnit>(("cu_" + std::to_string(n)).c_str(), n, m_routing, grid, cell_owner, setup));
         if (config.cluster == 1) {
+            // Built after its node's comm unit: the calendar's order.
+            ProcessorSetup ip_setup{m_calendar.get(), m_activations.get(), at_once ? m_comm[n].get() : nullptr, &m_pool,
+                                    &m_host->primaries()};
             auto ip = std::make_unique<IntersectionProcessor>(("ip_" + std::to_string(n)).c_str(), config, scene,
-                                                              grid, cell_owner, n, n, ledger);
-            if (m_calendar) ip->use_calendar(*m_calendar); // after its node's comm unit
-            ip->use_activations(*m_activations);
-            if (at_once) ip->order_after(*m_comm[n]);
+                                                              grid, cell_owner, n, n, ledger, ip_setup);
             ip->out.bind(m_comm[n]->in);
             ip->fb_socket.bind(m_fb->socket);
             m_comm[n]->local.bind(ip->in);
-            ip->queue().use_pool(m_pool);
-            if (at_once) ip->queue().tell_reader_at_once(ip.get());
-            ip->queue().attach(&m_host->primaries(), n);
             m_ips.push_back(std::move(ip));
         } else {
             auto cl = std::make_unique<ClusterNode>(("cluster_" + std::to_string(n)).c_str(), config, scene, grid,
-                                                    cell_owner, n, ledger);
+                                                    cell_owner, n, ledger, &m_pool, &m_host->primaries());
             cl->to_comm_unit.bind(m_comm[n]->in);
             for (auto *p : cl->processors()) p->fb_socket.bind(m_fb->socket);
             m_comm[n]->local.bind(cl->from_comm_unit);
-            cl->use_pool(m_pool);
-            cl->dispatcher().inbox().attach(&m_host->primaries(), n);
             m_clusters.push_back(std::move(cl));
         }
     }
     for (int n = 0; n < nodes; n++) {
-        int port = 0;
         for (int dir = 0; dir < kDirections; dir++) {
             int to = m_routing.neighbour(n, dir);
             if (to < 0) continue;
             // Named by its ends, so a trace says where every link goes.
             std::string lname = "link_" + std::to_string(n) + "_to_" + std::to_string(to) + "_" + direction_name(dir);
-            auto link = std::make_unique<ToroidalLink>(lname.c_str(), config, n, to, dir);
-            link->use_transactions(m_transactions);
-            m_comm[n]->link_out.bind(link->in);
-            m_comm[n]->set_link_port(dir, port++);
-            m_comm[n]->set_link(dir, *link, *m_comm[to]);
-            link->socket.bind(m_comm[to]->next_link_in());
+            auto link = std::make_unique<ToroidalLink>(lname.c_str(), config, n, to, dir, &m_transactions);
+            m_comm[n]->connect_link(dir, *link, *m_comm[to]);
             m_links.push_back(std::move(link));
         }
     }

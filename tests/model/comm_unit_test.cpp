@@ -134,10 +134,8 @@ static Outcome simulate()
     CommUnit cu("cu", 0, routing, grid, owner);
     RecordingSink local, plus, minus;
     cu.local.bind(local);
-    cu.link_out.bind(plus);  // port 0
-    cu.link_out.bind(minus); // port 1
-    cu.set_link_port(direction(0, true), 0);
-    cu.set_link_port(direction(0, false), 1);
+    cu.bind_link_out(direction(0, true), plus);   // port 0
+    cu.bind_link_out(direction(0, false), minus); // port 1
 
     // Port 1 sends first (1 us), port 0 later (2 us), all arriving at 5 us: delivery must still
     // put port 0's packet first.

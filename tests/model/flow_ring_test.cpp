@@ -110,8 +110,9 @@ struct Ring {
         for (int i = 0; i < n; i++) owner.push_back(i);
         for (int i = 0; i < n; i++) {
             std::string s = name + "_" + std::to_string(i);
-            cus.push_back(std::make_unique<CommUnit>(("cu_" + s).c_str(), i, routing, grid, owner.data()));
-            cus[i]->set_flow(flow);
+            CommUnit::Setup setup;
+            setup.flow = flow;
+            cus.push_back(std::make_unique<CommUnit>(("cu_" + s).c_str(), i, routing, grid, owner.data(), setup));
             relays.push_back(std::make_unique<Relay>(("relay_" + s).c_str(), i, n, flow));
             relays[i]->out.bind(cus[i]->in);
             cus[i]->local.bind(*relays[i]);
@@ -126,15 +127,12 @@ struct Ring {
             }
         }
         for (int i = 0; i < n; i++) {
-            int port = 0;
             for (int dir = 0; dir < kDirections; dir++) {
                 int to = routing.neighbour(i, dir);
                 if (to < 0) continue;
                 std::string ln = "link_" + name + "_" + std::to_string(i) + "_" + direction_name(dir);
                 links.push_back(std::make_unique<ToroidalLink>(ln.c_str(), config, i, to, dir));
-                cus[i]->link_out.bind(links.back()->in);
-                cus[i]->set_link_port(dir, port++);
-                links.back()->socket.bind(cus[to]->next_link_in());
+                cus[i]->connect_link(dir, *links.back(), *cus[to]);
             }
         }
     }

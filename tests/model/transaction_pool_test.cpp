@@ -94,9 +94,7 @@ static Outcome simulate()
     SimConfig config;
     rt_timing_defaults(&config.timing);
     TransactionPool shared;
-    ToroidalLink to1("to1", config, 0, 1, 0), to2("to2", config, 0, 2, 2);
-    to1.use_transactions(shared);
-    to2.use_transactions(shared);
+    ToroidalLink to1("to1", config, 0, 1, 0, &shared), to2("to2", config, 0, 2, 2, &shared);
     Recorder rx1("rx1"), rx2("rx2");
     TwoLinkSender tx("tx");
     tx.a.bind(to1.in);
