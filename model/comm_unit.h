@@ -44,6 +44,7 @@
 
 #include "activation_queue.h"
 #include "arrival_queue.h"
+#include "delivery_round_if.h"
 #include "module_stats.h"
 #include "packet_pool.h"
 #include "packet_sink_if.h"
@@ -72,7 +73,8 @@ struct CommUnitSetup {
     bool route_at_once = false;
 };
 
-class CommUnit : public sc_core::sc_module, public PacketSinkIf, public WakeCalendar::Client {
+class CommUnit final : public sc_core::sc_module, public PacketSinkIf, public DeliveryRoundIf,
+                       public WakeCalendar::Client {
   public:
     // Packets from incoming links: one socket per neighbour (none when the node has none).
     using LinkInSocket =
@@ -111,11 +113,8 @@ class CommUnit : public sc_core::sc_module, public PacketSinkIf, public WakeCale
     // socket: packets then go on to it by handle (elaboration).
     void connect_link(int dir, ToroidalLink &link, CommUnit &receiver);
 
-    // Whether an arrival due by now still waits for its delivery (in this delta or the next).
-    bool arrival_due() const { return !m_arrivals.empty() && m_arrivals.next_time() <= sim_now(); }
-    // Within a delivery round: runs `client` (this node's processor) once the round is over and
-    // returns true; else false.
-    bool run_after_delivery(ActivationQueue::Client &client)
+    bool arrival_due() const override { return !m_arrivals.empty() && m_arrivals.next_time() <= sim_now(); }
+    bool run_after_delivery(ActivationQueue::Client &client) override
     {
         if (!m_delivering) return false;
         m_after_delivery = &client;

@@ -4,7 +4,6 @@
 
 #include <stdexcept>
 
-#include "comm_unit.h"
 #include "flow_control.h"
 #include "sim_now.h"
 

@@ -29,6 +29,7 @@
 #include <tlm_utils/simple_initiator_socket.h>
 #include <vector>
 
+#include "delivery_round_if.h"
 #include "module_stats.h"
 #include "object_fetch_if.h"
 #include "packet_ledger.h"
@@ -45,8 +46,6 @@
 #include "wake_calendar.h"
 
 namespace torusrt {
-
-class CommUnit;
 
 // The interfaces come before sc_module so that their virtual-table pointers share the object's
 // first line: the comm unit, the calendar and the queue call in through them at every step.
@@ -65,7 +64,7 @@ struct ProcessorSetup {
     // machine in a delta is only the deliveries of its own node's unit: it then runs at once
     // when none is due, or right after the unit's delivery round, not from the activation queue,
     // and its queue tells it of a packet in the pushing delta (null: not so).
-    CommUnit *order_after = nullptr;
+    DeliveryRoundIf *order_after = nullptr;
     // The machine's packet pool, for the input queue (null: the queue's own).
     PacketPool *pool = nullptr;
     // The host's primaries that enter at this processor's node (null: none, as in a cluster,
@@ -163,7 +162,7 @@ class IntersectionProcessor : public PacketSinkIf, public WakeCalendar::Client, 
     int m_calendar_id = -1;
     // The packet taken up: m_current, or its pool slot (m_handle) where it was stepped in place.
     TimedPacket *m_cur = &m_current;
-    CommUnit *m_unit = nullptr;
+    DeliveryRoundIf *m_unit = nullptr;  // order_after: its node's unit
     ActivationQueue *m_activations = nullptr;
     WakeCalendar *m_calendar = nullptr;
     // The interfaces bound to `out` and `fb_socket`, kept after elaboration so a step does not
