@@ -64,11 +64,4 @@ std::unique_ptr<BusArbiter> make_arbiter(const std::string &policy, sc_core::sc_
     return it->second(name, requesters, top);
 }
 
-std::vector<std::string> arbiter_policies()
-{
-    std::vector<std::string> names;
-    for (const auto &kv : registry()) names.push_back(kv.first);
-    return names;
-}
-
 }  // namespace torusrt

@@ -57,7 +57,5 @@ class FixedPriorityArbiter : public BusArbiter {
 // fixed-priority policy ranks first (-1: none). Throws std::invalid_argument for an unknown name.
 std::unique_ptr<BusArbiter> make_arbiter(const std::string &policy, sc_core::sc_module_name name, int requesters,
                                          int top);
-// Registered policy names, for help text and errors.
-std::vector<std::string> arbiter_policies();
 
 }  // namespace torusrt

@@ -31,7 +31,6 @@ void TwoPortMemory::b_transport(tlm::tlm_generic_payload &trans, sc_core::sc_tim
     // The object's contents live in the kernel's scene; the read is timing only.
     delay += m_access;
     m_reads++;
-    m_bytes += trans.get_data_length();
     trans.set_response_status(tlm::TLM_OK_RESPONSE);
 }
 

@@ -32,7 +32,6 @@ class TwoPortMemory : public sc_core::sc_module {
     bool holds(uint32_t object) const;
     size_t object_count() const;
     uint64_t reads_served() const { return m_reads; }
-    double bytes_served() const { return m_bytes; }
     MemoryPortStats stats() const { return {object_count(), m_reads}; }
 
   private:
@@ -42,7 +41,6 @@ class TwoPortMemory : public sc_core::sc_module {
     const std::vector<uint32_t> &m_node_objects;
     int m_share, m_shares;
     uint64_t m_reads = 0;
-    double m_bytes = 0;
 };
 
 }  // namespace torusrt

@@ -22,7 +22,7 @@ class TorusSystem;
 
 struct RunFacts {
     double t1_s = 0;          // T(1): the same model with one processor
-    std::string t1_source;    // "passed", "one-processor run", "this run"
+    std::string t1_source;    // "passed with --t1", "one-processor run", "this run" or, for an animation, "sum of the frames' pilots"
     double wall_s = 0;        // wall-clock seconds of the whole run
     // Wall-clock seconds of elaboration (building and binding the modules, SystemC's end of
     // elaboration and start of simulation) and of the simulation after it (sc_start).

@@ -22,6 +22,7 @@
 #include "cluster_bus.h"
 #include "model_test.h"
 #include "rt_timing.h"
+#include "sim_config.h"
 #include "two_port_memory.h"
 
 using namespace torusrt;
@@ -162,7 +163,7 @@ struct ArbiterChoices {
     std::vector<int> rr_some;       // then 3 picks with lines 1 and 3 requesting
     int rr_none = 0, fp_all = 0, fp_some = 0, fp_none = 0;
     bool unknown_threw = false;
-    size_t policies = 0;
+    size_t named_policies = 0, built_policies = 0;
 };
 
 ArbiterChoices choose_alone()
@@ -182,7 +183,14 @@ ArbiterChoices choose_alone()
     } catch (const std::invalid_argument &) {
         c.unknown_threw = true;
     }
-    c.policies = arbiter_policies().size();
+    // Every name the --arbiter option accepts has a factory behind it.
+    for (const auto &named : torusrt::kArbiterNames) {
+        c.named_policies++;
+        try {
+            if (make_arbiter(named.name, ("named_" + std::string(named.name)).c_str(), 2, -1)) c.built_policies++;
+        } catch (const std::invalid_argument &) {
+        }
+    }
     return c;
 }
 
@@ -312,7 +320,8 @@ TEST(BusArbiter, FixedPriorityRanksTopThenAscendingIndex)
 TEST(BusArbiter, UnknownPolicyIsRejectedByName)
 {
     EXPECT_TRUE(run().alone.unknown_threw);
-    EXPECT_EQ(run().alone.policies, 2u);
+    EXPECT_EQ(run().alone.named_policies, 2u);
+    EXPECT_EQ(run().alone.built_policies, run().alone.named_policies) << "every --arbiter name is built";
 }
 
 TEST(ClusterBus, SaturatedBusCompletesEveryTransfer)
