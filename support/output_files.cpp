@@ -164,9 +164,14 @@ std::string OutputSet::staged(Id id)
     if (e.special) return e.path;
     if (!e.tmp.empty()) return e.tmp;
     std::string name = temporary_pattern(e.path);
-    int fd = mkstemp(name.data());
+    int fd;
+    {
+        // A stopping signal between making the file and registering it would leave it behind.
+        SignalsBlocked blocked;
+        fd = mkstemp(name.data());
+        if (fd >= 0) e.slot = remove_on_signal(name);
+    }
     if (fd < 0) throw UserError(e.path + ": cannot write: " + std::strerror(errno));
-    e.slot = remove_on_signal(name);
     e.tmp = name;
     bool ok = fchmod(fd, new_file_mode()) == 0;
     int err = errno;
@@ -181,6 +186,7 @@ void OutputSet::commit(const std::string &option)
 {
     for (auto &e : m_entries) {
         if (e.tmp.empty() || e.special || (!option.empty() && e.option != option)) continue;
+        SignalsBlocked blocked;  // renamed and forgotten together
         if (std::rename(e.tmp.c_str(), e.path.c_str()) != 0)
             throw UserError(e.path + ": cannot write: " + std::strerror(errno));
         forget_on_signal(e.slot);

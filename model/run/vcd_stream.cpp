@@ -96,12 +96,18 @@ VcdStream::VcdStream(const std::string &out_path, const std::string &shown, uint
 {
     const char *tmpdir = std::getenv("TMPDIR");
     std::string pattern = std::string(tmpdir && *tmpdir ? tmpdir : "/tmp") + "/torusrt-vcd.XXXXXX";
-    if (!mkdtemp(pattern.data())) throw UserError("--vcd: cannot create a temporary folder: " + std::string(std::strerror(errno)));
-    m_dir = pattern;
-    m_sc_name = m_dir + "/trace";
-    std::string fifo = m_sc_name + ".vcd";
-    m_dir_slot = remove_on_signal(m_dir, true);
-    m_fifo_slot = remove_on_signal(fifo);
+    std::string fifo;
+    {
+        // A stopping signal between making the folder and registering it would leave it behind.
+        SignalsBlocked blocked;
+        if (!mkdtemp(pattern.data()))
+            throw UserError("--vcd: cannot create a temporary folder: " + std::string(std::strerror(errno)));
+        m_dir = pattern;
+        m_sc_name = m_dir + "/trace";
+        fifo = m_sc_name + ".vcd";
+        m_dir_slot = remove_on_signal(m_dir, true);
+        m_fifo_slot = remove_on_signal(fifo);
+    }
     // The second, write-only descriptor keeps the FIFO open, so reads block (instead of seeing
     // end of file) until SystemC has opened and closed it and finish() drops this one.
     if (mkfifo(fifo.c_str(), 0600) != 0 || (m_read_fd = open(fifo.c_str(), O_RDONLY | O_NONBLOCK)) < 0 ||

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # signals.sh - SIGINT, SIGTERM and SIGHUP in the middle of a run: the program exits 128 + the
 # signal's number and leaves nothing behind: no temporary beside its outputs (a VCD being
-# written, the frames of an animation so far) and no trace FIFO folder in $TMPDIR.
+# written, the frames of an animation so far) and no trace FIFO folder in $TMPDIR, wherever in
+# the run the signal lands.
 #
 # Usage (CTest runs it so): bash tests/hostile/signals.sh BUILD_DIR SOURCE_DIR
 set -u
@@ -53,4 +54,17 @@ render_frames=("$BUILD/torusrt-render" "$f" -q --size 48x48 --frames 2000 --orbi
                --stats "$TMP/out/s.json")
 stopped "render frames, SIGTERM" TERM "$TMP/out/.f0001.png.*" "${render_frames[@]}"
 stopped "render frames, SIGINT" INT "$TMP/out/.f0001.png.*" "${render_frames[@]}"
+# The same at 20 moments spread over the run: a signal that lands while a frame's temporary is
+# being made must not leave it behind (it is made and registered with the signals blocked).
+left=0
+for ((i = 0; i < 20; i++)); do
+    rm -rf "$TMP/out" && mkdir "$TMP/out"
+    "${render_frames[@]}" >/dev/null 2>&1 </dev/null &
+    pid=$!
+    sleep "0.$((i % 10))$((i / 10))5"
+    kill -INT "$pid" 2>/dev/null
+    wait "$pid"
+    [ -z "$(ls -A "$TMP/out")" ] || left=$((left + 1))
+done
+check "render frames, SIGINT at 20 moments: runs that left a file: $left" [ "$left" -eq 0 ]
 finish
