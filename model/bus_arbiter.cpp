@@ -3,8 +3,9 @@
 
 #include <algorithm>
 #include <functional>
-#include <map>
 #include <stdexcept>
+
+#include "name_registry.h"
 
 namespace torusrt {
 
@@ -43,9 +44,9 @@ namespace {
 
 using Factory = std::function<std::unique_ptr<BusArbiter>(sc_core::sc_module_name, int, int)>;
 
-const std::map<std::string, Factory> &registry()
+const NameRegistry<Factory> &registry()
 {
-    static const std::map<std::string, Factory> table = {
+    static const NameRegistry<Factory> table = {
         {"round-robin",
          [](sc_core::sc_module_name n, int r, int) { return std::make_unique<RoundRobinArbiter>(n, r); }},
         {"fixed-priority",
@@ -56,12 +57,14 @@ const std::map<std::string, Factory> &registry()
 
 }  // namespace
 
+std::vector<std::string> arbiter_policy_names() { return registry().names(); }
+
 std::unique_ptr<BusArbiter> make_arbiter(const std::string &policy, sc_core::sc_module_name name, int requesters,
                                          int top)
 {
-    auto it = registry().find(policy);
-    if (it == registry().end()) throw std::invalid_argument("unknown bus arbiter policy '" + policy + "'");
-    return it->second(name, requesters, top);
+    const Factory *make = registry().find(policy);
+    if (!make) throw std::invalid_argument("unknown bus arbiter policy '" + policy + "'");
+    return (*make)(name, requesters, top);
 }
 
 }  // namespace torusrt

@@ -53,6 +53,8 @@ class FixedPriorityArbiter : public BusArbiter {
     int m_requesters, m_top;
 };
 
+// The policy names make_arbiter knows, in the help's order.
+std::vector<std::string> arbiter_policy_names();
 // Builds an arbiter by policy name ("round-robin", "fixed-priority"); `top` is the requester the
 // fixed-priority policy ranks first (-1: none). Throws std::invalid_argument for an unknown name.
 std::unique_ptr<BusArbiter> make_arbiter(const std::string &policy, sc_core::sc_module_name name, int requesters,

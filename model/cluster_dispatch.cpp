@@ -3,8 +3,9 @@
 
 #include <cstdint>
 #include <functional>
-#include <map>
 #include <stdexcept>
+
+#include "name_registry.h"
 
 #include "sim_now.h"
 
@@ -41,23 +42,32 @@ class ShortestQueueDispatch : public DispatchPolicyIf {
     }
 };
 
-}  // namespace
+using DispatchFactory = std::function<std::unique_ptr<DispatchPolicyIf>()>;
 
-std::unique_ptr<DispatchPolicyIf> make_dispatch_policy(const std::string &name)
+const NameRegistry<DispatchFactory> &dispatch_registry()
 {
-    static const std::map<std::string, std::function<std::unique_ptr<DispatchPolicyIf>()>> table = {
+    static const NameRegistry<DispatchFactory> table = {
         {"round-robin", [] { return std::make_unique<RoundRobinDispatch>(); }},
         {"shortest-queue", [] { return std::make_unique<ShortestQueueDispatch>(); }},
     };
-    auto it = table.find(name);
-    if (it == table.end()) throw std::invalid_argument("unknown dispatch policy '" + name + "'");
-    return it->second();
+    return table;
+}
+
+}  // namespace
+
+std::vector<std::string> dispatch_policy_names() { return dispatch_registry().names(); }
+
+std::unique_ptr<DispatchPolicyIf> make_dispatch_policy(const std::string &name)
+{
+    const DispatchFactory *make = dispatch_registry().find(name);
+    if (!make) throw std::invalid_argument("unknown dispatch policy '" + name + "'");
+    return (*make)();
 }
 
 ClusterDispatcher::ClusterDispatcher(sc_core::sc_module_name name, const MachineConfig &config,
                                      std::vector<IntersectionProcessor *> processors)
     : sc_module(name), in("in"), bus_socket("bus_socket"), m_processors(std::move(processors)),
-      m_policy(make_dispatch_policy(dispatch_name(config.dispatch))),
+      m_policy(make_dispatch_policy(config.dispatch)),
       m_inbox(std::string(basename()) + ".queue", config.queue_capacity), m_time(config.style == TimingStyle::lt),
       m_flow(config.flow), m_dispatched(m_processors.size(), 0)
 {

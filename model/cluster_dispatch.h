@@ -48,6 +48,8 @@ class DispatchPolicyIf {
 // Builds a dispatch policy by name ("round-robin", "shortest-queue"); throws std::invalid_argument
 // for an unknown name.
 std::unique_ptr<DispatchPolicyIf> make_dispatch_policy(const std::string &name);
+// The policy names make_dispatch_policy knows, in the help's order.
+std::vector<std::string> dispatch_policy_names();
 
 class ClusterDispatcher : public sc_core::sc_module, public PacketSinkIf {
   public:

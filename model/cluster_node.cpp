@@ -20,7 +20,7 @@ ClusterNode::ClusterNode(sc_core::sc_module_name name, const MachineConfig &conf
     bool lt = config.style == TimingStyle::lt;
 
     // The communication unit (requester m) ranks first under fixed priority: see bus_arbiter.h.
-    m_arbiter = make_arbiter(arbiter_name(config.arbiter), "arbiter", m + 1, m);
+    m_arbiter = make_arbiter(config.arbiter, "arbiter", m + 1, m);
     m_bus = std::make_unique<ClusterBus>("bus", config.timing, lt, m + 1);
     m_bus->arbiter.bind(*m_arbiter);
 

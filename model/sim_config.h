@@ -32,19 +32,13 @@ constexpr unsigned kMaxRecordBytes = 4096;  // --cell-header-bytes, --list-entry
 enum class Topology { torus, mesh };
 enum class TimingStyle { at, lt };
 enum class DataMode { replicated, shared };
-enum class ArbiterPolicy { round_robin, fixed_priority };
-enum class DispatchPolicy { round_robin, shortest_queue };
 enum class FlowControl { none, classes }; // see flow_control.h
 
-// The names the options take and the reports print (the arbiter and dispatch names are the
-// ones their registries know).
+// The names the options take and the reports print (the arbiter and dispatch policies are
+// named by their registries, bus_arbiter.h and cluster_dispatch.h).
 constexpr NamedValue<Topology> kTopologyNames[] = {{Topology::torus, "torus"}, {Topology::mesh, "mesh"}};
 constexpr NamedValue<TimingStyle> kStyleNames[] = {{TimingStyle::at, "at"}, {TimingStyle::lt, "lt"}};
 constexpr NamedValue<DataMode> kDataModeNames[] = {{DataMode::replicated, "replicated"}, {DataMode::shared, "shared"}};
-constexpr NamedValue<ArbiterPolicy> kArbiterNames[] = {{ArbiterPolicy::round_robin, "round-robin"},
-                                                      {ArbiterPolicy::fixed_priority, "fixed-priority"}};
-constexpr NamedValue<DispatchPolicy> kDispatchNames[] = {{DispatchPolicy::round_robin, "round-robin"},
-                                                        {DispatchPolicy::shortest_queue, "shortest-queue"}};
 constexpr NamedValue<FlowControl> kFlowNames[] = {{FlowControl::classes, "classes"}, {FlowControl::none, "none"}};
 constexpr NamedValue<rt_map_kind> kMappingNames[] = {{RT_MAP_BLOCK, "block"},
                                                     {RT_MAP_CYCLIC, "cyclic"},
@@ -74,8 +68,8 @@ struct MachineConfig {
     double quantum_us = 0;                  // loosely-timed global quantum
     int cluster = 1;                        // processors per node (1 = flat torus)
     DataMode data = DataMode::replicated;   // object data in a cluster
-    ArbiterPolicy arbiter = ArbiterPolicy::round_robin;
-    DispatchPolicy dispatch = DispatchPolicy::round_robin;
+    std::string arbiter = "round-robin";    // cluster bus arbiter, by its registered name (bus_arbiter.h)
+    std::string dispatch = "round-robin";   // cluster packet dispatch, by name (cluster_dispatch.h)
     rt_memory_layout memory_layout = rt_memory_layout_default(); // what the memory report charges
 
     int node_count() const { return ips[0] * ips[1] * ips[2]; }
@@ -115,8 +109,6 @@ inline const char *mapping_name(rt_map_kind kind) { return name_in(kMappingNames
 inline const char *topology_name(Topology t) { return name_in(kTopologyNames, t); }
 inline const char *style_name(TimingStyle s) { return name_in(kStyleNames, s); }
 inline const char *data_mode_name(DataMode d) { return name_in(kDataModeNames, d); }
-inline const char *arbiter_name(ArbiterPolicy a) { return name_in(kArbiterNames, a); }
-inline const char *dispatch_name(DispatchPolicy d) { return name_in(kDispatchNames, d); }
 inline const char *flow_name(FlowControl f) { return name_in(kFlowNames, f); }
 
 }  // namespace torusrt

@@ -144,9 +144,9 @@ void clusters_to_json(const RunReport &r, nlohmann::json &j)
                     {"processors_per_node", config.cluster},
                     {"nodes", config.node_count()},
                     {"data", data_mode_name(config.data)},
-                    {"dispatch", dispatch_name(config.dispatch)},
-                    {"arbiter", arbiter_name(config.arbiter)},
-                    {"arbiter_priority", config.arbiter == ArbiterPolicy::fixed_priority
+                    {"dispatch", config.dispatch},
+                    {"arbiter", config.arbiter},
+                    {"arbiter_priority", config.arbiter == "fixed-priority"
                                              ? "comm unit first, then processors by index (0 highest)"
                                              : "rotating"},
                     {"placement", "shared: the j-th object (ascending index) listed by a node's cells is held "

@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <cstring>
 
+#include "bus_arbiter.h"
+#include "cluster_dispatch.h"
 #include "option_parsing.h"
 #include "rt_grid.h"
 #include "timing_choice.h"
@@ -99,6 +101,23 @@ template <typename E, size_t N>
 std::string choice_help(const char *what, const NamedValue<E> (&table)[N])
 {
     return std::string(what) + ": " + names_of(table);
+}
+
+// "a, b or c": a policy registry's names for the help and messages.
+std::string listed(const std::vector<std::string> &names)
+{
+    std::string s;
+    for (size_t i = 0; i < names.size(); i++)
+        s += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+    return s;
+}
+
+// `text` if a policy registry knows it; UserError (exit 2) naming `option` and the names.
+std::string registered_name(const std::string &option, const std::string &text, const std::vector<std::string> &names)
+{
+    for (const std::string &n : names)
+        if (n == text) return text;
+    throw UserError(option + " '" + text + "': expected " + listed(names), 2);
 }
 
 // Machine options of the network (nodes, mapping, topology, grid, buffers, flow), in dump order.
@@ -260,18 +279,18 @@ std::vector<MachineOption> cluster_options()
              m.data = value_named(s.long_name(), t, kDataModeNames);
          },
          [](const MachineConfig &m) { return std::string(data_mode_name(m.data)); }},
-        {{"--arbiter", "KIND", K::text, "round-robin", 0, 0, "", choice_help("cluster bus arbiter", kArbiterNames),
-          G::machine, "arbiter"},
+        {{"--arbiter", "KIND", K::text, "round-robin", 0, 0, "",
+          "cluster bus arbiter: " + listed(arbiter_policy_names()), G::machine, "arbiter"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
-             m.arbiter = value_named(s.long_name(), t, kArbiterNames);
+             m.arbiter = registered_name(s.long_name(), t, arbiter_policy_names());
          },
-         [](const MachineConfig &m) { return std::string(arbiter_name(m.arbiter)); }},
+         [](const MachineConfig &m) { return m.arbiter; }},
         {{"--dispatch", "KIND", K::text, "round-robin", 0, 0, "",
-          choice_help("cluster packet dispatch", kDispatchNames), G::machine, "dispatch"},
+          "cluster packet dispatch: " + listed(dispatch_policy_names()), G::machine, "dispatch"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
-             m.dispatch = value_named(s.long_name(), t, kDispatchNames);
+             m.dispatch = registered_name(s.long_name(), t, dispatch_policy_names());
          },
-         [](const MachineConfig &m) { return std::string(dispatch_name(m.dispatch)); }},
+         [](const MachineConfig &m) { return m.dispatch; }},
         layout_option<&rt_memory_layout::cell_header_bytes>("--cell-header-bytes", "4", 0,
                                                             "memory accounting: bytes per cell list"),
         layout_option<&rt_memory_layout::list_entry_bytes>("--list-entry-bytes", "4", 1,

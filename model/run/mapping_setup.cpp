@@ -43,7 +43,8 @@ nlohmann::json prepare_mapping(SimConfig &config, rt_scene *scene, const rt_grid
     char msg[RT_MSG_LEN] = "";
     nlohmann::json j = {{"kind", mapping_name(config.mapping)}};
     if (config.mapping == RT_MAP_FILE) {
-        read_map_file(config, dims, owner);
+        if (config.owner_table.size() == owner.size()) owner = config.owner_table;  // read before the scene
+        else read_map_file(config, dims, owner);
         j["file"] = config.map_file;
     } else if (config.mapping == RT_MAP_COST) {
         j.update(cost_mapping(config, scene, grid, owner));

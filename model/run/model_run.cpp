@@ -1,4 +1,5 @@
-// model_run.cpp - elaboration, sc_start, stall detection and result collection.
+// model_run.cpp - what every run shares: the owner table, the machine kept to the exit, the
+// checks after sc_start, and T(1) in a child process.
 #include "model_run.h"
 
 #include <algorithm>
@@ -8,14 +9,13 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "elaboration_mark.h"
 #include "internal_check.h"
 #include "packet_ledger.h"
 #include "progress.h"
 #include "rt_mapping.h"
+#include "run_frames.h"
 #include "run_report.h"
 #include "torus_system.h"
-#include "tracing.h"
 #include "user_error.h"
 #include "wall_clock.h"
 
@@ -99,59 +99,17 @@ TorusSystem &keep_until_exit(std::unique_ptr<TorusSystem> machine)
 ModelOutcome run_model(const SimConfig &config, const rt_scene *scene, const rt_grid *grid, double t1_s,
                        const std::string &t1_source, double wall_start_s)
 {
-    std::vector<int32_t> owner = owner_table_of(config, grid);
-    warn_idle_nodes(config, owner);
-    const rt_camera *cam = rt_scene_camera(scene);
-    FramebufferPtr fb(rt_framebuffer_new(cam->width, cam->height));
-    if (!fb) throw UserError("out of memory for the frame buffer");
-
-    PacketLedger ledger;
-    rt_budget memory = config.memory;
-    ledger.set_limit(rt_budget_packets_allowed(&memory, PacketPool::bytes_per_packet()));
-    Progress progress("torusrt-sim", config.quiet);
-    ledger.set_progress(show_progress, &progress);
-    if (config.style == TimingStyle::lt)
-        tlm::tlm_global_quantum::instance().set(sc_core::sc_time(config.quantum_us, sc_core::SC_US));
-    double elaboration_start = wall_clock_s();
-    TorusSystem &top =
-        keep_until_exit(std::make_unique<TorusSystem>("top", config, scene, grid, owner.data(), ledger, fb.get()));
-    std::unique_ptr<Tracer> tracer;
-    if (!config.vcd_path.empty()) tracer = std::make_unique<Tracer>(config, top);
-
-    ElaborationMark &mark = elaboration_mark();
-    check_budget_before_start(ledger, memory);
-    double start_call = wall_clock_s();
-    // Stopping at the limit keeps SystemC's 64-bit time from wrapping: every single delay is
-    // bounded (check_timing_limits), so none can jump from below the limit past the maximum.
-    sc_core::sc_start(sc_core::sc_time(config.time_limit_s, sc_core::SC_SEC), sc_core::SC_EXIT_ON_STARVATION);
-    double sim_start = mark.ended_at(start_call);
-    double sim_wall = wall_clock_s() - sim_start;
-    progress.finish();
-
-    RunFacts facts;
-    facts.elaboration_wall_s = sim_start - elaboration_start;
-    facts.sim_wall_s = sim_wall;
-    facts.delta_cycles = sc_core::sc_delta_count();
+    FramePlan plan;
+    plan.t1_s = t1_s;
+    plan.t1_source = t1_source;
+    // A single frame under the scene's own camera leaves the scene as it is.
+    RunOutcome run = run_frames(config, const_cast<rt_scene *>(scene), grid, plan, wall_start_s);
     ModelOutcome out;
-    if (!run_finished(config, top, ledger, memory)) {
-        facts.t1_s = t1_s < 0 ? 0 : t1_s;
-        facts.t1_source = t1_s < 0 ? "this run" : t1_source;
-        facts.wall_s = wall_clock_s() - wall_start_s;
-        out.deadlock = true;
-        out.report = collect(config, top, ledger, scene, grid, owner.data(), facts, true);
-        out.deadlock_details = deadlock_text(out.report);
-        out.sim_time_s = out.report.sim_time_s;
-        return out; // the tracer's destructor removes the partial trace
-    }
-    check_conservation(ledger);
-    out.sim_time_s = ledger.image_time().to_seconds();
-    facts.t1_s = t1_s < 0 ? out.sim_time_s : t1_s;
-    facts.t1_source = t1_s < 0 ? "this run" : t1_source;
-    facts.wall_s = wall_clock_s() - wall_start_s;
-    out.report = collect(config, top, ledger, scene, grid, owner.data(), facts, false);
-    out.rgb8.resize(static_cast<size_t>(cam->width) * cam->height * 3);
-    rt_framebuffer_to_rgb8(fb.get(), out.rgb8.data());
-    if (tracer) tracer->finish();
+    out.deadlock = run.deadlock;
+    out.deadlock_details = std::move(run.deadlock_details);
+    out.sim_time_s = run.sim_time_s;
+    if (!run.images.empty()) out.rgb8 = std::move(run.images.front());
+    out.report = std::move(run.report);
     return out;
 }
 

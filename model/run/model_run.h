@@ -22,12 +22,13 @@ struct ModelOutcome {
     RunReport report;                 // the full statistics, also after a deadlock
 };
 
-// Runs `config` on a loaded scene. `t1_s` < 0 means "this run is T(1)" (one processor). A VCD
-// trace, if asked for, is moved to its final name only when the run succeeds.
+// Runs `config` on a loaded scene as one frame of run_frames (run_frames.h): the image under the
+// scene's camera. `t1_s` < 0 means "this run is T(1)" (one processor). A VCD trace, if asked
+// for, is moved to its final name only when the run succeeds.
 ModelOutcome run_model(const SimConfig &config, const rt_scene *scene, const rt_grid *grid, double t1_s,
                        const std::string &t1_source, double wall_start_s);
 
-// Pieces of a run that an animation's run shares:
+// Pieces of every run (run_frames) and of the library's callers:
 // the machine, kept until the process exits and never taken apart. SystemC elaborates one
 // machine per process, and its registries remove every port, export, module and child object
 // by a linear search, so destroying a machine object by object takes time quadratic in its

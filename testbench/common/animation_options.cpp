@@ -58,6 +58,7 @@ void check_animation_options(AnimationOptions &opt)
         throw UserError("--orbit and --camera-path: give one of them, not both", 2);
     if (!opt.orbit.empty()) {
         double degrees = parse_degrees(opt.orbit);
+        opt.orbit_degrees = degrees;
         if (opt.frames < 0) throw UserError("--orbit " + shown_text(opt.orbit) + ": needs --frames N", 2);
         // Frame k turns by k x DEG / N degrees: the product must stay finite for the last frame.
         if (!std::isfinite(static_cast<double>(opt.frames - 1) * degrees))

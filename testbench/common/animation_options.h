@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "kernel_handles.h" // CameraPathPtr
 #include "rt_camera_path.h"
 #include "option_spec.h"
 #include "rt_scene.h"
@@ -14,13 +15,11 @@
 
 namespace torusrt {
 
-struct CameraPathDeleter { void operator()(rt_camera_path *p) const { rt_camera_path_free(p); } };
-using CameraPathPtr = std::unique_ptr<rt_camera_path, CameraPathDeleter>;
-
 struct AnimationOptions {
     std::string frames_text; // --frames as given; empty: not given
     long long frames = -1;   // set by check_animation_options: the number, -1 if not given
     std::string orbit;       // total degrees; empty: not given
+    double orbit_degrees = 0; // set by check_animation_options: --orbit's value
     std::string camera_path; // file; empty: not given
     // Any of the three given: the run is an animation and -o is a pattern.
     bool animated() const { return !frames_text.empty() || !orbit.empty() || !camera_path.empty(); }

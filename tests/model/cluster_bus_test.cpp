@@ -184,10 +184,10 @@ ArbiterChoices choose_alone()
         c.unknown_threw = true;
     }
     // Every name the --arbiter option accepts has a factory behind it.
-    for (const auto &named : torusrt::kArbiterNames) {
+    for (const std::string &name : torusrt::arbiter_policy_names()) {
         c.named_policies++;
         try {
-            if (make_arbiter(named.name, ("named_" + std::string(named.name)).c_str(), 2, -1)) c.built_policies++;
+            if (make_arbiter(name, ("named_" + name).c_str(), 2, -1)) c.built_policies++;
         } catch (const std::invalid_argument &) {
         }
     }

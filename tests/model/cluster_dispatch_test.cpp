@@ -119,7 +119,7 @@ static Outcome simulate()
     t.test_miss_us = t.test_hit_us = t.dda_step_us = t.shading_us = t.reflection_us = t.refraction_us = 0;
     t.packet_analysis_us = t.packet_creation_us = t.fb_write_us = t.handover_send_us = t.handover_receive_us = 0;
     t.bus_arbitration_us = 1, t.bus_width_bytes = 4, t.bus_cycle_us = 2, t.packet_bytes = 30;
-    config.dispatch = DispatchPolicy::round_robin;
+    config.dispatch = "round-robin";
 
     Processors policy_ips("pol", 3, config, scene, grid);
     choose_on_set_loads(policy_ips, p, run);

@@ -91,7 +91,7 @@ SimConfig sample_machine()
     c.mapping = RT_MAP_BLOCK_CYCLIC, c.block = 3;
     c.step.min_weight = 1.0 / 3.0;
     c.quantum_us = 0.1, c.style = TimingStyle::lt;
-    c.cluster = 2, c.arbiter = ArbiterPolicy::fixed_priority;
+    c.cluster = 2, c.arbiter = "fixed-priority";
     return c;
 }
 

@@ -1,8 +1,7 @@
-// animation_run.cpp - the frame loop: camera, mapping, migration, sc_start, per-frame figures.
-#include "animation_run.h"
+// run_frames.cpp - the frame loop: camera, mapping, migration, sc_start, per-frame figures.
+#include "run_frames.h"
 
 #include <algorithm>
-#include <cmath>
 #include <memory>
 
 #include "elaboration_mark.h"
@@ -69,12 +68,19 @@ double frames_t1(const std::vector<FrameRecord> &frames)
     return t1;
 }
 
-// The report's run facts: T(1) is the sum of the frames' pilots.
-RunFacts animation_facts(const Machine &m, double t1_s, double wall_start_s)
+// The report's run facts. A single image's T(1) is the plan's, or (t1 < 0) this run's image
+// time `image_time_s`; an animation's is the sum of its frames' pilots.
+RunFacts run_facts(const Machine &m, const FramePlan &plan, const std::vector<FrameRecord> &frames,
+                   double image_time_s, double wall_start_s)
 {
     RunFacts facts;
-    facts.t1_s = t1_s;
-    facts.t1_source = "sum of the frames' pilots";
+    if (plan.animated()) {
+        facts.t1_s = frames_t1(frames);
+        facts.t1_source = "sum of the frames' pilots";
+    } else {
+        facts.t1_s = plan.t1_s < 0 ? image_time_s : plan.t1_s;
+        facts.t1_source = plan.t1_s < 0 ? "this run" : plan.t1_source;
+    }
     facts.elaboration_wall_s = m.elaboration_wall_s;
     facts.sim_wall_s = m.sim_wall_s;
     facts.delta_cycles = sc_core::sc_delta_count();
@@ -83,11 +89,13 @@ RunFacts animation_facts(const Machine &m, double t1_s, double wall_start_s)
 }
 
 // Runs the current frame to its end; false on a deadlock.
-bool run_frame(const SimConfig &config, Machine &m, size_t k, size_t n)
+bool run_frame(const SimConfig &config, Machine &m, const std::string &label)
 {
-    Progress progress("torusrt-sim frame " + std::to_string(k + 1) + "/" + std::to_string(n), config.quiet);
+    Progress progress(label, config.quiet);
     m.ledger.set_progress(show_progress, &progress);
     double t0 = wall_clock_s();
+    // Stopping at the limit keeps SystemC's 64-bit time from wrapping: every single delay is
+    // bounded (check_timing_limits), so none can jump from below the limit past the maximum.
     sc_core::sc_time limit(config.time_limit_s, sc_core::SC_SEC);
     sc_core::sc_time left = limit > sc_core::sc_time_stamp() ? limit - sc_core::sc_time_stamp() : sc_core::SC_ZERO_TIME;
     sc_core::sc_start(left, sc_core::SC_EXIT_ON_STARVATION);
@@ -149,79 +157,135 @@ RemapSettings remap_settings(RemapPolicy policy, const AdaptiveSettings &a)
     return {remap_policy_name(policy), a.pilot_fraction, a.window, a.margin};
 }
 
+// The frame loop's state beyond the machine: the pilots of the last frames and the remapper.
+struct FrameLoop {
+    const SimConfig &config;
+    rt_scene *scene;
+    const rt_grid *grid;
+    const FramePlan &plan;
+    Routing routing;
+    RemapContext ctx;
+    Remapper remapper;
+    std::unique_ptr<FramePilot> pilot, previous, before, preview;  // frames k, k-1, k-2; adaptive's preview
+    double end_s = 0;                                               // when the last frame ended
+    sc_core::sc_time start;                                         // when the current frame started
+
+    FrameLoop(const SimConfig &c, rt_scene *s, const rt_grid *g, const FramePlan &p)
+        : config(c), scene(s), grid(g), plan(p), routing(c.ips, c.topology == Topology::torus),
+          ctx{c, s, g, routing}, remapper(p.policy, p.adaptive.window, p.adaptive.margin)
+    {
+    }
+
+    // Frame 0's table: the run's mapping, or under oracle its own pilot's.
+    std::vector<int32_t> first_table()
+    {
+        if (!plan.animated()) return owner_table_of(config, grid);
+        set_camera(scene, plan.path, 0);
+        pilot = std::make_unique<FramePilot>(config, scene, grid);
+        return plan.policy == RemapPolicy::oracle ? oracle_mapping(ctx, *pilot) : owner_table_of(config, grid);
+    }
+
+    // Frame k's record before it runs; for k > 0 the camera moves, the mapping is decided and
+    // the machine restarts at `start`.
+    FrameRecord prepare(Machine &m, size_t k, const std::vector<FrameRecord> &done);
+};
+
+FrameRecord FrameLoop::prepare(Machine &m, size_t k, const std::vector<FrameRecord> &done)
+{
+    FrameRecord rec;
+    rec.index = k;
+    rec.file = k < plan.files.size() ? plan.files[k] : "";
+    rec.camera = plan.animated() ? *rt_camera_path_pose(plan.path, k) : rt_camera_pose_of(rt_scene_camera(scene));
+    rec.processors = config.processor_count();
+    rec.decision = "first";
+    rec.reason = plan.policy == RemapPolicy::oracle ? "oracle: this frame's own pilot" : "the run's --map";
+    if (k > 0) {
+        set_camera(scene, plan.path, k);
+        before = std::move(previous);
+        previous = std::move(pilot);
+        pilot = std::make_unique<FramePilot>(config, scene, grid);
+        double previous_time_s = done.back().image_time_s;
+        if (plan.policy == RemapPolicy::adaptive && plan.adaptive.pilot_fraction > 0)
+            preview = host_preview(config, scene, grid, plan.adaptive.pilot_fraction, previous_time_s, rec);
+        next_mapping(remapper, ctx, m, FrameLoads{*previous, previous_time_s, *pilot, before.get(), preview.get(),
+                                                  rt_camera_path_pose(plan.path, k - 1),
+                                                  rt_camera_path_pose(plan.path, k)}, rec);
+        m.fb = new_frame_buffer(scene);
+        start = frame_start(config, end_s + rec.charged_migration_s() + rec.host_pilot_charged_s);
+        m.top->start_frame(m.fb.get(), m.owner.data(), start);
+        rec.start_s = start.to_seconds();
+    }
+    if (pilot) {
+        rec.t1_s = pilot->work_s();
+        rec.pilot_wall_s += pilot->wall_s();
+    }
+    return rec;
+}
+
+std::string progress_label(const FramePlan &plan, size_t k, size_t n)
+{
+    if (!plan.animated()) return "torusrt-sim";
+    return "torusrt-sim frame " + std::to_string(k + 1) + "/" + std::to_string(n);
+}
+
+// The outcome of a run stopped by a deadlock in frame k: the report (status "deadlock") and the
+// frames that completed.
+void deadlocked(const FrameLoop &loop, Machine &m, size_t k, double wall_start_s, RunOutcome &out)
+{
+    const FramePlan &plan = loop.plan;
+    RunFacts facts = run_facts(m, plan, {}, 0, wall_start_s);  // T(1): 0, or the plan's
+    out.deadlock = true;
+    out.report = collect(loop.config, *m.top, m.ledger, loop.scene, loop.grid, m.owner.data(), facts, true);
+    std::string where = plan.animated() ? "frame " + std::to_string(k) + ":\n" : "";
+    if (plan.animated()) {
+        out.report.frames = out.frames;  // the frames that completed
+        out.report.remap = remap_settings(plan.policy, plan.adaptive);
+    }
+    out.deadlock_details = where + deadlock_text(out.report);
+    out.sim_time_s = out.report.sim_time_s;
+}
+
 }  // namespace
 
-AnimationOutcome run_animation(const SimConfig &config, rt_scene *scene, const rt_grid *grid,
-                               const rt_camera_path *path, const std::vector<std::string> &files,
-                               RemapPolicy policy, const AdaptiveSettings &adaptive, double wall_start_s)
+RunOutcome run_frames(const SimConfig &config, rt_scene *scene, const rt_grid *grid, const FramePlan &plan,
+                      double wall_start_s)
 {
-    size_t n = rt_camera_path_count(path);
+    size_t n = plan.animated() ? rt_camera_path_count(plan.path) : 1;
     Machine m;
     m.memory = config.memory;
     m.ledger.set_limit(rt_budget_packets_allowed(&m.memory, PacketPool::bytes_per_packet()));
-    Routing routing(config.ips, config.topology == Topology::torus);
-    RemapContext ctx{config, scene, grid, routing};
-    set_camera(scene, path, 0);
-    auto pilot = std::make_unique<FramePilot>(config, scene, grid);
-    m.owner = policy == RemapPolicy::oracle ? oracle_mapping(ctx, *pilot) : owner_table_of(config, grid);
+    FrameLoop loop(config, scene, grid, plan);
+    m.owner = loop.first_table();
     warn_idle_nodes(config, m.owner);
     m.fb = new_frame_buffer(scene);
     elaborate(config, scene, grid, m);
 
-    AnimationOutcome out;
-    Remapper remapper(policy, adaptive.window, adaptive.margin);
-    std::unique_ptr<FramePilot> previous, before, preview;
-    double end_s = 0;
+    RunOutcome out;
     for (size_t k = 0; k < n; k++) {
-        FrameRecord rec;
-        rec.index = k;
-        rec.file = files[k];
-        rec.camera = *rt_camera_path_pose(path, k);
-        rec.processors = config.processor_count();
-        rec.decision = "first";
-        rec.reason = policy == RemapPolicy::oracle ? "oracle: this frame's own pilot" : "the run's --map";
+        FrameRecord rec = loop.prepare(m, k, out.frames);
         uint64_t created_before = created(m.ledger);
-        sc_core::sc_time start = sc_core::SC_ZERO_TIME;
-        if (k > 0) {
-            set_camera(scene, path, k);
-            before = std::move(previous);
-            previous = std::move(pilot);
-            pilot = std::make_unique<FramePilot>(config, scene, grid);
-            double previous_time_s = out.frames.back().image_time_s;
-            if (policy == RemapPolicy::adaptive && adaptive.pilot_fraction > 0)
-                preview = host_preview(config, scene, grid, adaptive.pilot_fraction, previous_time_s, rec);
-            next_mapping(remapper, ctx, m, FrameLoads{*previous, previous_time_s, *pilot, before.get(), preview.get(),
-                                                    rt_camera_path_pose(path, k - 1), rt_camera_path_pose(path, k)}, rec);
-            m.fb = new_frame_buffer(scene);
-            start = frame_start(config, end_s + rec.charged_migration_s() + rec.host_pilot_charged_s);
-            m.top->start_frame(m.fb.get(), m.owner.data(), start);
-        }
-        rec.start_s = start.to_seconds();
-        rec.t1_s = pilot->work_s();
-        rec.pilot_wall_s += pilot->wall_s();
-        if (!run_frame(config, m, k, n)) {
-            out.deadlock = true;
-            out.report = collect(config, *m.top, m.ledger, scene, grid, m.owner.data(),
-                                 animation_facts(m, 0, wall_start_s), true);
-            out.report.frames = out.frames;  // the frames that completed
-            out.report.remap = remap_settings(policy, adaptive);
-            out.deadlock_details = "frame " + std::to_string(k) + ":\n" + deadlock_text(out.report);
-            out.sim_time_s = out.report.sim_time_s;
-            return out;
+        if (!run_frame(config, m, progress_label(plan, k, n))) {
+            deadlocked(loop, m, k, wall_start_s, out);
+            return out;  // the tracer's destructor removes the partial trace
         }
         check_conservation(m.ledger);
-        end_s = m.ledger.image_time().to_seconds();
-        rec.image_time_s = (m.ledger.image_time() - start).to_seconds();
+        loop.end_s = m.ledger.image_time().to_seconds();
+        rec.image_time_s = (m.ledger.image_time() - loop.start).to_seconds();
         rec.packets = created(m.ledger) - created_before;
         const rt_camera *cam = rt_scene_camera(scene);
         out.images.emplace_back(static_cast<size_t>(cam->width) * cam->height * 3);
         rt_framebuffer_to_rgb8(m.fb.get(), out.images.back().data());
         out.frames.push_back(rec);
     }
+    out.sim_time_s = loop.end_s;
     out.report = collect(config, *m.top, m.ledger, scene, grid, m.owner.data(),
-                         animation_facts(m, frames_t1(out.frames), wall_start_s), false);
-    out.report.frames = out.frames;
-    out.report.remap = remap_settings(policy, adaptive);
+                         run_facts(m, plan, out.frames, out.sim_time_s, wall_start_s), false);
+    if (plan.animated()) {
+        out.report.frames = out.frames;
+        out.report.remap = remap_settings(plan.policy, plan.adaptive);
+    } else {
+        out.frames.clear();  // a single image reports no frames
+    }
     if (m.tracer) m.tracer->finish();
     return out;
 }

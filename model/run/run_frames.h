@@ -1,0 +1,48 @@
+// run_frames.h - the one run path: a machine elaborated once runs its frames one after
+// another. A single image is one frame under the scene's own camera; an animation is a camera
+// path of N poses, each frame starting once the one before is complete (every packet consumed)
+// and its migration, if the mapping changes, has crossed the links. The camera and the owner
+// table's contents change only between frames, with the network empty.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "frame_report.h"
+#include "remap_policy.h"
+#include "run_report.h"
+#include "rt_camera_path.h"
+#include "sim_config.h"
+
+namespace torusrt {
+
+// What the frames are and how the mapping follows them.
+struct FramePlan {
+    const rt_camera_path *path = nullptr;  // the frames' poses; null: one frame, the scene's camera
+    std::vector<std::string> files;        // each frame's PNG, for the report (an animation)
+    RemapPolicy policy = RemapPolicy::static_map;
+    AdaptiveSettings adaptive;             // --remap-pilot, --remap-window, --remap-margin
+    // A single image's T(1): < 0, this run is T(1) (one processor); else the value and where
+    // it came from. An animation's T(1) is the sum of its frames' pilots.
+    double t1_s = -1;
+    std::string t1_source;
+
+    bool animated() const { return path != nullptr; }
+};
+
+struct RunOutcome {
+    bool deadlock = false;                    // the network stalled with packets outstanding
+    std::string deadlock_details;             // which queues were full (deadlock_text)
+    double sim_time_s = 0;                    // the image time (a deadlock: the time of the stall)
+    std::vector<std::vector<uint8_t>> images; // every completed frame's RGB
+    std::vector<FrameRecord> frames;          // an animation's frame records
+    RunReport report;                         // the statistics, also after a deadlock
+};
+
+// Runs `plan`'s frames on `config`'s machine and the loaded scene (an animation leaves the
+// scene's camera at its last frame's). A VCD trace, if asked for, is moved to its final name
+// only when the run succeeds.
+RunOutcome run_frames(const SimConfig &config, rt_scene *scene, const rt_grid *grid, const FramePlan &plan,
+                      double wall_start_s);
+
+}  // namespace torusrt

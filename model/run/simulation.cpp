@@ -1,0 +1,182 @@
+// simulation.cpp - one invocation: outputs staged, scene loaded and mapped, frames run, files
+// committed together.
+#include "simulation.h"
+
+#include <cstdio>
+#include <optional>
+
+#include "frame_report.h"
+#include "mapping_setup.h"
+#include "model_run.h"
+#include "output_files.h"
+#include "packet_pool.h"
+#include "run_frames.h"
+#include "scene_setup.h"
+#include "user_error.h"
+
+namespace torusrt {
+
+namespace {
+
+// Every output of the run (every frame's included), registered and checked against the inputs
+// and each other before the scene is read.
+struct StagedOutputs {
+    OutputSet set;
+    std::optional<OutputSet::Id> png, stats, write_map, load_map, frames_csv;
+    OutputSet::Id first_frame = 0;  // frame k is first_frame + k
+};
+
+void stage_outputs(SimRequest &r, StagedOutputs &out)
+{
+    SimConfig &config = r.config;
+    if (!r.animated()) out.png = out.set.add("-o", r.image);
+    for (size_t k = 0; k < r.frame_files.size(); k++) {
+        OutputSet::Id id = out.set.add("-o", r.frame_files[k]);
+        if (k == 0) out.first_frame = id;
+    }
+    if (!r.stats.empty()) out.stats = out.set.add("--stats", r.stats);
+    std::optional<OutputSet::Id> vcd, gtkw;
+    if (!config.vcd_path.empty()) {
+        vcd = out.set.add("--vcd", config.vcd_path);
+        if (!out.set.special(*vcd)) {  // no save file beside /dev/null
+            config.gtkw_path = save_file_path(config.vcd_path);
+            gtkw = out.set.add("--vcd (save file)", config.gtkw_path);
+        }
+    }
+    if (!config.write_map.empty()) out.write_map = out.set.add("--write-map", config.write_map);
+    if (!r.load_map.empty()) out.load_map = out.set.add("--load-map", r.load_map);
+    if (!r.frames_csv.empty()) out.frames_csv = out.set.add("--frames-csv", r.frames_csv);
+    for (const auto &input : r.inputs) out.set.add_input(input.first, input.second);
+    out.set.check();
+    if (vcd) config.vcd_write_path = out.set.staged(*vcd);
+    if (gtkw) config.gtkw_write_path = out.set.staged(*gtkw);
+}
+
+// The summary's last line: every output written, FIRST (the image or the frames) first.
+void print_written(const SimRequest &r, const std::string &first)
+{
+    std::printf("  wrote        %s", first.c_str());
+    for (const std::string *path : {&r.stats, &r.frames_csv, &r.config.write_map, &r.load_map, &r.config.vcd_path})
+        if (!path->empty()) std::printf(", %s", path->c_str());
+    if (!r.config.gtkw_path.empty()) std::printf(" (gtkwave %s)", r.config.gtkw_path.c_str());
+    std::printf("\n");
+}
+
+void report_deadlock(const SimConfig &config, double sim_time_s, const std::string &details)
+{
+    std::fprintf(stderr,
+                 "torusrt-sim: deadlock: the network stalled at %.6f s simulated with packets still "
+                 "outstanding (queue capacity %u)\n%s",
+                 sim_time_s, config.queue_capacity, details.c_str());
+}
+
+void write_stats(StagedOutputs &outputs, const SimRequest &r, const RunReport &report)
+{
+    if (!outputs.stats) return;
+    std::string text = to_json(report).dump(2);  // the tree is freed before the file is written
+    text += '\n';
+    write_text_file(outputs.set.staged(*outputs.stats), r.stats, text);
+}
+
+// The frames' camera poses: the file's, or the orbit from the scene's own camera.
+CameraPathPtr camera_path(SimRequest &r, const rt_scene *scene)
+{
+    if (r.camera_file) return std::move(r.camera_file);
+    char msg[RT_MSG_LEN] = "";
+    rt_camera_path *raw = nullptr;
+    rt_camera_pose start = rt_camera_pose_of(rt_scene_camera(scene));
+    if (rt_camera_path_orbit(&start, r.orbit_degrees, static_cast<uint32_t>(r.frame_count), &raw, msg, sizeof msg) !=
+        RT_OK)
+        throw UserError(std::string("--orbit: ") + msg);
+    return CameraPathPtr(raw);
+}
+
+// The plan of the frames: a single image's T(1) (--t1, or a one-processor run in a child
+// process), or an animation's path, files and remapping.
+FramePlan frame_plan(SimRequest &r, const LoadedScene &loaded, const StagedOutputs &outputs, CameraPathPtr &path)
+{
+    FramePlan plan;
+    if (r.animated()) {
+        path = camera_path(r, loaded.scene.get());
+        plan.path = path.get();
+        for (size_t k = 0; k < r.frame_files.size(); k++) plan.files.push_back(outputs.set.path(outputs.first_frame + k));
+        plan.policy = r.remap;
+        plan.adaptive = r.adaptive;
+        return plan;
+    }
+    plan.t1_s = r.config.t1_s;
+    plan.t1_source = "passed with --t1";
+    if (plan.t1_s < 0 && r.config.processor_count() > 1) {
+        plan.t1_s = one_processor_time(r.config, loaded.scene.get(), loaded.grid.get());
+        plan.t1_source = "one-processor run";
+    }
+    return plan;
+}
+
+// Writes the image or every frame, the statistics and the frame table, and commits them with
+// the mapping outputs already staged.
+void write_outputs(const SimRequest &r, const rt_scene *scene, StagedOutputs &outputs, const RunOutcome &out)
+{
+    const rt_camera *cam = rt_scene_camera(scene);
+    if (r.animated()) {
+        for (size_t k = 0; k < out.images.size(); k++)
+            write_png_file(outputs.set.staged(outputs.first_frame + k), outputs.set.path(outputs.first_frame + k),
+                           cam->width, cam->height, out.images[k]);
+    } else {
+        write_png_file(outputs.set.staged(*outputs.png), r.image, cam->width, cam->height, out.images.front());
+    }
+    write_stats(outputs, r, out.report);
+    if (outputs.frames_csv)
+        write_text_file(outputs.set.staged(*outputs.frames_csv), r.frames_csv, frames_csv(out.frames));
+    outputs.set.commit();
+}
+
+}  // namespace
+
+std::string save_file_path(const std::string &vcd)
+{
+    const std::string ext = ".vcd";
+    bool has_ext = vcd.size() > ext.size() && vcd.compare(vcd.size() - ext.size(), ext.size(), ext) == 0;
+    return (has_ext ? vcd.substr(0, vcd.size() - ext.size()) : vcd) + ".gtkw";
+}
+
+int simulate(SimRequest &r, double wall_start_s)
+{
+    SimConfig &config = r.config;
+    StagedOutputs outputs;
+    stage_outputs(r, outputs);
+    // The map file needs only the grid's size: a bad one is named before the scene is read.
+    if (config.mapping == RT_MAP_FILE) read_map_file(config, config.cells.data(), config.owner_table);
+    LoadedScene loaded = load_scene(config.scene_path, config.width, config.height, config.cells, config.quiet,
+                                    &config.memory, config.preprocess_count);
+    rt_scene *scene = loaded.scene.get();
+    check_shade_tree(config.scene_path, scene, config.step, config.memory, PacketPool::bytes_per_packet());
+    nlohmann::json mapping_facts = prepare_mapping(config, scene, loaded.grid.get());
+    // An animation's mapping outputs show frame 0's table, written before its camera moves.
+    if (r.animated())
+        write_mapping_outputs(config, scene, loaded.grid.get(), outputs.set, outputs.write_map, outputs.load_map);
+    CameraPathPtr path;
+    FramePlan plan = frame_plan(r, loaded, outputs, path);
+    RunOutcome out = run_frames(config, scene, loaded.grid.get(), plan, wall_start_s);
+    out.report.mapping = mapping_facts;
+    if (r.animated()) {
+        out.report.camera_source = r.camera_source;
+        out.report.output_pattern = r.image;
+    }
+    if (out.deadlock) {  // the JSON alone (status "deadlock"), no image
+        write_stats(outputs, r, out.report);
+        outputs.set.commit("--stats");
+        report_deadlock(config, out.sim_time_s, out.deadlock_details);
+        return 3;
+    }
+    if (!r.animated())
+        write_mapping_outputs(config, scene, loaded.grid.get(), outputs.set, outputs.write_map, outputs.load_map);
+    write_outputs(r, scene, outputs, out);
+    if (!config.quiet) {
+        print_summary_stdout(out.report);
+        print_written(r, r.animated() ? std::to_string(out.images.size()) + " frames " + r.image : r.image);
+    }
+    return 0;
+}
+
+}  // namespace torusrt

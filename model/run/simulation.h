@@ -1,0 +1,45 @@
+// simulation.h - one invocation of the simulator, from a checked request to the files written:
+// every output is staged and checked against the inputs before the scene is read, the scene is
+// loaded and mapped, the frames run (run_frames.h), and the image or frames, the statistics and
+// the other outputs commit together. The command line only builds the request.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "kernel_handles.h"
+#include "remap_policy.h"
+#include "sim_config.h"
+
+namespace torusrt {
+
+struct SimRequest {
+    SimConfig config;
+    // The frames: a single image (frame_count 0), an orbit of frame_count frames turning by
+    // orbit_degrees in all about the scene's camera, or camera_file's poses.
+    size_t frame_count = 0;
+    double orbit_degrees = 0;
+    CameraPathPtr camera_file;
+    std::string camera_source;  // "orbit" or "camera-path", for the report
+    RemapPolicy remap = RemapPolicy::static_map;
+    AdaptiveSettings adaptive;
+    // The outputs ("" = not written): -o is the image, or an animation's pattern whose frames
+    // are frame_files.
+    std::string image;
+    std::vector<std::string> frame_files;
+    std::string stats, load_map, frames_csv;  // the trace and --write-map are config.vcd_path, config.write_map
+    // Input files (option, path) that no output may replace.
+    std::vector<std::pair<std::string, std::string>> inputs;
+
+    bool animated() const { return frame_count > 0; }
+};
+
+// Runs the request; returns the exit status: 0, or 3 after a deadlock (the statistics alone
+// are written). Throws UserError for bad input or a failed write, leaving no output behind.
+int simulate(SimRequest &request, double wall_start_s);
+
+// X.vcd -> X.gtkw; any other name gets ".gtkw" appended.
+std::string save_file_path(const std::string &vcd);
+
+}  // namespace torusrt
