@@ -6,7 +6,7 @@ key="value" lines (the subset of TOML that --dump-config writes), in --dump-conf
 """
 import tomllib
 
-# The keys in --dump-config's order (its option table, model/run/machine_options.cpp); the CLI
+# The keys in --dump-config's order (its option table, model/run/config/machine_options.cpp); the CLI
 # test machine_file_order checks that the two agree.
 DUMP_ORDER = ("ips", "map", "topology", "cells", "preprocess-count", "queue", "flow", "timing-profile", "timing",
               "timing-values", "link-us", "packet-bytes", "link-bytes-per-us", "max-depth", "min-weight", "style",

@@ -37,6 +37,16 @@ class IncludeRule(unittest.TestCase):
         self.assertEqual(len(found), 1, found)
         self.assertTrue(found[0].startswith("model/bad.cpp:2: model includes \"r.h\" from model/run"), found)
 
+    def test_a_sub_folder_of_the_run_code_is_the_run_layer(self):
+        # model/run/report/ may include the run code beside it and the model, never the testbench;
+        # the hardware may not include it.
+        self.write("model/run/report/rep.h", '#include "r.h"\n#include "m.h"\n')
+        self.assertEqual(ci.offences(self.root), [])
+        self.write("model/run/report/bad.cpp", '#include "rep.h"\n#include "t.h"\n')
+        self.write("model/bad2.cpp", '#include "rep.h"\n')
+        found = sorted(f.split(":")[0] for f in ci.offences(self.root))
+        self.assertEqual(found, ["model/bad2.cpp", "model/run/report/bad.cpp"], found)
+
     def test_model_including_the_testbench_is_found(self):
         self.write("model/bad.h", '#include "t.h"\n')
         self.assertEqual(len(ci.offences(self.root)), 1)
