@@ -9,13 +9,14 @@
 
 namespace torusrt {
 
-std::vector<uint32_t> cluster_node_objects(const rt_grid *grid, const int32_t *cell_owner, int node)
+std::vector<uint32_t> cluster_node_objects(const rt_grid *grid, const int32_t *cell_owner, int node,
+                                           const rt_replicas *replicas)
 {
     std::vector<bool> seen;
     std::vector<uint32_t> out;
     size_t cells = rt_grid_cell_count(grid);
     for (size_t c = 0; c < cells; c++) {
-        if (cell_owner[c] != node) continue;
+        if (!rt_replicas_holds(replicas, cell_owner, static_cast<uint32_t>(c), node)) continue;
         size_t count = 0;
         const uint32_t *list = rt_grid_cell_objects(grid, c, &count);
         for (size_t i = 0; i < count; i++) {

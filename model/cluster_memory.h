@@ -27,7 +27,9 @@
 namespace torusrt {
 
 // Objects listed in any cell with cell_owner == node, once each, ascending.
-std::vector<uint32_t> cluster_node_objects(const rt_grid *grid, const int32_t *cell_owner, int node);
+// With `replicas`, the cells it holds as an extra owner too.
+std::vector<uint32_t> cluster_node_objects(const rt_grid *grid, const int32_t *cell_owner, int node,
+                                           const rt_replicas *replicas = nullptr);
 
 // Which processor (0..m-1) of the node holds `object` under the placement rule; -1 if the node's
 // cells do not list it. `node_objects` as from cluster_node_objects.

@@ -13,6 +13,7 @@
 #include "rt_budget.h"
 #include "rt_mapping.h"
 #include "rt_memory.h"
+#include "rt_replicas.h"
 #include "rt_step.h"
 #include "rt_timing.h"
 
@@ -35,6 +36,7 @@ enum class DataMode { replicated, shared };
 enum class ArbiterPolicy { round_robin, fixed_priority };
 enum class DispatchPolicy { round_robin, shortest_queue };
 enum class FlowControl { none, classes }; // see flow_control.h
+enum class ReplicaRule { nearest, hash }; // see replica_choice.h
 
 // The names the options take and the reports print (the arbiter and dispatch names are the
 // ones their registries know).
@@ -46,6 +48,8 @@ constexpr NamedValue<ArbiterPolicy> kArbiterNames[] = {{ArbiterPolicy::round_rob
 constexpr NamedValue<DispatchPolicy> kDispatchNames[] = {{DispatchPolicy::round_robin, "round-robin"},
                                                         {DispatchPolicy::shortest_queue, "shortest-queue"}};
 constexpr NamedValue<FlowControl> kFlowNames[] = {{FlowControl::classes, "classes"}, {FlowControl::none, "none"}};
+constexpr NamedValue<ReplicaRule> kReplicaRuleNames[] = {{ReplicaRule::nearest, "nearest"},
+                                                         {ReplicaRule::hash, "hash"}};
 constexpr NamedValue<rt_map_kind> kMappingNames[] = {{RT_MAP_BLOCK, "block"},
                                                     {RT_MAP_CYCLIC, "cyclic"},
                                                     {RT_MAP_BLOCK_CYCLIC, "block-cyclic"},
@@ -63,6 +67,8 @@ struct MachineConfig {
     int block = 1;                          // block size of block-cyclic, K of cost:K
     std::string map_file;                   // --map-file: explicit cell -> node table
     std::array<unsigned, 2> pilot_size{0, 0}; // --pilot-size for --map cost (0 = the image's)
+    double replicate = 0;                   // --replicate: extra memory per node for replicas (fraction)
+    ReplicaRule replica_choice = ReplicaRule::nearest; // which owner of a replicated cell a packet goes to
     unsigned queue_capacity = 0;            // packets per buffer (per class), 0 = unbounded
     FlowControl flow = FlowControl::classes; // deadlock-free class split, or one class (none)
     rt_timing timing{};                     // operation and transfer times
@@ -103,6 +109,13 @@ struct RunOptions {
 // A run of a machine, with the cell -> node table prepared for it (prepare_mapping).
 struct SimConfig : MachineConfig, RunOptions {
     std::vector<int32_t> owner_table;       // node of every cell (empty: rt_mapping_fill)
+    // Extra owners of replicated cells (rt_replicas.h; both empty: none): per cell, cells + 1
+    // offsets into replica_extra.
+    std::vector<uint32_t> replica_first;
+    std::vector<int32_t> replica_extra;
+    bool replicated() const { return !replica_extra.empty(); }
+    // The table as the kernel reads it (replicated() only).
+    rt_replicas replica_table() const { return {replica_first.data(), replica_extra.data()}; }
 };
 
 // The one validator (config_validation.cpp): every range and every combination of settings,
@@ -118,5 +131,6 @@ inline const char *data_mode_name(DataMode d) { return name_in(kDataModeNames, d
 inline const char *arbiter_name(ArbiterPolicy a) { return name_in(kArbiterNames, a); }
 inline const char *dispatch_name(DispatchPolicy d) { return name_in(kDispatchNames, d); }
 inline const char *flow_name(FlowControl f) { return name_in(kFlowNames, f); }
+inline const char *replica_rule_name(ReplicaRule r) { return name_in(kReplicaRuleNames, r); }
 
 }  // namespace torusrt

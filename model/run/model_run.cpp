@@ -113,8 +113,10 @@ ModelOutcome run_model(const SimConfig &config, const rt_scene *scene, const rt_
     if (config.style == TimingStyle::lt)
         tlm::tlm_global_quantum::instance().set(sc_core::sc_time(config.quantum_us, sc_core::SC_US));
     double elaboration_start = wall_clock_s();
-    TorusSystem &top =
-        keep_until_exit(std::make_unique<TorusSystem>("top", config, scene, grid, owner.data(), ledger, fb.get()));
+    rt_replicas replicas = config.replica_table();
+    TorusSystem &top = keep_until_exit(std::make_unique<TorusSystem>("top", config, scene, grid, owner.data(), ledger,
+                                                                     fb.get(), HandOverTiming::at_once,
+                                                                     config.replicated() ? &replicas : nullptr));
     std::unique_ptr<Tracer> tracer;
     if (!config.vcd_path.empty()) tracer = std::make_unique<Tracer>(config, top);
 
@@ -164,6 +166,9 @@ double one_processor_time(const SimConfig &config, const rt_scene *scene, const 
     one.cluster = 1;
     one.mapping = RT_MAP_BLOCK; // one node owns every cell, whatever the mapping
     one.owner_table.clear();
+    one.replica_first.clear();
+    one.replica_extra.clear();
+    one.replicate = 0;
     one.vcd_path.clear();
     one.trace_ips.clear();
     one.quiet = true;
