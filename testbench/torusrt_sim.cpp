@@ -393,6 +393,8 @@ int run(CommandLine &cl, double wall_start)
     route_systemc_messages(cl.common.quiet);
     check_animation(cl);
     SimConfig config = checked_config(cl);
+    if (config.replicate > 0 && cl.remap != RemapPolicy::static_map)
+        throw UserError("--replicate: not with --remap (a remapped table keeps one owner per cell)", 2);
     warn_about_settings("torusrt-sim", config.step, config.quiet);
     if (config.style == TimingStyle::lt && config.quantum_us == 0 && !config.quiet)
         std::fprintf(stderr, "torusrt-sim: warning: --style lt without --quantum: a quantum of 0 synchronises at "
