@@ -45,8 +45,8 @@ struct ClusterMemoryFigures {
 
 // Figures for `nodes` nodes of `m` processors each. Throws std::bad_alloc when memory runs out.
 ClusterMemoryFigures cluster_memory_figures(const rt_scene *scene, const rt_grid *grid, const int32_t *cell_owner,
-                                            int nodes, int m,
-                                            const rt_memory_layout *layout = nullptr);
+                                            int nodes, int m, const rt_memory_layout *layout = nullptr,
+                                            const rt_replicas *replicas = nullptr);
 
 // The report's `memory` section for a clustered run: max_per_ip_bytes and total_bytes for the
 // configured data mode, both modes' figures, and pixel_partitioned_bytes as passed in.

@@ -406,6 +406,8 @@ int run(CommandLine &cl, double wall_start)
                                     &config.memory, config.preprocess_count);
     check_shade_tree(config.scene_path, loaded.scene.get(), config.step, config.memory, PacketPool::bytes_per_packet());
     nlohmann::json mapping_facts = prepare_mapping(config, loaded.scene.get(), loaded.grid.get());
+    if (config.replicated() && cl.remap != RemapPolicy::static_map)
+        throw UserError("--map-file: a table with replicated cells is not remapped (--remap)", 2);
     if (cl.anim.animated()) {
         write_mapping_outputs(config, loaded.scene.get(), loaded.grid.get(), outputs.set, outputs.write_map,
                               outputs.load_map);
