@@ -27,6 +27,12 @@
 extern "C" {
 #endif
 
+/* Which owner of a replicated cell a packet goes to (--replica-choice; the model applies it). */
+typedef enum rt_replica_rule {
+    RT_REPLICA_NEAREST = 0, /* the owner fewest hops from the node that hands the packet on */
+    RT_REPLICA_HASH = 1     /* the owner rt_replica_hash picks */
+} rt_replica_rule;
+
 typedef struct rt_replicas {
     const uint32_t *first; /* per cell, cells + 1 entries: offset of the cell's extra owners in extra */
     const int32_t *extra;  /* extra owners (node ids), ascending within a cell */

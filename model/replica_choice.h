@@ -1,8 +1,10 @@
 // replica_choice.h - which owner of a replicated cell a packet goes to (--replica-choice).
-// A packet is given its destination once, by the node that forwards it (or by the host, for a
-// primary): that node itself when it holds the cell; else under `nearest` the owner fewest
-// hops away by the machine's dimension-order routing, ties to the lowest node number; under
-// `hash` the owner rt_replica_hash(x, y, depth) mod (owners) picks, owners in ascending order.
+// A packet is given its destination once, by the node that hands it on (or by the host, for a
+// primary). Under `nearest`: the owner fewest hops away by the machine's dimension-order
+// routing, ties to the lowest node number (the node itself when it holds the cell). Under
+// `hash`: the owner rt_replica_hash(x, y, depth) mod (owners) picks, owners in ascending order,
+// for every new packet (made by a step in the cell, or a primary) and every packet forwarded
+// into the cell; a walking packet never leaves a cell its node holds (the kernel walks it on).
 // The host is on no ring: a primary entering a replicated cell takes the hash rule under both.
 // Cells without extra owners go to owner[cell], as without a replica table.
 #pragma once

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cost_internal.h"
 #include "rt_cost_map.h"
 #include "scene_internal.h"
 
@@ -18,6 +19,11 @@ typedef struct replicate_state {
     const int32_t *owner;
     rt_memory_layout layout;
     int nodes;
+    int dims[3], torus;  /* the nodes' torus or mesh */
+    rt_replica_rule rule;
+    int32_t *own;        /* scratch: one cell's owners, the candidate last */
+    double *inflow;      /* scratch: per owner, pilot packets entering the cell that reach it */
+    double *cur, *next;  /* scratch: per owner, its predicted share of the cell now and with the candidate */
     double *load;       /* per node: predicted work, each cell's work split evenly over its owners */
     double *room;       /* per node: bytes of the budget left */
     uint32_t *owners;   /* per cell: owners (1 + extra) */
@@ -68,14 +74,52 @@ static double copy_bytes(const replicate_state *s, uint32_t c, int32_t n)
     return bytes;
 }
 
-/* The hottest cell node b holds that is not done (largest work per owner), or -1. */
+/* Cell c's owners into s->own (primary first); their count. */
+static int owners_of(const replicate_state *s, uint32_t c)
+{
+    int k = 0;
+    s->own[k++] = s->owner[c];
+    for (int32_t p = s->head[c]; p >= 0; p = s->pair_next[p]) s->own[k++] = s->pair_node[p];
+    return k;
+}
+
+/* Predicted share of cell c's work at each of its k owners s->own[0..k-1], into share[]. Under
+ * hash an even split. Under nearest, the packets the pilot saw enter c through each face go to
+ * the owner nearest the node holding the neighbouring cell (its primary owner; ties to the
+ * lowest node, as the model's rule), and each owner's share is its part of those packets (an
+ * even split when none enter). */
+static void owner_shares(const replicate_state *s, uint32_t c, int k, double *share)
+{
+    double w = s->pilot->work_us[c], total = 0;
+    for (int i = 0; i < k; i++) s->inflow[i] = 0;
+    for (int f = 0; s->rule == RT_REPLICA_NEAREST && f < RT_CELL_FACES; f++) {
+        long nb = rt_cost_neighbour(s->pilot->dims, (long)c, f);
+        if (nb < 0) continue;
+        double in = (double)s->pilot->traffic[nb * RT_CELL_FACES + (f ^ 1)];
+        if (in <= 0) continue;
+        int best = 0, best_hops = rt_cost_hops(s->dims, s->torus, s->owner[nb], s->own[0]);
+        for (int i = 1; i < k; i++) {
+            int h = rt_cost_hops(s->dims, s->torus, s->owner[nb], s->own[i]);
+            if (h < best_hops || (h == best_hops && s->own[i] < s->own[best])) best = i, best_hops = h;
+        }
+        s->inflow[best] += in;
+        total += in;
+    }
+    for (int i = 0; i < k; i++) share[i] = total > 0 ? w * s->inflow[i] / total : w / k;
+}
+
+/* The hottest cell node b holds that is not done (b's largest predicted share), or -1. */
 static long hottest_cell(const replicate_state *s, int32_t b)
 {
     long best = -1;
     double best_share = 0;
     for (uint32_t c = 0; c < (uint32_t)s->pilot->cells; c++) {
         if (s->done[c] || !holds(s, c, b)) continue;
-        double share = s->pilot->work_us[c] / s->owners[c];
+        int k = owners_of(s, c);
+        owner_shares(s, c, k, s->cur);
+        double share = 0;
+        for (int i = 0; i < k; i++)
+            if (s->own[i] == b) share = s->cur[i];
         if (share > best_share) {
             best = (long)c;
             best_share = share;
@@ -84,25 +128,39 @@ static long hottest_cell(const replicate_state *s, int32_t b)
     return best;
 }
 
-/* The node that would end least loaded with a copy of c and has room for it, or -1. */
-static int32_t best_new_owner(const replicate_state *s, uint32_t c, double new_share, double *bytes)
+/* The busiest load among c's k owners and candidate m (s->own[k]) with m as an owner too. */
+static double load_with(replicate_state *s, uint32_t c, int k)
+{
+    owner_shares(s, c, k + 1, s->next);
+    double most = 0;
+    for (int i = 0; i <= k; i++) {
+        double before = i < k ? s->cur[i] : 0;
+        most = fmax(most, s->load[s->own[i]] - before + s->next[i]);
+    }
+    return most;
+}
+
+/* The node whose copy of c leaves the least busiest load among the cell's owners and that has
+ * room for it, or -1; *after is that load. s->own holds c's k owners. */
+static int32_t best_new_owner(replicate_state *s, uint32_t c, int k, double *after, double *bytes)
 {
     int32_t best = -1;
-    double best_load = 0;
+    owner_shares(s, c, k, s->cur);
     for (int32_t n = 0; n < s->nodes; n++) {
         if (holds(s, c, n)) continue;
-        double after = s->load[n] + new_share;
-        if (best >= 0 && after >= best_load) continue;
+        s->own[k] = n;
+        double most = load_with(s, c, k);
+        if (best >= 0 && most >= *after) continue;
         double b = copy_bytes(s, c, n);
         if (b > s->room[n]) continue;
         best = n;
-        best_load = after;
+        *after = most;
         *bytes = b;
     }
     return best;
 }
 
-/* Adds node m as an owner of c: the loads of c's owners, m's room and marks. */
+/* Adds node m as an owner of c: the owners' loads by their shares, m's room and marks. */
 static int add_owner(replicate_state *s, uint32_t c, int32_t m, double bytes)
 {
     if (s->pairs == s->pair_cap) {
@@ -114,11 +172,12 @@ static int add_owner(replicate_state *s, uint32_t c, int32_t m, double bytes)
         if (!node || !next) return 0;
         s->pair_cap = cap;
     }
-    double w = s->pilot->work_us[c], k = s->owners[c];
-    double drop = w / k - w / (k + 1);
-    s->load[s->owner[c]] -= drop;
-    for (int32_t p = s->head[c]; p >= 0; p = s->pair_next[p]) s->load[s->pair_node[p]] -= drop;
-    s->load[m] += w / (k + 1);
+    int k = owners_of(s, c);
+    owner_shares(s, c, k, s->cur);
+    s->own[k] = m;
+    owner_shares(s, c, k + 1, s->next);
+    for (int i = 0; i < k; i++) s->load[s->own[i]] += s->next[i] - s->cur[i];
+    s->load[m] += s->next[k];
     s->room[m] -= bytes;
     s->pair_node[s->pairs] = m;
     s->pair_next[s->pairs] = s->head[c];
@@ -138,10 +197,11 @@ static int replicate_once(replicate_state *s, int *nomem)
         long cell = hottest_cell(s, b);
         if (cell < 0) return 0;
         uint32_t c = (uint32_t)cell;
-        double w = s->pilot->work_us[c], k = s->owners[c], bytes = 0;
-        int32_t m = best_new_owner(s, c, w / (k + 1), &bytes);
-        /* The copy must leave both b and its new owner below b's load now. */
-        if (m < 0 || s->load[m] + w / (k + 1) >= s->load[b] || w / k - w / (k + 1) <= 0) {
+        int k = owners_of(s, c);
+        double after = 0, bytes = 0;
+        int32_t m = k < s->nodes ? best_new_owner(s, c, k, &after, &bytes) : -1;
+        /* The copy must leave every owner of the cell, the new one too, below b's load now. */
+        if (m < 0 || after >= s->load[b]) {
             s->done[c] = 1;
             continue;
         }
@@ -164,6 +224,10 @@ static void state_free(replicate_state *s)
     free(s->held_obj);
     free(s->held_mat);
     free(s->done);
+    free(s->own);
+    free(s->inflow);
+    free(s->cur);
+    free(s->next);
 }
 
 /* Loads, budgets and marks of the mapping without copies. */
@@ -179,9 +243,14 @@ static rt_status state_init(replicate_state *s, double fraction)
     s->held_obj = calloc((size_t)(obj_bits / 8 + 1), 1);
     s->held_mat = calloc((size_t)(mat_bits / 8 + 1), 1);
     s->done = calloc(cells, 1);
+    s->own = malloc((nodes + 1) * sizeof *s->own);
+    s->inflow = malloc((nodes + 1) * sizeof *s->inflow);
+    s->cur = malloc((nodes + 1) * sizeof *s->cur);
+    s->next = malloc((nodes + 1) * sizeof *s->next);
     rt_memory_use *use = calloc(nodes, sizeof *use);
     rt_status st = RT_ERR_NOMEM;
-    if (s->load && s->room && s->owners && s->head && s->held_obj && s->held_mat && s->done && use)
+    if (s->load && s->room && s->owners && s->head && s->held_obj && s->held_mat && s->done && s->own && s->inflow &&
+        s->cur && s->next && use)
         st = rt_memory_per_owner_layout(s->scene, s->grid, s->owner, s->nodes, &s->layout, use);
     for (size_t n = 0; st == RT_OK && n < nodes; n++) s->room[n] = fraction * (double)rt_memory_total(&use[n]);
     for (uint32_t c = 0; st == RT_OK && c < (uint32_t)cells; c++) {
@@ -218,13 +287,14 @@ static rt_status write_table(const replicate_state *s, uint32_t *first, int32_t 
     return RT_OK;
 }
 
-rt_status rt_cost_replicate(const rt_cost_pilot *pilot, const rt_scene *scene, const rt_grid *grid, int nodes,
-                            const int32_t *owner, double fraction, const rt_memory_layout *layout,
-                            uint32_t *first, int32_t **extra, size_t *extra_count, rt_cost_map_facts *facts,
-                            char *msg, size_t msg_len)
+rt_status rt_cost_replicate(const rt_cost_pilot *pilot, const rt_scene *scene, const rt_grid *grid,
+                            const int node_dims[3], int torus, rt_replica_rule rule, const int32_t *owner,
+                            double fraction, const rt_memory_layout *layout, uint32_t *first, int32_t **extra,
+                            size_t *extra_count, rt_cost_map_facts *facts, char *msg, size_t msg_len)
 {
     *extra = NULL;
     *extra_count = 0;
+    int nodes = node_dims[0] * node_dims[1] * node_dims[2];
     if (nodes < 1 || !(fraction >= 0) || pilot->cells != rt_grid_cell_count(grid)) {
         if (msg && msg_len) snprintf(msg, msg_len, "cost replication: bad arguments");
         return RT_ERR_INVALID;
@@ -236,6 +306,9 @@ rt_status rt_cost_replicate(const rt_cost_pilot *pilot, const rt_scene *scene, c
     s.grid = grid;
     s.owner = owner;
     s.nodes = nodes;
+    for (int a = 0; a < 3; a++) s.dims[a] = node_dims[a];
+    s.torus = torus;
+    s.rule = rule;
     s.layout = layout ? *layout : rt_memory_layout_default();
     rt_status st = state_init(&s, fraction);
     int nomem = 0;

@@ -41,8 +41,10 @@ void replicate_cells(const MachineConfig &config, const rt_cost_pilot &pilot, co
     int32_t *extra = nullptr;
     size_t count = 0;
     char msg[RT_MSG_LEN] = "";
-    if (rt_cost_replicate(&pilot, scene, grid, config.node_count(), owner.data(), config.replicate,
-                          &config.memory_layout, first.data(), &extra, &count, &facts, msg, sizeof msg) != RT_OK)
+    rt_replica_rule rule = config.replica_choice == ReplicaRule::hash ? RT_REPLICA_HASH : RT_REPLICA_NEAREST;
+    if (rt_cost_replicate(&pilot, scene, grid, config.ips.data(), config.topology == Topology::torus, rule,
+                          owner.data(), config.replicate, &config.memory_layout, first.data(), &extra, &count, &facts,
+                          msg, sizeof msg) != RT_OK)
         throw UserError(std::string("--replicate: ") + msg);
     if (count) {
         replicas.first = std::move(first);

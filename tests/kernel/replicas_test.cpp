@@ -85,7 +85,8 @@ TEST(Replicas, MemoryCountsEveryCopy)
     EXPECT_EQ(rt_memory_total(&use[0]), 124u);  // no table: as rt_memory_per_owner
 }
 
-// Pilot work 1 us (cell 0, node 0) and 9 us (cell 1, node 1); data 124 and 156 bytes.
+// Pilot work 1 us (cell 0, node 0) and 9 us (cell 1, node 1); data 124 and 156 bytes; the hash
+// rule's prediction (an even split).
 //   fraction 1: room 124 and 156. Round 1: the busiest is node 1, its cell 1 (9 us); node 0
 //   takes a copy for 12 (list) + 88 (t2) bytes, ending at 1 + 4.5 = 5.5 < 9, node 1 at 4.5.
 //   Round 2: the busiest is node 0 (5.5); cell 1 has no new owner left; cell 0 (1 us) goes to
@@ -100,13 +101,15 @@ TEST(Replicas, CostReplicationByHand)
     double work[2] = {1, 9};
     uint64_t traffic[2 * RT_CELL_FACES] = {};
     rt_cost_pilot pilot{{2, 1, 1}, 2, work, traffic, 10, {}};
+    const int two[3] = {2, 1, 1};
     const int32_t owner[2] = {0, 1};
     uint32_t first[3];
     int32_t *extra = nullptr;
     size_t count = 0;
     rt_cost_map_facts facts{};
     char msg[RT_MSG_LEN] = "";
-    ASSERT_EQ(rt_cost_replicate(&pilot, t.scene.get(), t.grid.get(), 2, owner, 1.0, nullptr, first, &extra, &count,
+    ASSERT_EQ(rt_cost_replicate(&pilot, t.scene.get(), t.grid.get(), two, 1, RT_REPLICA_HASH, owner, 1.0, nullptr, first,
+                                &extra, &count,
                                 &facts, msg, sizeof msg),
               RT_OK)
         << msg;
@@ -116,7 +119,8 @@ TEST(Replicas, CostReplicationByHand)
     EXPECT_EQ(extra[1], 0);  // cell 1 also on node 0
     EXPECT_DOUBLE_EQ(facts.max_node_work_us, 5.0);
     std::free(extra);
-    ASSERT_EQ(rt_cost_replicate(&pilot, t.scene.get(), t.grid.get(), 2, owner, 0.5, nullptr, first, &extra, &count,
+    ASSERT_EQ(rt_cost_replicate(&pilot, t.scene.get(), t.grid.get(), two, 1, RT_REPLICA_HASH, owner, 0.5, nullptr, first,
+                                &extra, &count,
                                 &facts, msg, sizeof msg),
               RT_OK);
     EXPECT_EQ(count, 0u);
@@ -220,4 +224,32 @@ TEST(MapFileV2, BadEntriesNameFileAndLine)
     char msg[RT_MSG_LEN] = "";
     std::string v2 = "torusrt-map 2 2 3 1 8\n0 1 2 3 4 5\n";
     EXPECT_EQ(rt_map_file_parse("t.map", v2.data(), v2.size(), dims, 8, owner, msg, sizeof msg), RT_ERR_PARSE);
+}
+
+// The nearest rule's prediction on the same cells: every packet entering cell 1 comes from cell
+// 0 (10 across the face between them), held by node 0. A copy of cell 1 on node 0 would take all
+// of them (node 0 is 0 hops from itself): node 0 would end at 1 + 9 = 10, above node 1's 9, so no
+// copy is made and the busiest stays at 9.
+TEST(Replicas, CostReplicationNearestFollowsTheTraffic)
+{
+    Tiny t = tiny();
+    ASSERT_TRUE(t.grid);
+    double work[2] = {1, 9};
+    uint64_t traffic[2 * RT_CELL_FACES] = {};
+    traffic[0 * RT_CELL_FACES + 1] = 10;  // out of cell 0 through its +x face
+    rt_cost_pilot pilot{{2, 1, 1}, 2, work, traffic, 10, {}};
+    const int two[3] = {2, 1, 1};
+    const int32_t owner[2] = {0, 1};
+    uint32_t first[3];
+    int32_t *extra = nullptr;
+    size_t count = 0;
+    rt_cost_map_facts facts{};
+    char msg[RT_MSG_LEN] = "";
+    ASSERT_EQ(rt_cost_replicate(&pilot, t.scene.get(), t.grid.get(), two, 1, RT_REPLICA_NEAREST, owner, 1.0, nullptr,
+                                first, &extra, &count, &facts, msg, sizeof msg),
+              RT_OK)
+        << msg;
+    EXPECT_EQ(count, 0u);
+    EXPECT_DOUBLE_EQ(facts.max_node_work_us, 9.0);
+    std::free(extra);
 }

@@ -1,7 +1,7 @@
 // replica_choice_test.cpp - which owner of a replicated cell a packet goes to, worked out by hand
 // on a 2x2 torus and a ring of 4 (ReplicaChoice alone), and two 2x2 machines run end to end:
 //   - every cell owned by all four nodes, --replica-choice hash: no packet is ever forwarded, and
-//     each node steps exactly the primaries the hash gives it (counted here pixel by pixel);
+//     each node steps exactly the packets the hash gives it (counted here on the renderer's steps);
 //   - a cyclic table with every cell copied onto the diagonally opposite node, nearest, buffers
 //     of capacity 1 under --flow classes: packets conserved and the renderer's image.
 // Both machines are elaborated side by side and run in one simulation; none sees another.
@@ -24,12 +24,14 @@ using namespace torusrt;
 
 namespace {
 
-rt_packet ray(uint32_t x, uint32_t y, uint16_t depth)
+// A packet of pixel (x, y) at `depth`: a new one, or one a step handed over (forwarded).
+rt_packet ray(uint32_t x, uint32_t y, uint16_t depth, bool handed_over = true)
 {
     rt_packet p{};
     p.x = x;
     p.y = y;
     p.depth = depth;
+    p.handed_over = handed_over;
     return p;
 }
 
@@ -78,7 +80,10 @@ TEST(ReplicaChoice, HashOnATwoByTwoTorus)
     EXPECT_EQ(choice.choose(0, 3, ray(0, 1, 0)), 2);  // index 1
     EXPECT_EQ(choice.choose(0, 3, ray(5, 7, 2)), 3);  // index 2
     EXPECT_EQ(choice.choose(0, 3, ray(3, 2, 1)), 3);  // index 2
-    EXPECT_EQ(choice.choose(2, 3, ray(5, 7, 2)), 2);  // an owner keeps it whatever the hash
+    EXPECT_EQ(choice.choose(2, 3, ray(5, 7, 2)), 2);  // an owner keeps a handed-over packet
+    // A packet a step made in the cell goes where the hash says, even from an owner.
+    EXPECT_EQ(choice.choose(2, 3, ray(5, 7, 2, false)), 3);
+    EXPECT_EQ(choice.choose(3, 3, ray(0, 0, 0, false)), 1);
     // Cell 0 (owners 0, 3): h(1,0,0) mod 2 = 0 -> node 0; h(5,7,2) mod 2 = 0 -> 0; h(3,2,1) odd -> 3.
     EXPECT_EQ(choice.choose(1, 0, ray(1, 0, 0)), 0);
     EXPECT_EQ(choice.choose(1, 0, ray(5, 7, 2)), 0);
@@ -186,18 +191,18 @@ Machine record(Run &r, const rt_scene *scene)
 struct Outcome {
     Machine everywhere, diagonal;
     std::vector<uint8_t> reference;
-    std::vector<uint64_t> hashed_steps;  // per node: the renderer's steps of the pixels hashed to it
+    std::vector<uint64_t> hashed_steps;  // per node: the renderer's steps of the packets hashed to it
     bool built = false;
 };
 
-// Counts a renderer step at the node its pixel's primary enters by the hash rule.
+// Counts a renderer step at the node the hash rule sends its packet to.
 void count_step(void *ctx, uint32_t, const rt_packet *p, const rt_step_result *)
 {
-    (*static_cast<std::vector<uint64_t> *>(ctx))[rt_replica_hash(p->x, p->y, 0) % 4]++;
+    (*static_cast<std::vector<uint64_t> *>(ctx))[rt_replica_hash(p->x, p->y, p->depth) % 4]++;
 }
 
 // The renderer's image (every packet stepped once, the grid walked whole), and per node the
-// steps of the pixels whose primary the hash rule sends there.
+// steps of the packets the hash rule sends there.
 void reference(const rt_scene *scene, const rt_grid *grid, Outcome &out)
 {
     const rt_camera *cam = rt_scene_camera(scene);
@@ -244,8 +249,9 @@ const Outcome &run()
 
 TEST(ReplicaChoice, MachinesBuilt) { ASSERT_TRUE(run().built); }
 
-// Every node holds every cell: a primary enters at the node the hash picks (owners 0..3 in
-// order, so node h mod 4) and never leaves it; its secondaries are stepped where they were made.
+// Every node holds every cell: every packet, primary or made by a step, goes to the node the
+// hash of its pixel and depth picks (owners 0..3 in order, so node h mod 4), and is walked
+// there to its end: nothing is ever forwarded.
 TEST(ReplicaChoice, EveryCellEverywhereKeepsEachRayAtItsHashedNode)
 {
     const Outcome &o = run();
@@ -253,8 +259,8 @@ TEST(ReplicaChoice, EveryCellEverywhereKeepsEachRayAtItsHashedNode)
     EXPECT_TRUE(o.everywhere.conserved);
     EXPECT_EQ(o.everywhere.forwarded, 0u);
     EXPECT_EQ(o.everywhere.image, o.reference);
-    // Each node steps exactly the packets of the pixels hashed to it: the primary and every
-    // descendant, once each. The hash spreads the 16x16 pixels over all four nodes.
+    // Each node steps exactly the packets hashed to it, once each; the hash spreads them over
+    // all four nodes.
     for (int n = 0; n < 4; n++) {
         EXPECT_EQ(o.everywhere.packets_in[n], o.hashed_steps[n]) << "node " << n;
         EXPECT_GT(o.hashed_steps[n], 0u) << "node " << n;
