@@ -10,6 +10,7 @@
 #   finishes with the reference image and packets conserved; --flow none, which is not
 #   deadlock-free, stops there with exit 3 and no image;
 # - --load-map marks the replicated cells (the picture differs from the one without copies);
+# - an animation on a replicated table gives the renderer's frames; --remap with one is refused;
 # - bad version 2 files exit 2 naming FILE:LINE, with no output.
 source "$(dirname "$0")/common.bash" "$@"
 need_exe torusrt-sim torusrt-render
@@ -80,6 +81,23 @@ rm -f "$TMP/none.png"
 rc=$?
 check "flow none q1: exit 3 (got $rc)" test "$rc" = 3
 check "flow none q1: no image" test ! -e "$TMP/none.png"
+
+# An animation keeps a replicated table frame after frame (the renderer's frames); --remap
+# would change the table, and is refused with one (exit 2, no output).
+rm -rf "$TMP/anim" && mkdir "$TMP/anim"
+anim=("$scene" "${size[@]}" --ips 2x2x2)
+if sim_ok anim "${anim[@]}" --map-file "$TMP/nearest.map" --orbit 90 --frames 2 -o "$TMP/anim/f_%d.png" &&
+    "$BUILD/torusrt-render" "$scene" -o "$TMP/anim/r_%d.png" -q "${size[@]}" --orbit 90 --frames 2; then
+    check "animation: frame 0" cmp -s "$TMP/anim/r_0.png" "$TMP/anim/f_0.png"
+    check "animation: frame 1" cmp -s "$TMP/anim/r_1.png" "$TMP/anim/f_1.png"
+fi
+rm -rf "$TMP/out" && mkdir "$TMP/out"
+"$sim" "${anim[@]}" --map-file "$TMP/nearest.map" --orbit 90 --frames 2 --remap every-frame -q \
+    -o "$TMP/out/f_%d.png" --stats "$TMP/out/s.json" >/dev/null 2>"$TMP/remap.stderr"
+rc=$?
+check "remap of a replicated table: exit 2 (got $rc)" test "$rc" = 2
+check "remap of a replicated table: message" grep -q -- "--map-file: a table with replicated cells" "$TMP/remap.stderr"
+check "remap of a replicated table: no output" test -z "$(ls "$TMP/out")"
 
 # Bad version 2 files: FILE:LINE, exit 2, no output.
 bad_map() {
