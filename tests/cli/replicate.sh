@@ -98,6 +98,13 @@ rc=$?
 check "remap of a replicated table: exit 2 (got $rc)" test "$rc" = 2
 check "remap of a replicated table: message" grep -q -- "--map-file: a table with replicated cells" "$TMP/remap.stderr"
 check "remap of a replicated table: no output" test -z "$(ls "$TMP/out")"
+rm -rf "$TMP/out" && mkdir "$TMP/out"
+"$sim" "${anim[@]}" --map cost --replicate 0.5 --orbit 90 --frames 2 --remap every-frame -q \
+    -o "$TMP/out/f_%d.png" --stats "$TMP/out/s.json" >/dev/null 2>"$TMP/remap.stderr"
+rc=$?
+check "--replicate with --remap: exit 2 (got $rc)" test "$rc" = 2
+check "--replicate with --remap: message" grep -q -- "--replicate: not with --remap" "$TMP/remap.stderr"
+check "--replicate with --remap: no output" test -z "$(ls "$TMP/out")"
 
 # Bad version 2 files: FILE:LINE, exit 2, no output.
 bad_map() {

@@ -52,7 +52,6 @@ bad "--pilot-size" --pilot-size 8x8
 bad "--replicate: only with --map cost" --replicate 0.5
 bad "--replicate" --map cost --replicate -1
 bad "--replica-choice" --replica-choice far
-bad "--replicate: not with --remap" --map cost --replicate 0.5 --orbit 90 --frames 2 --remap every-frame
 bad "--queue" --queue 100000001
 bad "--max-depth" --max-depth 1001
 bad "--trace-from" --trace-from 5 --trace-to 4
