@@ -27,6 +27,8 @@
 #include <stdint.h>
 
 #include "rt_grid.h"
+#include "rt_memory.h"
+#include "rt_replicas.h"
 #include "rt_ops.h"
 #include "rt_scene.h"
 #include "rt_status.h"
@@ -80,6 +82,25 @@ rt_status rt_cost_map_folded(const rt_cost_pilot *pilot, const int nodes[3], int
 rt_status rt_cost_remap(const rt_cost_pilot *pilot, const int nodes[3], int torus, double edge_us,
                         const int32_t *old_owner, const double *move_us, int32_t *owner,
                         rt_cost_map_facts *facts, char *msg, size_t msg_len);
+
+/* Copies of the hottest cells on more nodes (docs/cell-mappings.md#replicated-cells), on top of
+ * the one-owner table `owner` of the PX x PY x PZ (node_dims) torus (torus 1) or mesh. Each node
+ * may add `fraction` times its data under `owner` (rt_memory_per_owner_layout with `layout`,
+ * NULL: the default). The prediction gives each owner a share of the cell's work by `rule`:
+ * hash an even split; nearest the part of the pilot's packets entering the cell through its
+ * faces that the rule sends to it (from the neighbouring cell's owner), evenly when none enter.
+ * Greedy: the busiest node's hottest cell (its largest share) gets one more owner, the node that
+ * leaves the busiest of the cell's owners least loaded and has room (ties: the lowest node), if
+ * all of them end below the busiest node's load; a cell no copy helps is left alone, and the
+ * rounds stop when no cell of the busiest node helps.
+ * Fills first[0 .. cells] and sets *extra to a malloc'd array of *extra_count extra owners
+ * (free() it; rt_replicas.h's layout); facts->max_node_work_us (facts may be NULL) becomes the
+ * predicted busiest node's work. fraction 0 gives no copies. RT_ERR_INVALID on bad arguments,
+ * RT_ERR_LIMIT when nodes x objects marks exceed 2^31 bits, RT_ERR_NOMEM; *extra is NULL then. */
+rt_status rt_cost_replicate(const rt_cost_pilot *pilot, const rt_scene *scene, const rt_grid *grid,
+                            const int node_dims[3], int torus, rt_replica_rule rule, const int32_t *owner,
+                            double fraction, const rt_memory_layout *layout, uint32_t *first, int32_t **extra,
+                            size_t *extra_count, rt_cost_map_facts *facts, char *msg, size_t msg_len);
 
 #ifdef __cplusplus
 }

@@ -18,6 +18,7 @@
 #include <stdint.h>
 
 #include "rt_grid.h"
+#include "rt_replicas.h"
 #include "rt_scene.h"
 #include "rt_status.h"
 
@@ -66,6 +67,12 @@ rt_status rt_memory_per_owner_layout(const rt_scene *scene, const rt_grid *grid,
                                      int owners, const rt_memory_layout *layout, rt_memory_use *use);
 rt_memory_use rt_memory_whole_scene_layout(const rt_scene *scene, const rt_grid *grid,
                                            const rt_memory_layout *layout);
+
+/* The same with replicated cells (replicas NULL: none): each owner of a cell, primary or extra,
+ * holds its list and its objects, so a copy is counted at every owner. */
+rt_status rt_memory_per_owner_replicas(const rt_scene *scene, const rt_grid *grid, const int32_t *owner,
+                                       const rt_replicas *replicas, int owners, const rt_memory_layout *layout,
+                                       rt_memory_use *use);
 
 #ifdef __cplusplus
 }

@@ -7,7 +7,8 @@
  *   // r.ops: what it cost; r.contrib: frame-buffer writes; r.created: new packets
  *   // r.fate: absorbed, left, or forwarded (packet updated to its next cell)
  *
- * The packet walks the cells owned by my_id (cell_owner NULL: every cell),
+ * The packet walks the cells owned by my_id (cell_owner NULL: every cell; with
+ * params.replicas, the cells it holds as primary or extra owner),
  * testing each cell's objects. A ray hit is accepted in a cell only if it
  * lies within the cell's t-interval, so the nearest hit equals that of
  * testing every object (params.brute_force does exactly that, ignoring
@@ -27,6 +28,7 @@
 #include "rt_grid.h"
 #include "rt_ops.h"
 #include "rt_packet.h"
+#include "rt_replicas.h"
 #include "rt_scene.h"
 #include "rt_status.h"
 
@@ -45,9 +47,12 @@ typedef struct rt_step_params {
      * the cluster model uses it to charge remote object reads. */
     void (*on_test)(void *ctx, uint32_t object);
     void *on_test_ctx;
+    /* Extra owners of replicated cells (NULL: each cell has only cell_owner[cell]); a packet
+     * keeps walking while my_id holds its cell, as primary or extra owner (rt_replicas.h). */
+    const rt_replicas *replicas;
 } rt_step_params;
 
-/* Defaults: max_depth 8, min_weight 1/512, grid traversal, no callback. */
+/* Defaults: max_depth 8, min_weight 1/512, grid traversal, no callback, no replicas. */
 rt_step_params rt_step_params_default(void);
 
 typedef enum rt_fate {

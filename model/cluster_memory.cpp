@@ -9,13 +9,14 @@
 
 namespace torusrt {
 
-std::vector<uint32_t> cluster_node_objects(const rt_grid *grid, const int32_t *cell_owner, int node)
+std::vector<uint32_t> cluster_node_objects(const rt_grid *grid, const int32_t *cell_owner, int node,
+                                           const rt_replicas *replicas)
 {
     std::vector<bool> seen;
     std::vector<uint32_t> out;
     size_t cells = rt_grid_cell_count(grid);
     for (size_t c = 0; c < cells; c++) {
-        if (cell_owner[c] != node) continue;
+        if (!rt_replicas_holds(replicas, cell_owner, static_cast<uint32_t>(c), node)) continue;
         size_t count = 0;
         const uint32_t *list = rt_grid_cell_objects(grid, c, &count);
         for (size_t i = 0; i < count; i++) {
@@ -37,18 +38,20 @@ int shared_holder(const std::vector<uint32_t> &node_objects, uint32_t object, in
 }
 
 ClusterMemoryFigures cluster_memory_figures(const rt_scene *scene, const rt_grid *grid, const int32_t *cell_owner,
-                                            int nodes, int m, const rt_memory_layout *layout)
+                                            int nodes, int m, const rt_memory_layout *layout,
+                                            const rt_replicas *replicas)
 {
     ClusterMemoryFigures f;
     std::vector<rt_memory_use> use(nodes);
-    if (rt_memory_per_owner_layout(scene, grid, cell_owner, nodes, layout, use.data()) != RT_OK) throw std::bad_alloc();
+    if (rt_memory_per_owner_replicas(scene, grid, cell_owner, replicas, nodes, layout, use.data()) != RT_OK)
+        throw std::bad_alloc();
     f.replicated_per_node.resize(nodes);
     f.shared_per_ip.assign(nodes, std::vector<uint64_t>(m, 0));
     for (int n = 0; n < nodes; n++) {
         f.replicated_per_node[n] = rt_memory_total(&use[n]);
         f.replicated_per_processor = std::max(f.replicated_per_processor, f.replicated_per_node[n]);
         f.shared_list_bytes = std::max(f.shared_list_bytes, use[n].list_bytes);
-        std::vector<uint32_t> objects = cluster_node_objects(grid, cell_owner, n);
+        std::vector<uint32_t> objects = cluster_node_objects(grid, cell_owner, n, replicas);
         std::vector<std::unordered_set<const rt_material *>> materials(m);
         for (size_t j = 0; j < objects.size(); j++) {
             int k = static_cast<int>(j % m);

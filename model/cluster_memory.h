@@ -27,7 +27,9 @@
 namespace torusrt {
 
 // Objects listed in any cell with cell_owner == node, once each, ascending.
-std::vector<uint32_t> cluster_node_objects(const rt_grid *grid, const int32_t *cell_owner, int node);
+// With `replicas`, the cells it holds as an extra owner too.
+std::vector<uint32_t> cluster_node_objects(const rt_grid *grid, const int32_t *cell_owner, int node,
+                                           const rt_replicas *replicas = nullptr);
 
 // Which processor (0..m-1) of the node holds `object` under the placement rule; -1 if the node's
 // cells do not list it. `node_objects` as from cluster_node_objects.
@@ -43,8 +45,8 @@ struct ClusterMemoryFigures {
 
 // Figures for `nodes` nodes of `m` processors each. Throws std::bad_alloc when memory runs out.
 ClusterMemoryFigures cluster_memory_figures(const rt_scene *scene, const rt_grid *grid, const int32_t *cell_owner,
-                                            int nodes, int m,
-                                            const rt_memory_layout *layout = nullptr);
+                                            int nodes, int m, const rt_memory_layout *layout = nullptr,
+                                            const rt_replicas *replicas = nullptr);
 
 // The report's `memory` section for a clustered run: max_per_ip_bytes and total_bytes for the
 // configured data mode, both modes' figures, and pixel_partitioned_bytes as passed in.

@@ -10,9 +10,9 @@ namespace torusrt {
 
 ClusterNode::ClusterNode(sc_core::sc_module_name name, const MachineConfig &config, const rt_scene *scene,
                          const rt_grid *grid, const int32_t *cell_owner, int node, PacketLedger &ledger,
-                         PacketPool *pool, PrimarySource *primaries)
+                         PacketPool *pool, PrimarySource *primaries, const ReplicaChoice *replicas)
     : sc_module(name), from_comm_unit("from_comm_unit"), to_comm_unit("to_comm_unit"), m_node(node),
-      m_node_objects(cluster_node_objects(grid, cell_owner, node))
+      m_node_objects(cluster_node_objects(grid, cell_owner, node, replicas ? replicas->table() : nullptr))
 {
     from_comm_unit.bind(*this);
     int m = config.cluster;
@@ -29,6 +29,7 @@ ClusterNode::ClusterNode(sc_core::sc_module_name name, const MachineConfig &conf
         int global = node * m + k;
         ProcessorSetup setup;
         setup.pool = pool;
+        setup.replicas = replicas ? replicas->table() : nullptr;
         auto ip = std::make_unique<IntersectionProcessor>(("ip_" + std::to_string(global)).c_str(), config, scene, grid,
                                                           cell_owner, node, global, ledger, setup);
         auto mem = std::make_unique<TwoPortMemory>(("mem_" + std::to_string(k)).c_str(), config.timing, m_node_objects,

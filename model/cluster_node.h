@@ -18,6 +18,7 @@
 
 #include "bus_arbiter.h"
 #include "cluster_bus.h"
+#include "replica_choice.h"
 #include "cluster_dispatch.h"
 #include "intersection_processor.h"
 #include "packet_ledger.h"
@@ -39,7 +40,7 @@ class ClusterNode : public sc_core::sc_module, public PacketSinkIf {
     // dispatcher takes (null: none).
     ClusterNode(sc_core::sc_module_name name, const MachineConfig &config, const rt_scene *scene, const rt_grid *grid,
                 const int32_t *cell_owner, int node, PacketLedger &ledger, PacketPool *pool = nullptr,
-                PrimarySource *primaries = nullptr);
+                PrimarySource *primaries = nullptr, const ReplicaChoice *replicas = nullptr);
     ~ClusterNode() override;
 
     void accept(const TimedPacket &p) override;

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "flow_control.h"
+#include "replica_choice.h"
 #include "rt_step.h"
 #include "sim_now.h"
 #include "timed_packet.h"
@@ -27,7 +28,7 @@ CommUnit::CommUnit(sc_core::sc_module_name name, int node, const Routing &routin
                    const int32_t *cell_owner, const Setup &setup)
     : sc_module(name), link_in("link_in", neighbours(routing, node)), in("in"), local("local"),
       link_out("link_out"), m_lookahead(setup.lookahead), m_route_at_once(setup.route_at_once), m_node(node),
-      m_flow(setup.flow), m_routing(routing), m_grid(grid), m_owner(cell_owner)
+      m_flow(setup.flow), m_routing(routing), m_grid(grid), m_owner(cell_owner), m_replicas(setup.replicas)
 {
     if (setup.pool) m_pool = setup.pool;
     if (setup.calendar) {
@@ -78,7 +79,11 @@ void CommUnit::connect_link(int dir, ToroidalLink &link, CommUnit &receiver)
     link.socket.bind(receiver.next_link_in());
 }
 
-int CommUnit::owner_of(const TimedPacket &p) const { return m_owner[rt_packet_cell(m_grid, &p.packet)]; }
+int CommUnit::owner_of(const TimedPacket &p) const
+{
+    uint32_t cell = rt_packet_cell(m_grid, &p.packet);
+    return m_replicas ? m_replicas->choose(m_node, cell, p.packet) : m_owner[cell];
+}
 
 CommUnit::Hop CommUnit::next_hop(TimedPacket &p, int owner)
 {

@@ -57,6 +57,8 @@
 
 namespace torusrt {
 
+class ReplicaChoice;
+
 // The machine's choices for this unit, fixed at elaboration; a unit alone takes the defaults.
 struct CommUnitSetup {
     FlowControl flow = FlowControl::none;          // the flow-control scheme (virtual channels)
@@ -71,6 +73,8 @@ struct CommUnitSetup {
     // for a flat approximately-timed machine with a positive link time and unbounded buffers,
     // where the processor hands over after the deliveries of its time, so the order is the same.
     bool route_at_once = false;
+    // Which owner of a replicated cell a packet goes to (null: no cell is replicated).
+    const ReplicaChoice *replicas = nullptr;
 };
 
 class CommUnit final : public sc_core::sc_module, public PacketSinkIf, public DeliveryRoundIf,
@@ -203,6 +207,7 @@ class CommUnit final : public sc_core::sc_module, public PacketSinkIf, public De
     const Routing &m_routing;
     const rt_grid *m_grid;
     const int32_t *m_owner;
+    const ReplicaChoice *m_replicas;
     PacketSinkIf *m_local_sink = nullptr; // what `local` is bound to (from the start of simulation)
     // Per incoming-link socket, what it is bound to (a crossing's target).
     std::array<LinkInput, kDirections> m_inputs;

@@ -6,10 +6,10 @@
 namespace torusrt {
 
 Host::Host(sc_core::sc_module_name name, const MachineConfig &config, const rt_scene *scene, const rt_grid *grid,
-           const int32_t *cell_owner, PacketLedger &ledger)
+           const int32_t *cell_owner, PacketLedger &ledger, const ReplicaChoice *replicas)
     : sc_module(name), fb_socket("fb_socket"), m_scene(scene), m_ledger(ledger),
       m_primaries(scene, grid, cell_owner, config.node_count(),
-                  sc_core::sc_time(config.timing.host_inject_us, sc_core::SC_US))
+                  sc_core::sc_time(config.timing.host_inject_us, sc_core::SC_US), replicas)
 {
     count_primaries();
     SC_HAS_PROCESS(Host);

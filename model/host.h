@@ -13,6 +13,7 @@
 #include "module_stats.h"
 #include "packet_ledger.h"
 #include "primary_source.h"
+#include "replica_choice.h"
 #include "rt_grid.h"
 #include "rt_scene.h"
 #include "sim_config.h"
@@ -24,7 +25,7 @@ class Host : public sc_core::sc_module {
     tlm_utils::simple_initiator_socket<Host> fb_socket;         // background of missed rays
 
     Host(sc_core::sc_module_name name, const MachineConfig &config, const rt_scene *scene, const rt_grid *grid,
-         const int32_t *cell_owner, PacketLedger &ledger);
+         const int32_t *cell_owner, PacketLedger &ledger, const ReplicaChoice *replicas = nullptr);
 
     PrimarySource &primaries() { return m_primaries; }
     // Between frames of an animation (no packet outstanding): plans the next frame's primaries

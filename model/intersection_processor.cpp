@@ -20,6 +20,7 @@ IntersectionProcessor::IntersectionProcessor(sc_core::sc_module_name name, const
       m_queue(std::string(basename()) + ".queue", config.queue_capacity), m_threaded(config.cluster > 1)
 {
     in.bind(*this);
+    m_params.replicas = setup.replicas;
     if (rt_step_result_init(&m_result, scene) != RT_OK) throw std::bad_alloc();
     if (setup.calendar) {
         m_calendar = setup.calendar;

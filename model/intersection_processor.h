@@ -70,6 +70,8 @@ struct ProcessorSetup {
     // The host's primaries that enter at this processor's node (null: none, as in a cluster,
     // whose dispatcher takes them).
     PrimarySource *primaries = nullptr;
+    // Extra owners of replicated cells, for the step (null: none).
+    const rt_replicas *replicas = nullptr;
 };
 
 class IntersectionProcessor : public PacketSinkIf, public WakeCalendar::Client, public PacketQueue::Reader,

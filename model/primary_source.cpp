@@ -9,8 +9,8 @@
 namespace torusrt {
 
 PrimarySource::PrimarySource(const rt_scene *scene, const rt_grid *grid, const int32_t *owner, int nodes,
-                             const sc_core::sc_time &inject)
-    : m_scene(scene), m_grid(grid), m_inject(inject), m_pixels(nodes), m_next(nodes, 0)
+                             const sc_core::sc_time &inject, const ReplicaChoice *replicas)
+    : m_scene(scene), m_grid(grid), m_replicas(replicas), m_inject(inject), m_pixels(nodes), m_next(nodes, 0)
 {
     plan(owner);
 }
@@ -39,7 +39,8 @@ void PrimarySource::plan(const int32_t *owner)
                 m_missed.push_back(pixel);
                 continue;
             }
-            m_pixels[owner[rt_packet_cell(m_grid, &p)]].push_back(pixel);
+            uint32_t cell = rt_packet_cell(m_grid, &p);
+            m_pixels[m_replicas ? m_replicas->choose(-1, cell, p) : owner[cell]].push_back(pixel);
             m_entering++;
         }
 }

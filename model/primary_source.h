@@ -10,6 +10,7 @@
 #include <systemc>
 #include <vector>
 
+#include "replica_choice.h"
 #include "rt_grid.h"
 #include "rt_scene.h"
 #include "timed_packet.h"
@@ -18,9 +19,10 @@ namespace torusrt {
 
 class PrimarySource {
   public:
-    // `owner` maps a cell to its node; `nodes` entry nodes; `inject` = host time per pixel.
+    // `owner` maps a cell to its node; `nodes` entry nodes; `inject` = host time per pixel;
+    // `replicas` picks the entry node of a primary entering a replicated cell (null: owner).
     PrimarySource(const rt_scene *scene, const rt_grid *grid, const int32_t *owner, int nodes,
-                  const sc_core::sc_time &inject);
+                  const sc_core::sc_time &inject, const ReplicaChoice *replicas = nullptr);
 
     // Pixels whose ray misses the space (the host writes their background).
     const std::vector<uint32_t> &missed() const { return m_missed; }
@@ -46,6 +48,7 @@ class PrimarySource {
 
     const rt_scene *m_scene;
     const rt_grid *m_grid;
+    const ReplicaChoice *m_replicas;
     sc_core::sc_time m_inject;
     sc_core::sc_time m_offset = sc_core::SC_ZERO_TIME;
     uint32_t m_width = 0;

@@ -13,6 +13,7 @@
 #include "rt_budget.h"
 #include "rt_mapping.h"
 #include "rt_memory.h"
+#include "rt_replicas.h"
 #include "rt_step.h"
 #include "rt_timing.h"
 
@@ -33,6 +34,7 @@ enum class Topology { torus, mesh };
 enum class TimingStyle { at, lt };
 enum class DataMode { replicated, shared };
 enum class FlowControl { none, classes }; // see flow_control.h
+enum class ReplicaRule { nearest, hash }; // see replica_choice.h
 
 // The names the options take and the reports print (the arbiter and dispatch policies are
 // named by their registries, bus_arbiter.h and cluster_dispatch.h).
@@ -40,6 +42,8 @@ constexpr NamedValue<Topology> kTopologyNames[] = {{Topology::torus, "torus"}, {
 constexpr NamedValue<TimingStyle> kStyleNames[] = {{TimingStyle::at, "at"}, {TimingStyle::lt, "lt"}};
 constexpr NamedValue<DataMode> kDataModeNames[] = {{DataMode::replicated, "replicated"}, {DataMode::shared, "shared"}};
 constexpr NamedValue<FlowControl> kFlowNames[] = {{FlowControl::classes, "classes"}, {FlowControl::none, "none"}};
+constexpr NamedValue<ReplicaRule> kReplicaRuleNames[] = {{ReplicaRule::nearest, "nearest"},
+                                                         {ReplicaRule::hash, "hash"}};
 constexpr NamedValue<rt_map_kind> kMappingNames[] = {{RT_MAP_BLOCK, "block"},
                                                     {RT_MAP_CYCLIC, "cyclic"},
                                                     {RT_MAP_BLOCK_CYCLIC, "block-cyclic"},
@@ -57,6 +61,8 @@ struct MachineConfig {
     int block = 1;                          // block size of block-cyclic, K of cost:K
     std::string map_file;                   // --map-file: explicit cell -> node table
     std::array<unsigned, 2> pilot_size{0, 0}; // --pilot-size for --map cost (0 = the image's)
+    double replicate = 0;                   // --replicate: extra memory per node for replicas (fraction)
+    ReplicaRule replica_choice = ReplicaRule::nearest; // which owner of a replicated cell a packet goes to
     unsigned queue_capacity = 0;            // packets per buffer (per class), 0 = unbounded
     FlowControl flow = FlowControl::classes; // deadlock-free class split, or one class (none)
     rt_timing timing{};                     // operation and transfer times
@@ -97,6 +103,13 @@ struct RunOptions {
 // A run of a machine, with the cell -> node table prepared for it (prepare_mapping).
 struct SimConfig : MachineConfig, RunOptions {
     std::vector<int32_t> owner_table;       // node of every cell (empty: rt_mapping_fill)
+    // Extra owners of replicated cells (rt_replicas.h; both empty: none): per cell, cells + 1
+    // offsets into replica_extra.
+    std::vector<uint32_t> replica_first;
+    std::vector<int32_t> replica_extra;
+    bool replicated() const { return !replica_extra.empty(); }
+    // The table as the kernel reads it (replicated() only).
+    rt_replicas replica_table() const { return {replica_first.data(), replica_extra.data()}; }
 };
 
 // The one validator (config_validation.cpp): every range and every combination of settings,
@@ -110,5 +123,6 @@ inline const char *topology_name(Topology t) { return name_in(kTopologyNames, t)
 inline const char *style_name(TimingStyle s) { return name_in(kStyleNames, s); }
 inline const char *data_mode_name(DataMode d) { return name_in(kDataModeNames, d); }
 inline const char *flow_name(FlowControl f) { return name_in(kFlowNames, f); }
+inline const char *replica_rule_name(ReplicaRule r) { return name_in(kReplicaRuleNames, r); }
 
 }  // namespace torusrt

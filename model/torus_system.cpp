@@ -10,9 +10,12 @@ namespace torusrt {
 
 TorusSystem::TorusSystem(sc_core::sc_module_name name, const MachineConfig &config, const rt_scene *scene,
                          const rt_grid *grid, const int32_t *cell_owner, PacketLedger &ledger,
-                         rt_framebuffer *fb, HandOverTiming hand_over)
+                         rt_framebuffer *fb, HandOverTiming hand_over, const rt_replicas *replicas)
     : sc_module(name), m_routing(config.ips, config.topology == Topology::torus)
 {
+    if (replicas)
+        m_replica_choice = std::make_unique<ReplicaChoice>(cell_owner, *replicas, m_routing, config.replica_choice);
+    const ReplicaChoice *choice = m_replica_choice.get();
     int nodes = config.node_count();
     sc_core::sc_time lookahead = config.style == TimingStyle::lt ? sc_core::sc_time(config.quantum_us, sc_core::SC_US)
                                                                  : sc_core::SC_ZERO_TIME;
@@ -32,17 +35,17 @@ TorusSystem::TorusSystem(sc_core::sc_module_name name, const MachineConfig &conf
     bool at_once = hand_over == HandOverTiming::at_once && order_free && config.queue_capacity == 0;
     if (config.cluster == 1) m_activations = std::make_unique<ActivationQueue>("activations");
     m_fb = std::make_unique<FrameBuffer>("fb", fb);
-    m_host = std::make_unique<Host>("host", config, scene, grid, cell_owner, ledger);
+    m_host = std::make_unique<Host>("host", config, scene, grid, cell_owner, ledger, choice);
     m_host->fb_socket.bind(m_fb->socket);
     for (int n = 0; n < nodes; n++) {
         // Built node by node: the calendar's order of simultaneous wakes.
-        CommUnit::Setup setup{config.flow, lookahead, &m_pool, m_calendar.get(), at_once};
+        CommUnit::Setup setup{config.flow, lookahead, &m_pool, m_calendar.get(), at_once, choice};
         m_comm.push_back(
             std::make_unique<CommUnit>(("cu_" + std::to_string(n)).c_str(), n, m_routing, grid, cell_owner, setup));
         if (config.cluster == 1) {
             // Built after its node's comm unit: the calendar's order.
             ProcessorSetup ip_setup{m_calendar.get(), m_activations.get(), at_once ? m_comm[n].get() : nullptr, &m_pool,
-                                    &m_host->primaries()};
+                                    &m_host->primaries(), choice ? choice->table() : nullptr};
             auto ip = std::make_unique<IntersectionProcessor>(("ip_" + std::to_string(n)).c_str(), config, scene,
                                                               grid, cell_owner, n, n, ledger, ip_setup);
             ip->out.bind(m_comm[n]->in);
@@ -51,7 +54,7 @@ TorusSystem::TorusSystem(sc_core::sc_module_name name, const MachineConfig &conf
             m_ips.push_back(std::move(ip));
         } else {
             auto cl = std::make_unique<ClusterNode>(("cluster_" + std::to_string(n)).c_str(), config, scene, grid,
-                                                    cell_owner, n, ledger, &m_pool, &m_host->primaries());
+                                                    cell_owner, n, ledger, &m_pool, &m_host->primaries(), choice);
             cl->to_comm_unit.bind(m_comm[n]->in);
             for (auto *p : cl->processors()) p->fb_socket.bind(m_fb->socket);
             m_comm[n]->local.bind(cl->from_comm_unit);

@@ -16,6 +16,7 @@
 #include "packet_ledger.h"
 #include "packet_pool.h"
 #include "queue_registry.h"
+#include "replica_choice.h"
 #include "routing.h"
 #include "sim_config.h"
 #include "toroidal_link.h"
@@ -36,7 +37,7 @@ class TorusSystem : public sc_core::sc_module {
   public:
     TorusSystem(sc_core::sc_module_name name, const MachineConfig &config, const rt_scene *scene,
                 const rt_grid *grid, const int32_t *cell_owner, PacketLedger &ledger, rt_framebuffer *fb,
-                HandOverTiming hand_over = HandOverTiming::at_once);
+                HandOverTiming hand_over = HandOverTiming::at_once, const rt_replicas *replicas = nullptr);
     ~TorusSystem() override;
 
     const Routing &routing() const { return m_routing; }
@@ -55,6 +56,7 @@ class TorusSystem : public sc_core::sc_module {
 
   private:
     Routing m_routing;
+    std::unique_ptr<ReplicaChoice> m_replica_choice; // replicated cells' destinations (null: none)
     PacketPool m_pool; // every packet on the network, by handle (comm units, links, input queues)
     TransactionPool m_transactions; // the links' crossings (one at a time: one transaction, hot)
     std::unique_ptr<ActivationQueue> m_activations; // flat processors' state machines, when woken

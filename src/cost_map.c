@@ -7,6 +7,7 @@
 
 #include <scotch.h>
 
+#include "cost_internal.h"
 #include "rt_cost_map.h"
 
 /* Integer weights: the largest weight and the largest weight total Scotch gets. */
@@ -27,7 +28,7 @@ static void graph_free(cell_graph *g)
 }
 
 /* Neighbour of cell c through face f, -1 at the grid's boundary. */
-static long neighbour(const int d[3], long c, int f)
+long rt_cost_neighbour(const int d[3], long c, int f)
 {
     long x = c % d[0], y = c / d[0] % d[1], z = c / ((long)d[0] * d[1]);
     long p[3] = {x, y, z};
@@ -58,7 +59,7 @@ static rt_status build_graph(const rt_cost_pilot *p, double edge_us, cell_graph 
         wmax = fmax(wmax, p->work_us[c]);
         wsum += p->work_us[c];
         for (int f = 0; f < RT_CELL_FACES; f++) {
-            long nb = neighbour(p->dims, c, f);
+            long nb = rt_cost_neighbour(p->dims, c, f);
             if (nb < 0) continue;
             double e = face_packets(p, c, f, nb) * edge_us;
             emax = fmax(emax, e);
@@ -78,7 +79,7 @@ static rt_status build_graph(const rt_cost_pilot *p, double edge_us, cell_graph 
         g->verttab[c] = e;
         g->velotab[c] = scaled(p->work_us[c], scale);
         for (int f = 0; f < RT_CELL_FACES; f++) {
-            long nb = neighbour(p->dims, c, f);
+            long nb = rt_cost_neighbour(p->dims, c, f);
             if (nb < 0) continue;
             g->edgetab[e] = (SCOTCH_Num)nb;
             g->edlotab[e++] = scaled(face_packets(p, c, f, nb) * edge_us, scale);
@@ -174,7 +175,7 @@ static rt_status scotch_map(cell_graph *g, const int nodes[3], int torus, const 
 }
 
 /* Hops between two nodes on the torus or mesh. */
-static int hops(const int n[3], int torus, int a, int b)
+int rt_cost_hops(const int n[3], int torus, int a, int b)
 {
     int h = 0;
     for (int k = 0; k < 3; k++) {
@@ -196,11 +197,11 @@ static void map_facts(const rt_cost_pilot *p, const int nodes[3], int torus, con
     for (long c = 0; c < (long)p->cells; c++) {
         work[owner[c]] += p->work_us[c];
         for (int f = 1; f < RT_CELL_FACES; f += 2) { /* each face once */
-            long nb = neighbour(p->dims, c, f);
+            long nb = rt_cost_neighbour(p->dims, c, f);
             if (nb < 0 || owner[nb] == owner[c]) continue;
             double k = face_packets(p, c, f, nb);
             facts->cut_packets += k;
-            facts->cut_hops += k * hops(nodes, torus, owner[c], owner[nb]);
+            facts->cut_hops += k * rt_cost_hops(nodes, torus, owner[c], owner[nb]);
         }
     }
     for (int i = 0; i < n; i++) facts->max_node_work_us = fmax(facts->max_node_work_us, work[i]);

@@ -14,10 +14,41 @@ typedef struct {
 
 void rt_node_work(const int d[3], const double *work, const int32_t *owner, int nodes, double *node_us)
 {
+    rt_node_work_replicas(d, work, owner, NULL, nodes, node_us);
+}
+
+void rt_node_work_replicas(const int d[3], const double *work, const int32_t *owner, const rt_replicas *replicas,
+                           int nodes, double *node_us)
+{
     for (int n = 0; n < nodes; n++) node_us[n] = 0;
     size_t cells = (size_t)d[0] * d[1] * d[2];
-    for (size_t i = 0; i < cells; i++)
-        if (owner[i] >= 0 && owner[i] < nodes) node_us[owner[i]] += work[i];
+    for (uint32_t i = 0; i < (uint32_t)cells; i++) {
+        uint32_t extras = rt_replicas_extra_count(replicas, i);
+        double share = work[i] / (extras + 1);
+        if (owner[i] >= 0 && owner[i] < nodes) node_us[owner[i]] += share;
+        for (uint32_t k = 0; k < extras; k++) {
+            int32_t o = replicas->extra[replicas->first[i] + k];
+            if (o >= 0 && o < nodes) node_us[o] += share;
+        }
+    }
+}
+
+/* The replica mark: a white diagonal with a black edge, top left to bottom right of a cell. */
+static void mark_replicated(rt_canvas *c, int x, int y, int s)
+{
+    const uint8_t white[3] = {255, 255, 255};
+    for (int k = 0; k < s; k++) {
+        rt_canvas_rect(c, x + k, y + k, 1, 1, white);
+        if (k + 1 < s) rt_canvas_rect(c, x + k + 1, y + k, 1, 1, black);
+    }
+}
+
+/* 1 if any cell of column (x, y) has an extra owner. */
+static int column_replicated(const int d[3], const rt_replicas *replicas, int x, int y)
+{
+    for (int z = 0; replicas && z < d[2]; z++)
+        if (rt_replicas_extra_count(replicas, (uint32_t)(x + d[0] * (y + (size_t)d[1] * z)))) return 1;
+    return 0;
 }
 
 static int busiest_first(const void *a, const void *b)
@@ -28,7 +59,8 @@ static int busiest_first(const void *a, const void *b)
 }
 
 /* Panel 1: the work summed along z over x (right) and y (down), with its colour bar. */
-static void draw_cells(rt_canvas *c, const int d[3], const double *work, int x0, int y0, int s, double *plane)
+static void draw_cells(rt_canvas *c, const int d[3], const double *work, const rt_replicas *replicas, int x0, int y0,
+                       int s, double *plane)
 {
     double hi = 0;
     for (int i = 0; i < d[0] * d[1]; i++) plane[i] = 0;
@@ -40,8 +72,10 @@ static void draw_cells(rt_canvas *c, const int d[3], const double *work, int x0,
         for (int x = 0; x < d[0]; x++) {
             rt_heat_colour(hi > 0 ? plane[x + d[0] * y] / hi : 0, col);
             rt_canvas_rect(c, x0 + x * s, y0 + y * s, s, s, col);
+            if (column_replicated(d, replicas, x, y)) mark_replicated(c, x0 + x * s, y0 + y * s, s);
         }
     rt_canvas_text(c, x0, y0 - 14, 2, "work per cell, sum over z", black);
+    if (replicas) rt_canvas_text(c, x0, y0 - 22, 1, "white diagonal: a column holding a replicated cell", black);
     rt_canvas_heat_bar(c, x0 + d[0] * s + 8, y0, 14, d[1] * s, 0.0, hi, "us");
 }
 
@@ -61,7 +95,8 @@ static void draw_axes(rt_canvas *c, const int d[3], int x0, int y0, int s)
 }
 
 /* Panel 2: the owners of slice z, a line between cells of different owners, numbers that fit. */
-static void draw_owners(rt_canvas *c, const int d[3], const int32_t *owner, int z, int x0, int y0, int s)
+static void draw_owners(rt_canvas *c, const int d[3], const int32_t *owner, const rt_replicas *replicas, int z, int x0,
+                        int y0, int s)
 {
     uint8_t col[3];
     char label[32];
@@ -86,8 +121,11 @@ static void draw_owners(rt_canvas *c, const int d[3], const int32_t *owner, int 
                 rt_canvas_rect(c, x0 + (x + 1) * s - 1, y0 + y * s, 2, s, black);
             if (y + 1 < d[1] && slice[x + d[0] * (y + 1)] != o)
                 rt_canvas_rect(c, x0 + x * s, y0 + (y + 1) * s - 1, s, 2, black);
+            if (rt_replicas_extra_count(replicas, (uint32_t)(x + d[0] * (y + (size_t)d[1] * z))))
+                mark_replicated(c, x0 + x * s, y0 + y * s, s);
         }
     snprintf(label, sizeof label, "owners of slice z=%d", z);
+    if (replicas) rt_canvas_text(c, x0, y0 - 22, 1, "white diagonal: a replicated cell", black);
     rt_canvas_text(c, x0, y0 - 14, 2, label, black);
 }
 
@@ -127,6 +165,12 @@ static void draw_nodes(rt_canvas *c, const node_load *load, int nodes, int x0, i
 
 rt_canvas *rt_load_map_draw(const int d[3], const double *work, const int32_t *owner, int nodes)
 {
+    return rt_load_map_draw_replicas(d, work, owner, NULL, nodes);
+}
+
+rt_canvas *rt_load_map_draw_replicas(const int d[3], const double *work, const int32_t *owner,
+                                     const rt_replicas *replicas, int nodes)
+{
     size_t cells = (size_t)d[0] * d[1] * d[2];
     int big = d[0] > d[1] ? d[0] : d[1];
     if (cells == 0 || nodes < 1) return NULL;
@@ -140,12 +184,12 @@ rt_canvas *rt_load_map_draw(const int d[3], const double *work, const int32_t *o
     node_load *load = malloc(sizeof(node_load) * (size_t)nodes);
     rt_canvas *c = plane && node_us && load ? rt_canvas_new(width, chart_y + (uint32_t)chart_h + 20) : NULL;
     if (c) {
-        rt_node_work(d, work, owner, nodes, node_us);
+        rt_node_work_replicas(d, work, owner, replicas, nodes, node_us);
         for (int n = 0; n < nodes; n++) load[n] = (node_load){node_us[n], n};
         qsort(load, (size_t)nodes, sizeof *load, busiest_first);
-        draw_cells(c, d, work, left, top, s, plane);
+        draw_cells(c, d, work, replicas, left, top, s, plane);
         draw_axes(c, d, left, top, s);
-        draw_owners(c, d, owner, d[2] / 2, x2, top, s);
+        draw_owners(c, d, owner, replicas, d[2] / 2, x2, top, s);
         draw_axes(c, d, x2, top, s);
         draw_nodes(c, load, nodes, left, (int)chart_y, (int)width - left - 130, chart_h);
     }

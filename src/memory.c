@@ -26,6 +26,21 @@ rt_memory_use rt_memory_whole_scene(const rt_scene *scene, const rt_grid *grid)
 rt_status rt_memory_per_owner_layout(const rt_scene *scene, const rt_grid *grid, const int32_t *owner,
                                      int owners, const rt_memory_layout *layout, rt_memory_use *use)
 {
+    return rt_memory_per_owner_replicas(scene, grid, owner, NULL, owners, layout, use);
+}
+
+/* Adds one (owner, cell) pair to the grouping: counting (by_owner NULL) or placing. */
+static void group_pair(int32_t o, uint32_t c, int owners, size_t *start, uint32_t *by_owner)
+{
+    if (o < 0 || o >= owners) return;
+    if (by_owner) by_owner[start[o]++] = c;
+    else start[o + 1]++;
+}
+
+rt_status rt_memory_per_owner_replicas(const rt_scene *scene, const rt_grid *grid, const int32_t *owner,
+                                       const rt_replicas *replicas, int owners, const rt_memory_layout *layout,
+                                       rt_memory_use *use)
+{
     rt_memory_layout l = layout ? *layout : rt_memory_layout_default();
     if (!scene || !grid || !owner || !use || owners < 1) return RT_ERR_INVALID;
     /* The grid must have been built from this scene. */
@@ -33,10 +48,12 @@ rt_status rt_memory_per_owner_layout(const rt_scene *scene, const rt_grid *grid,
     size_t cells = rt_grid_cell_count(grid), n = scene->object_count;
     for (int o = 0; o < owners; o++) use[o] = (rt_memory_use){0, 0, 0, 0};
 
-    /* Cells grouped by owner (counting sort), so each owner's objects can be
-     * de-duplicated with a single "last owner seen" stamp per object. */
+    /* (owner, cell) pairs grouped by owner (counting sort), so each owner's objects can be
+     * de-duplicated with a single "last owner seen" stamp per object; a replicated cell is in
+     * the group of every one of its owners. */
+    size_t pairs = cells + (replicas ? replicas->first[cells] : 0);
     size_t *start = calloc((size_t)owners + 1, sizeof *start);
-    uint32_t *by_owner = malloc((cells ? cells : 1) * sizeof *by_owner);
+    uint32_t *by_owner = malloc((pairs ? pairs : 1) * sizeof *by_owner);
     int32_t *obj_seen = malloc((n ? n : 1) * sizeof *obj_seen);
     int32_t *mat_seen = malloc((scene->material_count ? scene->material_count : 1) * sizeof *mat_seen);
     if (!start || !by_owner || !obj_seen || !mat_seen) {
@@ -46,11 +63,16 @@ rt_status rt_memory_per_owner_layout(const rt_scene *scene, const rt_grid *grid,
         free(mat_seen);
         return RT_ERR_NOMEM;
     }
-    for (size_t c = 0; c < cells; c++)
-        if (owner[c] >= 0 && owner[c] < owners) start[owner[c] + 1]++;
-    for (int o = 0; o < owners; o++) start[o + 1] += start[o];
-    for (size_t c = 0; c < cells; c++)
-        if (owner[c] >= 0 && owner[c] < owners) by_owner[start[owner[c]]++] = (uint32_t)c;
+    for (int pass = 0; pass < 2; pass++) {
+        uint32_t *place = pass ? by_owner : NULL;
+        for (uint32_t c = 0; c < (uint32_t)cells; c++) {
+            group_pair(owner[c], c, owners, start, place);
+            for (uint32_t k = 0; k < rt_replicas_extra_count(replicas, c); k++)
+                group_pair(replicas->extra[replicas->first[c] + k], c, owners, start, place);
+        }
+        if (!pass)
+            for (int o = 0; o < owners; o++) start[o + 1] += start[o];
+    }
     /* The fill pass moved each start to the next owner's: shift back. */
     for (int o = owners; o > 0; o--) start[o] = start[o - 1];
     start[0] = 0;

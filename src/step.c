@@ -317,7 +317,8 @@ rt_status rt_step(const rt_scene *scene, const rt_grid *grid, const int32_t *cel
         if (p->dda.cell[a] < 0 || p->dda.cell[a] >= grid->dims[a]) return RT_ERR_INVALID;
 
     uint32_t cell = rt_grid_index(grid->dims, p->dda.cell);
-    if (cell_owner && cell_owner[cell] != my_id) { /* not ours: pass it on untouched */
+    /* Not ours: pass it on untouched. The replica table is read only off the primary owner. */
+    if (cell_owner && cell_owner[cell] != my_id && !rt_replicas_holds(params->replicas, cell_owner, cell, my_id)) {
         hand_over(p, cell, out);
         return RT_OK;
     }
@@ -352,7 +353,7 @@ rt_status rt_step(const rt_scene *scene, const rt_grid *grid, const int32_t *cel
             return RT_OK;
         }
         cell = rt_grid_index(grid->dims, p->dda.cell);
-        if (cell_owner && cell_owner[cell] != my_id) {
+        if (cell_owner && cell_owner[cell] != my_id && !rt_replicas_holds(params->replicas, cell_owner, cell, my_id)) {
             hand_over(p, cell, out);
             return RT_OK;
         }

@@ -211,6 +211,8 @@ int run(CommandLine &cl, double wall_start)
     check_animation(cl, request);
     check_config(cl, request);
     const SimConfig &config = request.config;
+    if (config.replicate > 0 && request.remap != RemapPolicy::static_map)
+        throw UserError("--replicate: not with --remap (a remapped table keeps one owner per cell)", 2);
     warn_about_settings("torusrt-sim", config.step, config.quiet);
     if (config.style == TimingStyle::lt && config.quantum_us == 0 && !config.quiet)
         std::fprintf(stderr, "torusrt-sim: warning: --style lt without --quantum: a quantum of 0 synchronises at "

@@ -11,7 +11,7 @@ import tomllib
 DUMP_ORDER = ("ips", "map", "topology", "cells", "preprocess-count", "queue", "flow", "timing-profile", "timing",
               "timing-values", "link-us", "packet-bytes", "link-bytes-per-us", "max-depth", "min-weight", "style",
               "quantum", "cluster", "data", "arbiter", "dispatch", "cell-header-bytes", "list-entry-bytes",
-              "object-record-bytes", "map-file", "pilot-size")
+              "object-record-bytes", "map-file", "pilot-size", "replicate", "replica-choice")
 
 
 def from_report(report):

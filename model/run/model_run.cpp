@@ -122,6 +122,9 @@ double one_processor_time(const SimConfig &config, const rt_scene *scene, const 
     one.cluster = 1;
     one.mapping = RT_MAP_BLOCK; // one node owns every cell, whatever the mapping
     one.owner_table.clear();
+    one.replica_first.clear();
+    one.replica_extra.clear();
+    one.replicate = 0;
     one.vcd_path.clear();
     one.trace_ips.clear();
     one.quiet = true;

@@ -144,8 +144,10 @@ void elaborate(const SimConfig &config, const rt_scene *scene, const rt_grid *gr
     if (config.style == TimingStyle::lt)
         tlm::tlm_global_quantum::instance().set(sc_core::sc_time(config.quantum_us, sc_core::SC_US));
     m.elaboration_start_s = wall_clock_s();
+    rt_replicas replicas = config.replica_table();
     m.top = &keep_until_exit(std::make_unique<TorusSystem>("top", config, scene, grid, m.owner.data(), m.ledger,
-                                                           m.fb.get()));
+                                                           m.fb.get(), HandOverTiming::at_once,
+                                                           config.replicated() ? &replicas : nullptr));
     if (!config.vcd_path.empty()) m.tracer = std::make_unique<Tracer>(config, *m.top);
     m.mark = &elaboration_mark();
     check_budget_before_start(m.ledger, m.memory);

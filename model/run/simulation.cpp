@@ -146,12 +146,18 @@ int simulate(SimRequest &r, double wall_start_s)
     StagedOutputs outputs;
     stage_outputs(r, outputs);
     // The map file needs only the grid's size: a bad one is named before the scene is read.
-    if (config.mapping == RT_MAP_FILE) read_map_file(config, config.cells.data(), config.owner_table);
+    if (config.mapping == RT_MAP_FILE) {
+        std::vector<int32_t> owner;
+        ReplicaTable replicas;
+        read_map_file(config, config.cells.data(), owner, replicas);
+    }
     LoadedScene loaded = load_scene(config.scene_path, config.width, config.height, config.cells, config.quiet,
                                     &config.memory, config.preprocess_count);
     rt_scene *scene = loaded.scene.get();
     check_shade_tree(config.scene_path, scene, config.step, config.memory, PacketPool::bytes_per_packet());
     nlohmann::json mapping_facts = prepare_mapping(config, scene, loaded.grid.get());
+    if (config.replicated() && r.remap != RemapPolicy::static_map)
+        throw UserError("--map-file: a table with replicated cells is not remapped (--remap)", 2);
     // An animation's mapping outputs show frame 0's table, written before its camera moves.
     if (r.animated())
         write_mapping_outputs(config, scene, loaded.grid.get(), outputs.set, outputs.write_map, outputs.load_map);

@@ -49,6 +49,9 @@ bad "--t1" --t1 0
 # Ranges and combinations the validator checks before the scene is read.
 bad "--cells" --cells 1024
 bad "--pilot-size" --pilot-size 8x8
+bad "--replicate: only with --map cost" --replicate 0.5
+bad "--replicate" --map cost --replicate -1
+bad "--replica-choice" --replica-choice far
 bad "--queue" --queue 100000001
 bad "--max-depth" --max-depth 1001
 bad "--trace-from" --trace-from 5 --trace-to 4

@@ -59,6 +59,8 @@ TEST(ConfigValidation, NamesTheOptionOfEveryBadSetting)
     expect(c, "--map-file", "the file mapping without a file");
     c = good(), c.pilot_size = {16, 16};
     expect(c, "--pilot-size", "a pilot size without --map cost");
+    c = good(), c.replicate = 0.5;
+    expect(c, "--replicate", "a replication budget without --map cost");
     c = good(), c.timing.link_us = 2e6;
     expect(c, "--link-us", "a 2 s link");
     c = good(), c.timing.link_bytes_per_us = 1e-9;

@@ -50,6 +50,7 @@ void validate_mapping(const MachineConfig &m)
         if (m.mapping != RT_MAP_COST) bad("--pilot-size: only with --map cost");
         check_image_size("--pilot-size", m.pilot_size[0], m.pilot_size[1]);
     }
+    if (m.replicate > 0 && m.mapping != RT_MAP_COST) bad("--replicate: only with --map cost");
 }
 
 void validate_timing(const MachineConfig &m)

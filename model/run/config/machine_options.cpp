@@ -323,6 +323,21 @@ std::vector<MachineOption> mapping_file_options()
              return m.pilot_size[0] == 0 ? std::string()
                                          : std::to_string(m.pilot_size[0]) + "x" + std::to_string(m.pilot_size[1]);
          }},
+        {{"--replicate", "FRACTION", K::real, "0", 0, 64, "",
+          "--map cost: extra memory per node for copies of hot cells, as a fraction of its data without them",
+          G::machine, "replicate"},
+         [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
+             m.replicate = parse_real(s.long_name(), t, 0, 64);
+         },
+         [](const MachineConfig &m) { return number(m.replicate); }},
+        {{"--replica-choice", "RULE", K::text, "nearest", 0, 0, "",
+          choice_help("owner of a replicated cell a packet goes to", kReplicaRuleNames) +
+              " (nearest: fewest hops, then lowest node; hash: of pixel and depth)",
+          G::machine, "replica-choice"},
+         [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
+             m.replica_choice = value_named(s.long_name(), t, kReplicaRuleNames);
+         },
+         [](const MachineConfig &m) { return std::string(replica_rule_name(m.replica_choice)); }},
     };
 }
 

@@ -2,6 +2,7 @@
 #include "cost_mapping.h"
 
 #include <algorithm>
+#include <cstdlib>
 
 #include "rt_cost_map.h"
 #include "user_error.h"
@@ -27,10 +28,35 @@ rt_cost_pilot run_pilot(const MachineConfig &config, rt_scene *scene, const rt_g
     return pilot;
 }
 
+// Copies of the hottest cells within --replicate's budget (none at 0): the replica table, and
+// the predicted busiest node's work with them in the facts.
+void replicate_cells(const MachineConfig &config, const rt_cost_pilot &pilot, const rt_scene *scene,
+                     const rt_grid *grid, const std::vector<int32_t> &owner, ReplicaTable &replicas,
+                     rt_cost_map_facts &facts)
+{
+    replicas.first.clear();
+    replicas.extra.clear();
+    if (!(config.replicate > 0)) return;
+    std::vector<uint32_t> first(pilot.cells + 1);
+    int32_t *extra = nullptr;
+    size_t count = 0;
+    char msg[RT_MSG_LEN] = "";
+    rt_replica_rule rule = config.replica_choice == ReplicaRule::hash ? RT_REPLICA_HASH : RT_REPLICA_NEAREST;
+    if (rt_cost_replicate(&pilot, scene, grid, config.ips.data(), config.topology == Topology::torus, rule,
+                          owner.data(), config.replicate, &config.memory_layout, first.data(), &extra, &count, &facts,
+                          msg, sizeof msg) != RT_OK)
+        throw UserError(std::string("--replicate: ") + msg);
+    if (count) {
+        replicas.first = std::move(first);
+        replicas.extra.assign(extra, extra + count);
+    }
+    std::free(extra);
+}
+
 }  // namespace
 
 nlohmann::json cost_mapping(const MachineConfig &config, rt_scene *scene, const rt_grid *grid,
-                            std::vector<int32_t> &owner)
+                            std::vector<int32_t> &owner, ReplicaTable &replicas)
 {
     double t0 = wall_clock_s();
     rt_cost_pilot pilot = run_pilot(config, scene, grid);
@@ -40,6 +66,13 @@ nlohmann::json cost_mapping(const MachineConfig &config, rt_scene *scene, const 
     double edge_us = rt_cost_edge_us(&config.timing);
     rt_status st = rt_cost_map_folded(&pilot, config.ips.data(), config.topology == Topology::torus, edge_us,
                                       config.block, owner.data(), &facts, msg, sizeof msg);
+    double unreplicated_max_us = facts.max_node_work_us;
+    try {
+        if (st == RT_OK) replicate_cells(config, pilot, scene, grid, owner, replicas, facts);
+    } catch (...) {
+        rt_cost_pilot_release(&pilot);
+        throw;
+    }
     double t2 = wall_clock_s();
     double pilot_us = pilot.total_us, max_cell_us = 0;
     for (size_t c = 0; c < pilot.cells; c++) max_cell_us = std::max(max_cell_us, pilot.work_us[c]);
@@ -59,6 +92,8 @@ nlohmann::json cost_mapping(const MachineConfig &config, rt_scene *scene, const 
             {"mapper_wall_s", t2 - t1},
             {"edge_us_per_packet", edge_us},
             {"predicted_max_node_work_s", facts.max_node_work_us * 1e-6},
+            {"predicted_max_node_work_unreplicated_s", unreplicated_max_us * 1e-6},
+            {"replicate", config.replicate},
             {"predicted_mean_node_work_s", facts.mean_node_work_us * 1e-6},
             {"predicted_cut_packets", facts.cut_packets},
             {"predicted_cut_hops", facts.cut_hops}};

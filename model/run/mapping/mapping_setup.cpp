@@ -2,6 +2,7 @@
 #include "mapping_setup.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <vector>
 
 #include "cost_mapping.h"
@@ -28,10 +29,25 @@ nlohmann::json cells_per_node(const std::vector<int32_t> &owner, int nodes)
 
 void read_map_file(const SimConfig &config, const int dims[3], std::vector<int32_t> &owner)
 {
-    owner.assign(size_t(dims[0]) * dims[1] * dims[2], 0);
+    ReplicaTable ignored;
+    read_map_file(config, dims, owner, ignored);
+}
+
+void read_map_file(const SimConfig &config, const int dims[3], std::vector<int32_t> &owner, ReplicaTable &replicas)
+{
+    size_t cells = size_t(dims[0]) * dims[1] * dims[2];
+    owner.assign(cells, 0);
+    std::vector<uint32_t> first(cells + 1);
+    int32_t *extra = nullptr;
+    size_t count = 0;
     char msg[RT_MSG_LEN] = "";
-    if (rt_map_file_read(config.map_file.c_str(), dims, config.node_count(), owner.data(), msg, sizeof msg) != RT_OK)
+    if (rt_map_file_read_replicas(config.map_file.c_str(), dims, config.node_count(), owner.data(), first.data(),
+                                  &extra, &count, msg, sizeof msg) != RT_OK)
         throw UserError(std::string("--map-file: ") + msg, 2);
+    replicas.first.clear();
+    replicas.extra.assign(extra, extra + count);
+    if (count) replicas.first = std::move(first);
+    std::free(extra);
 }
 
 nlohmann::json prepare_mapping(SimConfig &config, rt_scene *scene, const rt_grid *grid)
@@ -43,11 +59,16 @@ nlohmann::json prepare_mapping(SimConfig &config, rt_scene *scene, const rt_grid
     char msg[RT_MSG_LEN] = "";
     nlohmann::json j = {{"kind", mapping_name(config.mapping)}};
     if (config.mapping == RT_MAP_FILE) {
-        if (config.owner_table.size() == owner.size()) owner = config.owner_table;  // read before the scene
-        else read_map_file(config, dims, owner);
+        ReplicaTable replicas;
+        read_map_file(config, dims, owner, replicas);
+        config.replica_first = std::move(replicas.first);
+        config.replica_extra = std::move(replicas.extra);
         j["file"] = config.map_file;
     } else if (config.mapping == RT_MAP_COST) {
-        j.update(cost_mapping(config, scene, grid, owner));
+        ReplicaTable replicas;
+        j.update(cost_mapping(config, scene, grid, owner, replicas));
+        config.replica_first = std::move(replicas.first);
+        config.replica_extra = std::move(replicas.extra);
     } else if (rt_mapping_fill(dims, config.ips.data(), config.mapping, config.block, owner.data(), msg,
                                sizeof msg) != RT_OK) {
         throw UserError(std::string("--map: ") + msg, 2);
@@ -65,8 +86,9 @@ void write_mapping(const SimConfig &config, const rt_grid *grid, const std::stri
     int dims[3];
     rt_grid_dims(grid, dims);
     write_stream_file(path, shown, "--write-map", [&](FILE *fp, char *msg, size_t msg_len) {
-        return rt_map_file_write(fp, shown.c_str(), dims, config.node_count(), config.owner_table.data(), msg,
-                                 msg_len);
+        rt_replicas replicas = config.replica_table();
+        return rt_map_file_write_replicas(fp, shown.c_str(), dims, config.node_count(), config.owner_table.data(),
+                                          config.replicated() ? &replicas : nullptr, msg, msg_len);
     });
 }
 
@@ -80,8 +102,10 @@ void write_load_map(const SimConfig &config, rt_scene *scene, const rt_grid *gri
         throw UserError(std::string("--load-map: pilot run: ") + msg);
     try {
         write_stream_file(path, shown, "--load-map", [&](FILE *fp, char *why, size_t why_len) {
-            return rt_load_map_write(fp, shown.c_str(), pilot.dims, pilot.work_us, config.owner_table.data(),
-                                     config.node_count(), why, why_len);
+            rt_replicas replicas = config.replica_table();
+            return rt_load_map_write_replicas(fp, shown.c_str(), pilot.dims, pilot.work_us, config.owner_table.data(),
+                                              config.replicated() ? &replicas : nullptr, config.node_count(), why,
+                                              why_len);
         });
     } catch (...) {
         rt_cost_pilot_release(&pilot);

@@ -19,14 +19,33 @@ MemoryReport flat_memory(const SimConfig &config, const rt_scene *scene, const r
                          const int32_t *cell_owner, uint64_t pixel_partitioned)
 {
     std::vector<rt_memory_use> use(static_cast<size_t>(config.node_count()));
-    if (rt_memory_per_owner_layout(scene, grid, cell_owner, config.node_count(), &config.memory_layout,
-                                   use.data()) != RT_OK)
+    rt_replicas replicas = config.replica_table();
+    if (rt_memory_per_owner_replicas(scene, grid, cell_owner, config.replicated() ? &replicas : nullptr,
+                                     config.node_count(), &config.memory_layout, use.data()) != RT_OK)
         throw UserError("cannot compute the data memory per node (out of memory or an inconsistent cell table)");
     MemoryReport m;
     for (const auto &u : use) m.max_per_ip_bytes = std::max(m.max_per_ip_bytes, rt_memory_total(&u));
     m.total_bytes = m.max_per_ip_bytes * static_cast<uint64_t>(config.processor_count());
     m.pixel_partitioned_bytes = pixel_partitioned;
     return m;
+}
+
+// Per node data summed with and without the extra owners' copies: what replication costs.
+ReplicationReport replication(const SimConfig &config, const rt_scene *scene, const rt_grid *grid,
+                              const int32_t *cell_owner)
+{
+    ReplicationReport rep;
+    if (!config.replicated()) return rep;
+    rt_replicas replicas = config.replica_table();
+    rt_replicas_count(&replicas, rt_grid_cell_count(grid), &rep.cells, &rep.copies);
+    std::vector<rt_memory_use> with(static_cast<size_t>(config.node_count())), without(with.size());
+    if (rt_memory_per_owner_replicas(scene, grid, cell_owner, &replicas, config.node_count(), &config.memory_layout,
+                                     with.data()) != RT_OK ||
+        rt_memory_per_owner_layout(scene, grid, cell_owner, config.node_count(), &config.memory_layout,
+                                   without.data()) != RT_OK)
+        throw UserError("cannot compute the data memory of the replicated cells (out of memory)");
+    for (size_t i = 0; i < with.size(); i++) rep.bytes += rt_memory_total(&with[i]) - rt_memory_total(&without[i]);
+    return rep;
 }
 
 QueueStats queue_stats(const QueueRef &q)
@@ -97,6 +116,7 @@ RunReport collect(const SimConfig &config, TorusSystem &top, const PacketLedger 
     r.memory = config.cluster == 1 ? flat_memory(config, scene, grid, cell_owner, pixel_partitioned)
                                    : cluster_memory(config, scene, grid, cell_owner, pixel_partitioned);
     r.memory.whole_scene_bytes = rt_memory_total(&whole);
+    r.memory.replication = replication(config, scene, grid, cell_owner);
     r.units_serial = rt_grid_units_serial(grid);
     r.units_parallel = rt_grid_units_parallel(grid, n);
     r.units_parallel_by_p = preprocess_json(grid, n)["units_parallel_by_p"];

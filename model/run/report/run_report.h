@@ -30,8 +30,16 @@ struct RunFacts {
     uint64_t delta_cycles = 0;
 };
 
+// Replicated cells: how many, the extra copies (owners beyond one per cell), and the data bytes
+// those copies add over all nodes.
+struct ReplicationReport {
+    size_t cells = 0, copies = 0;
+    uint64_t bytes = 0;
+};
+
 // Data memory, computed once per run (flat: per node; clusters: per processor and data mode).
 struct MemoryReport {
+    ReplicationReport replication;
     uint64_t max_per_ip_bytes = 0, total_bytes = 0, pixel_partitioned_bytes = 0, whole_scene_bytes = 0;
     bool clustered = false;
     ClusterMemoryFigures cluster;  // clustered only

@@ -189,6 +189,12 @@ nlohmann::json to_json(const RunReport &r)
     j["per_ip"] = std::move(per_ip);
     j["packets"]["conserved"] = r.conserved;
     if (!r.mapping.is_null()) j["mapping"] = r.mapping;
+    const ReplicationReport &rep = r.memory.replication;
+    j["replication"] = {{"cells", rep.cells},
+                        {"copies", rep.copies},
+                        {"bytes", rep.bytes},
+                        {"budget", r.config.replicate},
+                        {"choice", replica_rule_name(r.config.replica_choice)}};
     if (!r.frames.empty()) {
         j["animation"] = animation_json(r.frames, r.remap);
         j["frames"] = nlohmann::json::array();

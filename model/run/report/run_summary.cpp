@@ -137,6 +137,10 @@ void print_summary(const RunReport &r, std::FILE *out)
     std::fprintf(out, "  memory       %llu bytes (max per processor x n) vs %llu pixel-partitioned (%s)\n",
                  static_cast<unsigned long long>(m.total_bytes), static_cast<unsigned long long>(m.pixel_partitioned_bytes),
                  sig4(m.pixel_partitioned_bytes ? static_cast<double>(m.total_bytes) / m.pixel_partitioned_bytes : 0.0).c_str());
+    if (m.replication.cells)
+        std::fprintf(out, "  replication  %zu cells, %zu extra copies, %llu bytes; rays to the %s owner\n",
+                     m.replication.cells, m.replication.copies, static_cast<unsigned long long>(m.replication.bytes),
+                     r.config.replica_choice == ReplicaRule::nearest ? "nearest" : "hashed");
     std::fprintf(out, "  preprocess   %llu units serial, %llu units on %d processors\n",
                  static_cast<unsigned long long>(r.units_serial), static_cast<unsigned long long>(r.units_parallel), n);
     print_mapping(r, out);

@@ -1,0 +1,11 @@
+/* cost_internal.h - cell and node geometry shared by the cost mapper and its replication pass. */
+#ifndef RT_COST_INTERNAL_H
+#define RT_COST_INTERNAL_H
+
+/* Neighbour of cell c through face f (-x, +x, -y, +y, -z, +z) of a dims grid, -1 at its boundary. */
+long rt_cost_neighbour(const int dims[3], long c, int f);
+
+/* Hops between nodes a and b of a nodes[0] x nodes[1] x nodes[2] torus (torus 1) or mesh. */
+int rt_cost_hops(const int nodes[3], int torus, int a, int b);
+
+#endif
