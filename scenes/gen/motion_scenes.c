@@ -41,10 +41,10 @@ void build_bouncing_balls(scene *sc)
         sphere(sc, v3(BALL[i].x, BALL[i].r, BALL[i].z), BALL[i].r);
     }
     diffuse(sc, 0.75, 0.72, 0.65, 0.8);
-    floor_quad(sc, 0.0, -7.0, 7.0, -7.0, 5.0);
+    floor_quad(sc, 0.0, -9.0, 9.0, -7.0, 11.0);
     mat(sc, 0.8, 0.85, 0.9, 0.1, 0.85, 80, 0, 1);
     quad(sc, v3(-5.5, 0, -5.5), v3(5.5, 0, -5.5), v3(5.5, 6, -5.5), v3(-5.5, 6, -5.5));
-    view(sc, v3(0, 3.5, 12), v3(0, 1.8, -2), v3(0, 1, 0), 40, 144, 144);
+    view(sc, v3(0, 4, 13), v3(0, 1.6, -2), v3(0, 1, 0), 48, 144, 144);
     background(sc, 0.1, 0.12, 0.2);
     ambient(sc, 0.1, 0.1, 0.1);
     add_light(sc, v3(-6, 10, 10), 0.8, 0.8, 0.8);

@@ -12,6 +12,16 @@ namespace {
 
 double parse_degrees(const std::string &text) { return parse_real("--orbit", text, -HUGE_VAL, HUGE_VAL); }
 
+// Frame k turns by k x DEG / N degrees: the product must stay finite for the last frame.
+void check_orbit_angle(const AnimationOptions &opt)
+{
+    double degrees = parse_degrees(opt.orbit);
+    if (!std::isfinite(static_cast<double>(opt.frames - 1) * degrees))
+        throw UserError("--orbit " + shown_text(opt.orbit) + ": the last frame's angle (" +
+                            std::to_string(opt.frames - 1) + " x DEG / " + std::to_string(opt.frames) +
+                            ") would not be a finite number", 2);
+}
+
 }  // namespace
 
 std::vector<OptionSpec> animation_option_specs()
@@ -39,6 +49,7 @@ AnimationOptions animation_options_given(const std::map<std::string, std::string
     take("--frames", opt.frames_text);
     take("--orbit", opt.orbit);
     take("--camera-path", opt.camera_path);
+    take("--motion", opt.motion);
     return opt;
 }
 
@@ -57,17 +68,14 @@ void check_animation_options(AnimationOptions &opt)
     if (!opt.orbit.empty() && !opt.camera_path.empty())
         throw UserError("--orbit and --camera-path: give one of them, not both", 2);
     if (!opt.orbit.empty()) {
-        double degrees = parse_degrees(opt.orbit);
-        if (opt.frames < 0) throw UserError("--orbit " + shown_text(opt.orbit) + ": needs --frames N", 2);
-        // Frame k turns by k x DEG / N degrees: the product must stay finite for the last frame.
-        if (!std::isfinite(static_cast<double>(opt.frames - 1) * degrees))
-            throw UserError("--orbit " + shown_text(opt.orbit) + ": the last frame's angle (" +
-                                std::to_string(opt.frames - 1) + " x DEG / " + std::to_string(opt.frames) +
-                                ") would not be a finite number", 2);
+        parse_degrees(opt.orbit);
+        if (opt.frames < 0 && opt.motion.empty())
+            throw UserError("--orbit " + shown_text(opt.orbit) + ": needs --frames N (or --motion FILE)", 2);
+        if (opt.frames >= 0) check_orbit_angle(opt);
     }
-    if (opt.frames >= 0 && opt.orbit.empty() && opt.camera_path.empty())
+    if (opt.frames >= 0 && opt.orbit.empty() && opt.camera_path.empty() && opt.motion.empty())
         throw UserError("--frames " + std::to_string(opt.frames) +
-                            ": needs --orbit DEG or --camera-path FILE for the frames' cameras",
+                            ": needs --orbit DEG or --camera-path FILE for the frames' cameras (or --motion FILE)",
                         2);
 }
 
@@ -88,6 +96,19 @@ CameraPathPtr read_camera_path_file(const AnimationOptions &opt)
     return path;
 }
 
+void check_motion_frames(AnimationOptions &opt, uint32_t motion_frames, const rt_camera_path *file)
+{
+    if (opt.frames >= 0 && static_cast<uint64_t>(opt.frames) != motion_frames)
+        throw UserError("--frames " + std::to_string(opt.frames) + ": " + shown_text(opt.motion) + " has " +
+                            std::to_string(motion_frames) + " frames (leave --frames out to take them)", 2);
+    if (file && rt_camera_path_count(file) != motion_frames)
+        throw UserError("--camera-path: " + shown_text(opt.camera_path) + " holds " +
+                            std::to_string(rt_camera_path_count(file)) + " camera lines, " + shown_text(opt.motion) +
+                            " has " + std::to_string(motion_frames) + " frames", 2);
+    opt.frames = motion_frames;
+    if (!opt.orbit.empty()) check_orbit_angle(opt);
+}
+
 size_t animation_frame_count(const AnimationOptions &opt, const rt_camera_path *file)
 {
     return file ? rt_camera_path_count(file) : static_cast<size_t>(opt.frames);
@@ -95,7 +116,7 @@ size_t animation_frame_count(const AnimationOptions &opt, const rt_camera_path *
 
 CameraPathPtr make_camera_path(const AnimationOptions &opt, const rt_scene *scene, CameraPathPtr file)
 {
-    if (file) return file;
+    if (file || opt.orbit.empty()) return file;
     char msg[RT_MSG_LEN] = "";
     rt_camera_path *raw = nullptr;
     rt_camera_pose start = rt_camera_pose_of(rt_scene_camera(scene));
