@@ -9,6 +9,7 @@
 
 #include "motion_internal.h"
 #include "rt_file_read.h"
+#include "rt_text.h"
 
 #define MAX_MAGNITUDE 1e30 /* the NFF reader's limit on coordinates */
 #define MAX_TOKENS 16      /* no statement has more words: key F move X Y Z turn D scale S = 10 */
@@ -23,17 +24,16 @@ typedef struct reader {
     size_t total_keys;
 } reader;
 
+/* "FILE:LINE: message" (the file name as rt_escape_bytes shows it) into the caller's buffer. */
 static rt_status fail(reader *r, rt_status status, const char *fmt, ...)
 {
-    if (r->msg && r->msg_len) {
-        int n = snprintf(r->msg, r->msg_len, "%s:%zu: ", r->file, r->line);
-        if (n >= 0 && (size_t)n < r->msg_len) {
-            va_list ap;
-            va_start(ap, fmt);
-            vsnprintf(r->msg + n, r->msg_len - (size_t)n, fmt, ap);
-            va_end(ap);
-        }
-    }
+    if (!r->msg || !r->msg_len) return status;
+    char what[RT_MSG_LEN];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(what, sizeof what, fmt, ap);
+    va_end(ap);
+    snprintf(r->msg, r->msg_len, "%s:%zu: %s", r->m && r->m->file ? r->m->file : r->file, r->line, what);
     return status;
 }
 
@@ -282,10 +282,10 @@ rt_status rt_motion_parse(const char *name, const char *text, size_t length, rt_
     *out = NULL;
     reader r = {name, 0, msg, msg_len, calloc(1, sizeof(rt_motion)), 0, 0};
     char *buf = malloc(RT_MOTION_MAX_LINE + 1);
-    size_t name_len = strlen(name);
+    size_t shown_len = 4 * strlen(name) + 8; /* every byte escaped as \xNN at worst */
     rt_status st = RT_OK;
-    if (!r.m || !buf || !(r.m->file = malloc(name_len + 1))) st = fail(&r, RT_ERR_NOMEM, "out of memory");
-    else memcpy(r.m->file, name, name_len + 1);
+    if (!r.m || !buf || !(r.m->file = malloc(shown_len))) st = fail(&r, RT_ERR_NOMEM, "out of memory");
+    else rt_escape_bytes(name, strlen(name), 0, r.m->file, shown_len); /* the name messages show */
     for (size_t at = 0; st == RT_OK && at < length;) {
         r.line++;
         st = next_line(&r, text, length, &at, buf);

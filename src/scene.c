@@ -357,10 +357,7 @@ rt_status rt_scene_add_cone(rt_scene *s, rt_vec3 base, double rb, rt_vec3 apex, 
     rt_status st = new_object(s, &o);
     if (st) return st;
     o->kind = RT_OBJ_CONE;
-    o->u.cone.base = base;
-    o->u.cone.apex = apex;
-    o->u.cone.base_radius = rb;
-    o->u.cone.apex_radius = ra;
+    o->u.cone = (rt_cone_data){.base = base, .apex = apex, .base_radius = rb, .apex_radius = ra};
     rt_scene_derive_cone(o);
     s->object_count++;
     return RT_OK;

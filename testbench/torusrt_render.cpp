@@ -343,7 +343,6 @@ void declare_options(CLI::App &app)
                     "A bare number is decimal: 010 and 0x10 are refused.",
                     "  torusrt-render scenes/paper-image1.nff -o ref.png\n"
                     "  torusrt-render scenes/paper-image2.nff -o ref.png --size 64x64 --stats ref.json\n"
-                    "  torusrt-render scenes/paper-image1.nff -o 'f_%02d.png' --frames 12 --orbit 360\n"
                     "  torusrt-render scenes/bouncing-balls.nff -o 'b_%02d.png' --motion scenes/bouncing-balls.motion\n");
 }
 
