@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # motion.sh - torusrt-render --motion: the shipped moving scenes render 64 frames, twice byte
-# for byte; a moved frame equals a plain render of the scene moved by hand; a still motion
+# for byte and equal to the brute-force frames; a moved frame equals a plain render of the scene moved by hand; a still motion
 # equals the plain render; the stats' motion keys (each frame's update no dearer than a rebuild);
 # the camera stays unless --orbit moves it; every bad motion file or combination is exit 2 with
 # FILE:LINE or the option, and writes no output; torusrt-sim refuses --motion.
@@ -35,6 +35,9 @@ for name in bouncing-balls orbiting-mirror; do
     anim_ok "$name-b" "$scene" "$TMP/$name-b" "${size[@]}" --motion "$motion"
     check "$name: 64 frames" [ "$(ls "$TMP/$name-a" | wc -l)" -eq 64 ]
     check "$name: two runs write the same frames" diff -r "$TMP/$name-a" "$TMP/$name-b"
+    # The updated cell lists lose no hit: every frame equals the brute-force frame (no grid).
+    anim_ok "$name-bf" "$scene" "$TMP/$name-bf" "${size[@]}" --motion "$motion" --brute-force
+    check "$name: every frame equals the brute-force frame" diff -r "$TMP/$name-a" "$TMP/$name-bf"
     check "$name: frame 1 differs from frame 0 (something moves)" \
         bash -c "! cmp -s '$TMP/$name-a/f_00.png' '$TMP/$name-a/f_01.png'"
     js="$TMP/$name-a.json"

@@ -183,18 +183,29 @@ TEST(GridUpdate, AStillFrameCostsNothing)
     EXPECT_EQ(st[3].units, 0u);
 }
 
-// Moves that put a sphere exactly on the splitting plane and on the object space's face, and a
-// turn and scale of every kind of object: the update still equals a fresh build.
-TEST(GridUpdate, BoundariesTurnsAndScalesEqualAFreshBuild)
+// A sphere moved exactly onto a cell boundary and back onto the object space's face. The space
+// is symmetric about x = 0 (x from -2.5 to 2.5 before padding, padded the same on both sides), so
+// the 2 x 1 x 1 grid's plane is x = 0 exactly; at frame 1 sphere 1's left side is on it.
+TEST(GridUpdate, OntoACellBoundaryAndTheSpaceFace)
 {
     ScenePtr s = two_spheres();
-    /* Frame 1: sphere 1's left side at x = 0 (the plane, up to rounding); frame 2: at x = 2.5,
-     * its right side on the box face at x = 3 (the box's hi, set by frame 2 itself). */
-    MotionPtr m = parse("frames 3\nobjects 1\nkey 0\nkey 1 move -1.5 0 0\nkey 2 move 0.5 0 0\n");
+    MotionPtr m = parse("frames 3\nobjects 1\nkey 0\nkey 1 move -1.5 0 0\nkey 2 move 0 0 0\n");
     ASSERT_NE(m, nullptr);
-    run_motion(s.get(), m.get(), 2, 2, 2, RT_COUNT_SEQUENTIAL, "boundaries");
-    run_motion(s.get(), m.get(), 24, 24, 24, RT_COUNT_SEQUENTIAL, "boundaries 24");
+    std::vector<rt_grid_update_stats> st = run_motion(s.get(), m.get(), 2, 1, 1, RT_COUNT_SEQUENTIAL, "boundary");
+    ASSERT_EQ(st.size(), 3u);
+    /* Touching the plane it is listed on both sides (the tolerance): 2 units, 3 entries. */
+    EXPECT_EQ(st[1].units, 2u);
+    EXPECT_EQ(st[1].entries, 3u);
+    /* Back at x = 2, its right side on the space's face (x = 2.5 before padding): 1 unit. */
+    EXPECT_EQ(st[2].units, 1u);
+    EXPECT_EQ(st[2].entries, 2u);
+    run_motion(s.get(), m.get(), 2, 2, 2, RT_COUNT_SEQUENTIAL, "boundary 2x2x2");
+    run_motion(s.get(), m.get(), 24, 24, 24, RT_COUNT_SEQUENTIAL, "boundary 24");
+}
 
+// A turn and a scale of every kind of object: the update still equals a fresh build.
+TEST(GridUpdate, TurnsAndScalesEqualAFreshBuild)
+{
     ScenePtr five(rt_scene_new());
     rt_scene_set_view(five.get(), rt_vec(0, 0, 10), rt_vec(0, 0, 0), rt_vec(0, 1, 0), 45, 8, 8);
     rt_scene_add_sphere(five.get(), rt_vec(-2, 0, 0), 1);
