@@ -302,8 +302,12 @@ int run(RenderOptions &opt)
     stage_outputs(opt, opt.anim.animated() ? animation_frame_count(opt.anim, file.get()) : 0, outs);
 
     setup.budget = rt_budget_make(setup.settings.memory_bytes);
-    setup.loaded = load_scene(opt.common.scene, setup.settings.size[0], setup.settings.size[1], setup.settings.cells,
-                              opt.common.quiet, &setup.budget, setup.settings.preprocess_count);
+    // With --motion the grid is built over every frame's object space at frame 0: the scene's own
+    // is then one cell, so that it takes next to nothing of the memory budget.
+    const std::array<int, 3> one_cell = {1, 1, 1};
+    setup.loaded = load_scene(opt.common.scene, setup.settings.size[0], setup.settings.size[1],
+                              motion ? one_cell : setup.settings.cells, opt.common.quiet, &setup.budget,
+                              setup.settings.preprocess_count);
     setup.scene = setup.loaded.scene.get();
     if (motion) {
         setup.motion = std::make_unique<SceneMotion>(std::move(motion), std::move(setup.loaded.scene),
