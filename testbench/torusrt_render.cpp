@@ -293,11 +293,12 @@ int run(RenderOptions &opt)
     require_scene_and_output(opt.common);
     RenderSetup setup;
     setup.settings = parse_common_options(opt.common);
+    MotionPtr motion = read_motion_file(opt.anim.motion);
+    take_motion_frame_count(opt.anim, motion.get());
     validate_render(setup.settings, opt);
     warn_about_settings("torusrt-render", setup.settings.step, opt.common.quiet);
     CameraPathPtr file = read_camera_path_file(opt.anim);
-    MotionPtr motion = read_motion_file(opt.anim.motion);
-    if (motion) check_motion_frames(opt.anim, rt_motion_frame_count(motion.get()), file.get());
+    if (motion) check_motion_frames(opt.anim, motion.get(), file.get());
     RenderOutputs outs;
     stage_outputs(opt, opt.anim.animated() ? animation_frame_count(opt.anim, file.get()) : 0, outs);
 

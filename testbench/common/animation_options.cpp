@@ -12,16 +12,6 @@ namespace {
 
 double parse_degrees(const std::string &text) { return parse_real("--orbit", text, -HUGE_VAL, HUGE_VAL); }
 
-// Frame k turns by k x DEG / N degrees: the product must stay finite for the last frame.
-void check_orbit_angle(const AnimationOptions &opt)
-{
-    double degrees = parse_degrees(opt.orbit);
-    if (!std::isfinite(static_cast<double>(opt.frames - 1) * degrees))
-        throw UserError("--orbit " + shown_text(opt.orbit) + ": the last frame's angle (" +
-                            std::to_string(opt.frames - 1) + " x DEG / " + std::to_string(opt.frames) +
-                            ") would not be a finite number", 2);
-}
-
 }  // namespace
 
 std::vector<OptionSpec> animation_option_specs()
@@ -68,10 +58,13 @@ void check_animation_options(AnimationOptions &opt)
     if (!opt.orbit.empty() && !opt.camera_path.empty())
         throw UserError("--orbit and --camera-path: give one of them, not both", 2);
     if (!opt.orbit.empty()) {
-        parse_degrees(opt.orbit);
-        if (opt.frames < 0 && opt.motion.empty())
-            throw UserError("--orbit " + shown_text(opt.orbit) + ": needs --frames N (or --motion FILE)", 2);
-        if (opt.frames >= 0) check_orbit_angle(opt);
+        double degrees = parse_degrees(opt.orbit);
+        if (opt.frames < 0) throw UserError("--orbit " + shown_text(opt.orbit) + ": needs --frames N", 2);
+        // Frame k turns by k x DEG / N degrees: the product must stay finite for the last frame.
+        if (!std::isfinite(static_cast<double>(opt.frames - 1) * degrees))
+            throw UserError("--orbit " + shown_text(opt.orbit) + ": the last frame's angle (" +
+                                std::to_string(opt.frames - 1) + " x DEG / " + std::to_string(opt.frames) +
+                                ") would not be a finite number", 2);
     }
     if (opt.frames >= 0 && opt.orbit.empty() && opt.camera_path.empty() && opt.motion.empty())
         throw UserError("--frames " + std::to_string(opt.frames) +
@@ -94,19 +87,6 @@ CameraPathPtr read_camera_path_file(const AnimationOptions &opt)
                             " holds " + std::to_string(count) + " camera lines (one per frame)",
                         2);
     return path;
-}
-
-void check_motion_frames(AnimationOptions &opt, uint32_t motion_frames, const rt_camera_path *file)
-{
-    if (opt.frames >= 0 && static_cast<uint64_t>(opt.frames) != motion_frames)
-        throw UserError("--frames " + std::to_string(opt.frames) + ": " + shown_text(opt.motion) + " has " +
-                            std::to_string(motion_frames) + " frames (leave --frames out to take them)", 2);
-    if (file && rt_camera_path_count(file) != motion_frames)
-        throw UserError("--camera-path: " + shown_text(opt.camera_path) + " holds " +
-                            std::to_string(rt_camera_path_count(file)) + " camera lines, " + shown_text(opt.motion) +
-                            " has " + std::to_string(motion_frames) + " frames", 2);
-    opt.frames = motion_frames;
-    if (!opt.orbit.empty()) check_orbit_angle(opt);
 }
 
 size_t animation_frame_count(const AnimationOptions &opt, const rt_camera_path *file)

@@ -37,12 +37,8 @@ AnimationOptions animation_options_given(const std::map<std::string, std::string
 // Checks the combination before any file is read; throws UserError (exit 2) naming the option.
 // --frames N needs --orbit (and --orbit needs --frames); --camera-path gives the frame count
 // itself, and --frames beside it must agree. Every frame's orbit angle must be finite. With
-// --motion, --frames alone is allowed and --orbit may take its count from the motion file.
+// --motion, --frames alone is allowed (scene_motion.h checks it against the motion file).
 void check_animation_options(AnimationOptions &opt);
-// With --motion: the frame count is the motion file's `frames` (N); --frames, when given, and
-// a --camera-path's poses must be as many (exit 2 otherwise). Sets opt.frames and checks the
-// orbit's last angle again.
-void check_motion_frames(AnimationOptions &opt, uint32_t motion_frames, const rt_camera_path *file);
 // The --camera-path file's poses, read before the scene so that every frame's output can be
 // checked first (nullptr for --orbit). A bad file is exit 2 with FILE:LINE, and so is --frames
 // disagreeing with it.

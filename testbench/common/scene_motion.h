@@ -1,6 +1,6 @@
 // scene_motion.h - --motion FILE on the command line: reading the motion file, the object
 // space over every frame, and moving the scene and updating its cell lists frame by frame.
-// torusrt-render registers the option; torusrt-sim does not (yet).
+// torusrt-render registers the option; torusrt-sim does not.
 #pragma once
 
 #include <cstdint>
@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "animation_options.h"
 #include "kernel_handles.h"
 #include "option_spec.h"
 #include "rt_budget.h"
@@ -26,6 +27,14 @@ OptionSpec motion_option_spec();
 // Reads the --motion file (nullptr when `path` is empty). A bad file is exit 2 with
 // "--motion: FILE:LINE: message".
 MotionPtr read_motion_file(const std::string &path);
+
+// With --motion and --orbit but no --frames: the orbit's frame count is the motion file's (before
+// check_animation_options, which needs one for --orbit).
+void take_motion_frame_count(AnimationOptions &anim, const rt_motion *motion);
+// With --motion, after check_animation_options and read_camera_path_file: the frame count is the
+// motion file's `frames`; --frames, when given, and a --camera-path's poses must be as many
+// (exit 2 otherwise). Sets anim.frames.
+void check_motion_frames(AnimationOptions &anim, const rt_motion *motion, const rt_camera_path *file);
 
 // What one frame's move cost: the update's units against a rebuild of every list.
 struct MotionFrameCost {
