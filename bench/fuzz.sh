@@ -6,10 +6,12 @@
 #   nff_fuzz      the NFF reader, grid build and a tiny render; seeds scenes/, tests/nff_bad/,
 #                 tests/fuzz/corpus/; dictionary nff.dict
 #   map_fuzz      the map-file reader (rt_map_file_parse); seeds tests/fuzz/map_corpus/; map.dict
+#   motion_fuzz   the motion-file reader (rt_motion_parse), the object space and the cell-list
+#                 update; seeds tests/fuzz/motion_corpus/; motion.dict
 #   machine_fuzz  the machine-file reader (MachineFileReader); seeds tests/fuzz/machine_corpus/;
 #                 machine.dict
 #
-# Usage: bash bench/fuzz.sh [EXECS] [BUILD_DIR] [TARGET...]   (1000000; build-fuzz; all three)
+# Usage: bash bench/fuzz.sh [EXECS] [BUILD_DIR] [TARGET...]   (1000000; build-fuzz; all four)
 # The targets are built in BUILD_DIR (not the CMake build), each run in one job (-jobs=1). Its
 # working corpus and any findings stay in BUILD_DIR (corpus-TARGET/, findings-TARGET/); copy
 # every finding into tests/fuzz/regressions/.
@@ -19,7 +21,7 @@ execs=${1:-1000000}
 build=${2:-$here/build-fuzz}
 shift $(($# > 2 ? 2 : $#))
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(nff_fuzz map_fuzz machine_fuzz)
+[ ${#targets[@]} -gt 0 ] || targets=(nff_fuzz map_fuzz motion_fuzz machine_fuzz)
 cc=${CC:-clang}
 cxx=${CXX:-clang++}
 command -v "$cc" >/dev/null || { echo "fuzz.sh: $cc not found (install clang: bash scripts/setup.sh)" >&2; exit 1; }
@@ -45,7 +47,7 @@ build_target() {  # NAME: compiles BUILD_DIR/NAME
     local name=$1
     echo "fuzz.sh: building $build/$name" >&2
     case $name in
-    nff_fuzz | map_fuzz)
+    nff_fuzz | map_fuzz | motion_fuzz)
         "$cc" "${kernel[@]}" "${sanitize[@]}" "$here/tests/fuzz/$name.c" "$build"/kernel/*.o "${libs[@]}" \
             -o "$build/$name" ;;
     machine_fuzz)
@@ -90,6 +92,7 @@ for t in "${targets[@]}"; do
     nff_fuzz) run_target nff_fuzz "$here/tests/fuzz/nff.dict" 16384 "$here/tests/fuzz/corpus" "$here/scenes" \
         "$here/tests/nff_bad" ;;
     map_fuzz) run_target map_fuzz "$here/tests/fuzz/map.dict" 4096 "$here/tests/fuzz/map_corpus" ;;
+    motion_fuzz) run_target motion_fuzz "$here/tests/fuzz/motion.dict" 4096 "$here/tests/fuzz/motion_corpus" ;;
     machine_fuzz) run_target machine_fuzz "$here/tests/fuzz/machine.dict" 4096 "$here/tests/fuzz/machine_corpus" ;;
     esac
 done

@@ -51,7 +51,33 @@ rt_grid *rt_grid_new_budget(const rt_scene *scene, int nx, int ny, int nz, rt_bu
  * rt_grid_new_budget. */
 rt_grid *rt_grid_new_counted(const rt_scene *scene, int nx, int ny, int nz, rt_preprocess_count rule,
                              rt_budget *budget, char *msg, size_t msg_len);
+/* The same over a given object space: `space` is a box every object lies inside, unpadded (the
+ * grid pads it as it pads the scene's own box), e.g. a moving scene's box over all its frames
+ * (rt_motion_space); NULL = the scene's own box. NULL as rt_grid_new_budget, and also when an
+ * object lies outside `space` ("object N lies outside the given object space"). */
+rt_grid *rt_grid_new_in_space(const rt_scene *scene, int nx, int ny, int nz, const rt_box *space,
+                              rt_preprocess_count rule, rt_budget *budget, char *msg, size_t msg_len);
 void rt_grid_free(rt_grid *grid);
+
+/* What one incremental update (rt_grid_update) did. */
+typedef struct rt_grid_update_stats {
+    uint64_t objects_moved;  /* objects whose lists were recomputed */
+    uint64_t units;          /* their half-space tests: the update's preprocessing units */
+    uint64_t rebuild_units;  /* the units of rebuilding every list from scratch (every object's) */
+    uint64_t entries;        /* list entries after the update */
+} rt_grid_update_stats;
+
+/* Recomputes the cell lists of the objects flagged in moved[] (one byte per object, nonzero =
+ * moved) for their geometry in `scene`, by the paper's subdivision and the grid's counting rule;
+ * every other object keeps its entries and its units. The grid then equals one built from
+ * scratch over the same object space (rt_grid_new_in_space): the same lists, the same units.
+ * Removing a moved object from its old cells costs no unit (its cells were listed when it was
+ * placed). `scene` must be the grid's scene with moved geometry: the same object count.
+ * Returns RT_ERR_INVALID (grid unchanged) for another object count or a moved object outside
+ * the object space, RT_ERR_LIMIT when the lists grow past the budget (may be NULL), or
+ * RT_ERR_NOMEM, each with a message; stats may be NULL. */
+rt_status rt_grid_update(rt_grid *grid, const rt_scene *scene, const uint8_t *moved, rt_budget *budget,
+                         rt_grid_update_stats *stats, char *msg, size_t msg_len);
 
 /* Cells per axis. */
 void rt_grid_dims(const rt_grid *grid, int dims[3]);

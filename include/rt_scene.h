@@ -71,6 +71,8 @@ rt_material rt_material_default(void);
 /* Returns NULL if memory runs out. */
 rt_scene *rt_scene_new(void);
 void rt_scene_free(rt_scene *scene);
+/* A deep copy (camera, lights, materials, objects); NULL if memory runs out. */
+rt_scene *rt_scene_clone(const rt_scene *scene);
 
 rt_status rt_scene_set_view(rt_scene *scene, rt_vec3 from, rt_vec3 at, rt_vec3 up,
                             double angle_deg, uint32_t width, uint32_t height);

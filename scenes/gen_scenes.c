@@ -1,7 +1,8 @@
 /* gen_scenes.c - writes torusrt's NFF scene files: the paper's two images and the stiff cases.
  *
  * Usage:
- *   torusrt-genscenes OUTDIR            write every scene as OUTDIR/NAME.nff
+ *   torusrt-genscenes OUTDIR            write every scene as OUTDIR/NAME.nff (and a moving
+ *                                       scene's motion file as OUTDIR/NAME.motion)
  *   torusrt-genscenes OUTDIR NAME...    write only the named scenes
  *   torusrt-genscenes --list            print every name with a one-line description
  *   torusrt-genscenes --help            print this usage
@@ -20,7 +21,8 @@
  *   gen/scene.{h,c}         the scene in memory and the calls the builders use, framing
  *   gen/nff_writer.{h,c}    rounding (q9), the LCG, round-trip numbers, writing NFF text
  *   gen/builders.h          one builder per scene, declared for the table below
- *   gen/paper_scenes.c      paper-image1 and paper-image2
+ *   gen/paper_scenes.c      paper-image1 and paper-image2 (and orbiting-mirror, image 2 moving)
+ *   gen/motion_scenes.c     bouncing-balls and the moving scenes' motion files
  *   gen/stiff_scenes.c      the stiff and extreme cases
  */
 #include <stdio.h>
@@ -85,6 +87,19 @@ static const scene_def SCENES[] = {
     {"one-pixel", "a small scene rendered at 1x1", build_one_pixel, 1},
     {"opposing-normals", "pp triangles whose vertex normals cancel (a teapot pole)",
      build_opposing_normals, 1},
+    {"bouncing-balls", "8 balls bouncing on a floor before a mirror, with a 64-frame motion file",
+     build_bouncing_balls, 1},
+    {"orbiting-mirror", "image 2 whose mirror sphere circles the glass one, with a 64-frame motion file",
+     build_orbiting_mirror, 1},
+};
+
+/* The moving scenes: NAME.motion is written beside NAME.nff. */
+static const struct {
+    const char *name;
+    void (*write)(FILE *f);
+} MOTIONS[] = {
+    {"bouncing-balls", write_bouncing_balls_motion},
+    {"orbiting-mirror", write_orbiting_mirror_motion},
 };
 #define NSCENES ((int)(sizeof SCENES / sizeof SCENES[0]))
 
@@ -96,41 +111,27 @@ static int find_scene(const char *name)
     return -1;
 }
 
-/* Writes OUTDIR/NAME.nff through NAME.nff.tmp; returns 0, or 1 after printing why not. */
-static int write_one(const char *outdir, const scene_def *def)
+/* Writes OUTDIR/NAME.EXT through NAME.EXT.tmp with write(f, ctx); returns 0, or 1 after
+ * printing why not. */
+static int write_file(const char *outdir, const char *name, const char *ext,
+                      void (*write)(FILE *f, const void *ctx), const void *ctx)
 {
-    scene *sc = calloc(1, sizeof *sc);
-    if (!sc) {
-        fprintf(stderr, "torusrt-genscenes: out of memory\n");
-        return 1;
-    }
-    sc->up = v3(0, 1, 0);
-    sc->factor = def->factor;
-    def->build(sc);
-    if (sc->failed) {
-        fprintf(stderr, "torusrt-genscenes: %s: could not build the scene (out of memory)\n",
-                def->name);
-        scene_free(sc);
-        free(sc);
-        return 1;
-    }
-    size_t len = strlen(outdir) + strlen(def->name) + 16;
+    size_t len = strlen(outdir) + strlen(name) + strlen(ext) + 16;
     char *path = malloc(len), *tmp = malloc(len);
     int rc = 1;
     if (!path || !tmp) {
         fprintf(stderr, "torusrt-genscenes: out of memory\n");
         goto done;
     }
-    snprintf(path, len, "%s/%s.nff", outdir, def->name);
-    snprintf(tmp, len, "%s/%s.nff.tmp", outdir, def->name);
+    snprintf(path, len, "%s/%s.%s", outdir, name, ext);
+    snprintf(tmp, len, "%s/%s.%s.tmp", outdir, name, ext);
     FILE *f = fopen(tmp, "wb");
     if (!f) {
         fprintf(stderr, "torusrt-genscenes: cannot write %s: ", tmp);
         perror(NULL);
         goto done;
     }
-    writer wr = {f, def->factor};
-    write_scene(&wr, def->name, def->desc, sc);
+    write(f, ctx);
     int bad = ferror(f);
     if (fclose(f) != 0 || bad) {
         fprintf(stderr, "torusrt-genscenes: error writing %s\n", tmp);
@@ -147,6 +148,55 @@ static int write_one(const char *outdir, const scene_def *def)
 done:
     free(path);
     free(tmp);
+    return rc;
+}
+
+typedef struct {
+    const scene_def *def;
+    const scene *sc;
+} nff_job;
+
+static void write_nff(FILE *f, const void *ctx)
+{
+    const nff_job *job = ctx;
+    writer wr = {f, job->def->factor};
+    write_scene(&wr, job->def->name, job->def->desc, job->sc);
+}
+
+static void write_motion(FILE *f, const void *ctx)
+{
+    for (size_t i = 0; i < sizeof MOTIONS / sizeof MOTIONS[0]; ++i)
+        if (strcmp(MOTIONS[i].name, ((const scene_def *)ctx)->name) == 0) MOTIONS[i].write(f);
+}
+
+static int has_motion(const scene_def *def)
+{
+    for (size_t i = 0; i < sizeof MOTIONS / sizeof MOTIONS[0]; ++i)
+        if (strcmp(MOTIONS[i].name, def->name) == 0) return 1;
+    return 0;
+}
+
+/* Writes OUTDIR/NAME.nff (and NAME.motion for a moving scene); returns 0, or 1 after printing
+ * why not. */
+static int write_one(const char *outdir, const scene_def *def)
+{
+    scene *sc = calloc(1, sizeof *sc);
+    if (!sc) {
+        fprintf(stderr, "torusrt-genscenes: out of memory\n");
+        return 1;
+    }
+    sc->up = v3(0, 1, 0);
+    sc->factor = def->factor;
+    def->build(sc);
+    int rc = 1;
+    if (sc->failed) {
+        fprintf(stderr, "torusrt-genscenes: %s: could not build the scene (out of memory)\n",
+                def->name);
+    } else {
+        nff_job job = {def, sc};
+        rc = write_file(outdir, def->name, "nff", write_nff, &job);
+        if (rc == 0 && has_motion(def)) rc = write_file(outdir, def->name, "motion", write_motion, def);
+    }
     scene_free(sc);
     free(sc);
     return rc;
@@ -156,7 +206,8 @@ static void usage(FILE *f)
 {
     fputs("usage: torusrt-genscenes OUTDIR [NAME...]\n"
           "       torusrt-genscenes --list | --help\n"
-          "Writes torusrt's scenes as OUTDIR/NAME.nff (all of them, or only the NAMEs given).\n"
+          "Writes torusrt's scenes as OUTDIR/NAME.nff (all of them, or only the NAMEs given),\n"
+          "and a moving scene's motion file as OUTDIR/NAME.motion.\n"
           "OUTDIR must exist. Output is deterministic and byte-reproducible.\n"
           "  --list   print every scene name with a one-line description\n"
           "  --help   print this message\n",

@@ -19,6 +19,8 @@ struct rt_grid {
     uint64_t *units;        /* preprocessing units per object */
     uint64_t units_serial;  /* sum of units */
     size_t object_count;
+    rt_preprocess_count rule; /* how the units are counted (the update counts the same way) */
+    size_t entries_reserved;  /* most list entries the budget has been charged for */
 };
 
 /* Coordinate of boundary plane k (0..dims[axis]) on an axis: every part of
@@ -33,6 +35,10 @@ static inline double rt_grid_plane(const struct rt_grid *g, int axis, int k)
 
 /* The padded object space of a scene's objects in *out; 0 when no object has bounds. */
 int rt_grid_object_space(const rt_scene *s, rt_box *out);
+/* The bounding box of a scene's objects (unpadded) in *out; 0 when no object has bounds. */
+int rt_grid_objects_box(const rt_scene *s, rt_box *out);
+/* A box padded as the object space is (see grid.c); 0 when the box is empty. */
+int rt_grid_pad_space(rt_box raw, rt_box *out);
 
 /* 1 if two objects are the same sphere, triangle or cone, so they meet the same cells. */
 int rt_grid_same_shape(const rt_object *a, const rt_object *b);

@@ -17,7 +17,7 @@ static void set_axis(rt_vec3 *v, int a, double x)
     else v->z = x;
 }
 
-int rt_grid_object_space(const rt_scene *s, rt_box *out)
+int rt_grid_objects_box(const rt_scene *s, rt_box *out)
 {
     rt_box b = {rt_vec(INFINITY, INFINITY, INFINITY), rt_vec(-INFINITY, -INFINITY, -INFINITY)};
     int any = 0;
@@ -28,7 +28,13 @@ int rt_grid_object_space(const rt_scene *s, rt_box *out)
         b.lo = rt_vec(fmin(b.lo.x, ob->lo.x), fmin(b.lo.y, ob->lo.y), fmin(b.lo.z, ob->lo.z));
         b.hi = rt_vec(fmax(b.hi.x, ob->hi.x), fmax(b.hi.y, ob->hi.y), fmax(b.hi.z, ob->hi.z));
     }
-    if (!any) return 0;
+    *out = b;
+    return any;
+}
+
+int rt_grid_pad_space(rt_box b, rt_box *out)
+{
+    if (box_is_empty(&b)) return 0;
     rt_vec3 e = rt_vec_sub(b.hi, b.lo);
     double pad = 1e-6 * hypot(hypot(e.x, e.y), e.z);
     if (!(pad > 0.0)) pad = 1e-6 * fmax(1.0, fmax(rt_vec_max_abs(b.lo), rt_vec_max_abs(b.hi)));
@@ -42,4 +48,10 @@ int rt_grid_object_space(const rt_scene *s, rt_box *out)
         set_axis(&out->hi, a, phi);
     }
     return 1;
+}
+
+int rt_grid_object_space(const rt_scene *s, rt_box *out)
+{
+    rt_box raw;
+    return rt_grid_objects_box(s, &raw) && rt_grid_pad_space(raw, out);
 }

@@ -60,6 +60,37 @@ void rt_scene_free(rt_scene *s)
     free(s);
 }
 
+/* A copy of `n` items of `size` bytes (NULL for none); 0 if memory runs out. */
+static int copy_array(void **dst, const void *src, size_t n, size_t size)
+{
+    *dst = NULL;
+    if (!n) return 1;
+    *dst = malloc(n * size);
+    if (!*dst) return 0;
+    memcpy(*dst, src, n * size);
+    return 1;
+}
+
+rt_scene *rt_scene_clone(const rt_scene *s)
+{
+    rt_scene *c = malloc(sizeof *c);
+    if (!c) return NULL;
+    *c = *s;
+    int ok = copy_array((void **)&c->lights, s->lights, s->light_count, sizeof *s->lights);
+    ok = copy_array((void **)&c->materials, s->materials, ok ? s->material_count : 0, sizeof *s->materials) && ok;
+    ok = copy_array((void **)&c->objects, s->objects, ok ? s->object_count : 0, sizeof *s->objects) && ok;
+    ok = copy_array((void **)&c->vertices, s->vertices, ok ? s->vertex_count : 0, sizeof *s->vertices) && ok;
+    c->light_capacity = s->light_count;
+    c->material_capacity = s->material_count;
+    c->object_capacity = s->object_count;
+    c->vertex_capacity = s->vertex_count;
+    if (!ok) {
+        rt_scene_free(c);
+        return NULL;
+    }
+    return c;
+}
+
 rt_status rt_scene_set_view(rt_scene *s, rt_vec3 from, rt_vec3 at, rt_vec3 up, double angle_deg,
                             uint32_t width, uint32_t height)
 {
@@ -154,6 +185,14 @@ static rt_status new_object(rt_scene *s, rt_object **out)
     return RT_OK;
 }
 
+void rt_scene_derive_sphere(rt_object *o)
+{
+    double radius = o->u.sphere.radius;
+    rt_vec3 r = rt_vec(radius, radius, radius);
+    o->bounds.lo = rt_vec_sub(o->u.sphere.center, r);
+    o->bounds.hi = rt_vec_add(o->u.sphere.center, r);
+}
+
 rt_status rt_scene_add_sphere(rt_scene *s, rt_vec3 center, double radius)
 {
     if (!finite3(center) || !sane(radius) || !(radius > 0.0)) return RT_ERR_INVALID;
@@ -163,9 +202,7 @@ rt_status rt_scene_add_sphere(rt_scene *s, rt_vec3 center, double radius)
     o->kind = RT_OBJ_SPHERE;
     o->u.sphere.center = center;
     o->u.sphere.radius = radius;
-    rt_vec3 r = rt_vec(radius, radius, radius);
-    o->bounds.lo = rt_vec_sub(center, r);
-    o->bounds.hi = rt_vec_add(center, r);
+    rt_scene_derive_sphere(o);
     s->object_count++;
     return RT_OK;
 }
@@ -183,24 +220,11 @@ static rt_vec3 newell_normal(const rt_vec3 *v, size_t n)
     return nrm;
 }
 
-rt_status rt_scene_add_polygon(rt_scene *s, const rt_vec3 *v, size_t n)
+void rt_scene_derive_polygon(const rt_scene *s, rt_object *o)
 {
-    if (n < 3) return RT_ERR_INVALID;
-    if (n > RT_SCENE_MAX_VERTICES) return RT_ERR_LIMIT;
-    for (size_t i = 0; i < n; i++)
-        if (!finite3(v[i])) return RT_ERR_INVALID;
-    if (s->vertex_count + n > UINT32_MAX) return RT_ERR_LIMIT;
-    if (grow((void **)&s->vertices, &s->vertex_capacity, s->vertex_count + n, sizeof *s->vertices))
-        return RT_ERR_NOMEM;
-    rt_object *o;
-    rt_status st = new_object(s, &o);
-    if (st) return st;
-    o->kind = RT_OBJ_POLYGON;
     rt_polygon_data *p = &o->u.polygon;
-    p->first_vertex = (uint32_t)s->vertex_count;
-    p->count = (uint32_t)n;
-    memcpy(s->vertices + s->vertex_count, v, n * sizeof *v);
-    s->vertex_count += n;
+    const rt_vec3 *v = s->vertices + p->first_vertex;
+    size_t n = p->count;
     rt_vec3 nrm = newell_normal(v, n);
     double len = rt_vec_length(nrm);
     double scale = 0.0;
@@ -232,8 +256,48 @@ rt_status rt_scene_add_polygon(rt_scene *s, const rt_vec3 *v, size_t n)
     o->bounds = empty_box();
     if (!p->degenerate)
         for (size_t i = 0; i < n; i++) box_add(&o->bounds, v[i]);
+}
+
+rt_status rt_scene_add_polygon(rt_scene *s, const rt_vec3 *v, size_t n)
+{
+    if (n < 3) return RT_ERR_INVALID;
+    if (n > RT_SCENE_MAX_VERTICES) return RT_ERR_LIMIT;
+    for (size_t i = 0; i < n; i++)
+        if (!finite3(v[i])) return RT_ERR_INVALID;
+    if (s->vertex_count + n > UINT32_MAX) return RT_ERR_LIMIT;
+    if (grow((void **)&s->vertices, &s->vertex_capacity, s->vertex_count + n, sizeof *s->vertices))
+        return RT_ERR_NOMEM;
+    rt_object *o;
+    rt_status st = new_object(s, &o);
+    if (st) return st;
+    o->kind = RT_OBJ_POLYGON;
+    rt_polygon_data *p = &o->u.polygon;
+    p->first_vertex = (uint32_t)s->vertex_count;
+    p->count = (uint32_t)n;
+    memcpy(s->vertices + s->vertex_count, v, n * sizeof *v);
+    s->vertex_count += n;
+    rt_scene_derive_polygon(s, o);
     s->object_count++;
     return RT_OK;
+}
+
+void rt_scene_derive_triangle(rt_object *o)
+{
+    rt_triangle_data *t = &o->u.triangle;
+    rt_vec3 g = rt_vec_cross(rt_vec_sub(t->v[1], t->v[0]), rt_vec_sub(t->v[2], t->v[0]));
+    double len = rt_vec_length(g);
+    double scale = fmax(rt_vec_max_abs(rt_vec_sub(t->v[1], t->v[0])),
+                        rt_vec_max_abs(rt_vec_sub(t->v[2], t->v[0])));
+    t->degenerate = !(len > 1e-300) || !(len > 1e-14 * scale * scale) || !isfinite(len);
+    t->normal = t->degenerate ? rt_vec(0, 0, 1) : rt_vec_scale(g, 1.0 / len);
+    /* A zero vertex normal falls back to the face normal. */
+    for (int k = 0; k < 3; k++)
+        if (rt_vec_is_zero(t->n[k])) t->n[k] = t->normal;
+    rt_vec3 sum = rt_vec_add(t->n[0], rt_vec_add(t->n[1], t->n[2]));
+    t->side = rt_vec_dot(sum, t->normal) < 0.0 ? -1.0 : 1.0;
+    o->bounds = empty_box();
+    if (!t->degenerate)
+        for (int k = 0; k < 3; k++) box_add(&o->bounds, t->v[k]);
 }
 
 rt_status rt_scene_add_patch(rt_scene *s, const rt_vec3 *v, const rt_vec3 *normals, size_t n)
@@ -255,23 +319,31 @@ rt_status rt_scene_add_patch(rt_scene *s, const rt_vec3 *v, const rt_vec3 *norma
             t->v[k] = v[idx[k]];
             t->n[k] = rt_vec_normalize(normals[idx[k]]);
         }
-        rt_vec3 g = rt_vec_cross(rt_vec_sub(t->v[1], t->v[0]), rt_vec_sub(t->v[2], t->v[0]));
-        double len = rt_vec_length(g);
-        double scale = fmax(rt_vec_max_abs(rt_vec_sub(t->v[1], t->v[0])),
-                            rt_vec_max_abs(rt_vec_sub(t->v[2], t->v[0])));
-        t->degenerate = !(len > 1e-300) || !(len > 1e-14 * scale * scale) || !isfinite(len);
-        t->normal = t->degenerate ? rt_vec(0, 0, 1) : rt_vec_scale(g, 1.0 / len);
-        /* A zero vertex normal falls back to the face normal. */
-        for (int k = 0; k < 3; k++)
-            if (rt_vec_is_zero(t->n[k])) t->n[k] = t->normal;
-        rt_vec3 sum = rt_vec_add(t->n[0], rt_vec_add(t->n[1], t->n[2]));
-        t->side = rt_vec_dot(sum, t->normal) < 0.0 ? -1.0 : 1.0;
-        o->bounds = empty_box();
-        if (!t->degenerate)
-            for (int k = 0; k < 3; k++) box_add(&o->bounds, t->v[k]);
+        rt_scene_derive_triangle(o);
         s->object_count++;
     }
     return RT_OK;
+}
+
+void rt_scene_derive_cone(rt_object *o)
+{
+    rt_cone_data *c = &o->u.cone;
+    rt_vec3 axis = rt_vec_sub(c->apex, c->base);
+    double h = rt_vec_length(axis);
+    c->axis = rt_vec_scale(axis, 1.0 / h);
+    c->height = h;
+    c->slope = (c->apex_radius - c->base_radius) / h;
+    /* Bounds of the two end discs: a disc of radius r around axis a spans r*sqrt(1-a_i^2) on axis i. */
+    o->bounds = empty_box();
+    const rt_vec3 centers[2] = {c->base, c->apex};
+    const double radii[2] = {c->base_radius, c->apex_radius};
+    for (int k = 0; k < 2; k++) {
+        rt_vec3 e = rt_vec(radii[k] * sqrt(fmax(0.0, 1.0 - c->axis.x * c->axis.x)),
+                           radii[k] * sqrt(fmax(0.0, 1.0 - c->axis.y * c->axis.y)),
+                           radii[k] * sqrt(fmax(0.0, 1.0 - c->axis.z * c->axis.z)));
+        box_add(&o->bounds, rt_vec_sub(centers[k], e));
+        box_add(&o->bounds, rt_vec_add(centers[k], e));
+    }
 }
 
 rt_status rt_scene_add_cone(rt_scene *s, rt_vec3 base, double rb, rt_vec3 apex, double ra)
@@ -285,25 +357,8 @@ rt_status rt_scene_add_cone(rt_scene *s, rt_vec3 base, double rb, rt_vec3 apex, 
     rt_status st = new_object(s, &o);
     if (st) return st;
     o->kind = RT_OBJ_CONE;
-    rt_cone_data *c = &o->u.cone;
-    c->base = base;
-    c->apex = apex;
-    c->base_radius = rb;
-    c->apex_radius = ra;
-    c->axis = rt_vec_scale(axis, 1.0 / h);
-    c->height = h;
-    c->slope = (ra - rb) / h;
-    /* Bounds of the two end discs: a disc of radius r around axis a spans r*sqrt(1-a_i^2) on axis i. */
-    o->bounds = empty_box();
-    const rt_vec3 centers[2] = {base, apex};
-    const double radii[2] = {rb, ra};
-    for (int k = 0; k < 2; k++) {
-        rt_vec3 e = rt_vec(radii[k] * sqrt(fmax(0.0, 1.0 - c->axis.x * c->axis.x)),
-                           radii[k] * sqrt(fmax(0.0, 1.0 - c->axis.y * c->axis.y)),
-                           radii[k] * sqrt(fmax(0.0, 1.0 - c->axis.z * c->axis.z)));
-        box_add(&o->bounds, rt_vec_sub(centers[k], e));
-        box_add(&o->bounds, rt_vec_add(centers[k], e));
-    }
+    o->u.cone = (rt_cone_data){.base = base, .apex = apex, .base_radius = rb, .apex_radius = ra};
+    rt_scene_derive_cone(o);
     s->object_count++;
     return RT_OK;
 }

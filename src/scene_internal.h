@@ -78,4 +78,13 @@ struct rt_scene {
     int finished;
 };
 
+/* Recompute an object's derived data (normals, planes, axis, bounds) from its defining
+ * geometry: the sphere's centre and radius, the polygon's vertices in s->vertices, the
+ * triangle's vertices and unit vertex normals, the cone's end points and radii. The builders
+ * use them, and so does a motion moving the object (motion.c). */
+void rt_scene_derive_sphere(rt_object *o);
+void rt_scene_derive_polygon(const rt_scene *s, rt_object *o);
+void rt_scene_derive_triangle(rt_object *o);
+void rt_scene_derive_cone(rt_object *o);
+
 #endif

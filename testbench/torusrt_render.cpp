@@ -1,9 +1,11 @@
 // torusrt_render.cpp - the sequential reference renderer: the golden image for every model run.
 #include <CLI/CLI.hpp>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,6 +20,7 @@
 #include "progress.h"
 #include "rt_render.h"
 #include "rt_timing.h"
+#include "scene_motion.h"
 #include "scene_setup.h"
 #include "setting_checks.h"
 #include "stats_json.h"
@@ -47,18 +50,21 @@ struct FrameResult {
     double t1_s;
 };
 
-// The settings every run shares, prepared once (the grid is built once for every frame).
+// The settings every run shares, prepared once (the grid is built once for every frame, or,
+// with --motion, over every frame's object space and updated frame by frame).
 struct RenderSetup {
     CommonSettings settings; // cells, step limits, timing
     rt_budget budget; // outlives every frame: ro.budget points at it
     LoadedScene loaded;
+    std::unique_ptr<SceneMotion> motion; // --motion: owns the scene file's objects and the frame's copy
+    rt_scene *scene = nullptr;           // what is rendered: the scene, or the motion's frame copy
     rt_render_options ro;
 };
 
 FrameResult render_frame(RenderSetup &setup, const std::string &label, const RenderOptions &opt,
                          CostImage *cost = nullptr)
 {
-    const rt_camera *cam = rt_scene_camera(setup.loaded.scene.get());
+    const rt_camera *cam = rt_scene_camera(setup.scene);
     FramebufferPtr fb(rt_framebuffer_new(cam->width, cam->height));
     if (!fb)
         throw UserError("out of memory for a " + std::to_string(cam->width) + "x" +
@@ -70,7 +76,7 @@ FrameResult render_frame(RenderSetup &setup, const std::string &label, const Ren
     if (cost) cost->attach(&ro);
     FrameResult fr;
     char msg[RT_MSG_LEN] = "";
-    if (rt_render(setup.loaded.scene.get(), setup.loaded.grid.get(), &ro, fb.get(), &fr.st, msg,
+    if (rt_render(setup.scene, setup.loaded.grid.get(), &ro, fb.get(), &fr.st, msg,
                   sizeof msg) != RT_OK)
         throw UserError(shown_path(opt.common.scene) + ": " + msg);
     progress.finish();
@@ -89,7 +95,7 @@ uint64_t rays_of(const rt_render_stats &st)
 nlohmann::json stats_json(const RenderOptions &opt, const RenderSetup &setup, const rt_render_stats &st,
                           double t1_s, double wall)
 {
-    const rt_scene *scene = setup.loaded.scene.get();
+    const rt_scene *scene = setup.scene;
     const rt_camera *cam = rt_scene_camera(scene);
     return {{"scene", opt.common.scene},
             {"width", cam->width},
@@ -136,6 +142,7 @@ void stage_outputs(const RenderOptions &opt, size_t frames, RenderOutputs &outs)
     outs.set.add_input("scene", opt.common.scene);
     outs.set.add_input("--timing", opt.common.timing_file);
     outs.set.add_input("--camera-path", opt.anim.camera_path);
+    outs.set.add_input("--motion", opt.anim.motion);
     outs.set.check();
 }
 
@@ -143,7 +150,7 @@ int run_single(const RenderOptions &opt, RenderSetup &setup, RenderOutputs &outs
                std::chrono::steady_clock::time_point t0)
 {
     OutputSet &outputs = outs.set;
-    const rt_camera *cam = rt_scene_camera(setup.loaded.scene.get());
+    const rt_camera *cam = rt_scene_camera(setup.scene);
     CostImage cost(opt.cost_image, cam->width, cam->height, &setup.settings.timing);
     FrameResult fr = render_frame(setup, "torusrt-render", opt, &cost);
     double wall = seconds_since(t0);
@@ -159,7 +166,7 @@ int run_single(const RenderOptions &opt, RenderSetup &setup, RenderOutputs &outs
     if (!opt.common.quiet)
         std::printf("%s: %ux%u, %zu objects, %llu packets, T(1) %.3f s (%s timing), wall %.3f s\n",
                     opt.common.scene.c_str(), cam->width, cam->height,
-                    rt_scene_object_count(setup.loaded.scene.get()),
+                    rt_scene_object_count(setup.scene),
                     static_cast<unsigned long long>(rays_of(fr.st)),
                     fr.t1_s, setup.settings.timing_label.c_str(), wall);
     if (!opt.common.quiet) {
@@ -171,45 +178,78 @@ int run_single(const RenderOptions &opt, RenderSetup &setup, RenderOutputs &outs
     return 0;
 }
 
+// Adds one frame's counts to the run's.
+void add_frame_stats(rt_render_stats &total, const rt_render_stats &st)
+{
+    rt_ops_add(&total.ops, &st.ops);
+    for (int kind = 0; kind < RT_PACKET_KINDS; kind++) {
+        total.packets.created[kind] += st.packets.created[kind];
+        total.packets.consumed[kind] += st.packets.consumed[kind];
+    }
+    total.packets.forwarded += st.packets.forwarded;
+    total.packets.primary_missed += st.packets.primary_missed;
+    if (st.queue_high_water > total.queue_high_water) total.queue_high_water = st.queue_high_water;
+}
+
+// Moves the scene to frame k (with --motion): its objects, then its cell lists; the cost in `sum`.
+nlohmann::json move_scene(RenderSetup &setup, size_t k, MotionFrameCost &sum)
+{
+    if (!setup.motion) return nullptr;
+    const std::array<int, 3> &c = setup.settings.cells;
+    const int cells[3] = {c[0], c[1], c[2]};
+    MotionFrameCost cost = setup.motion->move_to(static_cast<uint32_t>(k), setup.loaded.grid, cells,
+                                                 setup.settings.preprocess_count, &setup.budget);
+    sum.objects_moved += cost.objects_moved;
+    sum.update_units += cost.update_units;
+    sum.rebuild_units += cost.rebuild_units;
+    return motion_frame_json(cost);
+}
+
+// The run's motion for the JSON report: the file and entries, and the units summed over frames.
+nlohmann::json motion_json(const RenderSetup &setup, const MotionFrameCost &sum)
+{
+    nlohmann::json js = setup.motion->json();
+    js["objects_moved"] = sum.objects_moved;
+    js["update_units"] = sum.update_units;
+    js["rebuild_units"] = sum.rebuild_units;
+    return js;
+}
+
 // Every frame's PNG (and the statistics) is staged and committed together at the end.
 int run_frames(const RenderOptions &opt, RenderSetup &setup, RenderOutputs &outs, CameraPathPtr file,
                std::chrono::steady_clock::time_point t0)
 {
-    rt_scene *scene = setup.loaded.scene.get();
-    CameraPathPtr path = make_camera_path(opt.anim, scene, std::move(file));
-    size_t n = rt_camera_path_count(path.get());
+    rt_scene *scene = setup.scene;
+    CameraPathPtr path = make_camera_path(opt.anim, scene, std::move(file)); // null: the camera stays
+    size_t n = animation_frame_count(opt.anim, path.get());
     OutputSet &outputs = outs.set;
     rt_render_stats total{};
+    MotionFrameCost moved{};
     double t1_total = 0.0;
     nlohmann::json frames = nlohmann::json::array();
     char msg[RT_MSG_LEN] = "";
     for (size_t k = 0; k < n; k++) {
-        const rt_camera_pose *pose = rt_camera_path_pose(path.get(), k);
-        if (rt_scene_set_camera(scene, pose, msg, sizeof msg) != RT_OK)
+        if (path && rt_scene_set_camera(scene, rt_camera_path_pose(path.get(), k), msg, sizeof msg) != RT_OK)
             throw UserError("frame " + std::to_string(k) + ": " + msg);
+        nlohmann::json motion = move_scene(setup, k, moved);
         std::string label = "torusrt-render frame " + std::to_string(k + 1) + "/" + std::to_string(n);
         FrameResult fr = render_frame(setup, label, opt);
         const rt_camera *cam = rt_scene_camera(scene);
         const std::string &file = outputs.path(outs.png + k);
         write_png_file(outputs.staged(outs.png + k), file, cam->width, cam->height, fr.rgb);
-        rt_ops_add(&total.ops, &fr.st.ops);
-        for (int kind = 0; kind < RT_PACKET_KINDS; kind++) {
-            total.packets.created[kind] += fr.st.packets.created[kind];
-            total.packets.consumed[kind] += fr.st.packets.consumed[kind];
-        }
-        total.packets.forwarded += fr.st.packets.forwarded;
-        total.packets.primary_missed += fr.st.packets.primary_missed;
-        if (fr.st.queue_high_water > total.queue_high_water) total.queue_high_water = fr.st.queue_high_water;
+        add_frame_stats(total, fr.st);
         t1_total += fr.t1_s;
-        frames.push_back({{"index", k}, {"file", file}, {"camera", camera_pose_json(*pose)},
+        frames.push_back({{"index", k}, {"file", file}, {"camera", camera_pose_json(rt_camera_pose_of(cam))},
                           {"ops", ops_json(fr.st.ops)}, {"packets", packets_json(fr.st.packets)},
                           {"t1_s", fr.t1_s}});
+        if (setup.motion) frames.back()["motion"] = motion;
     }
     double wall = seconds_since(t0);
     if (!opt.common.stats.empty()) {
         nlohmann::json js = stats_json(opt, setup, total, t1_total, wall);
         js["frame_count"] = n;
-        js["camera_source"] = opt.anim.orbit.empty() ? "camera-path" : "orbit";
+        js["camera_source"] = !opt.anim.orbit.empty() ? "orbit" : path ? "camera-path" : "scene";
+        if (setup.motion) js["motion"] = motion_json(setup, moved);
         js["output_pattern"] = opt.common.output;
         js["frames"] = frames;
         write_text_file(outputs.staged(*outs.stats), opt.common.stats, js.dump(2) + "\n");
@@ -221,6 +261,12 @@ int run_frames(const RenderOptions &opt, RenderSetup &setup, RenderOutputs &outs
                     opt.common.scene.c_str(), n, rt_scene_camera(scene)->width, rt_scene_camera(scene)->height,
                     rt_scene_object_count(scene), static_cast<unsigned long long>(rays_of(total)),
                     t1_total, setup.settings.timing_label.c_str(), wall);
+    if (!opt.common.quiet && setup.motion)
+        std::printf("  motion       %llu objects moved, %llu preprocessing units updating the lists "
+                    "(%llu rebuilding them every frame)\n",
+                    static_cast<unsigned long long>(moved.objects_moved),
+                    static_cast<unsigned long long>(moved.update_units),
+                    static_cast<unsigned long long>(moved.rebuild_units));
     if (!opt.common.quiet) {
         std::printf("  wrote        %zu frames %s", n, opt.common.output.c_str());
         if (!opt.common.stats.empty()) std::printf(", %s", opt.common.stats.c_str());
@@ -247,16 +293,29 @@ int run(RenderOptions &opt)
     require_scene_and_output(opt.common);
     RenderSetup setup;
     setup.settings = parse_common_options(opt.common);
+    MotionPtr motion = read_motion_file(opt.anim.motion);
+    take_motion_frame_count(opt.anim, motion.get());
     validate_render(setup.settings, opt);
     warn_about_settings("torusrt-render", setup.settings.step, opt.common.quiet);
     CameraPathPtr file = read_camera_path_file(opt.anim);
+    if (motion) check_motion_frames(opt.anim, motion.get(), file.get());
     RenderOutputs outs;
     stage_outputs(opt, opt.anim.animated() ? animation_frame_count(opt.anim, file.get()) : 0, outs);
 
     setup.budget = rt_budget_make(setup.settings.memory_bytes);
-    setup.loaded = load_scene(opt.common.scene, setup.settings.size[0], setup.settings.size[1], setup.settings.cells,
-                              opt.common.quiet, &setup.budget, setup.settings.preprocess_count);
-    check_shade_tree(opt.common.scene, setup.loaded.scene.get(), setup.settings.step, setup.budget, sizeof(rt_packet));
+    // With --motion the grid is built over every frame's object space at frame 0: the scene's own
+    // is then one cell, so that it takes next to nothing of the memory budget.
+    const std::array<int, 3> one_cell = {1, 1, 1};
+    setup.loaded = load_scene(opt.common.scene, setup.settings.size[0], setup.settings.size[1],
+                              motion ? one_cell : setup.settings.cells, opt.common.quiet, &setup.budget,
+                              setup.settings.preprocess_count);
+    setup.scene = setup.loaded.scene.get();
+    if (motion) {
+        setup.motion = std::make_unique<SceneMotion>(std::move(motion), std::move(setup.loaded.scene),
+                                                     opt.anim.motion, opt.common.quiet);
+        setup.scene = setup.motion->frame_scene();
+    }
+    check_shade_tree(opt.common.scene, setup.scene, setup.settings.step, setup.budget, sizeof(rt_packet));
     setup.ro = rt_render_options_default();
     setup.ro.step = setup.settings.step;
     setup.ro.step.brute_force = opt.brute_force;
@@ -275,7 +334,7 @@ std::vector<OptionSpec> render_option_specs()
 
 void declare_options(CLI::App &app)
 {
-    const std::string output_help = "PNG image to write; with --frames/--camera-path a pattern like out_%04d.png";
+    const std::string output_help = "PNG image to write; with --frames/--camera-path/--motion a pattern like out_%04d.png";
     add_common_options(app, output_help, {"scene", "--size"});
     add_spec_option(app, render_option_specs()[0]);
     add_common_options(app, output_help, {"--cells", "--max-depth", "--min-weight", "--timing-profile", "--timing",
@@ -283,12 +342,13 @@ void declare_options(CLI::App &app)
     add_common_options(app, output_help, {"--output", "--stats"});
     add_spec_option(app, render_option_specs()[1]);
     for (const OptionSpec &spec : animation_option_specs()) add_spec_option(app, spec);
+    add_spec_option(app, motion_option_spec());
     add_common_options(app, output_help, {"--memory-budget", "--quiet"});
     set_help_layout(app, "Usage: torusrt-render SCENE -o FILE [OPTIONS]",
                     "A bare number is decimal: 010 and 0x10 are refused.",
                     "  torusrt-render scenes/paper-image1.nff -o ref.png\n"
                     "  torusrt-render scenes/paper-image2.nff -o ref.png --size 64x64 --stats ref.json\n"
-                    "  torusrt-render scenes/paper-image1.nff -o 'f_%02d.png' --frames 12 --orbit 360\n");
+                    "  torusrt-render scenes/bouncing-balls.nff -o 'b_%02d.png' --motion scenes/bouncing-balls.motion\n");
 }
 
 }  // namespace

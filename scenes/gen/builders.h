@@ -2,10 +2,13 @@
  *
  * Each fills a zeroed scene (with sc->up and sc->factor set) through scene.h; `sc->factor` is
  * the scale the scene is written at (only build_scaled mentions it, in a note). The paper's images are in
- * paper_scenes.c, the stiff and extreme cases in stiff_scenes.c.
+ * paper_scenes.c, the stiff and extreme cases in stiff_scenes.c, the moving scenes' motion files
+ * (and bouncing-balls) in motion_scenes.c.
  */
 #ifndef GEN_BUILDERS_H
 #define GEN_BUILDERS_H
+
+#include <stdio.h>
 
 #include "scene.h"
 
@@ -16,6 +19,7 @@ void build_paper_image1_planar_z(scene *sc);
 void build_paper_image1_cube(scene *sc);
 void build_paper_image1_tree(scene *sc);
 void build_paper_image2_wall(scene *sc);
+void build_orbiting_mirror(scene *sc);
 
 /* stiff_scenes.c */
 void build_axis_rays(scene *sc);
@@ -34,5 +38,10 @@ void build_tiny_alone(scene *sc);
 void build_cones_and_patches(scene *sc);
 void build_one_pixel(scene *sc);
 void build_opposing_normals(scene *sc);
+
+/* motion_scenes.c: the moving scenes' own builders and their motion files */
+void build_bouncing_balls(scene *sc);
+void write_bouncing_balls_motion(FILE *f);
+void write_orbiting_mirror_motion(FILE *f);
 
 #endif

@@ -188,3 +188,21 @@ void build_paper_image2_wall(scene *sc)
     note(sc, "standing in the vertical plane z = -7 behind them, facing the eye; 123 objects.");
     image2(sc, 1, v3(0, 4, 14), v3(0, 2.5, -4));
 }
+
+/* Orbiting mirror: image 2 whose mirror sphere circles the glass sphere (the motion is
+ * written by write_orbiting_mirror_motion). The view is framed to hold the mirror sphere at
+ * every quarter of its orbit. */
+void build_orbiting_mirror(scene *sc)
+{
+    note(sc, "Image 2 with a moving mirror (docs/scenes.md): paper-image2's objects, the mirror");
+    note(sc, "sphere (object 1) circling the glass sphere (object 0) about the vertical axis through");
+    note(sc, "its centre, once in 64 frames (scenes/orbiting-mirror.motion); 123 objects.");
+    image2(sc, 0, v3(0, 15, 10), v3(0, 0.5, -6));
+    int keep_items = sc->nitems, keep_objects = sc->nobjects;
+    /* The mirror's centre turned by 90, 180 and 270 degrees about the glass sphere's axis. */
+    const vec3 quarter[3] = {v3(-2.3, 2.5, -6.6), v3(-6.9, 2.5, -2.0), v3(-2.3, 2.5, 2.6)};
+    for (int k = 0; k < 3; ++k) sphere(sc, quarter[k], 2.0);
+    frame_all(sc, 1.02);
+    sc->nitems = keep_items; /* the framing spheres are not part of the scene */
+    sc->nobjects = keep_objects;
+}

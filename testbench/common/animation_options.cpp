@@ -39,6 +39,7 @@ AnimationOptions animation_options_given(const std::map<std::string, std::string
     take("--frames", opt.frames_text);
     take("--orbit", opt.orbit);
     take("--camera-path", opt.camera_path);
+    take("--motion", opt.motion);
     return opt;
 }
 
@@ -66,9 +67,9 @@ void check_animation_options(AnimationOptions &opt)
                                 std::to_string(opt.frames - 1) + " x DEG / " + std::to_string(opt.frames) +
                                 ") would not be a finite number", 2);
     }
-    if (opt.frames >= 0 && opt.orbit.empty() && opt.camera_path.empty())
+    if (opt.frames >= 0 && opt.orbit.empty() && opt.camera_path.empty() && opt.motion.empty())
         throw UserError("--frames " + std::to_string(opt.frames) +
-                            ": needs --orbit DEG or --camera-path FILE for the frames' cameras",
+                            ": needs --orbit DEG or --camera-path FILE for the frames' cameras (or --motion FILE)",
                         2);
 }
 
@@ -96,7 +97,7 @@ size_t animation_frame_count(const AnimationOptions &opt, const rt_camera_path *
 
 CameraPathPtr make_camera_path(const AnimationOptions &opt, const rt_scene *scene, CameraPathPtr file)
 {
-    if (file) return file;
+    if (file || opt.orbit.empty()) return file;
     char msg[RT_MSG_LEN] = "";
     rt_camera_path *raw = nullptr;
     rt_camera_pose start = rt_camera_pose_of(rt_scene_camera(scene));

@@ -1,5 +1,6 @@
 // animation_options.h - the frames of an animation on the command line: --frames, --orbit,
-// --camera-path, shared by the executables.
+// --camera-path, shared by the executables, and --motion's frame count (torusrt-render only:
+// scene_motion.h registers it).
 #pragma once
 
 #include <map>
@@ -21,8 +22,11 @@ struct AnimationOptions {
     std::string orbit;       // total degrees; empty: not given
     double orbit_degrees = 0; // set by check_animation_options: --orbit's value
     std::string camera_path; // file; empty: not given
-    // Any of the three given: the run is an animation and -o is a pattern.
-    bool animated() const { return !frames_text.empty() || !orbit.empty() || !camera_path.empty(); }
+    std::string motion;      // --motion file; empty: not given (or not an option of the executable)
+    // Any of them given: the run is an animation and -o is a pattern.
+    bool animated() const { return !frames_text.empty() || !orbit.empty() || !camera_path.empty() || !motion.empty(); }
+    // --orbit or --camera-path given: the camera moves (else it stays where the scene puts it).
+    bool camera_moves() const { return !orbit.empty() || !camera_path.empty(); }
 };
 
 // --frames, --orbit and --camera-path (the run's workload, never a machine file's).
@@ -31,7 +35,8 @@ std::vector<OptionSpec> animation_option_specs();
 AnimationOptions animation_options_given(const std::map<std::string, std::string> &given);
 // Checks the combination before any file is read; throws UserError (exit 2) naming the option.
 // --frames N needs --orbit (and --orbit needs --frames); --camera-path gives the frame count
-// itself, and --frames beside it must agree. Every frame's orbit angle must be finite.
+// itself, and --frames beside it must agree. Every frame's orbit angle must be finite. With
+// --motion, --frames alone is allowed (scene_motion.h checks it against the motion file).
 void check_animation_options(AnimationOptions &opt);
 // The --camera-path file's poses, read before the scene so that every frame's output can be
 // checked first (nullptr for --orbit). A bad file is exit 2 with FILE:LINE, and so is --frames
@@ -40,7 +45,7 @@ CameraPathPtr read_camera_path_file(const AnimationOptions &opt);
 // The number of frames: the file's poses, or --frames.
 size_t animation_frame_count(const AnimationOptions &opt, const rt_camera_path *file);
 // The frames' camera poses: the file's (read_camera_path_file), or the orbit from the scene's
-// own camera.
+// own camera; nullptr when neither is given (a --motion run: the scene's camera stays).
 CameraPathPtr make_camera_path(const AnimationOptions &opt, const rt_scene *scene, CameraPathPtr file);
 
 }  // namespace torusrt

@@ -3,7 +3,7 @@
 #
 # Usage: bash tests/cli/scenes_uptodate.sh BUILD_DIR SOURCE_DIR
 # Runs BUILD_DIR/torusrt-genscenes into a temporary folder, compares every file byte for byte
-# with SOURCE_DIR/scenes/NAME.nff, checks that the two sets of names (and --list) agree, that
+# with SOURCE_DIR/scenes/NAME.nff (and NAME.motion), checks that the two sets of names (and --list) agree, that
 # the paper's scenes hold 369 and 123 objects, and that the generator is deterministic.
 # Prints "N passed, M failed"; exits 1 on any failure.
 set -u
@@ -28,8 +28,8 @@ else
     exit 1
 fi
 
-# 2. Every generated file is checked in, byte for byte.
-for f in "$TMP"/a/*.nff; do
+# 2. Every generated file (scenes and motion files) is checked in, byte for byte.
+for f in "$TMP"/a/*.nff "$TMP"/a/*.motion; do
     [ -e "$f" ] || { fail "the generator wrote no .nff files"; break; }
     name=$(basename "$f")
     if [ ! -f "$scenes/$name" ]; then
@@ -43,8 +43,8 @@ for f in "$TMP"/a/*.nff; do
     fi
 done
 
-# 3. Every checked-in scene is generated.
-for f in "$scenes"/*.nff; do
+# 3. Every checked-in scene and motion file is generated.
+for f in "$scenes"/*.nff "$scenes"/*.motion; do
     [ -e "$f" ] || continue
     name=$(basename "$f")
     if [ -f "$TMP/a/$name" ]; then
@@ -52,6 +52,11 @@ for f in "$scenes"/*.nff; do
     else
         fail "scenes/$name is checked in but torusrt-genscenes does not write it"
     fi
+done
+# A motion file belongs to the scene of its name.
+for f in "$scenes"/*.motion; do
+    [ -e "$f" ] || continue
+    [ -f "${f%.motion}.nff" ] && pass || fail "$(basename "$f") has no scene ${f%.motion}.nff"
 done
 
 # 4. --list names the same set.

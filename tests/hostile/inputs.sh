@@ -21,6 +21,7 @@ printf 'torusrt-map 1 1 1 1 1\n0\0\n' >"$TMP/nul.map"
 printf '0 0 5 0 0 0 0 1 0 45\n\0\n' >"$TMP/nul.path"
 printf 'link = 5\n\0\n' >"$TMP/nul.timing"
 printf 'v\nfrom 0 0 5\nat 0 0 0\n\0' >"$TMP/nul.nff"
+printf 'frames 2\n\0\n' >"$TMP/nul.motion"
 
 # refused NAME WANT_STATUS PATTERN COMMAND...: the run fails with that status, stderr holds
 # PATTERN, and the output folder stays empty.
@@ -51,6 +52,7 @@ for entry in "${kinds[@]}"; do
         refused "$exe-camera-path-$kind" 2 "--camera-path: $says" "$prog" "$scene" --camera-path "$p" \
             -o "$TMP/out/f%d.png" -q
     done
+    refused "render-motion-$kind" 2 "--motion: $says" "$render" "$scene" --motion "$p" -o "$TMP/out/f%d.png" -q
     refused "sim-config-$kind" 2 "--config: $says" "$sim" "$scene" --config "$p" -o "$TMP/out/a.png" -q
     refused "sim-dump-config-$kind" 2 "--config: $says" "$sim" --dump-config --config "$p"
     refused "sim-map-file-$kind" 2 "--map-file: $says" "$sim" "$scene" --map-file "$p" -o "$TMP/out/a.png" -q
@@ -65,6 +67,8 @@ for exe in render sim; do
     refused "$exe-camera-path-nul" 2 "$TMP/nul.path:2: binary data" "$prog" "$scene" --camera-path "$TMP/nul.path" \
         -o "$TMP/out/f%d.png" -q
 done
+refused "render-motion-nul" 2 "--motion: $TMP/nul.motion:2: binary data" "$render" "$scene" --motion "$TMP/nul.motion" \
+    -o "$TMP/out/f%d.png" -q
 refused "sim-config-nul" 2 "--config: $TMP/nul.toml:1: binary data" "$sim" --dump-config --config "$TMP/nul.toml"
 refused "sim-map-file-nul" 2 "$TMP/nul.map:2: binary data" "$sim" "$scene" --map-file "$TMP/nul.map" -o "$TMP/out/a.png" -q
 
@@ -78,6 +82,8 @@ printf '%storusrt-map 1 1 1 1 1\n0\n' "$bom" >"$TMP/bom.map"
 check "sim: a --map-file with a BOM is read" "$sim" "$scene" --map-file "$TMP/bom.map" --cells 1 -o "$TMP/bom.png" -q
 printf '%s0 0 5 0 0 0 0 1 0 45\n' "$bom" >"$TMP/bom.path"
 check "render: a --camera-path with a BOM is read" "$render" "$scene" --camera-path "$TMP/bom.path" -o "$TMP/bom%d.png" -q
+printf '%sframes 2\n' "$bom" >"$TMP/bom.motion"
+check "render: a --motion file with a BOM is read" "$render" "$scene" --motion "$TMP/bom.motion" -o "$TMP/bomm%d.png" -q
 { printf '%s' "$bom"; cat "$SRC/timing/literal.timing"; } >"$TMP/bom.timing"
 check "render: a --timing file with a BOM is read" "$render" "$scene" --timing "$TMP/bom.timing" -o "$TMP/bomt.png" -q
 finish

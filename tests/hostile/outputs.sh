@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # outputs.sh - every output option of both programs naming one of the run's inputs (scene,
-# --timing, --config, --map-file, --camera-path), directly or as a frame of an animation's -o
+# --timing, --config, --map-file, --camera-path, --motion), directly or as a frame of an animation's -o
 # pattern, or naming another output: refused before anything runs (exit 2), the input
 # unchanged, nothing written. A 254-byte output name (NAME_MAX allows 255) is written, and its
 # temporary fits too. A run with no packets writes a VCD with its header and signals.
@@ -104,6 +104,19 @@ for input in "${render_inputs[@]}"; do
     check "render: x1.$ext unchanged" cmp -s "x1.$ext" "keep.x1.$ext"
     rm -f "x1.$ext" "keep.x1.$ext" x0."$ext" x2."$ext"
 done
+
+# The --motion file as --stats, and as frame 1 of the -o pattern: refused, the file unchanged.
+printf 'frames 3\nobjects 0\nkey 2 move 0 1 0\n' >x1.motion && cp x1.motion keep.x1.motion
+"${run_limited[@]}" "${render[@]}" scene.nff --motion x1.motion -o "out/f%d.png" --stats x1.motion >/dev/null \
+    2>frame.err </dev/null
+rc=$?
+check "render: --stats onto the --motion file: exit $rc: $(head -c 200 frame.err)" [ "$rc" -eq 2 ]
+"${run_limited[@]}" "${render[@]}" scene.nff --motion x1.motion -o "x%d.motion" >/dev/null 2>frame.err </dev/null
+rc=$?
+check "render: frame 1 of -o x%d.motion is the --motion file: exit $rc: $(head -c 200 frame.err)" [ "$rc" -eq 2 ]
+check "render: x1.motion unchanged" cmp -s x1.motion keep.x1.motion
+check "render: no frame or stats written" [ -z "$(ls -A out)" ] && [ ! -e x0.motion ] && [ ! -e x2.motion ]
+rm -f x1.motion keep.x1.motion
 
 # Outputs naming each other, a frame included, through another spelling of the name.
 refused "sim --stats onto frame 1" "${sim[@]}" scene.nff --frames 3 --orbit 10 -o "out/f%d.png" --stats ./out/f1.png
