@@ -207,7 +207,6 @@ class CommUnit final : public sc_core::sc_module, public PacketSinkIf, public De
     const Routing &m_routing;
     const rt_grid *m_grid;
     const int32_t *m_owner;
-    const ReplicaChoice *m_replicas;
     PacketSinkIf *m_local_sink = nullptr; // what `local` is bound to (from the start of simulation)
     // Per incoming-link socket, what it is bound to (a crossing's target).
     std::array<LinkInput, kDirections> m_inputs;
@@ -226,6 +225,7 @@ class CommUnit final : public sc_core::sc_module, public PacketSinkIf, public De
     std::vector<sc_core::sc_event *> m_processor_waiters; // on_space(): notified with m_processor_room
     std::array<int, kDirections> m_port_of_dir; // link_out's index per direction (-1: none)
     int m_links_bound = 0;                      // link_out's bindings so far
+    const ReplicaChoice *m_replicas; // last: the hop path's members keep their places
 };
 
 }  // namespace torusrt
