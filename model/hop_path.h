@@ -10,7 +10,9 @@
 // The trick: a hop asks for all of a crossing's lines at once as it picks the way, where the
 // crossing would otherwise fetch them one after another, each only once the one before has come
 // in to name it (at 512 nodes every one is cold). The prefetches are forced inline: GCC drops a
-// called function whose only effect is a prefetch. Measured gain: see docs/model.md, Transport.
+// called function whose only effect is a prefetch. Measured gain, with PooledFifo's prefetch
+// (the two were not measured apart): medians of 12 interleaved runs of paper-image1 144x144,
+// 0.490 s against 0.561 s at 512 IPs, 1.375 s against 1.491 s at 4096 (docs/model.md).
 #pragma once
 
 #include <array>

@@ -6,8 +6,9 @@
 //
 // The trick: after a reader takes the oldest packet, prefetch_front() asks for the next one's
 // slot (the one it takes next, cold after its wait in the queue) while it works on this one;
-// forced inline, as GCC drops a called function whose only effect is a prefetch. Measured gain: see
-// docs/model.md, Transport.
+// forced inline, as GCC drops a called function whose only effect is a prefetch. Measured gain,
+// with HopPath's prefetch (the two were not measured apart): 0.490 s against 0.561 s at 512 IPs
+// (docs/model.md).
 #pragma once
 
 #include <cstddef>
