@@ -84,6 +84,8 @@ class ClusterBus : public sc_core::sc_module {
     // Requesters waiting for a grant right now (for the deadlock report).
     int waiting() const;
     BusStats stats() const;
+    // The grant log stays in the bus: it is the golden log its tests compare, off by default at
+    // one untaken branch per grant.
     void keep_log(bool on) { m_keep_log = on; }
     const std::vector<Grant> &log() const { return m_log; }
 

@@ -10,7 +10,6 @@
 #include "rt_step.h"
 #include "sim_now.h"
 #include "timed_packet.h"
-#include "toroidal_link.h"
 
 namespace torusrt {
 
@@ -27,14 +26,10 @@ size_t neighbours(const Routing &routing, int node)
 CommUnit::CommUnit(sc_core::sc_module_name name, int node, const Routing &routing, const rt_grid *grid,
                    const int32_t *cell_owner, const Setup &setup)
     : sc_module(name), link_in("link_in", neighbours(routing, node)), in("in"), local("local"),
-      link_out("link_out"), m_lookahead(setup.lookahead), m_route_at_once(setup.route_at_once), m_node(node),
-      m_flow(setup.flow), m_routing(routing), m_grid(grid), m_owner(cell_owner), m_replicas(setup.replicas)
+      link_out("link_out"), m_pool(setup.pool ? setup.pool : &m_own_pool), m_wake(setup.calendar, *this, m_due),
+      m_lookahead(setup.lookahead), m_route_at_once(setup.route_at_once), m_node(node), m_flow(setup.flow),
+      m_routing(routing), m_grid(grid), m_owner(cell_owner), m_replicas(setup.replicas)
 {
-    if (setup.pool) m_pool = setup.pool;
-    if (setup.calendar) {
-        m_calendar = setup.calendar;
-        m_calendar_id = setup.calendar->add(*this);
-    }
     m_port_of_dir.fill(-1);
     in.bind(*this);
     for (size_t i = 0; i < link_in.size(); i++) {
@@ -68,15 +63,18 @@ void CommUnit::end_of_elaboration()
 void CommUnit::start_of_simulation()
 {
     m_local_sink = local.operator->(); // bound now
-    for (ToroidalLink::HopLines &out : m_out_links)
-        if (out.link) out.target = out.link->socket.operator->();
+    for (int dir = 0; dir < kDirections; dir++)
+        if (m_port_of_dir[dir] >= 0) m_ways.set_sink(dir, link_out[m_port_of_dir[dir]]);
 }
 
-void CommUnit::connect_link(int dir, ToroidalLink &link, CommUnit &receiver)
+void CommUnit::connect_link(int dir, sc_core::sc_export<PacketSinkIf> &in, tlm::tlm_initiator_socket<> &socket,
+                            CommUnit &receiver)
 {
-    bind_link_out(dir, link.in);
-    m_out_links[dir] = {&link, nullptr, reinterpret_cast<const char *>(&receiver.m_pool)};
-    link.socket.bind(receiver.next_link_in());
+    bind_link_out(dir, in);
+    LinkInSocket &target = receiver.next_link_in();
+    // A crossing lands in the receiver's input for that socket, then in its arrival state.
+    m_ways.set_lines(dir, &receiver.m_inputs[receiver.m_processor_source - 1], &receiver.m_pool);
+    socket.bind(target);
 }
 
 int CommUnit::owner_of(const TimedPacket &p) const
@@ -87,15 +85,12 @@ int CommUnit::owner_of(const TimedPacket &p) const
 
 CommUnit::Hop CommUnit::next_hop(TimedPacket &p, int owner)
 {
-    if (owner == m_node) return {m_local_sink, nullptr, true, -1};
+    if (owner == m_node) return {m_local_sink, true, -1};
     int dir = m_routing.next_direction(m_node, owner);
-    if (dir < 0) SC_REPORT_FATAL(name(), "no link toward the packet's owner");
+    PacketSinkIf *way = dir < 0 ? nullptr : m_ways.sink(dir);
+    if (!way) SC_REPORT_FATAL(name(), "no link toward the packet's owner");
     p.vc = link_channel(m_flow, m_routing, p, m_node, dir);
-    // The port's own link first: the port table is only read for a link bound some other way.
-    if (ToroidalLink *link = m_out_links[dir].link) return {link, link, false, dir};
-    int port = m_port_of_dir[dir];
-    if (port < 0) SC_REPORT_FATAL(name(), "no link toward the packet's owner");
-    return {link_out[port], nullptr, false, dir};
+    return {way, false, dir};
 }
 
 BufferSpace *CommUnit::room_for(const TimedPacket &p)
@@ -193,21 +188,14 @@ void CommUnit::enqueue(uint32_t packet, const sc_core::sc_time &stamp, int sourc
 void CommUnit::b_transport(int source, tlm::tlm_generic_payload &trans, sc_core::sc_time &delay)
 {
     auto *ext = trans.get_extension<PacketExtension>();
-    if (!ext) {
+    if (!ext || !ext->pool) {
         trans.set_response_status(tlm::TLM_GENERIC_ERROR_RESPONSE);
         return;
     }
-    // By handle from a link of this machine; else the packet is copied in.
-    uint32_t packet;
-    if (ext->pool == m_pool) {
-        packet = ext->handle;
-    } else if (ext->pool) {
-        packet = m_pool->add(ext->pool->at(ext->handle), ext->pool->owner(ext->handle));
-        ext->pool->release(ext->handle);
-    } else {
-        packet = m_pool->add(ext->item, owner_of(ext->item));
-    }
-    // Arrival in the sender's local time.
+    // The packet by handle (from another pool, moved into this one), arriving in the sender's
+    // local time plus the link's annotated delay.
+    uint32_t packet = m_pool->adopt(*ext->pool, ext->handle);
+    if (m_pool->owner(packet) < 0) m_pool->reuse(packet, owner_of(m_pool->at(packet)));
     enqueue(packet, sim_now() + delay, source, ext->credit);
     trans.set_response_status(tlm::TLM_OK_RESPONSE);
 }
@@ -218,8 +206,7 @@ void CommUnit::wake_at(const sc_core::sc_time &when)
     // Due now: deliver one delta on. Later: the calendar's wake or a timed notification (an
     // earlier one pending is kept; deliver() asks again for the rest).
     if (when <= now) m_run.notify(sc_core::SC_ZERO_TIME);
-    else if (m_calendar) m_calendar->wake_at(m_calendar_id, when);
-    else m_due.notify(when - now);
+    else m_wake.at(when, when - now);
 }
 
 bool CommUnit::forward(uint32_t packet)
@@ -228,16 +215,15 @@ bool CommUnit::forward(uint32_t packet)
     sc_core::sc_time now = sim_now();
     if (p.stamp < now) p.stamp = now; // held packets move on no earlier than now
     Hop next = next_hop(p, m_pool->owner(packet));
-    if (next.link) ToroidalLink::prefetch_hop(m_out_links[next.dir]);
-    if (!(next.link ? next.link->ToroidalLink::can_accept(p) : next.sink->can_accept(p))) {
+    if (!next.local) m_ways.prefetch(next.dir);
+    if (!next.sink->can_accept(p)) {
         next.sink->on_space(p, m_retry);
         return false;
     }
     (next.local ? m_local : m_transit)++;
     BufferSpace *credit = m_pool->credit(packet);
     // The packet goes on by handle: into a link, or into the processor side's input queue.
-    if (next.link) next.link->accept_pooled(*m_pool, packet, now);
-    else next.sink->accept_pooled(*m_pool, packet);
+    next.sink->accept_pooled(*m_pool, packet);
     if (credit) credit->release();
     return true;
 }

@@ -13,11 +13,11 @@
 // routed as it is handed over when no arrival is due: the processor runs after the delta's
 // deliveries, so this is the order of one delta later.
 //
-// Timed wake-up: in a machine that has one (Setup::calendar), the unit asks the machine's wake
-// calendar (wake_calendar.h) to wake it at its earliest arrival time, and the calendar calls
+// Timed wake-up (TimedWake, timed_wake.h): in a machine that has one (Setup::calendar), the unit
+// asks the machine's wake calendar to wake it at its earliest arrival time, and the calendar calls
 // deliver() then, units due at one time in node order; alone, the unit notifies its own timed
 // event. Either way an arrival due now (or pushed in this delta) waits for m_run, one delta on.
-// A processor that runs after its own node's deliveries (IntersectionProcessor::order_after)
+// A processor that runs after its own node's deliveries (ProcessorSetup::order_after)
 // asks the unit whether an arrival is still due and, during a delivery round, to be run when
 // the round is over.
 //
@@ -45,6 +45,7 @@
 #include "activation_queue.h"
 #include "arrival_queue.h"
 #include "delivery_round_if.h"
+#include "hop_path.h"
 #include "module_stats.h"
 #include "packet_pool.h"
 #include "packet_sink_if.h"
@@ -52,7 +53,7 @@
 #include "routing.h"
 #include "sim_now.h"
 #include "sim_config.h"
-#include "toroidal_link.h"
+#include "timed_wake.h"
 #include "wake_calendar.h"
 
 namespace torusrt {
@@ -113,9 +114,10 @@ class CommUnit final : public sc_core::sc_module, public PacketSinkIf, public De
         m_port_of_dir[dir] = m_links_bound++;
         link_out.bind(sink);
     }
-    // Connects `link` as the way out in direction `dir`, to `receiver`'s next incoming-link
-    // socket: packets then go on to it by handle (elaboration).
-    void connect_link(int dir, ToroidalLink &link, CommUnit &receiver);
+    // Binds a link as the way out in direction `dir`: link_out to the link's `in`, and the link's
+    // `socket` to `receiver`'s next incoming-link socket (elaboration; nothing of either is kept).
+    void connect_link(int dir, sc_core::sc_export<PacketSinkIf> &in, tlm::tlm_initiator_socket<> &socket,
+                      CommUnit &receiver);
 
     bool arrival_due() const override { return !m_arrivals.empty() && m_arrivals.next_time() <= sim_now(); }
     bool run_after_delivery(ActivationQueue::Client &client) override
@@ -155,9 +157,8 @@ class CommUnit final : public sc_core::sc_module, public PacketSinkIf, public De
     };
     struct Hop {
         PacketSinkIf *sink;
-        ToroidalLink *link; // the sink as a link of this machine (takes pool handles), or null
-        bool local;
-        int dir; // the link's direction, when `link` is set
+        bool local; // the processor side; else the way out in direction `dir`
+        int dir;
     };
     // The node owning the cell `p` is in.
     int owner_of(const TimedPacket &p) const;
@@ -187,16 +188,11 @@ class CommUnit final : public sc_core::sc_module, public PacketSinkIf, public De
     void end_of_elaboration() override;
     void start_of_simulation() override;
 
-    PacketPool m_own_pool;
-    // What a hop touches here, on cache lines of their own: the first two when a packet arrives
-    // from a link (a sender prefetches them) and when delivery starts, the third and the
-    // direction's entry of m_out_links when a packet is routed on.
-    alignas(64) PacketPool *m_pool = &m_own_pool;
-    WakeCalendar *m_calendar = nullptr;
-    int m_calendar_id = -1;
-    int m_processor_source = 0; // = the number of incoming links bound
-    sc_core::sc_time m_lookahead; // the quantum when loosely timed, else 0
-    size_t m_held_total = 0; // packets held (checked first: usually none)
+    PacketPool *m_pool;                 // the machine's packet pool, or m_own_pool
+    TimedWake m_wake;                   // the machine's wake calendar, or m_due
+    int m_processor_source = 0;         // = the number of incoming links bound
+    sc_core::sc_time m_lookahead;       // the quantum when loosely timed, else 0
+    size_t m_held_total = 0;            // packets held (checked first: usually none)
     bool m_route_at_once = false;
     bool m_delivering = false;
     ActivationQueue::Client *m_after_delivery = nullptr;
@@ -210,8 +206,7 @@ class CommUnit final : public sc_core::sc_module, public PacketSinkIf, public De
     PacketSinkIf *m_local_sink = nullptr; // what `local` is bound to (from the start of simulation)
     // Per incoming-link socket, what it is bound to (a crossing's target).
     std::array<LinkInput, kDirections> m_inputs;
-    // Per direction, the machine's link there (or none) and where its crossings touch memory.
-    std::array<ToroidalLink::HopLines, kDirections> m_out_links{};
+    HopPath m_ways; // per direction, what link_out is bound to there (from the start of simulation)
     // Per source, per incoming buffer (2 x class + channel), pool handles.
     // Sorted by buffer; retry() visits them in that order.
     struct HeldFifo {
@@ -225,7 +220,8 @@ class CommUnit final : public sc_core::sc_module, public PacketSinkIf, public De
     std::vector<sc_core::sc_event *> m_processor_waiters; // on_space(): notified with m_processor_room
     std::array<int, kDirections> m_port_of_dir; // link_out's index per direction (-1: none)
     int m_links_bound = 0;                      // link_out's bindings so far
-    const ReplicaChoice *m_replicas; // last: the hop path's members keep their places
+    const ReplicaChoice *m_replicas; // the owners of replicated cells, or null
+    PacketPool m_own_pool;
 };
 
 }  // namespace torusrt

@@ -14,7 +14,8 @@ IntersectionProcessor::IntersectionProcessor(sc_core::sc_module_name name, const
                                              const int32_t *cell_owner, int owner_id, int index,
                                              PacketLedger &ledger, const ProcessorSetup &setup)
     : sc_module(name), in("in"), out("out"), fetch("fetch"), fb_socket("fb_socket"),
-      m_reserving(config.flow != FlowControl::none && config.queue_capacity != 0), m_config(config),
+      m_reserving(config.flow != FlowControl::none && config.queue_capacity != 0),
+      m_timer_wake(setup.calendar, *this, m_timer), m_config(config),
       m_scene(scene), m_grid(grid), m_owner(cell_owner), m_owner_id(owner_id), m_index(index),
       m_ledger(ledger), m_params(config.step), m_time(config.style == TimingStyle::lt),
       m_queue(std::string(basename()) + ".queue", config.queue_capacity), m_threaded(config.cluster > 1)
@@ -22,10 +23,6 @@ IntersectionProcessor::IntersectionProcessor(sc_core::sc_module_name name, const
     in.bind(*this);
     m_params.replicas = setup.replicas;
     if (rt_step_result_init(&m_result, scene) != RT_OK) throw std::bad_alloc();
-    if (setup.calendar) {
-        m_calendar = setup.calendar;
-        m_calendar_id = setup.calendar->add(*this);
-    }
     m_activations = setup.activations;
     m_unit = setup.order_after;
     if (setup.order_after) m_queue.tell_reader_at_once(this);
@@ -283,8 +280,8 @@ void IntersectionProcessor::run_method()
     m_acting = false;
     if (m_wake != Wake::timer) return;
     m_due = sim_now() + m_delay;
-    if (m_calendar && m_delay != sc_core::SC_ZERO_TIME) m_calendar->wake_at(m_calendar_id, m_due);
-    else m_timer.notify(m_delay); // zero: the next delta, as wait(SC_ZERO_TIME)
+    if (m_delay != sc_core::SC_ZERO_TIME) m_timer_wake.at(m_due, m_delay);
+    else m_timer.notify(sc_core::SC_ZERO_TIME); // the next delta, as wait(SC_ZERO_TIME)
 }
 
 }  // namespace torusrt

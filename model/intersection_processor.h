@@ -43,12 +43,11 @@
 #include "activation_queue.h"
 #include "sim_config.h"
 #include "time_keeper.h"
+#include "timed_wake.h"
 #include "wake_calendar.h"
 
 namespace torusrt {
 
-// The interfaces come before sc_module so that their virtual-table pointers share the object's
-// first line: the comm unit, the calendar and the queue call in through them at every step.
 // The machine's choices for a processor, fixed at elaboration; a processor alone takes the
 // defaults (its own timer, activation event and queue pool, no primaries).
 struct ProcessorSetup {
@@ -74,8 +73,8 @@ struct ProcessorSetup {
     const rt_replicas *replicas = nullptr;
 };
 
-class IntersectionProcessor : public PacketSinkIf, public WakeCalendar::Client, public PacketQueue::Reader,
-                              public ActivationQueue::Client, public sc_core::sc_module {
+class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf, public WakeCalendar::Client,
+                              public PacketQueue::Reader, public ActivationQueue::Client {
   public:
     sc_core::sc_export<PacketSinkIf> in;                                      // packets to process
     sc_core::sc_port<PacketSinkIf> out;                                       // new and forwarded packets
@@ -149,10 +148,9 @@ class IntersectionProcessor : public PacketSinkIf, public WakeCalendar::Client, 
     bool try_take_up();
     static void on_test(void *ctx, uint32_t object);
 
-    // What a step reads and writes, from the first line on, in the order a step touches it: at 512
-    // nodes a processor is cold when its turn comes, so every line it touches counts. What only a
-    // cluster, the class scheme or a copied packet uses comes after the queue.
-    alignas(64) Stage m_stage = Stage::top;
+    // What a step reads and writes first, in the order a step touches it; what only a cluster,
+    // the class scheme or a copied packet uses after the queue.
+    Stage m_stage = Stage::top;
     Wake m_wake = Wake::start;
     bool m_woken = false, m_room_woken = false; // method driver: what woke it this delta
     bool m_act_asked = false, m_acting = false;
@@ -161,12 +159,11 @@ class IntersectionProcessor : public PacketSinkIf, public WakeCalendar::Client, 
     static constexpr uint32_t kNoHandle = ~uint32_t{0};
     uint32_t m_handle = kNoHandle;
     uint32_t m_out_cls = 0;        // the class of the step's outputs
-    int m_calendar_id = -1;
     // The packet taken up: m_current, or its pool slot (m_handle) where it was stepped in place.
     TimedPacket *m_cur = &m_current;
     DeliveryRoundIf *m_unit = nullptr;  // order_after: its node's unit
     ActivationQueue *m_activations = nullptr;
-    WakeCalendar *m_calendar = nullptr;
+    TimedWake m_timer_wake;             // ends a timed wait: the machine's calendar, or m_timer
     // The interfaces bound to `out` and `fb_socket`, kept after elaboration so a step does not
     // read the ports for them.
     PacketSinkIf *m_out = nullptr;
@@ -194,8 +191,8 @@ class IntersectionProcessor : public PacketSinkIf, public WakeCalendar::Client, 
     std::vector<uint32_t> m_tested; // objects tested in the current step (shared data only)
     bool m_threaded;
     tlm::tlm_generic_payload m_fb_trans; // a member, not a thread local: freed with the module
-    // The events last: on the calendar's path (a flat machine with a positive link time) none is
-    // touched per step.
+    // On the calendar's path (a flat machine with a positive link time) no event is touched per
+    // step.
     sc_core::sc_event m_room;           // an output's buffer released a slot
     sc_core::sc_event m_out_room;       // the processor side may hand over again
     sc_core::sc_event m_timer;          // method driver: the owed wait is over

@@ -50,8 +50,17 @@ class PacketPool {
         s.credit = nullptr;
         s.owner = owner;
     }
+    // Packet `h` of `from`, now a packet of this pool: the same handle when `from` is this pool;
+    // else a copy (heading for the same node) and `h` is released there.
+    uint32_t adopt(PacketPool &from, uint32_t h)
+    {
+        if (&from == this) return h;
+        uint32_t mine = add(from.at(h), from.owner(h));
+        from.release(h);
+        return mine;
+    }
     TimedPacket &at(uint32_t h) { return slot(h).item; }
-    // The node owning the cell the packet is in (where it is going).
+    // The node owning the cell the packet is in (where it is going; -1: not known yet).
     int32_t owner(uint32_t h) { return slot(h).owner; }
     // The buffer slot the packet holds while it waits at a communication unit (null: none):
     // given back once the packet is taken on.

@@ -5,15 +5,15 @@
 namespace torusrt {
 
 PacketQueue::PacketQueue(std::string name, unsigned capacity)
-    : m_pool(&m_own_pool), m_spaces(capacity), m_name(std::move(name))
+    : m_items(&m_own_pool), m_spaces(capacity), m_name(std::move(name))
 {
 }
 
-void PacketQueue::push_blocking(const TimedPacket &p) { push_pooled(*m_pool, m_pool->add(p, -1)); }
+void PacketQueue::push_blocking(const TimedPacket &p) { push_pooled(pool(), pool().add(p, -1)); }
 
 void PacketQueue::push_pooled(PacketPool &pool, uint32_t handle)
 {
-    if (&pool != m_pool) {
+    if (&pool != &m_items.pool()) {
         push_blocking(pool.at(handle));
         pool.release(handle);
         return;
@@ -25,7 +25,7 @@ void PacketQueue::push_pooled(PacketPool &pool, uint32_t handle)
 
 void PacketQueue::append(uint32_t handle)
 {
-    TimedPacket &p = m_pool->at(handle);
+    TimedPacket &p = pool().at(handle);
     p.reserved = false;
     p.from_host = false; // it is in this queue now, holding a slot
     m_items.push_back(handle);
@@ -38,12 +38,10 @@ void PacketQueue::append(uint32_t handle)
 
 void PacketQueue::remove(size_t index, bool keep_slot)
 {
-    uint32_t handle = m_items[index];
-    BufferSpace &space = space_for(m_pool->at(handle));
-    if (index == 0) m_items.pop_front();
-    else m_items.erase(m_items.begin() + static_cast<std::ptrdiff_t>(index));
+    BufferSpace &space = space_for(m_items.at(index));
+    uint32_t handle = m_items.take(index);
     m_depth = static_cast<int>(m_items.size());
-    if (!keep_slot) m_pool->release(handle);
+    if (!keep_slot) pool().release(handle);
     space.release();
 }
 
@@ -59,8 +57,8 @@ bool PacketQueue::try_take_first(TimedPacket &taken)
 {
     uint32_t handle;
     if (!try_take_first_pooled(handle)) return false;
-    taken = m_pool->at(handle);
-    m_pool->release(handle);
+    taken = pool().at(handle);
+    pool().release(handle);
     return true;
 }
 
@@ -68,17 +66,17 @@ bool PacketQueue::try_take_first_pooled(uint32_t &handle)
 {
     m_reader_waiting = false;
     if (m_source && m_source->pending(m_node) && primary_first()) {
-        handle = m_pool->add(m_source->take(m_node), -1);
+        handle = pool().add(m_source->take(m_node), -1);
         return true;
     }
     if (!m_items.empty()) {
-        handle = m_items.front();
+        handle = m_items.handle(0);
         remove(0, true);
-        prefetch_front();
+        m_items.prefetch_front();
         return true;
     }
     if (m_source && m_source->pending(m_node)) { // a primary not yet due
-        handle = m_pool->add(m_source->take(m_node), -1);
+        handle = pool().add(m_source->take(m_node), -1);
         return true;
     }
     return false;

@@ -29,6 +29,7 @@
 
 #include "class_buffers.h"
 #include "packet_pool.h"
+#include "pooled_fifo.h"
 #include "primary_source.h"
 #include "timed_packet.h"
 
@@ -42,7 +43,7 @@ class PacketQueue {
     PacketQueue &operator=(const PacketQueue &) = delete;
 
     // Keeps the packets in `pool`, the machine's (call at elaboration, while empty).
-    void use_pool(PacketPool &pool) { m_pool = &pool; }
+    void use_pool(PacketPool &pool) { m_items.use_pool(pool); }
 
     // The buffer `p` takes a slot in.
     BufferSpace &space_for(const TimedPacket &p) { return m_spaces.at(p.cls); }
@@ -69,7 +70,7 @@ class PacketQueue {
     // The same, the packet left in its pool slot: `handle` is the reader's now (it releases it,
     // or hands it on by handle). A primary is put into a slot first.
     bool try_take_first_pooled(uint32_t &handle);
-    PacketPool &pool() { return *m_pool; }
+    PacketPool &pool() { return m_items.pool(); }
     // Blocking form of try_take: waits (in the calling thread) while there is none, on the queue
     // and, once one was refused, on `retry`.
     template <class Accept> TimedPacket take_first(Accept &&accept, sc_core::sc_event &retry);
@@ -123,26 +124,15 @@ class PacketQueue {
     // slot.
     void remove(size_t index, bool keep_slot = false);
     void wait_for(sc_core::sc_event *retry);
-    // The next packet a reader takes has waited long and is cold: fetch it into the cache
-    // while the reader works on this one. Forced inline: called, a function that only prefetches
-    // has no effect the compiler must keep, and the call is dropped.
-    [[gnu::always_inline]] void prefetch_front() const
-    {
-        if (m_items.empty()) return;
-        const char *p = reinterpret_cast<const char *>(&m_pool->at(m_items.front()));
-        for (size_t b = 0; b < sizeof(TimedPacket); b += 64) __builtin_prefetch(p + b);
-        __builtin_prefetch(p + sizeof(TimedPacket) - 1); // the slot need not start a line
-    }
     bool primary_first() const
     {
         return m_source->pending(m_node) &&
-               (m_items.empty() || m_source->next_time(m_node) <= m_pool->at(m_items.front()).stamp);
+               (m_items.empty() || m_source->next_time(m_node) <= m_items.at(0).stamp);
     }
 
     // What a push and a take touch first, then the buffers, then the rest (a reader told at
     // once never touches the event).
-    PacketPool *m_pool;
-    std::deque<uint32_t> m_items; // pool handles, oldest first
+    PooledFifo m_items; // the packets, oldest first
     size_t m_high_water = 0;
     int m_depth = 0;
     bool m_reader_waiting = false;
@@ -169,7 +159,7 @@ template <class Accept> bool PacketQueue::try_take(Accept &&accept, TimedPacket 
         }
     }
     for (size_t i = 0; i < m_items.size(); i++) {
-        const TimedPacket &c = m_pool->at(m_items[i]);
+        const TimedPacket &c = m_items.at(i);
         if (!accept(c)) continue;
         if (taken) *taken = c;
         remove(i);

@@ -31,23 +31,19 @@ struct TimedPacket {
     rt_packet packet{};     // the kernel's packet
 };
 
-// Packets cross links and the cluster bus as a generic payload (command WRITE, data = the packet's
-// bytes on the wire) with this extension holding the packet itself and the slot it occupies in
-// the sender's buffer, which the receiver gives back once it has taken the packet on. Between
-// the communication units of one machine the packet travels by handle instead: `pool` is set
-// and the packet is pool slot `handle` (packet_pool.h), `item` unused.
+// Packets cross links as a generic payload (command WRITE, data = the packet's bytes on the wire)
+// with this extension: the packet is slot `handle` of packet pool `pool` (packet_pool.h), and
+// `credit` the slot it occupies in the sender's buffer, which the receiver gives back once it
+// has taken the packet on.
 class PacketExtension : public tlm::tlm_extension<PacketExtension> {
   public:
-    // What a hop by handle reads, on the object's first cache line; the copied packet after.
     BufferSpace *credit = nullptr;
     PacketPool *pool = nullptr;
     uint32_t handle = 0;
-    TimedPacket item;
     tlm::tlm_extension_base *clone() const override { return new PacketExtension(*this); }
     void copy_from(const tlm::tlm_extension_base &other) override
     {
         const auto &o = static_cast<const PacketExtension &>(other);
-        item = o.item;
         credit = o.credit;
         pool = o.pool;
         handle = o.handle;

@@ -29,47 +29,38 @@ void ToroidalLink::before_end_of_elaboration()
     dont_initialize();
 }
 
-void ToroidalLink::accept(const TimedPacket &p)
+void ToroidalLink::accept(const TimedPacket &p) { accept_pooled(m_own_pool, m_own_pool.add(p, -1)); }
+
+void ToroidalLink::accept_pooled(PacketPool &pool, uint32_t handle)
 {
-    if (!p.reserved) space_for(p).take_blocking();
-    // The packet is copied once, into the transaction's extension, after any wait for room.
-    TransactionPool::Crossing c = m_transactions->take();
-    TimedPacket &q = c.ext->item;
-    q = p;
-    q.reserved = false;
-    c.ext->pool = nullptr;
-    send(c, q, sim_now());
+    if (!pool.at(handle).reserved) space_for(pool.at(handle)).take_blocking(); // a method checked room: no wait
+    pool.at(handle).reserved = false;
+    send(pool, handle);
 }
 
-void ToroidalLink::accept_pooled(PacketPool &pool, uint32_t handle, const sc_core::sc_time &now)
-{
-    TimedPacket &p = pool.at(handle);
-    if (!p.reserved) space_for(p).take_blocking(); // room was checked: does not wait
-    p.reserved = false;
-    TransactionPool::Crossing c = m_transactions->take();
-    c.ext->pool = &pool;
-    c.ext->handle = handle;
-    send(c, p, now);
-}
-
-void ToroidalLink::send(const TransactionPool::Crossing &c, TimedPacket &p, const sc_core::sc_time &now)
+void ToroidalLink::send(PacketPool &pool, uint32_t handle)
 {
     // A packet that waited for room is sent no earlier than now; a crossing cannot start before
     // the packet was sent, nor before the previous crossing ends.
+    const sc_core::sc_time now = sim_now();
+    TimedPacket &p = pool.at(handle);
     if (p.stamp < now) p.stamp = now;
     sc_core::sc_time start = p.stamp > m_free_at ? p.stamp : m_free_at;
     m_free_at = start + m_packet_time;
     m_packets++;
     m_bytes += m_packet_bytes;
-    if (m_tracing) {  // on the hop's first line; m_trace exists whenever it is set
+    if (m_tracing) { // m_trace exists whenever it is set
         m_trace->crossings.emplace_back(start, m_free_at);
         m_trace->changed.notify(sc_core::SC_ZERO_TIME);
     }
-    c.ext->credit = &space_for(p);
     p.stamp = m_free_at;
     p.last_dir = m_dir;
     // A write to the receiving node, data = the packet as held in memory (its size on the wire is
-    // a timing parameter).
+    // a timing parameter); the packet itself goes by handle, with the slot it holds here.
+    TransactionPool::Crossing c = m_transactions->take();
+    c.ext->pool = &pool;
+    c.ext->handle = handle;
+    c.ext->credit = &space_for(p);
     tlm::tlm_generic_payload &trans = *c.trans;
     trans.set_address(static_cast<uint64_t>(m_to));
     trans.set_data_ptr(reinterpret_cast<unsigned char *>(&p.packet));

@@ -2,7 +2,9 @@
 // its own. A packet handed to the link starts crossing when both it and the link are ready
 // (busy-until) and takes the serialisation time; the link forwards it at once to the receiving
 // communication unit as a TLM-2.0 b_transport whose delay is annotated with the queueing and the
-// serialisation, and the receiver delivers it at that time from its arrival queue.
+// serialisation, and the receiver delivers it at that time from its arrival queue. The packet
+// crosses by its handle in a packet pool (PacketExtension); one handed over by value (accept)
+// enters a pool of the link's own first.
 //
 // Room: with --queue N the link holds at most N packets of each class and virtual channel
 // (one buffer under --flow none), counted from the moment the sender hands one over until the
@@ -38,11 +40,8 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
 
     // Waits (in a thread) for room, then sends. A method caller checks can_accept() first.
     void accept(const TimedPacket &p) override;
-    // The same for a packet of `pool`, which crosses by handle (a method caller, after
-    // can_accept(); the receiver takes the handle on). `now` = sim_now(), read once a hop.
-    void accept_pooled(PacketPool &pool, uint32_t handle, const sc_core::sc_time &now);
-    // Any other caller of the sink interface (a thread may wait for room): copies the packet in.
-    using PacketSinkIf::accept_pooled;
+    // The same for packet `handle` of `pool`, which crosses by handle (the receiver takes it on).
+    void accept_pooled(PacketPool &pool, uint32_t handle) override;
     bool can_accept(const TimedPacket &p) const override
     {
         if (m_spaces.unbounded() || p.reserved) return true;
@@ -68,46 +67,23 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
     }
     // Traced busy line; asking for it (before sc_start) makes the process that drives it.
     bool &busy_trace();
-    // Where a crossing of this link first touches memory beyond the sender: the link's own hot
-    // lines (named by `link` without reading it), the bound target interface (`socket`'s, once
-    // elaboration is over) and the receiving unit's first lines. A sender keeps them and asks for
-    // all of them at once as it picks the link (prefetch_hop): at 512 nodes every one is cold,
-    // and fetched one after another, or only once the link's own line has come in to name the
-    // others, they cost a miss each.
-    // 32 bytes, so that a direction's entry in an array of them never spans two lines.
-    struct alignas(32) HopLines {
-        ToroidalLink *link = nullptr;
-        const void *target = nullptr;
-        const char *receiver = nullptr;
-    };
-    // Forced inline, as PacketQueue::prefetch_front.
-    [[gnu::always_inline]] static void prefetch_hop(const HopLines &h)
-    {
-        const char *hot = reinterpret_cast<const char *>(&h.link->m_free_at); // an address, not a load
-        const void *lines[] = {hot, hot + 64, h.target, h.receiver, h.receiver + 64};
-        for (const void *line : lines) __builtin_prefetch(line, 1);
-    }
 
   private:
     static uint32_t index_of(const TimedPacket &p) { return 2 * p.cls + p.vc; }
     BufferSpace &space_for(const TimedPacket &p) { return m_spaces.at(index_of(p)); }
-    // Sends `p` in crossing `c` (whose extension names it), its slot taken, at `now` or later
-    // (now = sim_now()).
-    void send(const TransactionPool::Crossing &c, TimedPacket &p, const sc_core::sc_time &now);
+    // Sends packet `handle` of `pool` (its slot taken) now or, behind earlier crossings, later.
+    void send(PacketPool &pool, uint32_t handle);
     void drive_busy_trace();
     void before_end_of_elaboration() override;
     void start_of_simulation() override { m_fw = socket.operator->(); }
 
-    // What a hop reads and writes, on two cache lines of their own: these fields, then the
-    // buffers' totals and their first buffer (class_buffers.h). A hop finds the link cold at 512
-    // nodes, so every line it touches counts.
-    alignas(64) sc_core::sc_time m_free_at = sc_core::SC_ZERO_TIME; // busy until
-    sc_core::sc_time m_packet_time;                                 // serialisation time of one packet
+    sc_core::sc_time m_free_at = sc_core::SC_ZERO_TIME; // busy until
+    sc_core::sc_time m_packet_time;                     // serialisation time of one packet
     TransactionPool *m_transactions = &m_own_transactions;
     // The socket's bound target interface (what socket-> returns), kept after elaboration so a
     // crossing does not read the port for it.
     tlm::tlm_fw_transport_if<> *m_fw = nullptr;
-    int m_to;       // the receiving node: each crossing is addressed to it
+    int m_to; // the receiving node: each crossing is addressed to it
     int8_t m_dir;
     bool m_tracing = false, m_busy_flag = false;
     uint64_t m_packets = 0;
@@ -116,6 +92,7 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
     ClassBuffers m_spaces;
     int m_from;
     TransactionPool m_own_transactions;
+    PacketPool m_own_pool; // packets handed over by value (accept), until they cross
     // Busy trace (only when traced): crossings not yet over, and the event that re-evaluates.
     struct BusyTrace {
         std::deque<std::pair<sc_core::sc_time, sc_core::sc_time>> crossings;

@@ -68,7 +68,7 @@ TorusSystem::TorusSystem(sc_core::sc_module_name name, const MachineConfig &conf
             // Named by its ends, so a trace says where every link goes.
             std::string lname = "link_" + std::to_string(n) + "_to_" + std::to_string(to) + "_" + direction_name(dir);
             auto link = std::make_unique<ToroidalLink>(lname.c_str(), config, n, to, dir, &m_transactions);
-            m_comm[n]->connect_link(dir, *link, *m_comm[to]);
+            m_comm[n]->connect_link(dir, link->in, link->socket, *m_comm[to]);
             m_links.push_back(std::move(link));
         }
     }

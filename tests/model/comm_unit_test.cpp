@@ -49,6 +49,7 @@ struct LinkSender : sc_core::sc_module {
     std::vector<Send> sends;
     sc_time at;
     BufferSpace credit{8};
+    PacketPool pool;
     explicit LinkSender(sc_core::sc_module_name n) : sc_module(n), socket("socket")
     {
         SC_HAS_PROCESS(LinkSender);
@@ -60,7 +61,8 @@ struct LinkSender : sc_core::sc_module {
         for (const Send &s : sends) {
             tlm::tlm_generic_payload t;
             PacketExtension ext;
-            ext.item = packet_in(0, s.tag);
+            ext.pool = &pool; // a pool of the sender's own: the unit copies the packet in
+            ext.handle = pool.add(packet_in(0, s.tag), -1);
             ext.credit = &credit;
             credit.take();
             t.set_command(tlm::TLM_WRITE_COMMAND);

@@ -132,7 +132,7 @@ struct Ring {
                 if (to < 0) continue;
                 std::string ln = "link_" + name + "_" + std::to_string(i) + "_" + direction_name(dir);
                 links.push_back(std::make_unique<ToroidalLink>(ln.c_str(), config, i, to, dir));
-                cus[i]->connect_link(dir, *links.back(), *cus[to]);
+                cus[i]->connect_link(dir, links.back()->in, links.back()->socket, *cus[to]);
             }
         }
     }

@@ -36,7 +36,7 @@ struct Receiver : sc_core::sc_module {
     {
         auto *ext = t.get_extension<PacketExtension>();
         arrivals.push_back(sc_core::sc_time_stamp() + delay);
-        xs.push_back(ext ? ext->item.packet.x : 9999);
+        xs.push_back(ext ? ext->pool->at(ext->handle).packet.x : 9999);
         credits.push_back(ext ? ext->credit : nullptr);
         due.notify(arrivals[released] - sc_core::sc_time_stamp());
         t.set_response_status(tlm::TLM_OK_RESPONSE);

@@ -32,10 +32,10 @@ struct Recorder : sc_core::sc_module {
         auto *ext = t.get_extension<PacketExtension>();
         transactions.push_back(&t);
         addresses.push_back(t.get_address());
-        xs.push_back(ext ? ext->item.packet.x : 9999);
+        xs.push_back(ext ? ext->pool->at(ext->handle).packet.x : 9999);
         ref_counts.push_back(t.get_ref_count());
         writes.push_back(t.is_write() && t.get_data_length() == sizeof(rt_packet) &&
-                         t.get_data_ptr() == reinterpret_cast<unsigned char *>(&ext->item.packet));
+                         t.get_data_ptr() == reinterpret_cast<unsigned char *>(&ext->pool->at(ext->handle).packet));
         t.set_response_status(tlm::TLM_OK_RESPONSE);
     }
 };
