@@ -97,7 +97,7 @@ void ClusterBus::record(int id, const tlm::tlm_generic_payload &trans, double by
         m_object_reads++;
         m_object_bytes += bytes;
     }
-    if (m_keep_log) m_log.push_back(Grant{id, requested, start, start + occupancy});
+    if (m_observer) m_observer->granted(Grant{id, requested, start, start + occupancy});
 }
 
 void ClusterBus::b_transport(int id, tlm::tlm_generic_payload &trans, sc_core::sc_time &delay)

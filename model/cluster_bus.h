@@ -65,10 +65,16 @@ class ClusterBus : public sc_core::sc_module {
             if (w > wait_max) wait_max = w;
         }
     };
-    // A record of one granted transfer (kept only after keep_log(true); for tests).
+    // One granted transfer.
     struct Grant {
         int requester;
         sc_core::sc_time requested, start, end;
+    };
+    // Told of every grant, in grant order: the arbitration as a tool built on the library sees it.
+    class GrantObserver {
+      public:
+        virtual ~GrantObserver() = default;
+        virtual void granted(const Grant &grant) = 0;
     };
 
     // Statistics, read after the run.
@@ -84,10 +90,8 @@ class ClusterBus : public sc_core::sc_module {
     // Requesters waiting for a grant right now (for the deadlock report).
     int waiting() const;
     BusStats stats() const;
-    // The grant log stays in the bus: it is the golden log its tests compare, off by default at
-    // one untaken branch per grant.
-    void keep_log(bool on) { m_keep_log = on; }
-    const std::vector<Grant> &log() const { return m_log; }
+    // The observer told of each grant from now on (null: none, the default).
+    void observe(GrantObserver *observer) { m_observer = observer; }
 
     // Traced lines: the owner (-1 idle) and one request line per requester.
     int &owner_trace() { return m_owner; }
@@ -118,8 +122,7 @@ class ClusterBus : public sc_core::sc_module {
     double m_packet_bytes = 0, m_object_bytes = 0;
     GrantStats m_all;
     std::vector<GrantStats> m_per;
-    bool m_keep_log = false;
-    std::vector<Grant> m_log;
+    GrantObserver *m_observer = nullptr;
 };
 
 }  // namespace torusrt

@@ -20,6 +20,7 @@
 
 #include "bus_arbiter.h"
 #include "cluster_bus.h"
+#include "grant_log.h"
 #include "model_test.h"
 #include "rt_timing.h"
 #include "sim_config.h"
@@ -79,13 +80,14 @@ struct SaturatedBus {
     std::unique_ptr<BusArbiter> arbiter;
     std::unique_ptr<ClusterBus> bus;
     std::vector<std::unique_ptr<TrafficMaster>> masters;
+    GrantLog grants;
 
     SaturatedBus(const std::string &name, const std::string &policy, const rt_timing &timing, int n)
     {
         arbiter = make_arbiter(policy, (name + "_arbiter").c_str(), n, -1);
         bus = std::make_unique<ClusterBus>((name + "_bus").c_str(), timing, false, n);
         bus->arbiter.bind(*arbiter);
-        bus->keep_log(true);
+        bus->observe(&grants);
         for (int i = 0; i < n; i++) {
             masters.push_back(std::make_unique<TrafficMaster>((name + "_m" + std::to_string(i)).c_str(), 200,
                                                               sc_time(10, SC_US), sc_core::SC_ZERO_TIME));
@@ -94,9 +96,8 @@ struct SaturatedBus {
     }
 };
 
-bool grants_never_overlap(const ClusterBus &bus, std::string &why)
+bool grants_never_overlap(const std::vector<ClusterBus::Grant> &log, std::string &why)
 {
-    const auto &log = bus.log();
     for (size_t i = 0; i < log.size(); i++) {
         if (log[i].start < log[i].requested) {
             why = "grant before request";
@@ -213,8 +214,8 @@ Saturation saturation(const SaturatedBus &b)
     s.wait_max = to_us(bus.grant_stats().wait_max);
     s.low_wait_mean = to_us(bus.grant_stats(3).wait_sum) / bus.grant_stats(3).grants;
     s.utilisation = bus.busy_time().to_seconds() / sc_core::sc_time_stamp().to_seconds();
-    s.one_at_a_time = grants_never_overlap(bus, s.why);
-    for (const auto &g : bus.log()) s.durations.push_back(to_us(g.end - g.start));
+    s.one_at_a_time = grants_never_overlap(b.grants.grants, s.why);
+    for (const auto &g : b.grants.grants) s.durations.push_back(to_us(g.end - g.start));
     return s;
 }
 

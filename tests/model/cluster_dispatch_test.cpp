@@ -12,6 +12,7 @@
 
 #include "bus_arbiter.h"
 #include "cluster_bus.h"
+#include "grant_log.h"
 #include "cluster_dispatch.h"
 #include "model_test.h"
 #include "packet_injector.h"
@@ -130,7 +131,8 @@ static Outcome simulate()
     ClusterBus bus("bus", config.timing, false, 1);
     bus.arbiter.bind(*arbiter);
     dispatcher.bus_socket.bind(bus.target);
-    bus.keep_log(true);
+    GrantLog grants;
+    bus.observe(&grants);
     Injector inj("inj");
     inj.out.bind(dispatcher.in);
     TimedPacket late = p;
@@ -138,7 +140,7 @@ static Outcome simulate()
     inj.packets = {p, p, p, p, late};
     sc_core::sc_start();
 
-    run.bus_log = bus.log();
+    run.bus_log = grants.grants;
     for (int k = 0; k < 3; k++) {
         run.dispatched.push_back(dispatcher.dispatched(k));
         run.consumed.push_back(procs.ledgers[k]->totals().consumed[RT_PACKET_RAY]);
