@@ -61,6 +61,8 @@ TEST(ConfigValidation, NamesTheOptionOfEveryBadSetting)
     expect(c, "--pilot-size", "a pilot size without --map cost");
     c = good(), c.replicate = 0.5;
     expect(c, "--replicate", "a replication budget without --map cost");
+    c = good(), c.mapping = RT_MAP_COST, c.replicate = 65;
+    expect(c, "--replicate", "a budget above the option table's range (no check of its own)");
     c = good(), c.timing.link_us = 2e6;
     expect(c, "--link-us", "a 2 s link");
     c = good(), c.timing.link_bytes_per_us = 1e-9;

@@ -2,8 +2,11 @@
 // checked before the scene is loaded and the model elaborated. Values that do not parse are
 // the option parsers' (option_parsing.h); files are checked where they are read.
 #include <cmath>
+#include <cstdlib>
 #include <string>
 
+#include "machine_options.h"
+#include "option_parsing.h"
 #include "setting_checks.h"
 #include "sim_config.h"
 #include "timing_limits.h"
@@ -27,16 +30,31 @@ const char *timing_option(const MachineConfig &m, const std::string &key)
     return "--timing";
 }
 
+std::string range_text(double v) { return std::isinf(v) ? std::string("any") : number_text(v); }
+
+// A machine filled in by a program rather than by options: each numeric option of the table
+// within the range the table declares for it (the one place a range is written).
+void validate_table_ranges(const MachineConfig &m)
+{
+    for (const MachineOption &option : machine_option_table()) {
+        const OptionSpec &spec = option.spec;
+        if (spec.kind != ValueKind::integer && spec.kind != ValueKind::real) continue;
+        std::string text = option.write(m);
+        if (text.empty()) continue;
+        double v = std::strtod(text.c_str(), nullptr);
+        if (!(v >= spec.min && v <= spec.max))
+            bad(spec.long_name() + ": must be " + range_text(spec.min) + " to " + range_text(spec.max));
+    }
+}
+
 void validate_shape(const MachineConfig &m)
 {
     for (int a = 0; a < 3; a++)
         if (m.ips[a] < 1) bad("--ips: every dimension needs at least 1 node");
     if (m.node_count() > kMaxNodes) bad("--ips: at most " + std::to_string(kMaxNodes) + " nodes");
-    if (m.cluster < 1 || m.cluster > kMaxCluster) bad("--cluster: must be 1 to " + std::to_string(kMaxCluster));
     if (m.processor_count() > kMaxProcessors)
         bad("--ips x --cluster: at most " + std::to_string(kMaxProcessors) +
             " processors (each has its own SystemC threads; more do not fit in memory)");
-    if (m.queue_capacity > kMaxQueue) bad("--queue: must be 0 (unbounded) to " + std::to_string(kMaxQueue));
     check_cells(m.cells);
 }
 
@@ -91,6 +109,7 @@ void validate_memory_layout(const rt_memory_layout &l)
 void validate_machine(const MachineConfig &m)
 {
     validate_memory_layout(m.memory_layout);
+    validate_table_ranges(m);
     validate_shape(m);
     validate_mapping(m);
     validate_timing(m);
