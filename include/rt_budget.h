@@ -42,20 +42,18 @@ rt_status rt_budget_parse(const char *text, uint64_t *bytes, char *msg, size_t m
 uint64_t rt_budget_left(const rt_budget *budget);
 
 /* Reserves `bytes` for `what`; RT_ERR_LIMIT (nothing reserved) if they do not fit. */
-rt_status rt_budget_reserve(rt_budget *budget, uint64_t bytes, const char *what, char *msg,
-                            size_t msg_len);
+rt_status rt_budget_reserve(rt_budget *budget, uint64_t bytes, const char *what, char *msg, size_t msg_len);
 
 /* Writes "memory budget exceeded: WHAT would take NEED, OVER more than the LEFT left of the
  * LIMIT budget (--memory-budget)" and returns RT_ERR_LIMIT. */
-rt_status rt_budget_exceeded(const rt_budget *budget, const char *what, uint64_t need, char *msg,
-                             size_t msg_len);
+rt_status rt_budget_exceeded(const rt_budget *budget, const char *what, uint64_t need, char *msg, size_t msg_len);
 
 /* How many packets of `packet_bytes` each fit in what is left (UINT64_MAX without a limit). */
 uint64_t rt_budget_packets_allowed(const rt_budget *budget, uint64_t packet_bytes);
 
 /* The message for `outstanding` packets of `packet_bytes` each that exceed what is left. */
-rt_status rt_budget_packets_exceeded(const rt_budget *budget, uint64_t outstanding,
-                                     uint64_t packet_bytes, char *msg, size_t msg_len);
+rt_status rt_budget_packets_exceeded(const rt_budget *budget, uint64_t outstanding, uint64_t packet_bytes, char *msg,
+                                     size_t msg_len);
 
 /* "512 MiB", "6.0 GiB", "100 bytes": a size for messages. */
 const char *rt_budget_format(uint64_t bytes, char *buf, size_t buf_len);

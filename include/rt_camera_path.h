@@ -48,10 +48,10 @@ extern "C" {
 #define RT_CAMERA_PATH_MAX_BYTES (64u * 1024u * 1024u)
 
 typedef struct rt_camera_pose {
-    rt_vec3 from;  /* eye position, scene units */
-    rt_vec3 at;    /* point looked at */
-    rt_vec3 up;    /* up hint (need not be unit or orthogonal) */
-    double angle;  /* degrees, as in the NFF `v` block */
+    rt_vec3 from; /* eye position, scene units */
+    rt_vec3 at;   /* point looked at */
+    rt_vec3 up;   /* up hint (need not be unit or orthogonal) */
+    double angle; /* degrees, as in the NFF `v` block */
 } rt_camera_pose;
 
 typedef struct rt_camera_path rt_camera_path;
@@ -64,13 +64,12 @@ rt_camera_pose rt_camera_pose_of(const rt_camera *camera);
 rt_status rt_camera_pose_check(const rt_camera_pose *pose, char *msg, size_t msg_len);
 
 /* Frame k of an orbit of `degrees` over `frames` frames (see above); k < frames. */
-rt_camera_pose rt_camera_orbit_pose(const rt_camera_pose *start, double degrees, uint32_t frames,
-                                    uint32_t k);
+rt_camera_pose rt_camera_orbit_pose(const rt_camera_pose *start, double degrees, uint32_t frames, uint32_t k);
 
 /* An orbit path of `frames` poses. RT_ERR_INVALID for frames 0 or above the limit, a
  * non-finite `degrees` or a bad start pose; RT_ERR_NOMEM. */
-rt_status rt_camera_path_orbit(const rt_camera_pose *start, double degrees, uint32_t frames,
-                               rt_camera_path **out, char *msg, size_t msg_len);
+rt_status rt_camera_path_orbit(const rt_camera_pose *start, double degrees, uint32_t frames, rt_camera_path **out,
+                               char *msg, size_t msg_len);
 
 /* Reads a camera path file (format above). RT_ERR_IO, RT_ERR_PARSE, RT_ERR_LIMIT or
  * RT_ERR_NOMEM with a message naming the file (and the line where one is at fault). */
@@ -82,8 +81,7 @@ void rt_camera_path_free(rt_camera_path *path);
 
 /* Replaces the scene's camera pose, keeping its resolution. RT_ERR_INVALID (and a message) if
  * the pose fails rt_camera_pose_check; the scene is then unchanged. */
-rt_status rt_scene_set_camera(rt_scene *scene, const rt_camera_pose *pose, char *msg,
-                              size_t msg_len);
+rt_status rt_scene_set_camera(rt_scene *scene, const rt_camera_pose *pose, char *msg, size_t msg_len);
 
 #ifdef __cplusplus
 }

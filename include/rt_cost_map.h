@@ -43,12 +43,12 @@ extern "C" {
 #define RT_CELL_FACES 6
 
 typedef struct rt_cost_pilot {
-    int dims[3];        /* grid cells per axis */
+    int dims[3]; /* grid cells per axis */
     size_t cells;
-    double *work_us;    /* per cell: modelled microseconds, hand-overs excluded */
-    uint64_t *traffic;  /* per cell and face: packets leaving the cell through it */
-    double total_us;    /* sum of work_us: T(1) of the pilot image without hand-overs */
-    rt_op_counts ops;   /* everything the pilot did, hand-overs between cells included */
+    double *work_us;   /* per cell: modelled microseconds, hand-overs excluded */
+    uint64_t *traffic; /* per cell and face: packets leaving the cell through it */
+    double total_us;   /* sum of work_us: T(1) of the pilot image without hand-overs */
+    rt_op_counts ops;  /* everything the pilot did, hand-overs between cells included */
 } rt_cost_pilot;
 
 rt_status rt_cost_pilot_run(const rt_scene *scene, const rt_grid *grid, const rt_step_params *params,
@@ -66,8 +66,8 @@ typedef struct rt_cost_map_facts {
 } rt_cost_map_facts;
 
 /* Fills owner[cell] with node ids px + PX * (py + PY * pz). facts may be NULL. */
-rt_status rt_cost_map(const rt_cost_pilot *pilot, const int nodes[3], int torus, double edge_us,
-                      int32_t *owner, rt_cost_map_facts *facts, char *msg, size_t msg_len);
+rt_status rt_cost_map(const rt_cost_pilot *pilot, const int nodes[3], int torus, double edge_us, int32_t *owner,
+                      rt_cost_map_facts *facts, char *msg, size_t msg_len);
 
 /* The same mapped onto a machine `fold` times larger along every axis of more than one node,
  * each of its terminals then folded onto node (x mod PX, y mod PY, z mod PZ): every node gets
@@ -80,8 +80,8 @@ rt_status rt_cost_map_folded(const rt_cost_pilot *pilot, const int nodes[3], int
  * move_us[cell], the microseconds moving it to another node costs, against keeping it on its
  * old node (migration ratio 1, in the edge weights' units). Node ids as rt_cost_map's. */
 rt_status rt_cost_remap(const rt_cost_pilot *pilot, const int nodes[3], int torus, double edge_us,
-                        const int32_t *old_owner, const double *move_us, int32_t *owner,
-                        rt_cost_map_facts *facts, char *msg, size_t msg_len);
+                        const int32_t *old_owner, const double *move_us, int32_t *owner, rt_cost_map_facts *facts,
+                        char *msg, size_t msg_len);
 
 /* Copies of the hottest cells on more nodes (docs/cell-mappings.md#replicated-cells), on top of
  * the one-owner table `owner` of the PX x PY x PZ (node_dims) torus (torus 1) or mesh. Each node

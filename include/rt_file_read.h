@@ -29,8 +29,8 @@ extern "C" {
  * the last byte, its byte-order mark left out. Returns RT_ERR_IO (cannot open or read, not a
  * regular file), RT_ERR_LIMIT (larger than max_bytes: "PATH:1: ..."), RT_ERR_PARSE (a NUL
  * byte: "PATH:LINE: binary data ...") or RT_ERR_NOMEM, with the message in msg. */
-rt_status rt_read_regular_file(const char *path, size_t max_bytes, char **text, size_t *length,
-                               char *msg, size_t msg_len);
+rt_status rt_read_regular_file(const char *path, size_t max_bytes, char **text, size_t *length, char *msg,
+                               size_t msg_len);
 
 /* What a file of this st_mode is, for messages: "a FIFO", "a folder", "a character
  * device", ...; "a regular file" for one. */

@@ -36,21 +36,21 @@ typedef struct rt_grid rt_grid;
 /* How preprocessing units are counted while an object's slabs are located on one axis
  * (docs/fidelity.md gives each as an algorithm). The cell lists are the same under each. */
 typedef enum rt_preprocess_count {
-    RT_COUNT_SEQUENTIAL = 0,      /* one unit per one-sided test: low end, then high end */
-    RT_COUNT_PER_PLANE = 1,       /* one unit per plane, placing the extent on both sides */
-    RT_COUNT_BOUNDING_SPHERE = 2  /* per-plane on the object's bounding sphere */
+    RT_COUNT_SEQUENTIAL = 0,     /* one unit per one-sided test: low end, then high end */
+    RT_COUNT_PER_PLANE = 1,      /* one unit per plane, placing the extent on both sides */
+    RT_COUNT_BOUNDING_SPHERE = 2 /* per-plane on the object's bounding sphere */
 } rt_preprocess_count;
 
 rt_grid *rt_grid_new(const rt_scene *scene, int nx, int ny, int nz, char *msg, size_t msg_len);
 /* The same within a memory budget (NULL: none): the grid's tables and 8 bytes per cell-list
  * entry are reserved before they are allocated; when the lists would pass what is left,
  * listing stops and NULL comes back with a "memory budget exceeded: ..." message. */
-rt_grid *rt_grid_new_budget(const rt_scene *scene, int nx, int ny, int nz, rt_budget *budget,
-                            char *msg, size_t msg_len);
+rt_grid *rt_grid_new_budget(const rt_scene *scene, int nx, int ny, int nz, rt_budget *budget, char *msg,
+                            size_t msg_len);
 /* The same with a counting rule (rt_grid_new_budget counts RT_COUNT_SEQUENTIAL); NULL as
  * rt_grid_new_budget. */
-rt_grid *rt_grid_new_counted(const rt_scene *scene, int nx, int ny, int nz, rt_preprocess_count rule,
-                             rt_budget *budget, char *msg, size_t msg_len);
+rt_grid *rt_grid_new_counted(const rt_scene *scene, int nx, int ny, int nz, rt_preprocess_count rule, rt_budget *budget,
+                             char *msg, size_t msg_len);
 /* The same over a given object space: `space` is a box every object lies inside, unpadded (the
  * grid pads it as it pads the scene's own box), e.g. a moving scene's box over all its frames
  * (rt_motion_space); NULL = the scene's own box. NULL as rt_grid_new_budget, and also when an
@@ -61,10 +61,10 @@ void rt_grid_free(rt_grid *grid);
 
 /* What one incremental update (rt_grid_update) did. */
 typedef struct rt_grid_update_stats {
-    uint64_t objects_moved;  /* objects whose lists were recomputed */
-    uint64_t units;          /* their half-space tests: the update's preprocessing units */
-    uint64_t rebuild_units;  /* the units of rebuilding every list from scratch (every object's) */
-    uint64_t entries;        /* list entries after the update */
+    uint64_t objects_moved; /* objects whose lists were recomputed */
+    uint64_t units;         /* their half-space tests: the update's preprocessing units */
+    uint64_t rebuild_units; /* the units of rebuilding every list from scratch (every object's) */
+    uint64_t entries;       /* list entries after the update */
 } rt_grid_update_stats;
 
 /* Recomputes the cell lists of the objects flagged in moved[] (one byte per object, nonzero =

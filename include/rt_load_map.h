@@ -33,8 +33,8 @@ rt_canvas *rt_load_map_draw(const int dims[3], const double *work_us, const int3
  * owners in the work per node; a replicated cell of the slice, and a column of the work panel
  * holding one, is crossed by a white diagonal (top left to bottom right, edged in black), and a
  * small line above each of the two panels says so. */
-void rt_node_work_replicas(const int dims[3], const double *work_us, const int32_t *owner,
-                           const rt_replicas *replicas, int nodes, double *node_us);
+void rt_node_work_replicas(const int dims[3], const double *work_us, const int32_t *owner, const rt_replicas *replicas,
+                           int nodes, double *node_us);
 rt_canvas *rt_load_map_draw_replicas(const int dims[3], const double *work_us, const int32_t *owner,
                                      const rt_replicas *replicas, int nodes);
 

@@ -40,13 +40,12 @@ size_t rt_map_file_max_bytes(const int dims[3]);
 rt_status rt_map_file_parse(const char *name, const char *text, size_t length, const int dims[3], int nodes,
                             int32_t *owner, char *msg, size_t msg_len);
 /* The same, read from the file PATH. */
-rt_status rt_map_file_read(const char *path, const int dims[3], int nodes, int32_t *owner, char *msg,
-                           size_t msg_len);
+rt_status rt_map_file_read(const char *path, const int dims[3], int nodes, int32_t *owner, char *msg, size_t msg_len);
 
 /* Writes the table to a stream the caller owns (flushed, not closed); RT_ERR_IO naming `name`
  * if it cannot be written. */
-rt_status rt_map_file_write(FILE *fp, const char *name, const int dims[3], int nodes, const int32_t *owner,
-                            char *msg, size_t msg_len);
+rt_status rt_map_file_write(FILE *fp, const char *name, const int dims[3], int nodes, const int32_t *owner, char *msg,
+                            size_t msg_len);
 
 /* The longest entry (one cell's owners) a map file may hold, bytes. */
 #define RT_MAP_FILE_MAX_WORD 4095
@@ -54,9 +53,9 @@ rt_status rt_map_file_write(FILE *fp, const char *name, const int dims[3], int n
 
 /* Version 1 or 2. first (cells + 1 entries) receives rt_replicas.h's offsets and *extra a
  * malloc'd array of *extra_count extra owners (free() it; NULL on failure). */
-rt_status rt_map_file_parse_replicas(const char *name, const char *text, size_t length, const int dims[3],
-                                     int nodes, int32_t *owner, uint32_t *first, int32_t **extra,
-                                     size_t *extra_count, char *msg, size_t msg_len);
+rt_status rt_map_file_parse_replicas(const char *name, const char *text, size_t length, const int dims[3], int nodes,
+                                     int32_t *owner, uint32_t *first, int32_t **extra, size_t *extra_count, char *msg,
+                                     size_t msg_len);
 rt_status rt_map_file_read_replicas(const char *path, const int dims[3], int nodes, int32_t *owner, uint32_t *first,
                                     int32_t **extra, size_t *extra_count, char *msg, size_t msg_len);
 /* Writes version 2 when replicas (may be NULL) lists an extra owner, else version 1. */

@@ -24,19 +24,19 @@ extern "C" {
 #endif
 
 typedef enum rt_map_kind {
-    RT_MAP_BLOCK = 0,       /* contiguous blocks (paper Fig. 2a) */
-    RT_MAP_CYCLIC = 1,      /* interleaved, load-balancing (paper Fig. 2b) */
+    RT_MAP_BLOCK = 0,        /* contiguous blocks (paper Fig. 2a) */
+    RT_MAP_CYCLIC = 1,       /* interleaved, load-balancing (paper Fig. 2b) */
     RT_MAP_BLOCK_CYCLIC = 2, /* blocks of B cells dealt cyclically */
-    RT_MAP_FILE = 3,        /* an explicit table (rt_map_file.h); not made by rt_mapping_fill */
-    RT_MAP_COST = 4         /* from measured work and traffic (rt_cost_map.h); not made by rt_mapping_fill */
+    RT_MAP_FILE = 3,         /* an explicit table (rt_map_file.h); not made by rt_mapping_fill */
+    RT_MAP_COST = 4          /* from measured work and traffic (rt_cost_map.h); not made by rt_mapping_fill */
 } rt_map_kind;
 
 /* Owner of cell index c along one axis of N cells over P processors. */
 int rt_mapping_axis_owner(rt_map_kind kind, int block, int c, int cells, int procs);
 
 /* Fills owner[cell] for every cell (linear index as rt_grid_index). */
-rt_status rt_mapping_fill(const int cells[3], const int procs[3], rt_map_kind kind, int block,
-                          int32_t *owner, char *msg, size_t msg_len);
+rt_status rt_mapping_fill(const int cells[3], const int procs[3], rt_map_kind kind, int block, int32_t *owner,
+                          char *msg, size_t msg_len);
 
 #ifdef __cplusplus
 }

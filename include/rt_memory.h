@@ -55,18 +55,17 @@ static inline uint64_t rt_memory_total(const rt_memory_use *u)
 }
 
 /* Per-owner use; owner[cell] in 0..owners-1 (cells with other values are skipped). */
-rt_status rt_memory_per_owner(const rt_scene *scene, const rt_grid *grid, const int32_t *owner,
-                              int owners, rt_memory_use *use);
+rt_status rt_memory_per_owner(const rt_scene *scene, const rt_grid *grid, const int32_t *owner, int owners,
+                              rt_memory_use *use);
 
 /* The whole scene with all cell lists: what each processor of a
  * pixel-partitioned system holds. */
 rt_memory_use rt_memory_whole_scene(const rt_scene *scene, const rt_grid *grid);
 
 /* The same under a layout (NULL: the default); errors as rt_memory_per_owner. */
-rt_status rt_memory_per_owner_layout(const rt_scene *scene, const rt_grid *grid, const int32_t *owner,
-                                     int owners, const rt_memory_layout *layout, rt_memory_use *use);
-rt_memory_use rt_memory_whole_scene_layout(const rt_scene *scene, const rt_grid *grid,
-                                           const rt_memory_layout *layout);
+rt_status rt_memory_per_owner_layout(const rt_scene *scene, const rt_grid *grid, const int32_t *owner, int owners,
+                                     const rt_memory_layout *layout, rt_memory_use *use);
+rt_memory_use rt_memory_whole_scene_layout(const rt_scene *scene, const rt_grid *grid, const rt_memory_layout *layout);
 
 /* The same with replicated cells (replicas NULL: none): each owner of a cell, primary or extra,
  * holds its list and its objects, so a copy is counted at every owner. */

@@ -50,7 +50,7 @@ extern "C" {
 #define RT_MOTION_MAX_KEYS 1000000u               /* `key` lines in all */
 #define RT_MOTION_MIN_SCALE 1e-6                  /* a key's scale: within [1e-6, 1e6] */
 #define RT_MOTION_MAX_SCALE 1e6
-#define RT_MOTION_MAX_TURN 1e6                    /* |degrees| of a key's turn */
+#define RT_MOTION_MAX_TURN 1e6 /* |degrees| of a key's turn */
 
 typedef struct rt_motion rt_motion;
 
@@ -80,20 +80,18 @@ rt_motion_entry_info rt_motion_entry(const rt_motion *motion, size_t index);
  * box, lo > hi, when no object has bounds). RT_ERR_PARSE with "FILE:LINE: ..." (the entry's
  * `objects` line) when an entry names objects the scene does not have, or when some frame
  * would move an object past 1e30 in magnitude or shrink a sphere to radius 0. */
-rt_status rt_motion_space(const rt_motion *motion, const rt_scene *scene, rt_box *space, char *msg,
-                          size_t msg_len);
+rt_status rt_motion_space(const rt_motion *motion, const rt_scene *scene, rt_box *space, char *msg, size_t msg_len);
 
 /* Gives the objects of `frame_scene` (an rt_scene_clone of `scene`, at any frame so far) their
  * geometry at `frame`, computed from `scene`'s. moved (NULL, or one byte per object) gets 1
  * for each object whose geometry changed, 0 for the others. RT_ERR_INVALID (a message) when
  * the scenes' object counts differ or an entry names objects past them; a motion that passed
  * rt_motion_space on `scene` never fails otherwise. */
-rt_status rt_motion_apply(const rt_motion *motion, const rt_scene *scene, rt_scene *frame_scene,
-                          uint32_t frame, uint8_t *moved, char *msg, size_t msg_len);
+rt_status rt_motion_apply(const rt_motion *motion, const rt_scene *scene, rt_scene *frame_scene, uint32_t frame,
+                          uint8_t *moved, char *msg, size_t msg_len);
 
 /* What entry `index` matched, for a message: "FILE:LINE: objects 0-3 (4 spheres), 3 keys". */
-void rt_motion_describe(const rt_motion *motion, const rt_scene *scene, size_t index, char *buf,
-                        size_t buf_len);
+void rt_motion_describe(const rt_motion *motion, const rt_scene *scene, size_t index, char *buf, size_t buf_len);
 
 #ifdef __cplusplus
 }

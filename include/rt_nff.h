@@ -30,12 +30,11 @@ typedef void (*rt_nff_warn_fn)(void *ctx, const char *message);
 #define RT_NFF_MAX_FILE_BYTES (1024u * 1024u * 1024u)
 
 /* Returns RT_ERR_IO (cannot open/read), RT_ERR_PARSE or RT_ERR_LIMIT on failure. */
-rt_status rt_nff_load(const char *path, rt_scene **out, char *msg, size_t msg_len,
-                      rt_nff_warn_fn warn, void *warn_ctx);
+rt_status rt_nff_load(const char *path, rt_scene **out, char *msg, size_t msg_len, rt_nff_warn_fn warn, void *warn_ctx);
 
 /* The same from memory; `name` is used in messages in place of a file name. */
-rt_status rt_nff_parse(const char *name, const char *text, size_t length, rt_scene **out,
-                       char *msg, size_t msg_len, rt_nff_warn_fn warn, void *warn_ctx);
+rt_status rt_nff_parse(const char *name, const char *text, size_t length, rt_scene **out, char *msg, size_t msg_len,
+                       rt_nff_warn_fn warn, void *warn_ctx);
 
 #ifdef __cplusplus
 }

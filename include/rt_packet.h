@@ -31,14 +31,14 @@ typedef enum rt_packet_kind {
 } rt_packet_kind;
 
 typedef struct rt_packet {
-    rt_vec3 origin;   /* ray origin, scene units */
-    rt_vec3 dir;      /* unit direction */
-    rt_vec3 weight;   /* ray: weight k_i per channel (1 for primaries); shadow: luminance carried */
-    rt_dda dda;       /* traversal state: current cell, next boundaries, t reached (dda.t_enter) */
-    double t_light;   /* shadow: t at which the light is reached; ray: +inf */
-    uint32_t x, y;    /* pixel, x from the left, y from the top */
-    uint16_t depth;   /* shade-tree depth, 0 for primaries */
-    uint8_t kind;     /* rt_packet_kind */
+    rt_vec3 origin;      /* ray origin, scene units */
+    rt_vec3 dir;         /* unit direction */
+    rt_vec3 weight;      /* ray: weight k_i per channel (1 for primaries); shadow: luminance carried */
+    rt_dda dda;          /* traversal state: current cell, next boundaries, t reached (dda.t_enter) */
+    double t_light;      /* shadow: t at which the light is reached; ray: +inf */
+    uint32_t x, y;       /* pixel, x from the left, y from the top */
+    uint16_t depth;      /* shade-tree depth, 0 for primaries */
+    uint8_t kind;        /* rt_packet_kind */
     uint8_t handed_over; /* 1: handed on by another IP's step, not yet taken up */
 } rt_packet;
 
@@ -54,8 +54,8 @@ typedef struct rt_packet_totals {
  * to 1 and fills *out when the ray meets the object space, to 0 otherwise
  * (the pixel then gets the background). Returns RT_ERR_INVALID if (x, y)
  * lies outside the image. */
-rt_status rt_primary_packet(const rt_scene *scene, const rt_grid *grid, uint32_t x, uint32_t y,
-                            rt_packet *out, int *enters);
+rt_status rt_primary_packet(const rt_scene *scene, const rt_grid *grid, uint32_t x, uint32_t y, rt_packet *out,
+                            int *enters);
 
 /* Direction of the primary ray of pixel (x, y), unit length. */
 rt_vec3 rt_primary_direction(const rt_camera *camera, uint32_t x, uint32_t y);

@@ -23,13 +23,12 @@ extern "C" {
 
 /* Encodes an 8-bit RGB PNG into an open stream (flushed, not closed); `name` is used in
  * messages. RT_ERR_IO when encoding or a write fails ("NAME: cannot write: ERRNO TEXT"). */
-rt_status rt_png_write_stream(FILE *fp, const char *name, uint32_t width, uint32_t height,
-                              const uint8_t *rgb8, char *msg, size_t msg_len);
+rt_status rt_png_write_stream(FILE *fp, const char *name, uint32_t width, uint32_t height, const uint8_t *rgb8,
+                              char *msg, size_t msg_len);
 
 /* Reads an 8-bit RGB PNG; *rgb8 is malloc'ed (caller frees). RT_ERR_IO or
  * RT_ERR_INVALID (not 8-bit RGB) on failure. */
-rt_status rt_png_read(const char *path, uint32_t *width, uint32_t *height, uint8_t **rgb8,
-                      char *msg, size_t msg_len);
+rt_status rt_png_read(const char *path, uint32_t *width, uint32_t *height, uint8_t **rgb8, char *msg, size_t msg_len);
 
 #ifdef __cplusplus
 }

@@ -48,15 +48,15 @@ typedef struct rt_render_options {
 } rt_render_options;
 
 typedef struct rt_render_stats {
-    rt_op_counts ops;         /* all operations */
-    rt_packet_totals packets; /* packet bookkeeping */
+    rt_op_counts ops;          /* all operations */
+    rt_packet_totals packets;  /* packet bookkeeping */
     uint64_t queue_high_water; /* longest the work queue got */
 } rt_render_stats;
 
 rt_render_options rt_render_options_default(void);
 
-rt_status rt_render(const rt_scene *scene, const rt_grid *grid, const rt_render_options *options,
-                    rt_framebuffer *fb, rt_render_stats *stats, char *msg, size_t msg_len);
+rt_status rt_render(const rt_scene *scene, const rt_grid *grid, const rt_render_options *options, rt_framebuffer *fb,
+                    rt_render_stats *stats, char *msg, size_t msg_len);
 
 #ifdef __cplusplus
 }

@@ -29,10 +29,10 @@ extern "C" {
 #endif
 
 /* Documented limits: bigger input is rejected with RT_ERR_LIMIT. */
-#define RT_SCENE_MAX_OBJECTS 4000000u    /* objects (after splitting patches) */
-#define RT_SCENE_MAX_LIGHTS 1024u        /* point lights */
-#define RT_SCENE_MAX_VERTICES 100000u    /* vertices of one polygon or patch */
-#define RT_SCENE_MAX_RESOLUTION 16384u   /* image width or height, pixels */
+#define RT_SCENE_MAX_OBJECTS 4000000u  /* objects (after splitting patches) */
+#define RT_SCENE_MAX_LIGHTS 1024u      /* point lights */
+#define RT_SCENE_MAX_VERTICES 100000u  /* vertices of one polygon or patch */
+#define RT_SCENE_MAX_RESOLUTION 16384u /* image width or height, pixels */
 
 typedef struct rt_scene rt_scene;
 
@@ -46,10 +46,10 @@ typedef struct rt_material {
 } rt_material;
 
 typedef struct rt_camera {
-    rt_vec3 from;  /* eye position, scene units */
-    rt_vec3 at;    /* point looked at, scene units */
-    rt_vec3 up;    /* up hint (need not be unit or orthogonal) */
-    double angle;  /* degrees, centre of first pixel column to centre of last */
+    rt_vec3 from;           /* eye position, scene units */
+    rt_vec3 at;             /* point looked at, scene units */
+    rt_vec3 up;             /* up hint (need not be unit or orthogonal) */
+    double angle;           /* degrees, centre of first pixel column to centre of last */
     uint32_t width, height; /* pixels */
 } rt_camera;
 
@@ -74,8 +74,8 @@ void rt_scene_free(rt_scene *scene);
 /* A deep copy (camera, lights, materials, objects); NULL if memory runs out. */
 rt_scene *rt_scene_clone(const rt_scene *scene);
 
-rt_status rt_scene_set_view(rt_scene *scene, rt_vec3 from, rt_vec3 at, rt_vec3 up,
-                            double angle_deg, uint32_t width, uint32_t height);
+rt_status rt_scene_set_view(rt_scene *scene, rt_vec3 from, rt_vec3 at, rt_vec3 up, double angle_deg, uint32_t width,
+                            uint32_t height);
 /* Overrides the resolution only (the --size option). */
 rt_status rt_scene_set_resolution(rt_scene *scene, uint32_t width, uint32_t height);
 rt_status rt_scene_set_background(rt_scene *scene, rt_vec3 rgb);
@@ -87,10 +87,8 @@ rt_status rt_scene_set_material(rt_scene *scene, const rt_material *material);
 rt_status rt_scene_add_sphere(rt_scene *scene, rt_vec3 center, double radius);
 rt_status rt_scene_add_polygon(rt_scene *scene, const rt_vec3 *vertices, size_t count);
 /* normals: one per vertex (normalised here). */
-rt_status rt_scene_add_patch(rt_scene *scene, const rt_vec3 *vertices, const rt_vec3 *normals,
-                             size_t count);
-rt_status rt_scene_add_cone(rt_scene *scene, rt_vec3 base, double base_radius, rt_vec3 apex,
-                            double apex_radius);
+rt_status rt_scene_add_patch(rt_scene *scene, const rt_vec3 *vertices, const rt_vec3 *normals, size_t count);
+rt_status rt_scene_add_cone(rt_scene *scene, rt_vec3 base, double base_radius, rt_vec3 apex, double apex_radius);
 
 /* Ends building: gives uncoloured lights their default colour. Returns
  * RT_ERR_INVALID with a message if the view was never set or the camera is

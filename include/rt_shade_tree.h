@@ -33,9 +33,8 @@ double rt_shade_tree_packets(const rt_scene *scene, int max_depth, double min_we
 /* RT_ERR_LIMIT with a message naming --max-depth and --min-weight when the bound, at
  * `packet_bytes` a packet, exceeds what is left of the budget; RT_OK otherwise (always
  * without a limit). */
-rt_status rt_shade_tree_check(const rt_scene *scene, const rt_step_params *params,
-                              const rt_budget *budget, uint64_t packet_bytes, char *msg,
-                              size_t msg_len);
+rt_status rt_shade_tree_check(const rt_scene *scene, const rt_step_params *params, const rt_budget *budget,
+                              uint64_t packet_bytes, char *msg, size_t msg_len);
 
 #ifdef __cplusplus
 }

@@ -19,13 +19,13 @@ extern "C" {
 #define RT_MSG_LEN 512
 
 typedef enum rt_status {
-    RT_OK = 0,        /* success */
-    RT_ERR_INVALID,   /* an argument or input value is out of its documented range */
-    RT_ERR_PARSE,     /* a scene or timing file is malformed */
-    RT_ERR_LIMIT,     /* input exceeds a documented limit (size, count) */
-    RT_ERR_NOMEM,     /* an allocation failed */
-    RT_ERR_IO,        /* a file could not be opened, read or written */
-    RT_ERR_CAPACITY   /* a caller-provided buffer is too small */
+    RT_OK = 0,      /* success */
+    RT_ERR_INVALID, /* an argument or input value is out of its documented range */
+    RT_ERR_PARSE,   /* a scene or timing file is malformed */
+    RT_ERR_LIMIT,   /* input exceeds a documented limit (size, count) */
+    RT_ERR_NOMEM,   /* an allocation failed */
+    RT_ERR_IO,      /* a file could not be opened, read or written */
+    RT_ERR_CAPACITY /* a caller-provided buffer is too small */
 } rt_status;
 
 /* Returns a static, human-readable name for a status (never NULL). */

@@ -40,9 +40,9 @@ extern "C" {
 #define RT_STEP_MAX_CREATED(lights) ((size_t)(lights) + 2u)
 
 typedef struct rt_step_params {
-    int max_depth;      /* deepest shade-tree depth a new ray packet may have (default 8) */
-    double min_weight;  /* smallest largest-channel weight of a new ray packet (default 1/512) */
-    int brute_force;    /* 1: test every object once, ignore the grid (the oracle) */
+    int max_depth;     /* deepest shade-tree depth a new ray packet may have (default 8) */
+    double min_weight; /* smallest largest-channel weight of a new ray packet (default 1/512) */
+    int brute_force;   /* 1: test every object once, ignore the grid (the oracle) */
     /* Called for every intersection test with the object's index (NULL: not called);
      * the cluster model uses it to charge remote object reads. */
     void (*on_test)(void *ctx, uint32_t object);
@@ -56,9 +56,9 @@ typedef struct rt_step_params {
 rt_step_params rt_step_params_default(void);
 
 typedef enum rt_fate {
-    RT_FATE_ABSORBED = 0,  /* hit an object, was blocked, or (shadow) reached its light */
-    RT_FATE_LEFT = 1,      /* left the object space */
-    RT_FATE_FORWARDED = 2  /* next cell belongs to another owner: send the packet on */
+    RT_FATE_ABSORBED = 0, /* hit an object, was blocked, or (shadow) reached its light */
+    RT_FATE_LEFT = 1,     /* left the object space */
+    RT_FATE_FORWARDED = 2 /* next cell belongs to another owner: send the packet on */
 } rt_fate;
 
 typedef struct rt_contribution {
@@ -67,15 +67,15 @@ typedef struct rt_contribution {
 } rt_contribution;
 
 typedef struct rt_step_result {
-    rt_op_counts ops;           /* operations performed by this step */
-    rt_contribution *contrib;   /* frame-buffer contributions of this step (buffer) */
+    rt_op_counts ops;         /* operations performed by this step */
+    rt_contribution *contrib; /* frame-buffer contributions of this step (buffer) */
     size_t contrib_count;
     size_t contrib_capacity;
-    rt_packet *created;         /* new packets, each with the cell it starts in (buffer) */
+    rt_packet *created; /* new packets, each with the cell it starts in (buffer) */
     size_t created_count;
     size_t created_capacity;
-    rt_fate fate;               /* what became of the input packet */
-    uint32_t next_cell;         /* forwarded: linear index of the cell it goes to */
+    rt_fate fate;       /* what became of the input packet */
+    uint32_t next_cell; /* forwarded: linear index of the cell it goes to */
 } rt_step_result;
 
 /* Most contributions one step makes: ambient, plus every new packet whose
@@ -94,9 +94,8 @@ void rt_step_result_release(rt_step_result *result);
 
 /* Performs one step. ops, contrib_count and created_count in *out are
  * reset first. The packet is updated in place when forwarded. */
-rt_status rt_step(const rt_scene *scene, const rt_grid *grid, const int32_t *cell_owner,
-                  int32_t my_id, const rt_step_params *params, rt_packet *packet,
-                  rt_step_result *out);
+rt_status rt_step(const rt_scene *scene, const rt_grid *grid, const int32_t *cell_owner, int32_t my_id,
+                  const rt_step_params *params, rt_packet *packet, rt_step_result *out);
 
 /* Linear index of the cell a packet is in. */
 uint32_t rt_packet_cell(const rt_grid *grid, const rt_packet *packet);

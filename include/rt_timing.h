@@ -25,24 +25,24 @@ extern "C" {
 #endif
 
 typedef struct rt_timing {
-    double test_miss_us;       /* intersection test, miss (1300) */
-    double test_hit_us;        /* intersection test, hit (1750) */
-    double dda_step_us;        /* next-cell determination (340) */
-    double shading_us;         /* luminance computation at a hit (4600) */
-    double reflection_us;      /* reflection vector (680) */
-    double refraction_us;      /* transmission vector (1100) */
-    double packet_analysis_us; /* taking up a new packet: a primary or one made at a hit (580) */
-    double packet_creation_us; /* making a new packet at a hit (1600) */
-    double fb_write_us;        /* one frame-buffer contribution (0) */
-    double link_us;            /* one packet over a link (50); see link_bytes_per_us */
-    double link_bytes_per_us;  /* > 0: link time = packet_bytes / this, overriding link_us (0) */
-    double packet_bytes;       /* packet size on the wire, bytes (28) */
-    double host_inject_us;     /* host time to inject one primary packet (0) */
-    double bus_width_bytes;    /* cluster bus data width, bytes per cycle (2) */
-    double bus_cycle_us;       /* cluster bus cycle (0.5) */
-    double bus_arbitration_us; /* arbitration before each bus transfer (0.25) */
-    double memory_access_us;   /* 2-port memory access latency from the bus side (0.5) */
-    double handover_send_us;   /* sending IP: hand a packet on to the next cell's owner */
+    double test_miss_us;        /* intersection test, miss (1300) */
+    double test_hit_us;         /* intersection test, hit (1750) */
+    double dda_step_us;         /* next-cell determination (340) */
+    double shading_us;          /* luminance computation at a hit (4600) */
+    double reflection_us;       /* reflection vector (680) */
+    double refraction_us;       /* transmission vector (1100) */
+    double packet_analysis_us;  /* taking up a new packet: a primary or one made at a hit (580) */
+    double packet_creation_us;  /* making a new packet at a hit (1600) */
+    double fb_write_us;         /* one frame-buffer contribution (0) */
+    double link_us;             /* one packet over a link (50); see link_bytes_per_us */
+    double link_bytes_per_us;   /* > 0: link time = packet_bytes / this, overriding link_us (0) */
+    double packet_bytes;        /* packet size on the wire, bytes (28) */
+    double host_inject_us;      /* host time to inject one primary packet (0) */
+    double bus_width_bytes;     /* cluster bus data width, bytes per cycle (2) */
+    double bus_cycle_us;        /* cluster bus cycle (0.5) */
+    double bus_arbitration_us;  /* arbitration before each bus transfer (0.25) */
+    double memory_access_us;    /* 2-port memory access latency from the bus side (0.5) */
+    double handover_send_us;    /* sending IP: hand a packet on to the next cell's owner */
     double handover_receive_us; /* receiving IP: take up a packet another IP handed over */
 } rt_timing;
 
@@ -58,8 +58,7 @@ const char *rt_timing_default_profile(void);
 
 /* Sets one key (name as in the file). RT_ERR_INVALID for an unknown key or a
  * negative / non-finite value (widths and packet size must be > 0). */
-rt_status rt_timing_set(rt_timing *timing, const char *key, double value, char *msg,
-                        size_t msg_len);
+rt_status rt_timing_set(rt_timing *timing, const char *key, double value, char *msg, size_t msg_len);
 
 rt_status rt_timing_load(const char *path, rt_timing *timing, char *msg, size_t msg_len);
 

@@ -24,7 +24,11 @@ typedef struct rt_box {
     rt_vec3 hi; /* largest corner, scene units */
 } rt_box;
 
-static inline rt_vec3 rt_vec(double x, double y, double z) { rt_vec3 v = {x, y, z}; return v; }
+static inline rt_vec3 rt_vec(double x, double y, double z)
+{
+    rt_vec3 v = {x, y, z};
+    return v;
+}
 static inline rt_vec3 rt_vec_add(rt_vec3 a, rt_vec3 b) { return rt_vec(a.x + b.x, a.y + b.y, a.z + b.z); }
 static inline rt_vec3 rt_vec_sub(rt_vec3 a, rt_vec3 b) { return rt_vec(a.x - b.x, a.y - b.y, a.z - b.z); }
 static inline rt_vec3 rt_vec_scale(rt_vec3 a, double s) { return rt_vec(a.x * s, a.y * s, a.z * s); }

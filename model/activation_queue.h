@@ -30,7 +30,7 @@ class ActivationQueue : public sc_core::sc_module {
     // Runs `client` after the processes runnable now (the caller asks once a round).
     void request(Client &client)
     {
-        if (m_waiting.empty()) m_run.notify(); // immediate: the method runs later in this evaluation phase
+        if (m_waiting.empty()) m_run.notify();  // immediate: the method runs later in this evaluation phase
         m_waiting.push_back(&client);
     }
 

@@ -16,7 +16,7 @@ namespace torusrt {
 class ArrivalQueue {
   public:
     struct Arrival {
-        uint32_t packet; // handle in the packet pool
+        uint32_t packet;  // handle in the packet pool
         int source;
     };
 
@@ -39,18 +39,15 @@ class ArrivalQueue {
     static constexpr int kSeqBits = 58;
     static constexpr uint64_t kSeqMask = (uint64_t{1} << kSeqBits) - 1;
     struct Key {
-        sc_dt::uint64 when; // sc_time value
-        uint64_t order;     // source << kSeqBits | sequence
+        sc_dt::uint64 when;  // sc_time value
+        uint64_t order;      // source << kSeqBits | sequence
         uint32_t packet;
     };
-    static bool later(const Key &a, const Key &b)
-    {
-        return a.when != b.when ? a.when > b.when : a.order > b.order;
-    }
+    static bool later(const Key &a, const Key &b) { return a.when != b.when ? a.when > b.when : a.order > b.order; }
 
     std::vector<Key> m_heap;
     uint64_t m_seq = 0;
-    uint64_t m_delta_first_seq = 0;         // sequence of the first push in delta m_push_delta
+    uint64_t m_delta_first_seq = 0;  // sequence of the first push in delta m_push_delta
     sc_dt::uint64 m_push_delta = ~sc_dt::uint64{0};
 };
 

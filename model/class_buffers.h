@@ -1,7 +1,7 @@
 // class_buffers.h - one bounded buffer split by packet class (and, on a link, by virtual
 // channel): a BufferSpace of the same capacity per index, made when first used, so a run pays
-// only for the classes its packets reach; unbounded (capacity 0), one BufferSpace for all. Index = class for queues, 2 x class + channel for
-// links (see flow_control.h). With --flow none every packet has index 0 and this is one buffer.
+// only for the classes its packets reach; unbounded (capacity 0), one BufferSpace for all. Index = class for queues, 2
+// x class + channel for links (see flow_control.h). With --flow none every packet has index 0 and this is one buffer.
 // The aggregate accessors let reports, traces and the queue registry treat the group as one
 // queue.
 // Storage: index 0 (every packet of an unbounded buffer or of --flow none) lives inside the
@@ -29,7 +29,7 @@ class ClassBuffers {
     [[gnu::always_inline]] BufferSpace &at(uint32_t index)
     {
         if (index > m_top) m_top = index;
-        if (m_first_made && !slot(index)) return m_first; // the hop path's case: no look-up
+        if (m_first_made && !slot(index)) return m_first;  // the hop path's case: no look-up
         return made(slot(index));
     }
     // Unbounded: every packet finds room, nothing to check.
@@ -110,8 +110,8 @@ class ClassBuffers {
     uint32_t m_count = 0;       // = count()
     bool m_first_made = false;  // index 0 made
     BufferSpace m_first;
-    std::vector<uint8_t> m_made; // per index: whether a packet asked for it
-    std::unique_ptr<std::deque<BufferSpace>> m_rest; // indexes 1.. (bounded, split runs only)
+    std::vector<uint8_t> m_made;                      // per index: whether a packet asked for it
+    std::unique_ptr<std::deque<BufferSpace>> m_rest;  // indexes 1.. (bounded, split runs only)
     StallClock m_stall;
 };
 

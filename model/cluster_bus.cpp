@@ -43,10 +43,7 @@ int ClusterBus::waiting() const
 
 namespace {
 
-GrantWait grant_wait(const ClusterBus::GrantStats &g)
-{
-    return {g.grants, g.wait_sum.value(), g.wait_max.value()};
-}
+GrantWait grant_wait(const ClusterBus::GrantStats &g) { return {g.grants, g.wait_sum.value(), g.wait_max.value()}; }
 
 }  // namespace
 
@@ -146,8 +143,7 @@ void ClusterBus::b_transport(int id, tlm::tlm_generic_payload &trans, sc_core::s
 sc_core::sc_time ClusterBus::reserve(const sc_core::sc_time &requested, const sc_core::sc_time &occupancy)
 {
     // Every requester's local time is at or after simulation time: older slots can go.
-    while (!m_reserved.empty() && m_reserved.begin()->second <= sim_now())
-        m_reserved.erase(m_reserved.begin());
+    while (!m_reserved.empty() && m_reserved.begin()->second <= sim_now()) m_reserved.erase(m_reserved.begin());
     sc_core::sc_time start = requested;
     if (occupancy == sc_core::SC_ZERO_TIME) return start;
     auto it = m_reserved.upper_bound(start);

@@ -78,7 +78,7 @@ ClusterDispatcher::ClusterDispatcher(sc_core::sc_module_name name, const Machine
 
 bool ClusterDispatcher::place(const TimedPacket &tp)
 {
-    m_target = -1; // unbounded or --flow none: chosen once the packet has arrived
+    m_target = -1;  // unbounded or --flow none: chosen once the packet has arrived
     if (m_flow == FlowControl::none || m_inbox.capacity() == 0) return true;
     int k = m_policy->candidate(m_processors);
     BufferSpace &room = m_processors[k]->queue().space_for(tp);
@@ -98,9 +98,9 @@ void ClusterDispatcher::run()
         if (m_inbox.empty()) m_time.sync();
         sc_core::sc_time before = m_time.now();
         TimedPacket tp = m_inbox.take_first([this](const TimedPacket &c) { return place(c); }, m_room);
-        if (m_target >= 0) tp.reserved = true; // place() took its slot
-        m_time.settle(before);        // it may have waited for room
-        m_time.advance_to(tp.stamp);  // cannot move a packet before it arrived
+        if (m_target >= 0) tp.reserved = true;  // place() took its slot
+        m_time.settle(before);                  // it may have waited for room
+        m_time.advance_to(tp.stamp);            // cannot move a packet before it arrived
         int k = m_target >= 0 ? m_target : m_policy->choose(m_processors);
         m_busy_flag = true;
         // Packet write over the bus; the delay argument carries this process's local offset.
@@ -118,7 +118,7 @@ void ClusterDispatcher::run()
         tp.stamp = m_time.now();
         m_dispatched[k]++;
         m_processors[k]->accept(tp);
-        m_time.settle(tp.stamp); // the processor's queue may have been full
+        m_time.settle(tp.stamp);  // the processor's queue may have been full
     }
 }
 

@@ -86,8 +86,8 @@ class ClusterDispatcher : public sc_core::sc_module, public PacketSinkIf {
     PacketQueue m_inbox;
     TimeKeeper m_time;
     FlowControl m_flow;
-    int m_target = 0;           // the processor place() picked
-    sc_core::sc_event m_room;   // a processor queue released a slot
+    int m_target = 0;          // the processor place() picked
+    sc_core::sc_event m_room;  // a processor queue released a slot
     std::vector<uint64_t> m_dispatched;
     bool m_busy_flag = false;
     tlm::tlm_generic_payload m_trans;

@@ -15,7 +15,6 @@
 // paper's definition), beside pixel-partitioned (whole scene x the number of processors).
 #pragma once
 
-
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <vector>

@@ -34,8 +34,8 @@ ClusterNode::ClusterNode(sc_core::sc_module_name name, const MachineConfig &conf
                                                           cell_owner, node, global, ledger, setup);
         auto mem = std::make_unique<TwoPortMemory>(("mem_" + std::to_string(k)).c_str(), config.timing, m_node_objects,
                                                    shared ? k : 0, shared ? m : 1);
-        auto port = std::make_unique<ProcessorBusPort>(("port_" + std::to_string(k)).c_str(), scene, k,
-                                                       m_node_objects, m);
+        auto port =
+            std::make_unique<ProcessorBusPort>(("port_" + std::to_string(k)).c_str(), scene, k, m_node_objects, m);
         ip->out.bind(port->in);
         if (shared) ip->fetch.bind(port->objects);
         port->to_comm_unit.bind(to_comm_unit);

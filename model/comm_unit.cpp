@@ -25,10 +25,10 @@ size_t neighbours(const Routing &routing, int node)
 
 CommUnit::CommUnit(sc_core::sc_module_name name, int node, const Routing &routing, const rt_grid *grid,
                    const int32_t *cell_owner, const Setup &setup)
-    : sc_module(name), link_in("link_in", neighbours(routing, node)), in("in"), local("local"),
-      link_out("link_out"), m_pool(setup.pool ? setup.pool : &m_own_pool), m_wake(setup.calendar, *this, m_due),
-      m_lookahead(setup.lookahead), m_route_at_once(setup.route_at_once), m_node(node), m_flow(setup.flow),
-      m_routing(routing), m_grid(grid), m_owner(cell_owner), m_replicas(setup.replicas)
+    : sc_module(name), link_in("link_in", neighbours(routing, node)), in("in"), local("local"), link_out("link_out"),
+      m_pool(setup.pool ? setup.pool : &m_own_pool), m_wake(setup.calendar, *this, m_due), m_lookahead(setup.lookahead),
+      m_route_at_once(setup.route_at_once), m_node(node), m_flow(setup.flow), m_routing(routing), m_grid(grid),
+      m_owner(cell_owner), m_replicas(setup.replicas)
 {
     m_port_of_dir.fill(-1);
     in.bind(*this);
@@ -49,8 +49,8 @@ CommUnit::CommUnit(sc_core::sc_module_name name, int node, const Routing &routin
 CommUnit::LinkInSocket &CommUnit::next_link_in()
 {
     if (static_cast<size_t>(m_processor_source) >= link_in.size())
-        SC_REPORT_FATAL(name(), ("more incoming links than the node's " + std::to_string(link_in.size()) +
-                                 " neighbours").c_str());
+        SC_REPORT_FATAL(
+            name(), ("more incoming links than the node's " + std::to_string(link_in.size()) + " neighbours").c_str());
     return link_in[m_processor_source++];
 }
 
@@ -62,7 +62,7 @@ void CommUnit::end_of_elaboration()
 
 void CommUnit::start_of_simulation()
 {
-    m_local_sink = local.operator->(); // bound now
+    m_local_sink = local.operator->();  // bound now
     for (int dir = 0; dir < kDirections; dir++)
         if (m_port_of_dir[dir] >= 0) m_ways.set_sink(dir, link_out[m_port_of_dir[dir]]);
 }
@@ -96,7 +96,7 @@ CommUnit::Hop CommUnit::next_hop(TimedPacket &p, int owner)
 BufferSpace *CommUnit::room_for(const TimedPacket &p)
 {
     TimedPacket q = p;
-    q.last_dir = -1; // it leaves the processor side
+    q.last_dir = -1;  // it leaves the processor side
     return next_hop(q, owner_of(q)).sink->room_for(q);
 }
 
@@ -136,7 +136,7 @@ bool CommUnit::processor_held() const { return m_held_total && m_held_count[proc
 
 void CommUnit::accept(const TimedPacket &p)
 {
-    if (p.from_host) { // a primary at its entry node: straight to the processor side
+    if (p.from_host) {  // a primary at its entry node: straight to the processor side
         TimedPacket q = p;
         next_hop(q, owner_of(q)).sink->accept(q);
         m_local++;
@@ -150,7 +150,7 @@ void CommUnit::accept(const TimedPacket &p)
 void CommUnit::accept_pooled(PacketPool &pool, uint32_t handle)
 {
     if (&pool != m_pool || pool.at(handle).from_host) {
-        PacketSinkIf::accept_pooled(pool, handle); // copied in
+        PacketSinkIf::accept_pooled(pool, handle);  // copied in
         return;
     }
     while (processor_held()) sc_core::wait(m_processor_room);
@@ -161,14 +161,14 @@ void CommUnit::accept_pooled(PacketPool &pool, uint32_t handle)
 void CommUnit::from_processor(uint32_t packet)
 {
     TimedPacket &p = m_pool->at(packet);
-    p.last_dir = -1; // it leaves the processor side
+    p.last_dir = -1;  // it leaves the processor side
     const sc_core::sc_time stamp = p.stamp, now = sim_now();
     // Bound for a link: routed now, as it would be one delta on (nothing else is routed at this
     // time any more). Bound for this node's own processor, it waits for that delta, so the
     // processor takes up its next packet before this one joins its queue.
     if (m_route_at_once && stamp <= now && m_pool->owner(packet) != m_node &&
         (m_arrivals.empty() || m_arrivals.next_time() > now)) {
-        if (forward(packet)) return; // unbounded buffers: it always moves on (no credit held)
+        if (forward(packet)) return;  // unbounded buffers: it always moves on (no credit held)
     }
     enqueue(packet, stamp, processor_source(), nullptr);
 }
@@ -213,7 +213,7 @@ bool CommUnit::forward(uint32_t packet)
 {
     TimedPacket &p = m_pool->at(packet);
     sc_core::sc_time now = sim_now();
-    if (p.stamp < now) p.stamp = now; // held packets move on no earlier than now
+    if (p.stamp < now) p.stamp = now;  // held packets move on no earlier than now
     Hop next = next_hop(p, m_pool->owner(packet));
     if (!next.local) m_ways.prefetch(next.dir);
     if (!next.sink->can_accept(p)) {
@@ -243,7 +243,7 @@ void CommUnit::deliver_due()
 {
     sc_core::sc_time now = sim_now();
     while (!m_arrivals.empty() && m_arrivals.next_time() <= now) {
-        if (m_arrivals.next_is_new()) { // sent in this delta: next delta (already notified)
+        if (m_arrivals.next_is_new()) {  // sent in this delta: next delta (already notified)
             m_run.notify(sc_core::SC_ZERO_TIME);
             return;
         }

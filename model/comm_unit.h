@@ -62,8 +62,8 @@ class ReplicaChoice;
 
 // The machine's choices for this unit, fixed at elaboration; a unit alone takes the defaults.
 struct CommUnitSetup {
-    FlowControl flow = FlowControl::none;          // the flow-control scheme (virtual channels)
-    sc_core::sc_time lookahead = sc_core::SC_ZERO_TIME; // the quantum when loosely timed
+    FlowControl flow = FlowControl::none;                // the flow-control scheme (virtual channels)
+    sc_core::sc_time lookahead = sc_core::SC_ZERO_TIME;  // the quantum when loosely timed
     // The machine's packet pool, shared by every unit so that a packet crosses by handle
     // (null: the unit's own).
     PacketPool *pool = nullptr;
@@ -78,16 +78,17 @@ struct CommUnitSetup {
     const ReplicaChoice *replicas = nullptr;
 };
 
-class CommUnit final : public sc_core::sc_module, public PacketSinkIf, public DeliveryRoundIf,
+class CommUnit final : public sc_core::sc_module,
+                       public PacketSinkIf,
+                       public DeliveryRoundIf,
                        public WakeCalendar::Client {
   public:
     // Packets from incoming links: one socket per neighbour (none when the node has none).
-    using LinkInSocket =
-        tlm::tlm_target_socket<32, tlm::tlm_base_protocol_types, 1, sc_core::SC_ZERO_OR_MORE_BOUND>;
+    using LinkInSocket = tlm::tlm_target_socket<32, tlm::tlm_base_protocol_types, 1, sc_core::SC_ZERO_OR_MORE_BOUND>;
     sc_core::sc_vector<LinkInSocket> link_in;
-    sc_core::sc_export<PacketSinkIf> in;                          // packets from the IP side and the host
-    sc_core::sc_port<PacketSinkIf> local;                         // packets for this node's cells
-    sc_core::sc_port<PacketSinkIf, kDirections, sc_core::SC_ZERO_OR_MORE_BOUND> link_out; // outgoing links
+    sc_core::sc_export<PacketSinkIf> in;   // packets from the IP side and the host
+    sc_core::sc_port<PacketSinkIf> local;  // packets for this node's cells
+    sc_core::sc_port<PacketSinkIf, kDirections, sc_core::SC_ZERO_OR_MORE_BOUND> link_out;  // outgoing links
 
     using Setup = CommUnitSetup;
     CommUnit(sc_core::sc_module_name name, int node, const Routing &routing, const rt_grid *grid,
@@ -108,8 +109,7 @@ class CommUnit final : public sc_core::sc_module, public PacketSinkIf, public De
     BufferSpace *room_for(const TimedPacket &p) override;
     // Binds link_out to `sink`, the way out in direction `dir` (elaboration; a link's own
     // connection is connect_link).
-    template <typename Sink>
-    void bind_link_out(int dir, Sink &sink)
+    template <typename Sink> void bind_link_out(int dir, Sink &sink)
     {
         m_port_of_dir[dir] = m_links_bound++;
         link_out.bind(sink);
@@ -157,7 +157,7 @@ class CommUnit final : public sc_core::sc_module, public PacketSinkIf, public De
     };
     struct Hop {
         PacketSinkIf *sink;
-        bool local; // the processor side; else the way out in direction `dir`
+        bool local;  // the processor side; else the way out in direction `dir`
         int dir;
     };
     // The node owning the cell `p` is in.
@@ -188,11 +188,11 @@ class CommUnit final : public sc_core::sc_module, public PacketSinkIf, public De
     void end_of_elaboration() override;
     void start_of_simulation() override;
 
-    PacketPool *m_pool;                 // the machine's packet pool, or m_own_pool
-    TimedWake m_wake;                   // the machine's wake calendar, or m_due
-    int m_processor_source = 0;         // = the number of incoming links bound
-    sc_core::sc_time m_lookahead;       // the quantum when loosely timed, else 0
-    size_t m_held_total = 0;            // packets held (checked first: usually none)
+    PacketPool *m_pool;            // the machine's packet pool, or m_own_pool
+    TimedWake m_wake;              // the machine's wake calendar, or m_due
+    int m_processor_source = 0;    // = the number of incoming links bound
+    sc_core::sc_time m_lookahead;  // the quantum when loosely timed, else 0
+    size_t m_held_total = 0;       // packets held (checked first: usually none)
     bool m_route_at_once = false;
     bool m_delivering = false;
     ActivationQueue::Client *m_after_delivery = nullptr;
@@ -203,10 +203,10 @@ class CommUnit final : public sc_core::sc_module, public PacketSinkIf, public De
     const Routing &m_routing;
     const rt_grid *m_grid;
     const int32_t *m_owner;
-    PacketSinkIf *m_local_sink = nullptr; // what `local` is bound to (from the start of simulation)
+    PacketSinkIf *m_local_sink = nullptr;  // what `local` is bound to (from the start of simulation)
     // Per incoming-link socket, what it is bound to (a crossing's target).
     std::array<LinkInput, kDirections> m_inputs;
-    HopPath m_ways; // per direction, what link_out is bound to there (from the start of simulation)
+    HopPath m_ways;  // per direction, what link_out is bound to there (from the start of simulation)
     // Per source, per incoming buffer (2 x class + channel), pool handles.
     // Sorted by buffer; retry() visits them in that order.
     struct HeldFifo {
@@ -217,10 +217,10 @@ class CommUnit final : public sc_core::sc_module, public PacketSinkIf, public De
     // Per source, packets in m_held (so a check does not walk every class's FIFO).
     std::vector<size_t> m_held_count;
     sc_core::sc_event m_due, m_run, m_retry, m_processor_room;
-    std::vector<sc_core::sc_event *> m_processor_waiters; // on_space(): notified with m_processor_room
-    std::array<int, kDirections> m_port_of_dir; // link_out's index per direction (-1: none)
-    int m_links_bound = 0;                      // link_out's bindings so far
-    const ReplicaChoice *m_replicas; // the owners of replicated cells, or null
+    std::vector<sc_core::sc_event *> m_processor_waiters;  // on_space(): notified with m_processor_room
+    std::array<int, kDirections> m_port_of_dir;            // link_out's index per direction (-1: none)
+    int m_links_bound = 0;                                 // link_out's bindings so far
+    const ReplicaChoice *m_replicas;                       // the owners of replicated cells, or null
     PacketPool m_own_pool;
 };
 

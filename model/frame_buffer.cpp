@@ -6,8 +6,7 @@
 
 namespace torusrt {
 
-FrameBuffer::FrameBuffer(sc_core::sc_module_name name, rt_framebuffer *fb)
-    : sc_module(name), socket("socket"), m_fb(fb)
+FrameBuffer::FrameBuffer(sc_core::sc_module_name name, rt_framebuffer *fb) : sc_module(name), socket("socket"), m_fb(fb)
 {
     socket.register_b_transport(this, &FrameBuffer::b_transport);
 }

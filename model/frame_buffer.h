@@ -12,7 +12,7 @@ namespace torusrt {
 
 class FrameBuffer : public sc_core::sc_module {
   public:
-    tlm_utils::multi_passthrough_target_socket<FrameBuffer> socket; // contributions from IPs and host
+    tlm_utils::multi_passthrough_target_socket<FrameBuffer> socket;  // contributions from IPs and host
 
     FrameBuffer(sc_core::sc_module_name name, rt_framebuffer *fb);
 

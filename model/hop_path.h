@@ -40,7 +40,7 @@ class HopPath {
     [[gnu::always_inline]] void prefetch(int dir) const
     {
         const Way &w = m_ways[dir];
-        if (!w.receiver) return; // not a link with known lines
+        if (!w.receiver) return;  // not a link with known lines
         const char *link = reinterpret_cast<const char *>(w.sink);
         const void *lines[] = {link, link + 64, link + 128, w.target, w.receiver, w.receiver + 64, w.receiver + 128};
         for (const void *line : lines) __builtin_prefetch(line, 1);

@@ -28,7 +28,7 @@ void Host::start_frame(const int32_t *cell_owner, const sc_core::sc_time &offset
     m_done = false;
     m_primaries.restart(cell_owner, offset);
     count_primaries();
-    write_background(); // a plain call: the frame buffer's b_transport never waits
+    write_background();  // a plain call: the frame buffer's b_transport never waits
 }
 
 void Host::write_background()

@@ -22,7 +22,7 @@ namespace torusrt {
 
 class Host : public sc_core::sc_module {
   public:
-    tlm_utils::simple_initiator_socket<Host> fb_socket;         // background of missed rays
+    tlm_utils::simple_initiator_socket<Host> fb_socket;  // background of missed rays
 
     Host(sc_core::sc_module_name name, const MachineConfig &config, const rt_scene *scene, const rt_grid *grid,
          const int32_t *cell_owner, PacketLedger &ledger, const ReplicaChoice *replicas = nullptr);
@@ -33,7 +33,7 @@ class Host : public sc_core::sc_module {
     // counts them in the ledger and writes the background of the rays that miss.
     void start_frame(const int32_t *cell_owner, const sc_core::sc_time &offset);
     bool done_injecting() const { return m_done; }
-    uint64_t injected() const { return m_injected; } // primaries entering the space, every frame
+    uint64_t injected() const { return m_injected; }  // primaries entering the space, every frame
     HostStats stats() const { return {injected()}; }
 
   private:

@@ -10,15 +10,14 @@
 namespace torusrt {
 
 IntersectionProcessor::IntersectionProcessor(sc_core::sc_module_name name, const MachineConfig &config,
-                                             const rt_scene *scene, const rt_grid *grid,
-                                             const int32_t *cell_owner, int owner_id, int index,
-                                             PacketLedger &ledger, const ProcessorSetup &setup)
+                                             const rt_scene *scene, const rt_grid *grid, const int32_t *cell_owner,
+                                             int owner_id, int index, PacketLedger &ledger, const ProcessorSetup &setup)
     : sc_module(name), in("in"), out("out"), fetch("fetch"), fb_socket("fb_socket"),
       m_reserving(config.flow != FlowControl::none && config.queue_capacity != 0),
-      m_timer_wake(setup.calendar, *this, m_timer), m_config(config),
-      m_scene(scene), m_grid(grid), m_owner(cell_owner), m_owner_id(owner_id), m_index(index),
-      m_ledger(ledger), m_params(config.step), m_time(config.style == TimingStyle::lt),
-      m_queue(std::string(basename()) + ".queue", config.queue_capacity), m_threaded(config.cluster > 1)
+      m_timer_wake(setup.calendar, *this, m_timer), m_config(config), m_scene(scene), m_grid(grid), m_owner(cell_owner),
+      m_owner_id(owner_id), m_index(index), m_ledger(ledger), m_params(config.step),
+      m_time(config.style == TimingStyle::lt), m_queue(std::string(basename()) + ".queue", config.queue_capacity),
+      m_threaded(config.cluster > 1)
 {
     in.bind(*this);
     m_params.replicas = setup.replicas;
@@ -33,7 +32,7 @@ IntersectionProcessor::IntersectionProcessor(sc_core::sc_module_name name, const
         SC_THREAD(run_thread);
         return;
     }
-    SC_METHOD(on_wake); // also runs once at the start
+    SC_METHOD(on_wake);  // also runs once at the start
     sensitive << m_timer << m_queue.not_empty_event() << m_out_room;
     SC_METHOD(on_room);
     sensitive << m_room;
@@ -61,7 +60,7 @@ void IntersectionProcessor::on_test(void *ctx, uint32_t object)
 
 bool IntersectionProcessor::prepare(TimedPacket &tp)
 {
-    if (m_params.on_test) m_tested.clear(); // shared data only: else the list's line stays cold
+    if (m_params.on_test) m_tested.clear();  // shared data only: else the list's line stays cold
     rt_status st = rt_step(m_scene, m_grid, m_owner, m_owner_id, &m_params, &tp.packet, &m_result);
     if (st != RT_OK) SC_REPORT_FATAL(name(), rt_status_name(st));
     m_outputs.clear();
@@ -144,12 +143,13 @@ IntersectionProcessor::Wake IntersectionProcessor::act()
             }
             m_time.settle(m_before);  // it may have waited for room
             m_stage = Stage::begin;
-            if (owe(m_time.advance_to_nb(m_cur->stamp))) return Wake::timer; // never start before it arrived
+            if (owe(m_time.advance_to_nb(m_cur->stamp))) return Wake::timer;  // never start before it arrived
             break;
         case Stage::begin:
             begin_step();
             m_stage = Stage::end;
-            if (owe(m_time.advance_nb(sc_core::sc_time(rt_timing_step_us(&m_config.timing, &m_result.ops), sc_core::SC_US))))
+            if (owe(m_time.advance_nb(
+                    sc_core::sc_time(rt_timing_step_us(&m_config.timing, &m_result.ops), sc_core::SC_US))))
                 return Wake::timer;
             break;
         case Stage::end:
@@ -171,7 +171,7 @@ void IntersectionProcessor::begin_step()
     rt_ops_add(&m_ops, &m_result.ops);
     m_start = m_time.now();
     if (m_params.on_test)
-        for (uint32_t obj : m_tested) fetch->fetch(m_index, obj, m_time); // a thread: it may wait
+        for (uint32_t obj : m_tested) fetch->fetch(m_index, obj, m_time);  // a thread: it may wait
 }
 
 void IntersectionProcessor::end_step()
@@ -193,7 +193,7 @@ void IntersectionProcessor::end_step()
     for (size_t i = 0; i < m_result.created_count; i++) m_ledger.created(m_result.created[i].kind);
     if (m_result.fate == RT_FATE_FORWARDED) m_ledger.forwarded();
     else m_ledger.consumed(m_cur->packet.kind, m_handed_at);
-    if (m_handle != kNoHandle && !m_forward_pooled) { // consumed: its slot is free
+    if (m_handle != kNoHandle && !m_forward_pooled) {  // consumed: its slot is free
         m_queue.pool().release(m_handle);
         m_handle = kNoHandle;
     }
@@ -203,16 +203,16 @@ bool IntersectionProcessor::hand_over()
 {
     size_t total = m_outputs.size() + m_forward_pooled;
     for (; m_next_out < total; m_next_out++) {
-        bool pooled = m_next_out == m_outputs.size(); // the forwarded packet, in its slot
+        bool pooled = m_next_out == m_outputs.size();  // the forwarded packet, in its slot
         TimedPacket &o = pooled ? *m_cur : m_outputs[m_next_out];
-        if (pooled) { // as a new packet of the step's: only the kernel's packet carries over
+        if (pooled) {  // as a new packet of the step's: only the kernel's packet carries over
             o.cls = m_out_cls;
             o.vc = 0;
             o.last_dir = -1;
             o.reserved = o.from_host = false;
         }
         o.stamp = m_handed_at;
-        if (!m_out->can_accept(o)) { // a packet of ours is held (--flow none)
+        if (!m_out->can_accept(o)) {  // a packet of ours is held (--flow none)
             m_out->on_space(o, m_out_room);
             return false;
         }
@@ -221,7 +221,7 @@ bool IntersectionProcessor::hand_over()
         else m_out->accept(o);
         m_time.settle(m_handed_at);
     }
-    if (m_forward_pooled) m_handle = kNoHandle; // the receiver owns it now
+    if (m_forward_pooled) m_handle = kNoHandle;  // the receiver owns it now
     m_packets_out += total;
     return true;
 }
@@ -252,7 +252,7 @@ void IntersectionProcessor::on_room()
 void IntersectionProcessor::ask_to_act()
 {
     if (!m_activations) {
-        m_act.notify(); // immediate: run_method runs after the processes runnable now
+        m_act.notify();  // immediate: run_method runs after the processes runnable now
         return;
     }
     if (m_act_asked) return;
@@ -260,7 +260,7 @@ void IntersectionProcessor::ask_to_act()
     if (m_unit && !m_acting) {
         if (m_unit->run_after_delivery(*this)) return;
         if (!m_unit->arrival_due()) {
-            activate(); // nothing of its node is still to come in this delta
+            activate();  // nothing of its node is still to come in this delta
             return;
         }
     }
@@ -281,7 +281,7 @@ void IntersectionProcessor::run_method()
     if (m_wake != Wake::timer) return;
     m_due = sim_now() + m_delay;
     if (m_delay != sc_core::SC_ZERO_TIME) m_timer_wake.at(m_due, m_delay);
-    else m_timer.notify(sc_core::SC_ZERO_TIME); // the next delta, as wait(SC_ZERO_TIME)
+    else m_timer.notify(sc_core::SC_ZERO_TIME);  // the next delta, as wait(SC_ZERO_TIME)
 }
 
 }  // namespace torusrt

@@ -73,18 +73,21 @@ struct ProcessorSetup {
     const rt_replicas *replicas = nullptr;
 };
 
-class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf, public WakeCalendar::Client,
-                              public PacketQueue::Reader, public ActivationQueue::Client {
+class IntersectionProcessor : public sc_core::sc_module,
+                              public PacketSinkIf,
+                              public WakeCalendar::Client,
+                              public PacketQueue::Reader,
+                              public ActivationQueue::Client {
   public:
-    sc_core::sc_export<PacketSinkIf> in;                                      // packets to process
-    sc_core::sc_port<PacketSinkIf> out;                                       // new and forwarded packets
-    sc_core::sc_port<ObjectFetchIf, 1, sc_core::SC_ZERO_OR_MORE_BOUND> fetch; // shared-data reads
-    tlm_utils::simple_initiator_socket<IntersectionProcessor> fb_socket;      // frame-buffer writes
+    sc_core::sc_export<PacketSinkIf> in;                                       // packets to process
+    sc_core::sc_port<PacketSinkIf> out;                                        // new and forwarded packets
+    sc_core::sc_port<ObjectFetchIf, 1, sc_core::SC_ZERO_OR_MORE_BOUND> fetch;  // shared-data reads
+    tlm_utils::simple_initiator_socket<IntersectionProcessor> fb_socket;       // frame-buffer writes
 
     // `owner_id` is the id the cell-owner table uses for this IP's node.
     IntersectionProcessor(sc_core::sc_module_name name, const MachineConfig &config, const rt_scene *scene,
-                          const rt_grid *grid, const int32_t *cell_owner, int owner_id, int index,
-                          PacketLedger &ledger, const ProcessorSetup &setup = ProcessorSetup());
+                          const rt_grid *grid, const int32_t *cell_owner, int owner_id, int index, PacketLedger &ledger,
+                          const ProcessorSetup &setup = ProcessorSetup());
     ~IntersectionProcessor() override;
 
     void accept(const TimedPacket &p) override { m_queue.push_blocking(p); }
@@ -107,7 +110,7 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf, pu
     }
     int index() const { return m_index; }
     bool &busy_trace() { return m_busy_flag; }  // the VCD's busy row
-    bool busy() const { return m_busy_flag; }    // working on a packet now
+    bool busy() const { return m_busy_flag; }   // working on a packet now
 
   private:
     // What the machine waits for: its timer (m_delay), its queue, its queue or room for its
@@ -119,11 +122,11 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf, pu
     bool owe(const TimeWait &w);
     void begin_step();
     void end_step();
-    bool hand_over(); // false: waiting for the processor side (m_out_room)
+    bool hand_over();  // false: waiting for the processor side (m_out_room)
     void run_thread();
     void on_wake();
-    void wake_due() override { on_wake(); } // the calendar's timer
-    void queue_ready() override { on_wake(); } // a packet joined the empty queue (told at once)
+    void wake_due() override { on_wake(); }     // the calendar's timer
+    void queue_ready() override { on_wake(); }  // a packet joined the empty queue (told at once)
     void on_room();
     // Runs the machine after the processes runnable now (once however often it is asked).
     void ask_to_act();
@@ -152,23 +155,23 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf, pu
     // the class scheme or a copied packet uses after the queue.
     Stage m_stage = Stage::top;
     Wake m_wake = Wake::start;
-    bool m_woken = false, m_room_woken = false; // method driver: what woke it this delta
+    bool m_woken = false, m_room_woken = false;  // method driver: what woke it this delta
     bool m_act_asked = false, m_acting = false;
-    bool m_reserving;              // outputs reserve their slots before a packet is taken up
-    bool m_forward_pooled = false; // the step forwards the packet taken up by its handle
+    bool m_reserving;               // outputs reserve their slots before a packet is taken up
+    bool m_forward_pooled = false;  // the step forwards the packet taken up by its handle
     static constexpr uint32_t kNoHandle = ~uint32_t{0};
     uint32_t m_handle = kNoHandle;
-    uint32_t m_out_cls = 0;        // the class of the step's outputs
+    uint32_t m_out_cls = 0;  // the class of the step's outputs
     // The packet taken up: m_current, or its pool slot (m_handle) where it was stepped in place.
     TimedPacket *m_cur = &m_current;
     DeliveryRoundIf *m_unit = nullptr;  // order_after: its node's unit
     ActivationQueue *m_activations = nullptr;
-    TimedWake m_timer_wake;             // ends a timed wait: the machine's calendar, or m_timer
+    TimedWake m_timer_wake;  // ends a timed wait: the machine's calendar, or m_timer
     // The interfaces bound to `out` and `fb_socket`, kept after elaboration so a step does not
     // read the ports for them.
     PacketSinkIf *m_out = nullptr;
     tlm::tlm_fw_transport_if<> *m_fb = nullptr;
-    sc_core::sc_time m_delay, m_due;    // the owed wait and when it ends
+    sc_core::sc_time m_delay, m_due;  // the owed wait and when it ends
     const MachineConfig &m_config;
     const rt_scene *m_scene;
     const rt_grid *m_grid;
@@ -179,7 +182,7 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf, pu
     TimeKeeper m_time;
     sc_core::sc_time m_before, m_start, m_handed_at;
     sc_core::sc_time m_busy = sc_core::SC_ZERO_TIME;
-    size_t m_next_out = 0;              // the next output to hand over
+    size_t m_next_out = 0;  // the next output to hand over
     uint64_t m_packets_in = 0, m_packets_out = 0;
     bool m_busy_flag = false;
     rt_op_counts m_ops{};
@@ -187,16 +190,16 @@ class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf, pu
     // The current step's created packets, then the forwarded one (by copy).
     std::vector<TimedPacket> m_outputs;
     PacketQueue m_queue;
-    TimedPacket m_current;  // the packet taken up (after its step), when taken up by copy
-    std::vector<uint32_t> m_tested; // objects tested in the current step (shared data only)
+    TimedPacket m_current;           // the packet taken up (after its step), when taken up by copy
+    std::vector<uint32_t> m_tested;  // objects tested in the current step (shared data only)
     bool m_threaded;
-    tlm::tlm_generic_payload m_fb_trans; // a member, not a thread local: freed with the module
+    tlm::tlm_generic_payload m_fb_trans;  // a member, not a thread local: freed with the module
     // On the calendar's path (a flat machine with a positive link time) no event is touched per
     // step.
-    sc_core::sc_event m_room;           // an output's buffer released a slot
-    sc_core::sc_event m_out_room;       // the processor side may hand over again
-    sc_core::sc_event m_timer;          // method driver: the owed wait is over
-    sc_core::sc_event m_act;            // method driver: run the machine (notified at once)
+    sc_core::sc_event m_room;      // an output's buffer released a slot
+    sc_core::sc_event m_out_room;  // the processor side may hand over again
+    sc_core::sc_event m_timer;     // method driver: the owed wait is over
+    sc_core::sc_event m_act;       // method driver: run the machine (notified at once)
 };
 
 }  // namespace torusrt

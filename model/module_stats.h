@@ -14,14 +14,14 @@ namespace torusrt {
 // capacity counts (network packets; host primaries wait in the host).
 struct QueueStats {
     std::string name;
-    std::string kind;            // "ip", "dispatcher" or "link"
+    std::string kind;  // "ip", "dispatcher" or "link"
     int node = 0;
-    uint64_t buffers_used = 0;   // class (and channel) buffers the run made; 1 under --flow none
-    unsigned capacity = 0;       // 0 = unbounded
-    uint64_t occupancy = 0;      // packets holding a slot at the end of the run, every class
-    uint64_t high_water = 0;     // most slots one class (and channel) buffer held at once
+    uint64_t buffers_used = 0;     // class (and channel) buffers the run made; 1 under --flow none
+    unsigned capacity = 0;         // 0 = unbounded
+    uint64_t occupancy = 0;        // packets holding a slot at the end of the run, every class
+    uint64_t high_water = 0;       // most slots one class (and channel) buffer held at once
     unsigned waiting_writers = 0;  // writers waiting for room at the end of the run
-    double stalled_s = 0;        // simulated time with at least one writer waiting for room
+    double stalled_s = 0;          // simulated time with at least one writer waiting for room
 };
 
 struct IpStats {

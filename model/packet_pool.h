@@ -5,14 +5,13 @@
 // the handle until a reader takes the packet up: its body is written once per hop where it
 // changes (stamp, channel, last link), never copied on the way; a flat processor that takes no
 // reservations steps it in its slot and hands a forwarded packet on by the same handle, any
-// other reader copies it out and the slot is free again. One pool serves the whole machine; a freed slot is the next one used,
-// so the packets in flight stay in few, warm cache lines. Slots live in fixed chunks: a packet
-// never moves while it is in the pool. A slot starts with what a hop uses: the credit, the node
-// the packet is heading for (its cell's owner, found once when it enters the pool: the cell does
-// not change on the way) and the packet's hop fields (timed_packet.h), 32 bytes that share a
-// cache line in three slots of four; the kernel's packet behind them is read again only at the
-// owner. Slots are 16-byte aligned, not cache-line aligned: with thousands of packets waiting in
-// the queues of a big run, 208 bytes a slot instead of 256 is what keeps its peak memory down.
+// other reader copies it out and the slot is free again. One pool serves the whole machine; a freed slot is the next
+// one used, so the packets in flight stay in few, warm cache lines. Slots live in fixed chunks: a packet never moves
+// while it is in the pool. A slot starts with what a hop uses: the credit, the node the packet is heading for (its
+// cell's owner, found once when it enters the pool: the cell does not change on the way) and the packet's hop fields
+// (timed_packet.h), 32 bytes that share a cache line in three slots of four; the kernel's packet behind them is read
+// again only at the owner. Slots are 16-byte aligned, not cache-line aligned: with thousands of packets waiting in the
+// queues of a big run, 208 bytes a slot instead of 256 is what keeps its peak memory down.
 #pragma once
 
 #include <cstdint>

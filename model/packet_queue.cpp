@@ -27,7 +27,7 @@ void PacketQueue::append(uint32_t handle)
 {
     TimedPacket &p = pool().at(handle);
     p.reserved = false;
-    p.from_host = false; // it is in this queue now, holding a slot
+    p.from_host = false;  // it is in this queue now, holding a slot
     m_items.push_back(handle);
     m_depth = static_cast<int>(m_items.size());
     if (m_items.size() > m_high_water) m_high_water = m_items.size();
@@ -75,7 +75,7 @@ bool PacketQueue::try_take_first_pooled(uint32_t &handle)
         m_items.prefetch_front();
         return true;
     }
-    if (m_source && m_source->pending(m_node)) { // a primary not yet due
+    if (m_source && m_source->pending(m_node)) {  // a primary not yet due
         handle = pool().add(m_source->take(m_node), -1);
         return true;
     }

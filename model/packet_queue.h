@@ -50,7 +50,7 @@ class PacketQueue {
     // Whether `p` fits now (its slot may already be reserved).
     bool has_room(const TimedPacket &p) const
     {
-        const BufferSpace *s = m_spaces.find(p.cls); // not made yet: empty
+        const BufferSpace *s = m_spaces.find(p.cls);  // not made yet: empty
         return p.reserved || !s || s->available();
     }
     // Appends, waiting (in the calling thread) while its class is full; a reserved packet
@@ -102,7 +102,7 @@ class PacketQueue {
     }
     bool empty() const { return m_items.empty() && !(m_source && m_source->pending(m_node)); }
     bool full() const { return m_spaces.full(); }
-    size_t size() const { return m_items.size(); } // packets waiting (every class)
+    size_t size() const { return m_items.size(); }  // packets waiting (every class)
     // Most packets waiting at once, every class together.
     size_t high_water() const { return m_high_water; }
     // Most packets of one class waiting at once (bounded by the capacity).
@@ -126,13 +126,12 @@ class PacketQueue {
     void wait_for(sc_core::sc_event *retry);
     bool primary_first() const
     {
-        return m_source->pending(m_node) &&
-               (m_items.empty() || m_source->next_time(m_node) <= m_items.at(0).stamp);
+        return m_source->pending(m_node) && (m_items.empty() || m_source->next_time(m_node) <= m_items.at(0).stamp);
     }
 
     // What a push and a take touch first, then the buffers, then the rest (a reader told at
     // once never touches the event).
-    PooledFifo m_items; // the packets, oldest first
+    PooledFifo m_items;  // the packets, oldest first
     size_t m_high_water = 0;
     int m_depth = 0;
     bool m_reader_waiting = false;
@@ -141,7 +140,7 @@ class PacketQueue {
     int m_node = -1;
     ClassBuffers m_spaces;
     sc_core::sc_event m_not_empty;
-    PacketPool m_own_pool; // a queue alone (tests); the machine's queues share its pool
+    PacketPool m_own_pool;  // a queue alone (tests); the machine's queues share its pool
     std::string m_name;
 };
 
@@ -151,7 +150,7 @@ template <class Accept> bool PacketQueue::try_take(Accept &&accept, TimedPacket 
     bool primary = m_source && m_source->pending(m_node);
     bool first = primary && primary_first();
     if (first) {
-        TimedPacket c = m_source->peek(m_node); // made on demand: a copy either way
+        TimedPacket c = m_source->peek(m_node);  // made on demand: a copy either way
         if (accept(static_cast<const TimedPacket &>(c))) {
             m_source->drop(m_node);
             if (taken) *taken = c;

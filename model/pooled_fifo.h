@@ -45,12 +45,12 @@ class PooledFifo {
         if (m_items.empty()) return;
         const char *p = reinterpret_cast<const char *>(&m_pool->at(m_items.front()));
         for (size_t b = 0; b < sizeof(TimedPacket); b += 64) __builtin_prefetch(p + b);
-        __builtin_prefetch(p + sizeof(TimedPacket) - 1); // the slot need not start a line
+        __builtin_prefetch(p + sizeof(TimedPacket) - 1);  // the slot need not start a line
     }
 
   private:
     PacketPool *m_pool;
-    std::deque<uint32_t> m_items; // oldest first
+    std::deque<uint32_t> m_items;  // oldest first
 };
 
 }  // namespace torusrt

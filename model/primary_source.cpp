@@ -66,7 +66,7 @@ TimedPacket PrimarySource::take(int node)
 void PrimarySource::drop(int node)
 {
     m_next[node]++;
-    if (!pending(node)) { // the node's list is spent: give its memory back
+    if (!pending(node)) {  // the node's list is spent: give its memory back
         std::vector<uint32_t>().swap(m_pixels[node]);
         m_next[node] = 0;
     }

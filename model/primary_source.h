@@ -52,7 +52,7 @@ class PrimarySource {
     sc_core::sc_time m_inject;
     sc_core::sc_time m_offset = sc_core::SC_ZERO_TIME;
     uint32_t m_width = 0;
-    std::vector<std::vector<uint32_t>> m_pixels; // per entry node, ascending
+    std::vector<std::vector<uint32_t>> m_pixels;  // per entry node, ascending
     std::vector<size_t> m_next;
     std::vector<uint32_t> m_missed;
     uint64_t m_entering = 0;

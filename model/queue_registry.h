@@ -15,12 +15,12 @@ namespace torusrt {
 enum class QueueKind { ip, dispatcher, link };
 
 struct QueueRef {
-    std::string name;         // hierarchical, e.g. top.ip_3.input, top.link_3_to_7_xp
-    QueueKind kind;           // whose buffer: a processor's input, a dispatcher's input, a link
-    int node;                 // the torus node whose memory holds the buffer
-    ClassBuffers *buffers;    // its room: capacity, occupancy, high water, waiting writers, stall time
-    int *depth;               // the traced occupancy, every class (a plain int for sc_trace)
-    std::string trace;        // the VCD signal name of `depth`
+    std::string name;       // hierarchical, e.g. top.ip_3.input, top.link_3_to_7_xp
+    QueueKind kind;         // whose buffer: a processor's input, a dispatcher's input, a link
+    int node;               // the torus node whose memory holds the buffer
+    ClassBuffers *buffers;  // its room: capacity, occupancy, high water, waiting writers, stall time
+    int *depth;             // the traced occupancy, every class (a plain int for sc_trace)
+    std::string trace;      // the VCD signal name of `depth`
 };
 
 inline const char *queue_kind_name(QueueKind k)

@@ -44,7 +44,7 @@ int Routing::next_direction(int from, int to) const
         if (!m_torus) return direction(axis, b[axis] > a[axis]);
         int p = m_dims[axis];
         int forward = b[axis] - a[axis];
-        if (forward < 0) forward += p; // the hops going + round the ring
+        if (forward < 0) forward += p;  // the hops going + round the ring
         return direction(axis, forward <= p - forward);
     }
     return -1;

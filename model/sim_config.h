@@ -27,14 +27,14 @@ constexpr double kMaxSimTimeS = 1e7;
 constexpr int kMaxNodes = 4096;
 constexpr int kMaxProcessors = 4096;
 constexpr int kMaxCluster = 256;
-constexpr unsigned kMaxQueue = 100000000;  // packets per queue
+constexpr unsigned kMaxQueue = 100000000;   // packets per queue
 constexpr unsigned kMaxRecordBytes = 4096;  // --cell-header-bytes, --list-entry-bytes, --object-record-bytes
 
 enum class Topology { torus, mesh };
 enum class TimingStyle { at, lt };
 enum class DataMode { replicated, shared };
-enum class FlowControl { none, classes }; // see flow_control.h
-enum class ReplicaRule { nearest, hash }; // see replica_choice.h
+enum class FlowControl { none, classes };  // see flow_control.h
+enum class ReplicaRule { nearest, hash };  // see replica_choice.h
 
 // The names the options take and the reports print (the arbiter and dispatch policies are
 // named by their registries, bus_arbiter.h and cluster_dispatch.h).
@@ -45,38 +45,38 @@ constexpr NamedValue<FlowControl> kFlowNames[] = {{FlowControl::classes, "classe
 constexpr NamedValue<ReplicaRule> kReplicaRuleNames[] = {{ReplicaRule::nearest, "nearest"},
                                                          {ReplicaRule::hash, "hash"}};
 constexpr NamedValue<rt_map_kind> kMappingNames[] = {{RT_MAP_BLOCK, "block"},
-                                                    {RT_MAP_CYCLIC, "cyclic"},
-                                                    {RT_MAP_BLOCK_CYCLIC, "block-cyclic"},
-                                                    {RT_MAP_FILE, "file"},
-                                                    {RT_MAP_COST, "cost"}};
+                                                     {RT_MAP_CYCLIC, "cyclic"},
+                                                     {RT_MAP_BLOCK_CYCLIC, "block-cyclic"},
+                                                     {RT_MAP_FILE, "file"},
+                                                     {RT_MAP_COST, "cost"}};
 
 // The machine: everything that decides the image time. machine_options.h writes it back as
 // the options that rebuild it (--dump-config, the JSON report's config.options).
 struct MachineConfig {
-    std::array<int, 3> ips{1, 1, 1};        // torus nodes per axis
-    Topology topology = Topology::torus;    // rings in every dimension, or a mesh
-    std::array<int, 3> cells{24, 24, 24};   // grid cells per axis (the object space's division)
-    rt_preprocess_count preprocess_count = RT_COUNT_SEQUENTIAL; // how preprocessing units are counted
-    rt_map_kind mapping = RT_MAP_CYCLIC;    // cell-to-node mapping
-    int block = 1;                          // block size of block-cyclic, K of cost:K
-    std::string map_file;                   // --map-file: explicit cell -> node table
-    std::array<unsigned, 2> pilot_size{0, 0}; // --pilot-size for --map cost (0 = the image's)
-    double replicate = 0;                   // --replicate: extra memory per node for replicas (fraction)
-    ReplicaRule replica_choice = ReplicaRule::nearest; // which owner of a replicated cell a packet goes to
-    unsigned queue_capacity = 0;            // packets per buffer (per class), 0 = unbounded
-    FlowControl flow = FlowControl::classes; // deadlock-free class split, or one class (none)
-    rt_timing timing{};                     // operation and transfer times
-    std::string timing_profile;             // label: the profile, with " + FILE" for a timing file
-    std::string timing_base;                // the built-in profile the table started from
-    std::string timing_file;                // the timing file applied on top ("" = none)
-    rt_step_params step{};                  // shade-tree limits
-    TimingStyle style = TimingStyle::at;    // approximately- or loosely-timed
-    double quantum_us = 0;                  // loosely-timed global quantum
-    int cluster = 1;                        // processors per node (1 = flat torus)
-    DataMode data = DataMode::replicated;   // object data in a cluster
-    std::string arbiter = "round-robin";    // cluster bus arbiter, by its registered name (bus_arbiter.h)
-    std::string dispatch = "round-robin";   // cluster packet dispatch, by name (cluster_dispatch.h)
-    rt_memory_layout memory_layout = rt_memory_layout_default(); // what the memory report charges
+    std::array<int, 3> ips{1, 1, 1};                             // torus nodes per axis
+    Topology topology = Topology::torus;                         // rings in every dimension, or a mesh
+    std::array<int, 3> cells{24, 24, 24};                        // grid cells per axis (the object space's division)
+    rt_preprocess_count preprocess_count = RT_COUNT_SEQUENTIAL;  // how preprocessing units are counted
+    rt_map_kind mapping = RT_MAP_CYCLIC;                         // cell-to-node mapping
+    int block = 1;                                               // block size of block-cyclic, K of cost:K
+    std::string map_file;                                        // --map-file: explicit cell -> node table
+    std::array<unsigned, 2> pilot_size{0, 0};                    // --pilot-size for --map cost (0 = the image's)
+    double replicate = 0;                               // --replicate: extra memory per node for replicas (fraction)
+    ReplicaRule replica_choice = ReplicaRule::nearest;  // which owner of a replicated cell a packet goes to
+    unsigned queue_capacity = 0;                        // packets per buffer (per class), 0 = unbounded
+    FlowControl flow = FlowControl::classes;            // deadlock-free class split, or one class (none)
+    rt_timing timing{};                                 // operation and transfer times
+    std::string timing_profile;                         // label: the profile, with " + FILE" for a timing file
+    std::string timing_base;                            // the built-in profile the table started from
+    std::string timing_file;                            // the timing file applied on top ("" = none)
+    rt_step_params step{};                              // shade-tree limits
+    TimingStyle style = TimingStyle::at;                // approximately- or loosely-timed
+    double quantum_us = 0;                              // loosely-timed global quantum
+    int cluster = 1;                                    // processors per node (1 = flat torus)
+    DataMode data = DataMode::replicated;               // object data in a cluster
+    std::string arbiter = "round-robin";                // cluster bus arbiter, by its registered name (bus_arbiter.h)
+    std::string dispatch = "round-robin";               // cluster packet dispatch, by name (cluster_dispatch.h)
+    rt_memory_layout memory_layout = rt_memory_layout_default();  // what the memory report charges
 
     int node_count() const { return ips[0] * ips[1] * ips[2]; }
     int processor_count() const { return node_count() * cluster; }
@@ -85,24 +85,24 @@ struct MachineConfig {
 // The run: what is rendered and what is written, watched and allowed. None of it changes the
 // simulated time (the image size is the workload's, like the scene).
 struct RunOptions {
-    std::string scene_path;                 // NFF scene
-    unsigned width = 0, height = 0;         // image size override (0 = the scene's)
-    std::string vcd_path;                   // VCD trace file ("" = no tracing)
-    std::string vcd_write_path;             // where it is written now (a temporary or vcd_path)
-    std::string gtkw_path, gtkw_write_path; // GTKWave save file beside it ("" = none)
-    double trace_from_us = 0;               // trace window start
-    double trace_to_us = -1;                // trace window end (< 0: the end of the run)
-    std::vector<int> trace_ips;             // nodes to trace (empty = all)
-    double t1_s = -1;                       // T(1) passed in (< 0: compute)
-    rt_budget memory{};                     // what is left of --memory-budget for packets
-    double time_limit_s = kMaxSimTimeS;     // stop with an error past this simulated time
-    std::string write_map;                  // --write-map: where to write the table used
+    std::string scene_path;                  // NFF scene
+    unsigned width = 0, height = 0;          // image size override (0 = the scene's)
+    std::string vcd_path;                    // VCD trace file ("" = no tracing)
+    std::string vcd_write_path;              // where it is written now (a temporary or vcd_path)
+    std::string gtkw_path, gtkw_write_path;  // GTKWave save file beside it ("" = none)
+    double trace_from_us = 0;                // trace window start
+    double trace_to_us = -1;                 // trace window end (< 0: the end of the run)
+    std::vector<int> trace_ips;              // nodes to trace (empty = all)
+    double t1_s = -1;                        // T(1) passed in (< 0: compute)
+    rt_budget memory{};                      // what is left of --memory-budget for packets
+    double time_limit_s = kMaxSimTimeS;      // stop with an error past this simulated time
+    std::string write_map;                   // --write-map: where to write the table used
     bool quiet = false;
 };
 
 // A run of a machine, with the cell -> node table prepared for it (prepare_mapping).
 struct SimConfig : MachineConfig, RunOptions {
-    std::vector<int32_t> owner_table;       // node of every cell (empty: rt_mapping_fill)
+    std::vector<int32_t> owner_table;  // node of every cell (empty: rt_mapping_fill)
     // Extra owners of replicated cells (rt_replicas.h; both empty: none): per cell, cells + 1
     // offsets into replica_extra.
     std::vector<uint32_t> replica_first;

@@ -7,9 +7,6 @@
 
 namespace torusrt {
 
-inline const sc_core::sc_time &sim_now()
-{
-    return sc_core::sc_get_curr_simcontext()->time_stamp();
-}
+inline const sc_core::sc_time &sim_now() { return sc_core::sc_get_curr_simcontext()->time_stamp(); }
 
 }  // namespace torusrt

@@ -7,10 +7,7 @@ namespace torusrt {
 
 TimeKeeper::TimeKeeper(bool loosely_timed) : m_lt(loosely_timed) { m_qk.reset(); }
 
-sc_core::sc_time TimeKeeper::now() const
-{
-    return m_lt ? m_qk.get_current_time() : sim_now();
-}
+sc_core::sc_time TimeKeeper::now() const { return m_lt ? m_qk.get_current_time() : sim_now(); }
 
 TimeWait TimeKeeper::advance_nb(const sc_core::sc_time &d)
 {

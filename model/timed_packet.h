@@ -18,7 +18,7 @@ struct TimedPacket {
     TimedPacket() = default;
     TimedPacket(const rt_packet &p, const sc_core::sc_time &sent = sc_core::SC_ZERO_TIME) : stamp(sent), packet(p) {}
 
-    sc_core::sc_time stamp; // send time; after a link, arrival time (loosely-timed runs use it)
+    sc_core::sc_time stamp;  // send time; after a link, arrival time (loosely-timed runs use it)
     // Flow control (flow_control.h): the packet's class, its virtual channel on the link it is
     // on, the direction of the last link it crossed (-1: none since it left a processor), and
     // whether its slot in the next buffer was already taken when its processor took up its
@@ -27,8 +27,8 @@ struct TimedPacket {
     uint8_t vc = 0;
     int8_t last_dir = -1;
     bool reserved = false;
-    bool from_host = false; // a primary packet from the host, not yet in any buffer
-    rt_packet packet{};     // the kernel's packet
+    bool from_host = false;  // a primary packet from the host, not yet in any buffer
+    rt_packet packet{};      // the kernel's packet
 };
 
 // Packets cross links as a generic payload (command WRITE, data = the packet's bytes on the wire)

@@ -8,9 +8,9 @@ namespace torusrt {
 ToroidalLink::ToroidalLink(sc_core::sc_module_name name, const MachineConfig &config, int from, int to, int dir,
                            TransactionPool *transactions)
     : sc_module(name), socket("socket"), in("in"),
-      m_packet_time(rt_timing_link_packet_us(&config.timing), sc_core::SC_US),
-      m_to(to), m_dir(static_cast<int8_t>(dir)), m_packet_bytes(config.timing.packet_bytes),
-      m_spaces(config.queue_capacity), m_from(from)
+      m_packet_time(rt_timing_link_packet_us(&config.timing), sc_core::SC_US), m_to(to),
+      m_dir(static_cast<int8_t>(dir)), m_packet_bytes(config.timing.packet_bytes), m_spaces(config.queue_capacity),
+      m_from(from)
 {
     if (transactions) m_transactions = transactions;
     in.bind(*this);
@@ -33,7 +33,7 @@ void ToroidalLink::accept(const TimedPacket &p) { accept_pooled(m_own_pool, m_ow
 
 void ToroidalLink::accept_pooled(PacketPool &pool, uint32_t handle)
 {
-    if (!pool.at(handle).reserved) space_for(pool.at(handle)).take_blocking(); // a method checked room: no wait
+    if (!pool.at(handle).reserved) space_for(pool.at(handle)).take_blocking();  // a method checked room: no wait
     pool.at(handle).reserved = false;
     send(pool, handle);
 }
@@ -49,7 +49,7 @@ void ToroidalLink::send(PacketPool &pool, uint32_t handle)
     m_free_at = start + m_packet_time;
     m_packets++;
     m_bytes += m_packet_bytes;
-    if (m_tracing) { // m_trace exists whenever it is set
+    if (m_tracing) {  // m_trace exists whenever it is set
         m_trace->crossings.emplace_back(start, m_free_at);
         m_trace->changed.notify(sc_core::SC_ZERO_TIME);
     }
@@ -70,7 +70,7 @@ void ToroidalLink::send(PacketPool &pool, uint32_t handle)
     trans.acquire();
     m_fw->b_transport(trans, delay);
     bool refused = trans.is_response_error();
-    trans.release(); // back to the pool
+    trans.release();  // back to the pool
     if (refused) SC_REPORT_FATAL(name(), "the receiving communication unit refused a packet");
 }
 

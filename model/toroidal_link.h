@@ -31,8 +31,8 @@ namespace torusrt {
 
 class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
   public:
-    tlm_utils::simple_initiator_socket<ToroidalLink> socket; // packets to the receiving comm unit
-    sc_core::sc_export<PacketSinkIf> in;                     // packets from the sending comm unit
+    tlm_utils::simple_initiator_socket<ToroidalLink> socket;  // packets to the receiving comm unit
+    sc_core::sc_export<PacketSinkIf> in;                      // packets from the sending comm unit
 
     // `transactions`: the machine's, shared by its links (null: the link's own).
     ToroidalLink(sc_core::sc_module_name name, const MachineConfig &config, int from, int to, int dir,
@@ -60,7 +60,10 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
     sc_core::sc_time busy_time() const { return sc_core::sc_time::from_value(m_packet_time.value() * m_packets); }
     // The link's buffers, every class and channel.
     ClassBuffers &queue() { return m_spaces; }
-    LinkStats stats() const { return {m_from, m_to, m_dir, m_packets, m_bytes, busy_time().to_seconds(), m_spaces.high_water()}; }
+    LinkStats stats() const
+    {
+        return {m_from, m_to, m_dir, m_packets, m_bytes, busy_time().to_seconds(), m_spaces.high_water()};
+    }
     void register_queues(QueueRegistry &reg)
     {
         reg.add(name(), QueueKind::link, m_from, m_spaces, m_spaces.depth_trace());
@@ -77,13 +80,13 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
     void before_end_of_elaboration() override;
     void start_of_simulation() override { m_fw = socket.operator->(); }
 
-    sc_core::sc_time m_free_at = sc_core::SC_ZERO_TIME; // busy until
-    sc_core::sc_time m_packet_time;                     // serialisation time of one packet
+    sc_core::sc_time m_free_at = sc_core::SC_ZERO_TIME;  // busy until
+    sc_core::sc_time m_packet_time;                      // serialisation time of one packet
     TransactionPool *m_transactions = &m_own_transactions;
     // The socket's bound target interface (what socket-> returns), kept after elaboration so a
     // crossing does not read the port for it.
     tlm::tlm_fw_transport_if<> *m_fw = nullptr;
-    int m_to; // the receiving node: each crossing is addressed to it
+    int m_to;  // the receiving node: each crossing is addressed to it
     int8_t m_dir;
     bool m_tracing = false, m_busy_flag = false;
     uint64_t m_packets = 0;
@@ -92,7 +95,7 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
     ClassBuffers m_spaces;
     int m_from;
     TransactionPool m_own_transactions;
-    PacketPool m_own_pool; // packets handed over by value (accept), until they cross
+    PacketPool m_own_pool;  // packets handed over by value (accept), until they cross
     // Busy trace (only when traced): crossings not yet over, and the event that re-evaluates.
     struct BusyTrace {
         std::deque<std::pair<sc_core::sc_time, sc_core::sc_time>> crossings;

@@ -9,21 +9,21 @@
 namespace torusrt {
 
 TorusSystem::TorusSystem(sc_core::sc_module_name name, const MachineConfig &config, const rt_scene *scene,
-                         const rt_grid *grid, const int32_t *cell_owner, PacketLedger &ledger,
-                         rt_framebuffer *fb, HandOverTiming hand_over, const rt_replicas *replicas)
+                         const rt_grid *grid, const int32_t *cell_owner, PacketLedger &ledger, rt_framebuffer *fb,
+                         HandOverTiming hand_over, const rt_replicas *replicas)
     : sc_module(name), m_routing(config.ips, config.topology == Topology::torus)
 {
     if (replicas)
         m_replica_choice = std::make_unique<ReplicaChoice>(cell_owner, *replicas, m_routing, config.replica_choice);
     const ReplicaChoice *choice = m_replica_choice.get();
     int nodes = config.node_count();
-    sc_core::sc_time lookahead = config.style == TimingStyle::lt ? sc_core::sc_time(config.quantum_us, sc_core::SC_US)
-                                                                 : sc_core::SC_ZERO_TIME;
+    sc_core::sc_time lookahead =
+        config.style == TimingStyle::lt ? sc_core::sc_time(config.quantum_us, sc_core::SC_US) : sc_core::SC_ZERO_TIME;
     // A flat approximately-timed machine with a positive link time: the units due at one time do
     // not affect each other within the delta, so the order of simultaneous processes does not
     // change the times. Elsewhere it can.
-    bool order_free = config.cluster == 1 && lookahead == sc_core::SC_ZERO_TIME &&
-                      rt_timing_link_packet_us(&config.timing) > 0;
+    bool order_free =
+        config.cluster == 1 && lookahead == sc_core::SC_ZERO_TIME && rt_timing_link_packet_us(&config.timing) > 0;
     // Elsewhere the calendar would change the outcome (wake_calendar.h): those machines keep
     // their per-unit timed events.
     if (order_free) m_calendar = std::make_unique<WakeCalendar>("wake_calendar");
@@ -44,10 +44,10 @@ TorusSystem::TorusSystem(sc_core::sc_module_name name, const MachineConfig &conf
             std::make_unique<CommUnit>(("cu_" + std::to_string(n)).c_str(), n, m_routing, grid, cell_owner, setup));
         if (config.cluster == 1) {
             // Built after its node's comm unit: the calendar's order.
-            ProcessorSetup ip_setup{m_calendar.get(), m_activations.get(), at_once ? m_comm[n].get() : nullptr, &m_pool,
-                                    &m_host->primaries(), choice ? choice->table() : nullptr};
-            auto ip = std::make_unique<IntersectionProcessor>(("ip_" + std::to_string(n)).c_str(), config, scene,
-                                                              grid, cell_owner, n, n, ledger, ip_setup);
+            ProcessorSetup ip_setup{m_calendar.get(), m_activations.get(),  at_once ? m_comm[n].get() : nullptr,
+                                    &m_pool,          &m_host->primaries(), choice ? choice->table() : nullptr};
+            auto ip = std::make_unique<IntersectionProcessor>(("ip_" + std::to_string(n)).c_str(), config, scene, grid,
+                                                              cell_owner, n, n, ledger, ip_setup);
             ip->out.bind(m_comm[n]->in);
             ip->fb_socket.bind(m_fb->socket);
             m_comm[n]->local.bind(ip->in);

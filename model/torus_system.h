@@ -37,13 +37,13 @@ enum class HandOverTiming { at_once, next_delta };
 
 class TorusSystem : public sc_core::sc_module {
   public:
-    TorusSystem(sc_core::sc_module_name name, const MachineConfig &config, const rt_scene *scene,
-                const rt_grid *grid, const int32_t *cell_owner, PacketLedger &ledger, rt_framebuffer *fb,
+    TorusSystem(sc_core::sc_module_name name, const MachineConfig &config, const rt_scene *scene, const rt_grid *grid,
+                const int32_t *cell_owner, PacketLedger &ledger, rt_framebuffer *fb,
                 HandOverTiming hand_over = HandOverTiming::at_once, const rt_replicas *replicas = nullptr);
     ~TorusSystem() override;
 
     const Routing &routing() const { return m_routing; }
-    std::vector<IntersectionProcessor *> processors() const; // every processor, node-major
+    std::vector<IntersectionProcessor *> processors() const;  // every processor, node-major
     const std::vector<std::unique_ptr<ToroidalLink>> &links() const { return m_links; }
     const std::vector<std::unique_ptr<CommUnit>> &comm_units() const { return m_comm; }
     const std::vector<std::unique_ptr<ClusterNode>> &clusters() const { return m_clusters; }
@@ -58,16 +58,16 @@ class TorusSystem : public sc_core::sc_module {
 
   private:
     Routing m_routing;
-    std::unique_ptr<ReplicaChoice> m_replica_choice; // replicated cells' destinations (null: none)
-    PacketPool m_pool; // every packet on the network, by handle (comm units, links, input queues)
-    TransactionPool m_transactions; // the links' crossings (one at a time: one transaction, hot)
-    std::unique_ptr<ActivationQueue> m_activations; // flat processors' state machines, when woken
-    std::unique_ptr<WakeCalendar> m_calendar; // the comm units' and processors' timed wake-ups
+    std::unique_ptr<ReplicaChoice> m_replica_choice;  // replicated cells' destinations (null: none)
+    PacketPool m_pool;               // every packet on the network, by handle (comm units, links, input queues)
+    TransactionPool m_transactions;  // the links' crossings (one at a time: one transaction, hot)
+    std::unique_ptr<ActivationQueue> m_activations;  // flat processors' state machines, when woken
+    std::unique_ptr<WakeCalendar> m_calendar;        // the comm units' and processors' timed wake-ups
     std::unique_ptr<FrameBuffer> m_fb;
     std::unique_ptr<Host> m_host;
     std::vector<std::unique_ptr<CommUnit>> m_comm;
-    std::vector<std::unique_ptr<IntersectionProcessor>> m_ips;   // flat torus: one per node
-    std::vector<std::unique_ptr<ClusterNode>> m_clusters;        // clusters: one per node
+    std::vector<std::unique_ptr<IntersectionProcessor>> m_ips;  // flat torus: one per node
+    std::vector<std::unique_ptr<ClusterNode>> m_clusters;       // clusters: one per node
     std::vector<std::unique_ptr<ToroidalLink>> m_links;
     QueueRegistry m_queues;
 };

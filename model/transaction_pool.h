@@ -46,7 +46,7 @@ class TransactionPool : public tlm::tlm_mm_interface {
     void make()
     {
         auto trans = std::make_unique<tlm::tlm_generic_payload>(this);
-        auto *ext = new PacketExtension; // owned by the transaction
+        auto *ext = new PacketExtension;  // owned by the transaction
         trans->set_extension(ext);
         trans->set_command(tlm::TLM_WRITE_COMMAND);
         trans->set_data_length(sizeof(rt_packet));

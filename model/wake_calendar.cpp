@@ -19,12 +19,12 @@ int WakeCalendar::add(Client &client)
     if (m_clients.size() >= (size_t{1} << 30)) SC_REPORT_FATAL(name(), "too many clients");
     if (m_asked) SC_REPORT_FATAL(name(), "clients are added before any wake");
     m_clients.push_back(&client);
-    if (m_clients.size() > m_leaves) { // twice the leaves; every wake is still kNone
+    if (m_clients.size() > m_leaves) {  // twice the leaves; every wake is still kNone
         m_leaves *= 2;
         m_when.assign(m_leaves, kNone);
         m_win.assign(2 * m_leaves, 0);
         for (size_t j = 0; j < m_leaves; j++) m_win[m_leaves + j] = static_cast<int32_t>(j);
-        for (size_t p = m_leaves - 1; p >= 1; p--) m_win[p] = m_win[2 * p]; // all kNone: the lower index
+        for (size_t p = m_leaves - 1; p >= 1; p--) m_win[p] = m_win[2 * p];  // all kNone: the lower index
     }
     return static_cast<int>(m_clients.size() - 1);
 }
@@ -33,7 +33,7 @@ void WakeCalendar::wake_at(int id, const sc_core::sc_time &when)
 {
     m_asked = true;
     uint64_t t = when.value();
-    if (t >= m_when[id]) return; // an earlier (or the same) wake is pending
+    if (t >= m_when[id]) return;  // an earlier (or the same) wake is pending
     m_when[id] = t;
     // Up from the leaf while it is, or now beats, what each node holds; above a node it does not
     // beat, nothing changes.
@@ -42,7 +42,7 @@ void WakeCalendar::wake_at(int id, const sc_core::sc_time &when)
         if (w != id && !before(id, w)) break;
         m_win[p] = id;
     }
-    if (t < m_notified) { // an earlier notification replaces a pending later one
+    if (t < m_notified) {  // an earlier notification replaces a pending later one
         m_notified = t;
         m_due.notify(sc_core::sc_time::from_value(t) - sim_now());
     }
@@ -101,7 +101,7 @@ void WakeCalendar::run()
 void WakeCalendar::arm(uint64_t now)
 {
     uint64_t t = m_when[earliest()];
-    if (t >= m_notified) return; // nothing pending (kNone), or notified for it already
+    if (t >= m_notified) return;  // nothing pending (kNone), or notified for it already
     m_notified = t;
     m_due.notify(sc_core::sc_time::from_value(t - now));
 }

@@ -55,11 +55,11 @@ class WakeCalendar : public sc_core::sc_module {
     void arm(uint64_t now);
 
     std::vector<Client *> m_clients;
-    size_t m_leaves = 1;            // leaves of the tree: a power of two, at least the clients
-    std::vector<uint64_t> m_when;   // per leaf, the client's wake (sc_time value) or kNone
-    std::vector<int32_t> m_win;     // per tree node (1 is the root, leaf j at m_leaves + j), the earliest leaf below
-    bool m_asked = false;           // a wake was asked for (no client may be added then)
-    uint64_t m_notified = kNone;    // time the event is notified for, or kNone (0 while run() wakes)
+    size_t m_leaves = 1;           // leaves of the tree: a power of two, at least the clients
+    std::vector<uint64_t> m_when;  // per leaf, the client's wake (sc_time value) or kNone
+    std::vector<int32_t> m_win;    // per tree node (1 is the root, leaf j at m_leaves + j), the earliest leaf below
+    bool m_asked = false;          // a wake was asked for (no client may be added then)
+    uint64_t m_notified = kNone;   // time the event is notified for, or kNone (0 while run() wakes)
     sc_core::sc_event m_due;
 };
 

@@ -43,52 +43,39 @@ typedef struct {
 } scene_def;
 
 static const scene_def SCENES[] = {
-    {"paper-image1", "the paper's image 1: 369 recursively defined diffuse spheres, 144x144",
-     build_paper_image1, 1},
-    {"paper-image2", "the paper's image 2: glass and mirror sphere before 121 small spheres, "
-                     "144x144", build_paper_image2, 1},
+    {"paper-image1", "the paper's image 1: 369 recursively defined diffuse spheres, 144x144", build_paper_image1, 1},
+    {"paper-image2",
+     "the paper's image 2: glass and mirror sphere before 121 small spheres, "
+     "144x144",
+     build_paper_image2, 1},
     {"paper-image1-planar-z", "image 1's nine flakes with the grid's columns at z = -5, 0, +5",
      build_paper_image1_planar_z, 1},
-    {"paper-image1-cube", "image 1's nine flakes at the centre and corners of a cube",
-     build_paper_image1_cube, 1},
-    {"paper-image1-tree", "image 1 as one four-level tree of 1 + 8 + 72 + 288 spheres",
-     build_paper_image1_tree, 1},
-    {"paper-image2-wall", "image 2 with the 121 small spheres on a wall behind the big ones",
-     build_paper_image2_wall, 1},
-    {"axis-rays", "rays with zero direction components, along cell edges, parallel to faces",
-     build_axis_rays, 1},
-    {"grid-corners", "objects on the cell lattice; rays through cell edges and corners",
-     build_grid_corners, 1},
+    {"paper-image1-cube", "image 1's nine flakes at the centre and corners of a cube", build_paper_image1_cube, 1},
+    {"paper-image1-tree", "image 1 as one four-level tree of 1 + 8 + 72 + 288 spheres", build_paper_image1_tree, 1},
+    {"paper-image2-wall", "image 2 with the 121 small spheres on a wall behind the big ones", build_paper_image2_wall,
+     1},
+    {"axis-rays", "rays with zero direction components, along cell edges, parallel to faces", build_axis_rays, 1},
+    {"grid-corners", "objects on the cell lattice; rays through cell edges and corners", build_grid_corners, 1},
     {"eye-inside", "the eye inside the object space, objects all around it", build_eye_inside, 1},
-    {"light-inside", "a point light inside the object space, in a ring of spheres",
-     build_light_inside, 1},
-    {"grazing", "edge-on polygons, tangent rays on spheres, a floor at a very low angle",
-     build_grazing, 1},
+    {"light-inside", "a point light inside the object space, in a ring of spheres", build_light_inside, 1},
+    {"grazing", "edge-on polygons, tangent rays on spheres, a floor at a very low angle", build_grazing, 1},
     {"tir", "total internal reflection inside a glass slab", build_tir, 1},
-    {"facing-mirrors", "two parallel mirrors: rays bounce to the depth limit",
-     build_facing_mirrors, 1},
+    {"facing-mirrors", "two parallel mirrors: rays bounce to the depth limit", build_facing_mirrors, 1},
     {"empty", "no objects: background only", build_empty, 1},
-    {"one-big-sphere", "one sphere spanning the whole object space (nearly every cell)",
-     build_one_big_sphere, 1},
+    {"one-big-sphere", "one sphere spanning the whole object space (nearly every cell)", build_one_big_sphere, 1},
     {"one-cell", "50 of 51 objects in one cell of the 24^3 grid", build_one_cell, 1},
     {"scale-1", "the scale test scene at scale 1", build_scaled, 1},
     {"scale-tiny", "the scale test scene times 1e-6", build_scaled, 1e-6},
     {"scale-huge", "the scale test scene times 1e6", build_scaled, 1e6},
-    {"scale-pow2-tiny", "the scale test scene times 2^-20 (exact products)", build_scaled,
-     1.0 / 1048576.0},
-    {"scale-pow2-huge", "the scale test scene times 2^20 (exact products)", build_scaled,
-     1048576.0},
-    {"tiny-sphere", "a 1e-6 sphere close up, with a huge sphere making the space 1e6 larger",
-     build_tiny_sphere, 1},
-    {"tiny-sphere-alone", "tiny-sphere without the huge sphere (the images must be equal)",
-     build_tiny_alone, 1},
-    {"cones-and-patches", "every primitive: cone, cylinder, pp patches, concave polygon",
-     build_cones_and_patches, 1},
+    {"scale-pow2-tiny", "the scale test scene times 2^-20 (exact products)", build_scaled, 1.0 / 1048576.0},
+    {"scale-pow2-huge", "the scale test scene times 2^20 (exact products)", build_scaled, 1048576.0},
+    {"tiny-sphere", "a 1e-6 sphere close up, with a huge sphere making the space 1e6 larger", build_tiny_sphere, 1},
+    {"tiny-sphere-alone", "tiny-sphere without the huge sphere (the images must be equal)", build_tiny_alone, 1},
+    {"cones-and-patches", "every primitive: cone, cylinder, pp patches, concave polygon", build_cones_and_patches, 1},
     {"one-pixel", "a small scene rendered at 1x1", build_one_pixel, 1},
-    {"opposing-normals", "pp triangles whose vertex normals cancel (a teapot pole)",
-     build_opposing_normals, 1},
-    {"bouncing-balls", "8 balls bouncing on a floor before a mirror, with a 64-frame motion file",
-     build_bouncing_balls, 1},
+    {"opposing-normals", "pp triangles whose vertex normals cancel (a teapot pole)", build_opposing_normals, 1},
+    {"bouncing-balls", "8 balls bouncing on a floor before a mirror, with a 64-frame motion file", build_bouncing_balls,
+     1},
     {"orbiting-mirror", "image 2 whose mirror sphere circles the glass one, with a 64-frame motion file",
      build_orbiting_mirror, 1},
 };
@@ -106,15 +93,14 @@ static const struct {
 static int find_scene(const char *name)
 {
     for (int i = 0; i < NSCENES; ++i)
-        if (strcmp(SCENES[i].name, name) == 0)
-            return i;
+        if (strcmp(SCENES[i].name, name) == 0) return i;
     return -1;
 }
 
 /* Writes OUTDIR/NAME.EXT through NAME.EXT.tmp with write(f, ctx); returns 0, or 1 after
  * printing why not. */
-static int write_file(const char *outdir, const char *name, const char *ext,
-                      void (*write)(FILE *f, const void *ctx), const void *ctx)
+static int write_file(const char *outdir, const char *name, const char *ext, void (*write)(FILE *f, const void *ctx),
+                      const void *ctx)
 {
     size_t len = strlen(outdir) + strlen(name) + strlen(ext) + 16;
     char *path = malloc(len), *tmp = malloc(len);
@@ -190,8 +176,7 @@ static int write_one(const char *outdir, const scene_def *def)
     def->build(sc);
     int rc = 1;
     if (sc->failed) {
-        fprintf(stderr, "torusrt-genscenes: %s: could not build the scene (out of memory)\n",
-                def->name);
+        fprintf(stderr, "torusrt-genscenes: %s: could not build the scene (out of memory)\n", def->name);
     } else {
         nff_job job = {def, sc};
         rc = write_file(outdir, def->name, "nff", write_nff, &job);
@@ -225,8 +210,7 @@ int main(int argc, char **argv)
         return 0;
     }
     if (strcmp(argv[1], "--list") == 0) {
-        for (int i = 0; i < NSCENES; ++i)
-            printf("%-18s %s\n", SCENES[i].name, SCENES[i].desc);
+        for (int i = 0; i < NSCENES; ++i) printf("%-18s %s\n", SCENES[i].name, SCENES[i].desc);
         return 0;
     }
     if (argv[1][0] == '-') {
@@ -244,20 +228,15 @@ int main(int argc, char **argv)
     int failed = 0, written = 0;
     if (argc == 2) {
         for (int i = 0; i < NSCENES; ++i) {
-            if (write_one(outdir, &SCENES[i]) != 0)
-                ++failed;
-            else
-                ++written;
+            if (write_one(outdir, &SCENES[i]) != 0) ++failed;
+            else ++written;
         }
     } else {
         for (int a = 2; a < argc; ++a) {
-            if (write_one(outdir, &SCENES[find_scene(argv[a])]) != 0)
-                ++failed;
-            else
-                ++written;
+            if (write_one(outdir, &SCENES[find_scene(argv[a])]) != 0) ++failed;
+            else ++written;
         }
     }
-    printf("torusrt-genscenes: wrote %d scene%s to %s\n", written, written == 1 ? "" : "s",
-           outdir);
+    printf("torusrt-genscenes: wrote %d scene%s to %s\n", written, written == 1 ? "" : "s", outdir);
     return failed ? 1 : 0;
 }

@@ -7,6 +7,7 @@ packages=(cmake g++ make pkg-config libsystemc-dev libpng-dev nlohmann-json3-dev
           libgtest-dev gtkwave gnuplot-nox parallel jq clang time
           libscotch-dev)
 packages+=(python3)  # report generation (experiments/report) and its tests
+packages+=(clang-format)  # the format audit (audit.format, scripts/check_format.py)
 packages+=(slurm-wlm slurm-client munge iproute2 util-linux)  # the Slurm backend's test (tests/slurm)
 packages+=(xvfb xauth)  # the GTKWave test opens a trace in GTKWave on a virtual X display
 missing=()

@@ -14,11 +14,23 @@ rt_budget rt_budget_make(uint64_t limit_bytes)
 
 rt_status rt_budget_parse(const char *text, uint64_t *bytes, char *msg, size_t msg_len)
 {
-    static const struct { const char *unit; double scale; } units[] = {
-        {"", 1.0},           {"B", 1.0},           {"K", 1024.0},         {"KB", 1024.0},
-        {"KiB", 1024.0},     {"M", 1048576.0},     {"MB", 1048576.0},     {"MiB", 1048576.0},
-        {"G", 1073741824.0}, {"GB", 1073741824.0}, {"GiB", 1073741824.0}, {"T", 1099511627776.0},
-        {"TB", 1099511627776.0}, {"TiB", 1099511627776.0}};
+    static const struct {
+        const char *unit;
+        double scale;
+    } units[] = {{"", 1.0},
+                 {"B", 1.0},
+                 {"K", 1024.0},
+                 {"KB", 1024.0},
+                 {"KiB", 1024.0},
+                 {"M", 1048576.0},
+                 {"MB", 1048576.0},
+                 {"MiB", 1048576.0},
+                 {"G", 1073741824.0},
+                 {"GB", 1073741824.0},
+                 {"GiB", 1073741824.0},
+                 {"T", 1099511627776.0},
+                 {"TB", 1099511627776.0},
+                 {"TiB", 1099511627776.0}};
     const char *p = text ? text : "";
     size_t digits = 0;
     const char *q = p;
@@ -38,8 +50,9 @@ rt_status rt_budget_parse(const char *text, uint64_t *bytes, char *msg, size_t m
         return RT_OK;
     }
     if (msg && msg_len)
-        snprintf(msg, msg_len, "expected a size in bytes with an optional unit K, M, G or T "
-                               "(powers of 1024), e.g. 512M or 4G; 0 = no limit");
+        snprintf(msg, msg_len,
+                 "expected a size in bytes with an optional unit K, M, G or T "
+                 "(powers of 1024), e.g. 512M or 4G; 0 = no limit");
     return RT_ERR_INVALID;
 }
 
@@ -63,8 +76,7 @@ const char *rt_budget_format(uint64_t bytes, char *buf, size_t buf_len)
     return buf;
 }
 
-rt_status rt_budget_exceeded(const rt_budget *b, const char *what, uint64_t need, char *msg,
-                             size_t msg_len)
+rt_status rt_budget_exceeded(const rt_budget *b, const char *what, uint64_t need, char *msg, size_t msg_len)
 {
     char need_s[32], over_s[32], left_s[32], limit_s[32];
     uint64_t left = rt_budget_left(b);
@@ -79,8 +91,7 @@ rt_status rt_budget_exceeded(const rt_budget *b, const char *what, uint64_t need
     return RT_ERR_LIMIT;
 }
 
-rt_status rt_budget_reserve(rt_budget *b, uint64_t bytes, const char *what, char *msg,
-                            size_t msg_len)
+rt_status rt_budget_reserve(rt_budget *b, uint64_t bytes, const char *what, char *msg, size_t msg_len)
 {
     if (!b || b->limit == 0) return RT_OK;
     if (bytes > rt_budget_left(b)) return rt_budget_exceeded(b, what, bytes, msg, msg_len);
@@ -95,14 +106,13 @@ uint64_t rt_budget_packets_allowed(const rt_budget *b, uint64_t packet_bytes)
     return left / packet_bytes;
 }
 
-rt_status rt_budget_packets_exceeded(const rt_budget *b, uint64_t outstanding,
-                                     uint64_t packet_bytes, char *msg, size_t msg_len)
+rt_status rt_budget_packets_exceeded(const rt_budget *b, uint64_t outstanding, uint64_t packet_bytes, char *msg,
+                                     size_t msg_len)
 {
     char what[128];
-    snprintf(what, sizeof what, "the outstanding packets (%llu of %llu bytes each)",
-             (unsigned long long)outstanding, (unsigned long long)packet_bytes);
-    uint64_t need = outstanding > UINT64_MAX / (packet_bytes ? packet_bytes : 1)
-                        ? UINT64_MAX
-                        : outstanding * packet_bytes;
+    snprintf(what, sizeof what, "the outstanding packets (%llu of %llu bytes each)", (unsigned long long)outstanding,
+             (unsigned long long)packet_bytes);
+    uint64_t need =
+        outstanding > UINT64_MAX / (packet_bytes ? packet_bytes : 1) ? UINT64_MAX : outstanding * packet_bytes;
     return rt_budget_exceeded(b, what, need, msg, msg_len);
 }

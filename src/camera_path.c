@@ -22,8 +22,7 @@ static rt_status pose_fail(char *msg, size_t msg_len, const char *text)
 
 rt_status rt_camera_pose_check(const rt_camera_pose *p, char *msg, size_t msg_len)
 {
-    if (!rt_vec_is_finite(p->from) || !rt_vec_is_finite(p->at) || !rt_vec_is_finite(p->up) ||
-        !isfinite(p->angle))
+    if (!rt_vec_is_finite(p->from) || !rt_vec_is_finite(p->at) || !rt_vec_is_finite(p->up) || !isfinite(p->angle))
         return pose_fail(msg, msg_len, "camera numbers must be finite");
     if (!(p->angle > 0.0 && p->angle < 180.0))
         return pose_fail(msg, msg_len, "camera angle must be in (0, 180) degrees");
@@ -35,8 +34,7 @@ rt_status rt_camera_pose_check(const rt_camera_pose *p, char *msg, size_t msg_le
         return pose_fail(msg, msg_len, "degenerate camera: 'from' and 'at' are the same point");
     rt_vec3 u = rt_vec_cross(rt_vec_scale(w, 1.0 / wl), rt_vec_normalize(p->up));
     if (!(rt_vec_length(u) > 1e-12))
-        return pose_fail(msg, msg_len,
-                         "degenerate camera: 'up' is zero or parallel to the view direction");
+        return pose_fail(msg, msg_len, "degenerate camera: 'up' is zero or parallel to the view direction");
     return RT_OK;
 }
 
@@ -54,15 +52,26 @@ static void sincos_deg(double deg, double *s, double *c)
         rc = cos(rem * DEG_TO_RAD);
     }
     switch ((int)q & 3) {
-    case 0: *s = rs; *c = rc; break;
-    case 1: *s = rc; *c = -rs; break;
-    case 2: *s = -rs; *c = -rc; break;
-    default: *s = -rc; *c = rs; break;
+    case 0:
+        *s = rs;
+        *c = rc;
+        break;
+    case 1:
+        *s = rc;
+        *c = -rs;
+        break;
+    case 2:
+        *s = -rs;
+        *c = -rc;
+        break;
+    default:
+        *s = -rc;
+        *c = rs;
+        break;
     }
 }
 
-rt_camera_pose rt_camera_orbit_pose(const rt_camera_pose *start, double degrees, uint32_t frames,
-                                    uint32_t k)
+rt_camera_pose rt_camera_orbit_pose(const rt_camera_pose *start, double degrees, uint32_t frames, uint32_t k)
 {
     double s = 0.0, c = 1.0;
     if (frames > 0) sincos_deg((double)k * degrees / (double)frames, &s, &c);
@@ -92,13 +101,12 @@ rt_status camera_path_new(size_t count, rt_camera_path **out)
     return RT_OK;
 }
 
-rt_status rt_camera_path_orbit(const rt_camera_pose *start, double degrees, uint32_t frames,
-                               rt_camera_path **out, char *msg, size_t msg_len)
+rt_status rt_camera_path_orbit(const rt_camera_pose *start, double degrees, uint32_t frames, rt_camera_path **out,
+                               char *msg, size_t msg_len)
 {
     *out = NULL;
     if (frames == 0 || frames > RT_CAMERA_PATH_MAX_FRAMES) {
-        if (msg && msg_len)
-            snprintf(msg, msg_len, "frames must be 1 to %u", RT_CAMERA_PATH_MAX_FRAMES);
+        if (msg && msg_len) snprintf(msg, msg_len, "frames must be 1 to %u", RT_CAMERA_PATH_MAX_FRAMES);
         return RT_ERR_INVALID;
     }
     if (!isfinite(degrees)) return pose_fail(msg, msg_len, "orbit degrees must be finite");
@@ -128,14 +136,12 @@ void rt_camera_path_free(rt_camera_path *path)
     free(path);
 }
 
-rt_status rt_scene_set_camera(rt_scene *scene, const rt_camera_pose *pose, char *msg,
-                              size_t msg_len)
+rt_status rt_scene_set_camera(rt_scene *scene, const rt_camera_pose *pose, char *msg, size_t msg_len)
 {
     rt_status st = rt_camera_pose_check(pose, msg, msg_len);
     if (st != RT_OK) return st;
     const rt_camera *cam = rt_scene_camera(scene);
-    st = rt_scene_set_view(scene, pose->from, pose->at, pose->up, pose->angle, cam->width,
-                           cam->height);
+    st = rt_scene_set_view(scene, pose->from, pose->at, pose->up, pose->angle, cam->width, cam->height);
     if (st != RT_OK) return pose_fail(msg, msg_len, "camera rejected by the scene");
     return RT_OK;
 }

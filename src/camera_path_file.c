@@ -79,11 +79,9 @@ static rt_status parse_number(reader *r, const char *tok, int field, double *out
     int digits = strspn(tok, "0123456789+-.eE") == strlen(tok) && strpbrk(tok, "0123456789");
     errno = 0;
     double v = digits ? strtod(tok, &end) : 0.0;
-    if (!digits || *end != '\0')
-        return fail(r, RT_ERR_PARSE, "%s '%.40s' is not a number", names[field], tok);
+    if (!digits || *end != '\0') return fail(r, RT_ERR_PARSE, "%s '%.40s' is not a number", names[field], tok);
     if (!isfinite(v) || fabs(v) > MAX_MAGNITUDE)
-        return fail(r, RT_ERR_PARSE, "%s '%.40s' is not finite or above 1e30 in magnitude",
-                    names[field], tok);
+        return fail(r, RT_ERR_PARSE, "%s '%.40s' is not finite or above 1e30 in magnitude", names[field], tok);
     *out = v;
     return RT_OK;
 }
@@ -95,20 +93,16 @@ static rt_status parse_line(reader *r, char *buf, rt_camera_pose *pose, int *has
     if (hash) *hash = '\0';
     double v[FIELDS];
     int n = 0;
-    for (char *save = NULL, *tok = strtok_r(buf, " \t", &save); tok;
-         tok = strtok_r(NULL, " \t", &save)) {
-        if (n == FIELDS)
-            return fail(r, RT_ERR_PARSE, "more than %d numbers, expected %s", FIELDS, LAYOUT);
+    for (char *save = NULL, *tok = strtok_r(buf, " \t", &save); tok; tok = strtok_r(NULL, " \t", &save)) {
+        if (n == FIELDS) return fail(r, RT_ERR_PARSE, "more than %d numbers, expected %s", FIELDS, LAYOUT);
         rt_status st = parse_number(r, tok, n, &v[n]);
         if (st != RT_OK) return st;
         n++;
     }
     *has_pose = n > 0;
     if (n == 0) return RT_OK;
-    if (n != FIELDS)
-        return fail(r, RT_ERR_PARSE, "%d numbers, expected %d: %s", n, FIELDS, LAYOUT);
-    rt_camera_pose p = {rt_vec(v[0], v[1], v[2]), rt_vec(v[3], v[4], v[5]),
-                        rt_vec(v[6], v[7], v[8]), v[9]};
+    if (n != FIELDS) return fail(r, RT_ERR_PARSE, "%d numbers, expected %d: %s", n, FIELDS, LAYOUT);
+    rt_camera_pose p = {rt_vec(v[0], v[1], v[2]), rt_vec(v[3], v[4], v[5]), rt_vec(v[6], v[7], v[8]), v[9]};
     char why[RT_MSG_LEN];
     if (rt_camera_pose_check(&p, why, sizeof why) != RT_OK) return fail(r, RT_ERR_PARSE, "%s", why);
     *pose = p;

@@ -68,7 +68,8 @@ static rt_status build_graph(const rt_cost_pilot *p, double edge_us, cell_graph 
         }
     }
     double big = fmax(wmax, emax), total = fmax(wsum, esum);
-    double scale = big > 0 ? fmin(WEIGHT_MAX / big, (TOTAL_MAX - 2.0 * (double)g->edgenbr - 2.0 * (double)p->cells) / total) : 1;
+    double scale =
+        big > 0 ? fmin(WEIGHT_MAX / big, (TOTAL_MAX - 2.0 * (double)g->edgenbr - 2.0 * (double)p->cells) / total) : 1;
     g->verttab = malloc(((size_t)g->vertnbr + 1) * sizeof *g->verttab);
     g->velotab = malloc((size_t)g->vertnbr * sizeof *g->velotab);
     g->edgetab = malloc(((size_t)g->edgenbr + 1) * sizeof *g->edgetab);
@@ -96,8 +97,7 @@ static rt_status scotch_fail(char *msg, size_t msg_len, const char *call)
 }
 
 /* A single-threaded, deterministic Scotch context with a fixed seed bound to `graph`. */
-static rt_status bind_context(SCOTCH_Context *ctx, SCOTCH_Graph *graph, SCOTCH_Graph *bound, char *msg,
-                              size_t msg_len)
+static rt_status bind_context(SCOTCH_Context *ctx, SCOTCH_Graph *graph, SCOTCH_Graph *bound, char *msg, size_t msg_len)
 {
     if (SCOTCH_contextInit(ctx) != 0) return scotch_fail(msg, msg_len, "SCOTCH_contextInit");
     if (SCOTCH_contextOptionSetNum(ctx, SCOTCH_OPTIONNUMDETERMINISTIC, 1) != 0 ||
@@ -148,8 +148,8 @@ static rt_status map_onto(SCOTCH_Graph *graph, const int nodes[3], int torus, co
 }
 
 /* Runs Scotch on the graph; parttab gets a terminal per cell (x fastest, as our node ids). */
-static rt_status scotch_map(cell_graph *g, const int nodes[3], int torus, const remap_args *remap,
-                            SCOTCH_Num *parttab, char *msg, size_t msg_len)
+static rt_status scotch_map(cell_graph *g, const int nodes[3], int torus, const remap_args *remap, SCOTCH_Num *parttab,
+                            char *msg, size_t msg_len)
 {
     SCOTCH_Graph graph, bound;
     SCOTCH_Context ctx;
@@ -160,8 +160,7 @@ static rt_status scotch_map(cell_graph *g, const int nodes[3], int torus, const 
     if (SCOTCH_graphBuild(&graph, 0, g->vertnbr, g->verttab, NULL, g->velotab, NULL, g->edgenbr, g->edgetab,
                           g->edlotab) != 0)
         st = scotch_fail(msg, msg_len, "SCOTCH_graphBuild");
-    else if (SCOTCH_graphCheck(&graph) != 0)
-        st = scotch_fail(msg, msg_len, "SCOTCH_graphCheck");
+    else if (SCOTCH_graphCheck(&graph) != 0) st = scotch_fail(msg, msg_len, "SCOTCH_graphCheck");
     if (st == RT_OK) {
         st = bind_context(&ctx, &graph, &bound, msg, msg_len);
         if (st == RT_OK) {
@@ -225,13 +224,13 @@ static int32_t fold_node(SCOTCH_Num t, const int v[3], const int n[3])
 rt_status rt_cost_map_folded(const rt_cost_pilot *p, const int nodes[3], int torus, double edge_us, int fold,
                              int32_t *owner, rt_cost_map_facts *facts, char *msg, size_t msg_len)
 {
-    if (nodes[0] < 1 || nodes[1] < 1 || nodes[2] < 1 || !p->work_us || !(edge_us >= 0) || fold < 1 ||
-        fold > 64) {
+    if (nodes[0] < 1 || nodes[1] < 1 || nodes[2] < 1 || !p->work_us || !(edge_us >= 0) || fold < 1 || fold > 64) {
         if (msg && msg_len) snprintf(msg, msg_len, "cost mapping: bad arguments");
         return RT_ERR_INVALID;
     }
     if (p->cells > (size_t)(TOTAL_MAX / 8)) {
-        if (msg && msg_len) snprintf(msg, msg_len, "cost mapping: %zu cells is too many for Scotch's weights", p->cells);
+        if (msg && msg_len)
+            snprintf(msg, msg_len, "cost mapping: %zu cells is too many for Scotch's weights", p->cells);
         return RT_ERR_LIMIT;
     }
     rt_status st = RT_OK;
@@ -255,9 +254,8 @@ rt_status rt_cost_map_folded(const rt_cost_pilot *p, const int nodes[3], int tor
     return st;
 }
 
-rt_status rt_cost_remap(const rt_cost_pilot *p, const int nodes[3], int torus, double edge_us,
-                        const int32_t *old_owner, const double *move_us, int32_t *owner, rt_cost_map_facts *facts,
-                        char *msg, size_t msg_len)
+rt_status rt_cost_remap(const rt_cost_pilot *p, const int nodes[3], int torus, double edge_us, const int32_t *old_owner,
+                        const double *move_us, int32_t *owner, rt_cost_map_facts *facts, char *msg, size_t msg_len)
 {
     long n = (long)nodes[0] * nodes[1] * nodes[2];
     if (nodes[0] < 1 || nodes[1] < 1 || nodes[2] < 1 || !p->work_us || !(edge_us >= 0) || !old_owner || !move_us) {
@@ -265,7 +263,8 @@ rt_status rt_cost_remap(const rt_cost_pilot *p, const int nodes[3], int torus, d
         return RT_ERR_INVALID;
     }
     if (p->cells > (size_t)(TOTAL_MAX / 8)) {
-        if (msg && msg_len) snprintf(msg, msg_len, "cost remapping: %zu cells is too many for Scotch's weights", p->cells);
+        if (msg && msg_len)
+            snprintf(msg, msg_len, "cost remapping: %zu cells is too many for Scotch's weights", p->cells);
         return RT_ERR_LIMIT;
     }
     if (n == 1) return rt_cost_map(p, nodes, torus, edge_us, owner, facts, msg, msg_len);

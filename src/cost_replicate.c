@@ -19,11 +19,11 @@ typedef struct replicate_state {
     const int32_t *owner;
     rt_memory_layout layout;
     int nodes;
-    int dims[3], torus;  /* the nodes' torus or mesh */
+    int dims[3], torus; /* the nodes' torus or mesh */
     rt_replica_rule rule;
-    int32_t *own;        /* scratch: one cell's owners, the candidate last */
-    double *inflow;      /* scratch: per owner, pilot packets entering the cell that reach it */
-    double *cur, *next;  /* scratch: per owner, its predicted share of the cell now and with the candidate */
+    int32_t *own;       /* scratch: one cell's owners, the candidate last */
+    double *inflow;     /* scratch: per owner, pilot packets entering the cell that reach it */
+    double *cur, *next; /* scratch: per owner, its predicted share of the cell now and with the candidate */
     double *load;       /* per node: predicted work, each cell's work split evenly over its owners */
     double *room;       /* per node: bytes of the budget left */
     uint32_t *owners;   /* per cell: owners (1 + extra) */
@@ -312,8 +312,7 @@ rt_status rt_cost_replicate(const rt_cost_pilot *pilot, const rt_scene *scene, c
     s.layout = layout ? *layout : rt_memory_layout_default();
     rt_status st = state_init(&s, fraction);
     int nomem = 0;
-    while (st == RT_OK && fraction > 0 && replicate_once(&s, &nomem)) {
-    }
+    while (st == RT_OK && fraction > 0 && replicate_once(&s, &nomem)) {}
     if (st == RT_OK && nomem) st = RT_ERR_NOMEM;
     if (st == RT_OK) st = write_table(&s, first, extra, extra_count);
     if (st == RT_OK && facts) {
@@ -323,8 +322,7 @@ rt_status rt_cost_replicate(const rt_cost_pilot *pilot, const rt_scene *scene, c
     if (st == RT_ERR_LIMIT && msg && msg_len)
         snprintf(msg, msg_len, "cost replication: %d nodes x %zu objects is too many to track", nodes,
                  scene->object_count);
-    else if (st != RT_OK && msg && msg_len)
-        snprintf(msg, msg_len, "cost replication: out of memory");
+    else if (st != RT_OK && msg && msg_len) snprintf(msg, msg_len, "cost replication: out of memory");
     state_free(&s);
     return st;
 }

@@ -16,8 +16,7 @@ static double next_boundary(const rt_grid *g, const rt_dda *d, double o, double 
 
 int rt_dda_start(const rt_grid *g, rt_vec3 origin, rt_vec3 dir, double t_min, rt_dda *out)
 {
-    if (g->empty || !rt_vec_is_finite(origin) || !rt_vec_is_finite(dir) || rt_vec_is_zero(dir))
-        return 0;
+    if (g->empty || !rt_vec_is_finite(origin) || !rt_vec_is_finite(dir) || rt_vec_is_zero(dir)) return 0;
     double t_in = t_min, t_out = INFINITY;
     const double o[3] = {origin.x, origin.y, origin.z};
     const double d[3] = {dir.x, dir.y, dir.z};
@@ -28,7 +27,11 @@ int rt_dda_start(const rt_grid *g, rt_vec3 origin, rt_vec3 dir, double t_min, rt
             continue;
         }
         double t0 = (lo - o[a]) / d[a], t1 = (hi - o[a]) / d[a];
-        if (t0 > t1) { double t = t0; t0 = t1; t1 = t; }
+        if (t0 > t1) {
+            double t = t0;
+            t0 = t1;
+            t1 = t;
+        }
         if (t0 > t_in) t_in = t0;
         if (t1 < t_out) t_out = t1;
     }

@@ -25,8 +25,8 @@ static rt_status fail(char *msg, size_t msg_len, rt_status status, const char *f
 }
 
 /* Reads until end of file or one byte past max_bytes; a read error is an error. */
-static rt_status read_all(int fd, const char *shown, size_t max_bytes, size_t capacity, char **text,
-                          size_t *length, char *msg, size_t msg_len)
+static rt_status read_all(int fd, const char *shown, size_t max_bytes, size_t capacity, char **text, size_t *length,
+                          char *msg, size_t msg_len)
 {
     size_t used = 0;
     char *buf = malloc(capacity + 1);
@@ -55,8 +55,7 @@ static rt_status read_all(int fd, const char *shown, size_t max_bytes, size_t ca
     }
     if (used > max_bytes) {
         free(buf);
-        return fail(msg, msg_len, RT_ERR_LIMIT, "%s:1: the file is more than the limit of %zu bytes",
-                    shown, max_bytes);
+        return fail(msg, msg_len, RT_ERR_LIMIT, "%s:1: the file is more than the limit of %zu bytes", shown, max_bytes);
     }
     buf[used] = '\0';
     *text = buf;
@@ -87,31 +86,28 @@ static rt_status check_text(const char *shown, char *text, size_t *length, char 
     if (!nul) return RT_OK;
     long line = 1;
     for (const char *p = text; p < nul; p++) line += *p == '\n';
-    return fail(msg, msg_len, RT_ERR_PARSE,
-                "%s:%ld: binary data (a NUL byte at offset %zu): only text files are read", shown, line,
-                (size_t)(nul - text));
+    return fail(msg, msg_len, RT_ERR_PARSE, "%s:%ld: binary data (a NUL byte at offset %zu): only text files are read",
+                shown, line, (size_t)(nul - text));
 }
 
 /* The open descriptor is a regular file of at most max_bytes, set back to blocking reads. */
-static rt_status check_opened(int fd, const char *shown, size_t max_bytes, struct stat *info, char *msg,
-                              size_t msg_len)
+static rt_status check_opened(int fd, const char *shown, size_t max_bytes, struct stat *info, char *msg, size_t msg_len)
 {
-    if (fstat(fd, info) != 0)
-        return fail(msg, msg_len, RT_ERR_IO, "%s: cannot read: %s", shown, strerror(errno));
+    if (fstat(fd, info) != 0) return fail(msg, msg_len, RT_ERR_IO, "%s: cannot read: %s", shown, strerror(errno));
     if (!S_ISREG(info->st_mode))
         return fail(msg, msg_len, RT_ERR_IO, "%s: is %s, not a regular file", shown,
                     rt_file_kind((unsigned)info->st_mode));
     if ((uintmax_t)info->st_size > max_bytes)
-        return fail(msg, msg_len, RT_ERR_LIMIT, "%s:1: the file is %jd bytes, more than the limit of %zu",
-                    shown, (intmax_t)info->st_size, max_bytes);
+        return fail(msg, msg_len, RT_ERR_LIMIT, "%s:1: the file is %jd bytes, more than the limit of %zu", shown,
+                    (intmax_t)info->st_size, max_bytes);
     int flags = fcntl(fd, F_GETFL);
     if (flags < 0 || fcntl(fd, F_SETFL, flags & ~O_NONBLOCK) < 0)
         return fail(msg, msg_len, RT_ERR_IO, "%s: cannot read: %s", shown, strerror(errno));
     return RT_OK;
 }
 
-rt_status rt_read_regular_file(const char *path, size_t max_bytes, char **text, size_t *length,
-                               char *msg, size_t msg_len)
+rt_status rt_read_regular_file(const char *path, size_t max_bytes, char **text, size_t *length, char *msg,
+                               size_t msg_len)
 {
     char shown[256];
     rt_escape_bytes(path, strlen(path), 0, shown, sizeof shown);
@@ -122,8 +118,7 @@ rt_status rt_read_regular_file(const char *path, size_t max_bytes, char **text, 
     if (fd < 0) return fail(msg, msg_len, RT_ERR_IO, "%s: cannot open: %s", shown, strerror(errno));
     struct stat info;
     rt_status st = check_opened(fd, shown, max_bytes, &info, msg, msg_len);
-    if (st == RT_OK)
-        /* + 1: the end of file is seen in the first read when the size holds. */
+    if (st == RT_OK) /* + 1: the end of file is seen in the first read when the size holds. */
         st = read_all(fd, shown, max_bytes, (size_t)info.st_size + 1, text, length, msg, msg_len);
     close(fd);
     if (st == RT_OK && (st = check_text(shown, *text, length, msg, msg_len)) != RT_OK) {

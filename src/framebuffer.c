@@ -4,8 +4,8 @@
 
 #include "rt_framebuffer.h"
 
-#define FB_ONE 4294967296.0        /* 2^32 units = 1.0 */
-#define FB_CLAMP 1048576.0         /* |contribution| <= 2^20 keeps 2^11 of them summable */
+#define FB_ONE 4294967296.0 /* 2^32 units = 1.0 */
+#define FB_CLAMP 1048576.0  /* |contribution| <= 2^20 keeps 2^11 of them summable */
 
 struct rt_framebuffer {
     uint32_t width, height;

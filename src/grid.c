@@ -20,12 +20,9 @@ static void set_msg(char *msg, size_t len, const char *text)
     if (msg && len) snprintf(msg, len, "%s", text);
 }
 
-
-
 /* The counting pass passed what the budget allows in object `object`: the entries counted so
  * far already exceed it. */
-static void over_budget_msg(const build *bd, size_t object, const rt_budget *budget, char *msg,
-                            size_t msg_len)
+static void over_budget_msg(const build *bd, size_t object, const rt_budget *budget, char *msg, size_t msg_len)
 {
     const rt_grid *g = bd->g;
     size_t n = bd->scene->object_count;
@@ -40,8 +37,8 @@ static void over_budget_msg(const build *bd, size_t object, const rt_budget *bud
                  "than %zu entries (%u bytes each while they are built), at least %s, counted "
                  "before any is made with %zu of %zu objects still to count: more than the %s left "
                  "of the %s budget (raise it with --memory-budget)",
-                 g->dims[0], g->dims[1], g->dims[2], bd->cell_n, ENTRY_BYTES, need_s,
-                 n - object - 1, n, left_s, limit_s);
+                 g->dims[0], g->dims[1], g->dims[2], bd->cell_n, ENTRY_BYTES, need_s, n - object - 1, n, left_s,
+                 limit_s);
 }
 
 /* The counting pass: how many entries the lists will have, without storing any; 0 when
@@ -118,8 +115,7 @@ static int build_lists(build *bd, rt_budget *budget, char *msg, size_t msg_len)
     bd->pair_start[n] = bd->cell_n;
     if (bd->cell_n > UINT32_MAX) {
         if (msg && msg_len)
-            snprintf(msg, msg_len, "%zu cell-list entries: at most %u are supported", bd->cell_n,
-                     (unsigned)UINT32_MAX);
+            snprintf(msg, msg_len, "%zu cell-list entries: at most %u are supported", bd->cell_n, (unsigned)UINT32_MAX);
         return 0;
     }
 
@@ -145,20 +141,18 @@ nomem:
     return 0;
 }
 
-
 rt_grid *rt_grid_new(const rt_scene *scene, int nx, int ny, int nz, char *msg, size_t msg_len)
 {
     return rt_grid_new_budget(scene, nx, ny, nz, NULL, msg, msg_len);
 }
 
-rt_grid *rt_grid_new_budget(const rt_scene *scene, int nx, int ny, int nz, rt_budget *budget,
-                            char *msg, size_t msg_len)
+rt_grid *rt_grid_new_budget(const rt_scene *scene, int nx, int ny, int nz, rt_budget *budget, char *msg, size_t msg_len)
 {
     return rt_grid_new_counted(scene, nx, ny, nz, RT_COUNT_SEQUENTIAL, budget, msg, msg_len);
 }
 
-rt_grid *rt_grid_new_counted(const rt_scene *scene, int nx, int ny, int nz, rt_preprocess_count rule,
-                             rt_budget *budget, char *msg, size_t msg_len)
+rt_grid *rt_grid_new_counted(const rt_scene *scene, int nx, int ny, int nz, rt_preprocess_count rule, rt_budget *budget,
+                             char *msg, size_t msg_len)
 {
     return rt_grid_new_in_space(scene, nx, ny, nz, NULL, rule, budget, msg, msg_len);
 }
@@ -169,8 +163,8 @@ static int dims_valid(const int dims[3], char *msg, size_t msg_len)
     for (int a = 0; a < 3; a++)
         if (dims[a] < 1 || dims[a] > RT_GRID_MAX_CELLS_PER_AXIS) {
             if (msg && msg_len)
-                snprintf(msg, msg_len, "cells %dx%dx%d: each axis needs 1 to %d cells", dims[0], dims[1],
-                         dims[2], RT_GRID_MAX_CELLS_PER_AXIS);
+                snprintf(msg, msg_len, "cells %dx%dx%d: each axis needs 1 to %d cells", dims[0], dims[1], dims[2],
+                         RT_GRID_MAX_CELLS_PER_AXIS);
             return 0;
         }
     uint64_t total = (uint64_t)dims[0] * (uint64_t)dims[1] * (uint64_t)dims[2];
@@ -191,10 +185,8 @@ static int set_space(rt_grid *g, const rt_scene *scene, const rt_box *space, cha
     int any = rt_grid_objects_box(scene, &own);
     if (space && any) {
         for (size_t o = 0; o < scene->object_count; o++)
-            if (!grid_box_is_empty(&scene->objects[o].bounds) &&
-                !grid_box_inside(&scene->objects[o].bounds, space)) {
-                if (msg && msg_len)
-                    snprintf(msg, msg_len, "object %zu lies outside the given object space", o);
+            if (!grid_box_is_empty(&scene->objects[o].bounds) && !grid_box_inside(&scene->objects[o].bounds, space)) {
+                if (msg && msg_len) snprintf(msg, msg_len, "object %zu lies outside the given object space", o);
                 return 0;
             }
     }
@@ -229,8 +221,7 @@ rt_grid *rt_grid_new_in_space(const rt_scene *scene, int nx, int ny, int nz, con
     /* The per-cell and per-object arrays, reserved before any is allocated. */
     size_t objects = scene->object_count;
     uint64_t fixed = (total + 1) * 4u + total * 4u + ((uint64_t)objects + 1) * 8u + objects * 8u;
-    if (rt_budget_reserve(budget, fixed, "the grid's cell and object tables", msg, msg_len))
-        return NULL;
+    if (rt_budget_reserve(budget, fixed, "the grid's cell and object tables", msg, msg_len)) return NULL;
     rt_grid *g = calloc(1, sizeof *g);
     if (!g) {
         set_msg(msg, msg_len, "out of memory creating the grid");

@@ -15,14 +15,11 @@ int rt_grid_same_shape(const rt_object *a, const rt_object *b)
     if (a->kind != b->kind || a->kind == RT_OBJ_POLYGON) return 0;
     switch (a->kind) {
     case RT_OBJ_SPHERE:
-        return same_point(a->u.sphere.center, b->u.sphere.center) &&
-               a->u.sphere.radius == b->u.sphere.radius;
+        return same_point(a->u.sphere.center, b->u.sphere.center) && a->u.sphere.radius == b->u.sphere.radius;
     case RT_OBJ_TRIANGLE:
         return same_point(a->u.triangle.v[0], b->u.triangle.v[0]) &&
-               same_point(a->u.triangle.v[1], b->u.triangle.v[1]) &&
-               same_point(a->u.triangle.v[2], b->u.triangle.v[2]);
-    case RT_OBJ_CONE:
-        return memcmp(&a->bounds, &b->bounds, sizeof a->bounds) == 0;
+               same_point(a->u.triangle.v[1], b->u.triangle.v[1]) && same_point(a->u.triangle.v[2], b->u.triangle.v[2]);
+    case RT_OBJ_CONE: return memcmp(&a->bounds, &b->bounds, sizeof a->bounds) == 0;
     case RT_OBJ_POLYGON: break;
     }
     return 0;
@@ -39,10 +36,7 @@ void rt_grid_free(rt_grid *g)
 
 void rt_grid_dims(const rt_grid *g, int dims[3]) { memcpy(dims, g->dims, sizeof g->dims); }
 
-size_t rt_grid_cell_count(const rt_grid *g)
-{
-    return (size_t)g->dims[0] * (size_t)g->dims[1] * (size_t)g->dims[2];
-}
+size_t rt_grid_cell_count(const rt_grid *g) { return (size_t)g->dims[0] * (size_t)g->dims[1] * (size_t)g->dims[2]; }
 
 int rt_grid_is_empty(const rt_grid *g) { return g->empty; }
 rt_box rt_grid_bounds(const rt_grid *g) { return g->bounds; }

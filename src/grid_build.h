@@ -13,7 +13,6 @@
 /* 1024 = 2^10: no axis has more prime factors. */
 #define MAX_LEVELS 10
 
-
 /* 1024 = 2^10: no axis has more prime factors. */
 #define MAX_LEVELS 10
 
@@ -21,18 +20,18 @@ typedef struct build {
     const rt_scene *scene;
     rt_grid *g;
     int levels;
-    int factor[3][MAX_LEVELS];    /* split factor per axis and level (1 = no split) */
-    int span[3][MAX_LEVELS + 1];  /* cells per sub-space along an axis at each level */
+    int factor[3][MAX_LEVELS];   /* split factor per axis and level (1 = no split) */
+    int span[3][MAX_LEVELS + 1]; /* cells per sub-space along an axis at each level */
 
     /* The object being listed. */
     const rt_object *obj;
-    rt_box extent;                /* what the half-space tests see */
-    rt_vec3 *loop;                /* polygon or triangle vertices on the plane */
+    rt_box extent; /* what the half-space tests see */
+    rt_vec3 *loop; /* polygon or triangle vertices on the plane */
     size_t loop_n, loop_cap;
-    rt_vec3 normal;               /* plane: dot(normal, p) == offset */
+    rt_vec3 normal; /* plane: dot(normal, p) == offset */
     double offset;
-    int drop;                     /* axis dropped for the 2D inside test */
-    rt_preprocess_count rule;     /* how half-space tests are counted */
+    int drop;                 /* axis dropped for the 2D inside test */
+    rt_preprocess_count rule; /* how half-space tests are counted */
     uint64_t units;
 
     /* Cells met, in object order; pair_start[o] is object o's first. */
@@ -40,9 +39,9 @@ typedef struct build {
     size_t cell_n, cell_cap;
     size_t *pair_start;
     int nomem;
-    size_t max_entries;           /* what the memory budget allows */
-    int over_budget;              /* listing stopped at max_entries */
-    int counting;                 /* the counting pass: cell_n counts, nothing is stored */
+    size_t max_entries; /* what the memory budget allows */
+    int over_budget;    /* listing stopped at max_entries */
+    int counting;       /* the counting pass: cell_n counts, nothing is stored */
 } build;
 
 /* Clears *bd and sets its levels for the grid's dimensions (the grid's bounds must be set). */

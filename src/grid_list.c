@@ -44,15 +44,12 @@
 #include "grid_build.h"
 #include "polygon_inside.h"
 
-int grid_box_is_empty(const rt_box *b)
-{
-    return !(b->lo.x <= b->hi.x && b->lo.y <= b->hi.y && b->lo.z <= b->hi.z);
-}
+int grid_box_is_empty(const rt_box *b) { return !(b->lo.x <= b->hi.x && b->lo.y <= b->hi.y && b->lo.z <= b->hi.z); }
 
 int grid_box_inside(const rt_box *a, const rt_box *b)
 {
-    return a->lo.x >= b->lo.x && a->lo.y >= b->lo.y && a->lo.z >= b->lo.z && a->hi.x <= b->hi.x &&
-           a->hi.y <= b->hi.y && a->hi.z <= b->hi.z;
+    return a->lo.x >= b->lo.x && a->lo.y >= b->lo.y && a->lo.z >= b->lo.z && a->hi.x <= b->hi.x && a->hi.y <= b->hi.y &&
+           a->hi.z <= b->hi.z;
 }
 
 static double axis_of(rt_vec3 v, int a) { return rt_vec_axis(v, a); }
@@ -101,7 +98,11 @@ static int segment_meets(rt_vec3 p, rt_vec3 q, const rt_box *b)
             continue;
         }
         double ta = (lo - o) / d, tb = (hi - o) / d;
-        if (ta > tb) { double s = ta; ta = tb; tb = s; }
+        if (ta > tb) {
+            double s = ta;
+            ta = tb;
+            tb = s;
+        }
         if (ta > t0) t0 = ta;
         if (tb < t1) t1 = tb;
         if (t0 > t1) return 0;
@@ -167,8 +168,8 @@ static int object_meets(const build *bd, const rt_box *b)
     }
     /* Cone (conservative): the bounds overlap the box. */
     const rt_box *o = &bd->obj->bounds;
-    return o->lo.x <= b->hi.x && o->hi.x >= b->lo.x && o->lo.y <= b->hi.y && o->hi.y >= b->lo.y &&
-           o->lo.z <= b->hi.z && o->hi.z >= b->lo.z;
+    return o->lo.x <= b->hi.x && o->hi.x >= b->lo.x && o->lo.y <= b->hi.y && o->hi.y >= b->lo.y && o->lo.z <= b->hi.z &&
+           o->hi.z >= b->lo.z;
 }
 
 /* Slabs [first, last] of f (each m cells from cell c0) that the extent
@@ -183,13 +184,19 @@ static void slab_range(build *bd, int axis, int c0, int f, int m, int *first, in
         for (int k = 1, found = 0; k < f; k++) {
             bd->units++;
             if (!found && lo <= rt_grid_plane(g, axis, c0 + k * m) + tol) *first = k - 1, found = 1;
-            if (found && !(hi >= rt_grid_plane(g, axis, c0 + k * m) - tol)) { *last = k - 1; break; }
+            if (found && !(hi >= rt_grid_plane(g, axis, c0 + k * m) - tol)) {
+                *last = k - 1;
+                break;
+            }
         }
         return;
     }
     for (int k = 1; k < f; k++) {
         bd->units++;
-        if (lo <= rt_grid_plane(g, axis, c0 + k * m) + tol) { *first = k - 1; break; }
+        if (lo <= rt_grid_plane(g, axis, c0 + k * m) + tol) {
+            *first = k - 1;
+            break;
+        }
     }
     for (int k = *first + 1; k < f; k++) {
         bd->units++;
@@ -247,8 +254,7 @@ void grid_build_subdivide(build *bd, int level, const int c0[3])
                 rt_box b;
                 b.lo = rt_vec(rt_grid_plane(g, 0, c[0]) - tol, rt_grid_plane(g, 1, c[1]) - tol,
                               rt_grid_plane(g, 2, c[2]) - tol);
-                b.hi = rt_vec(rt_grid_plane(g, 0, c[0] + m[0]) + tol,
-                              rt_grid_plane(g, 1, c[1] + m[1]) + tol,
+                b.hi = rt_vec(rt_grid_plane(g, 0, c[0] + m[0]) + tol, rt_grid_plane(g, 1, c[1] + m[1]) + tol,
                               rt_grid_plane(g, 2, c[2] + m[2]) + tol);
                 if (!object_meets(bd, &b)) continue;
                 if (bd->counting && object_holds(bd, &b)) {
@@ -297,10 +303,8 @@ int grid_build_prepare(build *bd, size_t o)
             rt_vec3 v = s->vertices[p->first_vertex + i];
             set_axis(&v, p->drop_axis, axis_of(v, p->drop_axis) + (p->offset - rt_vec_dot(p->normal, v)) / nd);
             bd->loop[i] = v;
-            bd->extent.lo = rt_vec(fmin(bd->extent.lo.x, v.x), fmin(bd->extent.lo.y, v.y),
-                                   fmin(bd->extent.lo.z, v.z));
-            bd->extent.hi = rt_vec(fmax(bd->extent.hi.x, v.x), fmax(bd->extent.hi.y, v.y),
-                                   fmax(bd->extent.hi.z, v.z));
+            bd->extent.lo = rt_vec(fmin(bd->extent.lo.x, v.x), fmin(bd->extent.lo.y, v.y), fmin(bd->extent.lo.z, v.z));
+            bd->extent.hi = rt_vec(fmax(bd->extent.hi.x, v.x), fmax(bd->extent.hi.y, v.y), fmax(bd->extent.hi.z, v.z));
         }
     } else if (ob->kind == RT_OBJ_TRIANGLE) {
         const rt_triangle_data *t = &ob->u.triangle;
@@ -313,7 +317,6 @@ int grid_build_prepare(build *bd, size_t o)
     }
     return 1;
 }
-
 
 /* Split factors per axis and level (shorter factor lists padded with 1s) and spans. */
 static void setup_levels(build *bd, const int dims[3])

@@ -5,10 +5,7 @@
 #include "grid_internal.h"
 #include "scene_internal.h"
 
-static int box_is_empty(const rt_box *b)
-{
-    return !(b->lo.x <= b->hi.x && b->lo.y <= b->hi.y && b->lo.z <= b->hi.z);
-}
+static int box_is_empty(const rt_box *b) { return !(b->lo.x <= b->hi.x && b->lo.y <= b->hi.y && b->lo.z <= b->hi.z); }
 
 static void set_axis(rt_vec3 *v, int a, double x)
 {

@@ -26,8 +26,7 @@ static rt_status fail(char *msg, size_t msg_len, rt_status st, const char *text)
 }
 
 /* Lists every moved object again; its units go to units[o]. RT_ERR_NOMEM on failure. */
-static rt_status list_moved(rt_grid *g, const rt_scene *s, const uint8_t *moved, uint64_t *units,
-                            moved_pairs *out)
+static rt_status list_moved(rt_grid *g, const rt_scene *s, const uint8_t *moved, uint64_t *units, moved_pairs *out)
 {
     build bd;
     grid_build_init(&bd, s, g, g->rule);
@@ -62,8 +61,8 @@ static rt_status list_moved(rt_grid *g, const rt_scene *s, const uint8_t *moved,
 
 /* Counts each cell's new list: kept old entries plus moved ones; start[] gets the offsets
  * (cells + 1) and pair_start[] the offsets of the moved pairs sorted by cell. */
-static void count_lists(const rt_grid *g, const uint8_t *moved, const moved_pairs *mp, size_t cells,
-                        uint32_t *start, uint32_t *pair_start)
+static void count_lists(const rt_grid *g, const uint8_t *moved, const moved_pairs *mp, size_t cells, uint32_t *start,
+                        uint32_t *pair_start)
 {
     for (size_t c = 0; c < cells; c++) {
         uint32_t kept = 0;
@@ -101,8 +100,7 @@ static void merge_lists(const rt_grid *g, const uint8_t *moved, const moved_pair
 }
 
 /* Checks the update's input; RT_OK or RT_ERR_INVALID with a message. */
-static rt_status check_input(const rt_grid *g, const rt_scene *s, const uint8_t *moved, char *msg,
-                             size_t msg_len)
+static rt_status check_input(const rt_grid *g, const rt_scene *s, const uint8_t *moved, char *msg, size_t msg_len)
 {
     if (!s || !moved) return fail(msg, msg_len, RT_ERR_INVALID, "no scene or no moved flags given for the update");
     if (s->object_count != g->object_count) {

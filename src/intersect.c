@@ -9,14 +9,23 @@
 /* Picks the nearest of two roots inside (t_min, t_max). */
 static int pick_root(double t0, double t1, double t_min, double t_max, double *t)
 {
-    if (t0 > t1) { double s = t0; t0 = t1; t1 = s; }
-    if (t0 > t_min && t0 < t_max) { *t = t0; return 1; }
-    if (t1 > t_min && t1 < t_max) { *t = t1; return 1; }
+    if (t0 > t1) {
+        double s = t0;
+        t0 = t1;
+        t1 = s;
+    }
+    if (t0 > t_min && t0 < t_max) {
+        *t = t0;
+        return 1;
+    }
+    if (t1 > t_min && t1 < t_max) {
+        *t = t1;
+        return 1;
+    }
     return 0;
 }
 
-static int hit_sphere(const rt_sphere_data *s, rt_vec3 o, rt_vec3 d, double t_min, double t_max,
-                      double *t)
+static int hit_sphere(const rt_sphere_data *s, rt_vec3 o, rt_vec3 d, double t_min, double t_max, double *t)
 {
     rt_vec3 oc = rt_vec_sub(o, s->center);
     double b = rt_vec_dot(oc, d);
@@ -32,8 +41,8 @@ static int hit_sphere(const rt_sphere_data *s, rt_vec3 o, rt_vec3 d, double t_mi
     return pick_root(c / q, q, t_min, t_max, t);
 }
 
-static int hit_polygon(const rt_scene *s, const rt_polygon_data *p, rt_vec3 o, rt_vec3 d,
-                       double t_min, double t_max, double *t)
+static int hit_polygon(const rt_scene *s, const rt_polygon_data *p, rt_vec3 o, rt_vec3 d, double t_min, double t_max,
+                       double *t)
 {
     if (p->degenerate) return 0;
     double denom = rt_vec_dot(p->normal, d);
@@ -47,8 +56,7 @@ static int hit_polygon(const rt_scene *s, const rt_polygon_data *p, rt_vec3 o, r
 }
 
 /* Moller-Trumbore; shared edges are accepted by both triangles (ties go to the lower index). */
-static int hit_triangle(const rt_triangle_data *tr, rt_vec3 o, rt_vec3 d, double t_min,
-                        double t_max, rt_hit *hit)
+static int hit_triangle(const rt_triangle_data *tr, rt_vec3 o, rt_vec3 d, double t_min, double t_max, rt_hit *hit)
 {
     if (tr->degenerate) return 0;
     rt_vec3 e1 = rt_vec_sub(tr->v[1], tr->v[0]), e2 = rt_vec_sub(tr->v[2], tr->v[0]);
@@ -70,8 +78,7 @@ static int hit_triangle(const rt_triangle_data *tr, rt_vec3 o, rt_vec3 d, double
     return 1;
 }
 
-static int hit_cone(const rt_cone_data *c, rt_vec3 o, rt_vec3 d, double t_min, double t_max,
-                    double *t)
+static int hit_cone(const rt_cone_data *c, rt_vec3 o, rt_vec3 d, double t_min, double t_max, double *t)
 {
     /* Solve from the point of the ray nearest the cone's middle: the quadratic's terms then
      * have the cone's own size, so a tiny cone far away keeps its precision. */
@@ -115,8 +122,8 @@ static int hit_cone(const rt_cone_data *c, rt_vec3 o, rt_vec3 d, double t_min, d
     return 1;
 }
 
-int rt_intersect_object(const rt_scene *s, uint32_t index, rt_vec3 o, rt_vec3 d, double t_min,
-                        double t_max, rt_hit *hit)
+int rt_intersect_object(const rt_scene *s, uint32_t index, rt_vec3 o, rt_vec3 d, double t_min, double t_max,
+                        rt_hit *hit)
 {
     const rt_object *ob = &s->objects[index];
     hit->u = hit->v = 0.0;
@@ -150,8 +157,8 @@ static rt_vec3 patch_normal(const rt_triangle_data *t, const rt_hit *hit)
     return rt_vec_scale(n, (rt_vec_dot(n, face) < 0.0 ? -1.0 : 1.0) / len);
 }
 
-void rt_object_normals(const rt_scene *s, uint32_t index, rt_vec3 p, const rt_hit *hit,
-                       rt_vec3 *n_geo, rt_vec3 *n_shade)
+void rt_object_normals(const rt_scene *s, uint32_t index, rt_vec3 p, const rt_hit *hit, rt_vec3 *n_geo,
+                       rt_vec3 *n_shade)
 {
     const rt_object *ob = &s->objects[index];
     switch (ob->kind) {

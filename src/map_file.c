@@ -57,11 +57,11 @@ static int word_int(const char *s, long lo, long hi, long *v)
     return 1;
 }
 
-static rt_status fail(char *msg, size_t msg_len, const char *path, long line, const char *what,
-                      const char *word)
+static rt_status fail(char *msg, size_t msg_len, const char *path, long line, const char *what, const char *word)
 {
-    if (msg && msg_len) snprintf(msg, msg_len, "%s:%ld: %s%s%s%s", path, line, what,
-                                 word ? " '" : "", word ? word : "", word ? "'" : "");
+    if (msg && msg_len)
+        snprintf(msg, msg_len, "%s:%ld: %s%s%s%s", path, line, what, word ? " '" : "", word ? word : "",
+                 word ? "'" : "");
     return RT_ERR_PARSE;
 }
 
@@ -69,7 +69,8 @@ static rt_status fail(char *msg, size_t msg_len, const char *path, long line, co
 static rt_status read_header(words *w, const char *path, const int dims[3], int nodes, long *version, char *msg,
                              size_t msg_len)
 {
-    if (!next_word(w)) return fail(msg, msg_len, path, w->line, "empty map file: expected 'torusrt-map 1 NX NY NZ NODES'", NULL);
+    if (!next_word(w))
+        return fail(msg, msg_len, path, w->line, "empty map file: expected 'torusrt-map 1 NX NY NZ NODES'", NULL);
     if (strcmp(w->word, "torusrt-map") != 0)
         return fail(msg, msg_len, path, w->line, "expected the header 'torusrt-map 1 NX NY NZ NODES', found", w->word);
     long v;
@@ -82,8 +83,8 @@ static rt_status read_header(words *w, const char *path, const int dims[3], int 
             return fail(msg, msg_len, path, w->line, "header: expected a positive number for", what[i]);
         if (v != want[i]) {
             char why[160];
-            snprintf(why, sizeof why, "header %s = %ld, but the run has %ld (cells %dx%dx%d, %d nodes)",
-                     what[i], v, want[i], dims[0], dims[1], dims[2], nodes);
+            snprintf(why, sizeof why, "header %s = %ld, but the run has %ld (cells %dx%dx%d, %d nodes)", what[i], v,
+                     want[i], dims[0], dims[1], dims[2], nodes);
             return fail(msg, msg_len, path, w->line, why, NULL);
         }
     }
@@ -116,12 +117,13 @@ static int extras_add(extras *e, int32_t node)
 
 /* One cell's entry: `N` (version 1 and 2) or `N,M,...` (version 2: the primary owner first,
  * then its extra owners, all different); the extra owners go in ascending order. */
-static rt_status read_entry(words *w, const char *name, size_t cell, int nodes, long version, int32_t *owner,
-                            extras *e, char *msg, size_t msg_len)
+static rt_status read_entry(words *w, const char *name, size_t cell, int nodes, long version, int32_t *owner, extras *e,
+                            char *msg, size_t msg_len)
 {
     size_t start = e->count;
     char *item = w->word;
-    if (w->cut) return fail(msg, msg_len, name, w->line, "an entry longer than " RT_MAP_FILE_MAX_WORD_TEXT " bytes", NULL);
+    if (w->cut)
+        return fail(msg, msg_len, name, w->line, "an entry longer than " RT_MAP_FILE_MAX_WORD_TEXT " bytes", NULL);
     for (int k = 0;; k++) {
         char *comma = strchr(item, ',');
         if (comma) *comma = '\0';
@@ -151,9 +153,9 @@ static rt_status read_entry(words *w, const char *name, size_t cell, int nodes, 
     }
 }
 
-rt_status rt_map_file_parse_replicas(const char *name, const char *text, size_t length, const int dims[3],
-                                     int nodes, int32_t *owner, uint32_t *first, int32_t **extra,
-                                     size_t *extra_count, char *msg, size_t msg_len)
+rt_status rt_map_file_parse_replicas(const char *name, const char *text, size_t length, const int dims[3], int nodes,
+                                     int32_t *owner, uint32_t *first, int32_t **extra, size_t *extra_count, char *msg,
+                                     size_t msg_len)
 {
     words w = {text, text + length, 1, 0, ""};
     long version = 1;
@@ -164,7 +166,8 @@ rt_status rt_map_file_parse_replicas(const char *name, const char *text, size_t 
     size_t cells = (size_t)dims[0] * (size_t)dims[1] * (size_t)dims[2], i = 0;
     if (first) first[0] = 0;
     while (st == RT_OK && next_word(&w)) {
-        if (i == cells) st = fail(msg, msg_len, name, w.line, "more node ids than the grid's cells, first extra", w.word);
+        if (i == cells)
+            st = fail(msg, msg_len, name, w.line, "more node ids than the grid's cells, first extra", w.word);
         else st = read_entry(&w, name, i, nodes, version, owner, &e, msg, msg_len);
         if (st == RT_OK && first) first[i + 1] = (uint32_t)e.count;
         i++;
@@ -202,8 +205,7 @@ rt_status rt_map_file_read_replicas(const char *path, const int dims[3], int nod
     return st;
 }
 
-rt_status rt_map_file_read(const char *path, const int dims[3], int nodes, int32_t *owner, char *msg,
-                           size_t msg_len)
+rt_status rt_map_file_read(const char *path, const int dims[3], int nodes, int32_t *owner, char *msg, size_t msg_len)
 {
     return rt_map_file_read_replicas(path, dims, nodes, owner, NULL, NULL, NULL, msg, msg_len);
 }
@@ -214,12 +216,13 @@ rt_status rt_map_file_write_replicas(FILE *f, const char *name, const int dims[3
     size_t cells = (size_t)dims[0] * (size_t)dims[1] * (size_t)dims[2];
     if (replicas && replicas->first[cells] == 0) replicas = NULL; /* nothing replicated: version 1 */
     if (replicas)
-        fprintf(f, "torusrt-map 2 %d %d %d %d\n# per cell, x fastest, its owners: the primary first, then the "
-                   "extra owners, separated by commas; a line per (y, z) row\n",
+        fprintf(f,
+                "torusrt-map 2 %d %d %d %d\n# per cell, x fastest, its owners: the primary first, then the "
+                "extra owners, separated by commas; a line per (y, z) row\n",
                 dims[0], dims[1], dims[2], nodes);
     else
-        fprintf(f, "torusrt-map 1 %d %d %d %d\n# one node id per cell, x fastest; a line per (y, z) row\n",
-                dims[0], dims[1], dims[2], nodes);
+        fprintf(f, "torusrt-map 1 %d %d %d %d\n# one node id per cell, x fastest; a line per (y, z) row\n", dims[0],
+                dims[1], dims[2], nodes);
     size_t i = 0;
     for (int z = 0; z < dims[2]; z++)
         for (int y = 0; y < dims[1]; y++)
@@ -236,8 +239,8 @@ rt_status rt_map_file_write_replicas(FILE *f, const char *name, const int dims[3
     return RT_OK;
 }
 
-rt_status rt_map_file_write(FILE *f, const char *name, const int dims[3], int nodes, const int32_t *owner,
-                            char *msg, size_t msg_len)
+rt_status rt_map_file_write(FILE *f, const char *name, const int dims[3], int nodes, const int32_t *owner, char *msg,
+                            size_t msg_len)
 {
     return rt_map_file_write_replicas(f, name, dims, nodes, owner, NULL, msg, msg_len);
 }

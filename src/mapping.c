@@ -13,20 +13,18 @@ int rt_mapping_axis_owner(rt_map_kind kind, int block, int c, int cells, int pro
     case RT_MAP_BLOCK:
         /* 64-bit product: c * P overflows int for large grids and arrays. */
         return (int)(((int64_t)c * procs) / cells);
-    case RT_MAP_CYCLIC:
-        return c % procs;
+    case RT_MAP_CYCLIC: return c % procs;
     case RT_MAP_BLOCK_CYCLIC:
         if (block < 1) return -1;
         return (c / block) % procs;
     case RT_MAP_FILE:
-    case RT_MAP_COST: /* tables, not per-axis rules */
-        return -1;
+    case RT_MAP_COST: /* tables, not per-axis rules */ return -1;
     }
     return -1;
 }
 
-rt_status rt_mapping_fill(const int cells[3], const int procs[3], rt_map_kind kind, int block,
-                          int32_t *owner, char *msg, size_t msg_len)
+rt_status rt_mapping_fill(const int cells[3], const int procs[3], rt_map_kind kind, int block, int32_t *owner,
+                          char *msg, size_t msg_len)
 {
     if (kind != RT_MAP_BLOCK && kind != RT_MAP_CYCLIC && kind != RT_MAP_BLOCK_CYCLIC) {
         if (msg && msg_len) snprintf(msg, msg_len, "unknown mapping kind %d", (int)kind);
@@ -34,20 +32,18 @@ rt_status rt_mapping_fill(const int cells[3], const int procs[3], rt_map_kind ki
     }
     if (procs[0] < 1 || procs[1] < 1 || procs[2] < 1) {
         if (msg && msg_len)
-            snprintf(msg, msg_len, "processors %dx%dx%d: each axis needs at least 1", procs[0],
-                     procs[1], procs[2]);
+            snprintf(msg, msg_len, "processors %dx%dx%d: each axis needs at least 1", procs[0], procs[1], procs[2]);
         return RT_ERR_INVALID;
     }
     if ((int64_t)procs[0] * procs[1] * procs[2] > INT32_MAX) {
         if (msg && msg_len)
-            snprintf(msg, msg_len, "processors %dx%dx%d: more than %ld in all", procs[0], procs[1],
-                     procs[2], (long)INT32_MAX);
+            snprintf(msg, msg_len, "processors %dx%dx%d: more than %ld in all", procs[0], procs[1], procs[2],
+                     (long)INT32_MAX);
         return RT_ERR_INVALID;
     }
     if (cells[0] < 1 || cells[1] < 1 || cells[2] < 1) {
         if (msg && msg_len)
-            snprintf(msg, msg_len, "cells %dx%dx%d: each axis needs at least 1", cells[0],
-                     cells[1], cells[2]);
+            snprintf(msg, msg_len, "cells %dx%dx%d: each axis needs at least 1", cells[0], cells[1], cells[2]);
         return RT_ERR_INVALID;
     }
     if (kind == RT_MAP_BLOCK_CYCLIC && block < 1) {

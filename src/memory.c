@@ -12,8 +12,8 @@ uint32_t rt_memory_object_bytes(const rt_scene *scene, size_t i, const rt_memory
     return rt_scene_object_bytes(scene, i);
 }
 
-rt_status rt_memory_per_owner(const rt_scene *scene, const rt_grid *grid, const int32_t *owner,
-                              int owners, rt_memory_use *use)
+rt_status rt_memory_per_owner(const rt_scene *scene, const rt_grid *grid, const int32_t *owner, int owners,
+                              rt_memory_use *use)
 {
     return rt_memory_per_owner_layout(scene, grid, owner, owners, NULL, use);
 }
@@ -23,8 +23,8 @@ rt_memory_use rt_memory_whole_scene(const rt_scene *scene, const rt_grid *grid)
     return rt_memory_whole_scene_layout(scene, grid, NULL);
 }
 
-rt_status rt_memory_per_owner_layout(const rt_scene *scene, const rt_grid *grid, const int32_t *owner,
-                                     int owners, const rt_memory_layout *layout, rt_memory_use *use)
+rt_status rt_memory_per_owner_layout(const rt_scene *scene, const rt_grid *grid, const int32_t *owner, int owners,
+                                     const rt_memory_layout *layout, rt_memory_use *use)
 {
     return rt_memory_per_owner_replicas(scene, grid, owner, NULL, owners, layout, use);
 }
@@ -105,8 +105,7 @@ rt_status rt_memory_per_owner_replicas(const rt_scene *scene, const rt_grid *gri
     return RT_OK;
 }
 
-rt_memory_use rt_memory_whole_scene_layout(const rt_scene *scene, const rt_grid *grid,
-                                           const rt_memory_layout *layout)
+rt_memory_use rt_memory_whole_scene_layout(const rt_scene *scene, const rt_grid *grid, const rt_memory_layout *layout)
 {
     rt_memory_layout l = layout ? *layout : rt_memory_layout_default();
     rt_memory_use u = {0, 0, 0, 0};

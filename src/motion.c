@@ -184,8 +184,8 @@ static int sane(double x) { return isfinite(x) && fabs(x) <= MAX_MAGNITUDE; }
 static int object_sane(const rt_scene *s, const rt_object *o)
 {
     const rt_box *b = &o->bounds;
-    if (b->lo.x <= b->hi.x && !(sane(b->lo.x) && sane(b->lo.y) && sane(b->lo.z) && sane(b->hi.x) &&
-                                sane(b->hi.y) && sane(b->hi.z)))
+    if (b->lo.x <= b->hi.x &&
+        !(sane(b->lo.x) && sane(b->lo.y) && sane(b->lo.z) && sane(b->hi.x) && sane(b->hi.y) && sane(b->hi.z)))
         return 0;
     if (o->kind == RT_OBJ_SPHERE) return o->u.sphere.radius > 0.0;
     if (o->kind == RT_OBJ_CONE) return o->u.cone.height > 0.0 && isfinite(o->u.cone.slope);
@@ -241,8 +241,8 @@ rt_status rt_motion_space(const rt_motion *m, const rt_scene *base, rt_box *spac
 
 static const char *kind_name(rt_object_kind kind, int plural)
 {
-    static const char *names[4][2] = {{"sphere", "spheres"}, {"polygon", "polygons"},
-                                      {"patch triangle", "patch triangles"}, {"cone", "cones"}};
+    static const char *names[4][2] = {
+        {"sphere", "spheres"}, {"polygon", "polygons"}, {"patch triangle", "patch triangles"}, {"cone", "cones"}};
     return names[kind][plural];
 }
 
@@ -261,5 +261,6 @@ void rt_motion_describe(const rt_motion *m, const rt_scene *s, size_t i, char *b
         n += snprintf(buf + n, len - (size_t)n, "%s%zu %s", sep, count[k], kind_name((rt_object_kind)k, count[k] != 1));
         sep = ", ";
     }
-    if (n >= 0 && (size_t)n < len) snprintf(buf + n, len - (size_t)n, "), %zu key%s", e->key_count, e->key_count == 1 ? "" : "s");
+    if (n >= 0 && (size_t)n < len)
+        snprintf(buf + n, len - (size_t)n, "), %zu key%s", e->key_count, e->key_count == 1 ? "" : "s");
 }

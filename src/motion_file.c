@@ -20,7 +20,7 @@ typedef struct reader {
     char *msg;
     size_t msg_len;
     rt_motion *m;
-    size_t frames_line;  /* 0: no `frames` line yet */
+    size_t frames_line; /* 0: no `frames` line yet */
     size_t total_keys;
 } reader;
 
@@ -115,8 +115,8 @@ static rt_status statement_objects(reader *r, char **tok, int n)
     if (n != 2 && n != 3) return fail(r, RT_ERR_PARSE, "'objects' takes FIRST [LAST]: object indices from 0");
     uint32_t first, last;
     rt_status st = parse_count(r, "objects FIRST", tok[1], RT_SCENE_MAX_OBJECTS - 1, &first);
-    if (st == RT_OK) st = n == 3 ? parse_count(r, "objects LAST", tok[2], RT_SCENE_MAX_OBJECTS - 1, &last)
-                                 : (last = first, RT_OK);
+    if (st == RT_OK)
+        st = n == 3 ? parse_count(r, "objects LAST", tok[2], RT_SCENE_MAX_OBJECTS - 1, &last) : (last = first, RT_OK);
     if (st != RT_OK) return st;
     if (last < first) return fail(r, RT_ERR_PARSE, "objects %u %u: LAST is below FIRST", first, last);
     rt_motion *m = r->m;
@@ -124,8 +124,9 @@ static rt_status statement_objects(reader *r, char **tok, int n)
         return fail(r, RT_ERR_LIMIT, "more than %u 'objects' lines", RT_MOTION_MAX_ENTRIES);
     for (size_t i = 0; i < m->entry_count; i++)
         if (first <= m->entries[i].last && m->entries[i].first <= last)
-            return fail(r, RT_ERR_PARSE, "objects %u-%u overlap objects %u-%u of line %zu (an object moves by one entry)",
-                        first, last, m->entries[i].first, m->entries[i].last, m->entries[i].line);
+            return fail(r, RT_ERR_PARSE,
+                        "objects %u-%u overlap objects %u-%u of line %zu (an object moves by one entry)", first, last,
+                        m->entries[i].first, m->entries[i].last, m->entries[i].line);
     if (grow((void **)&m->entries, &m->entry_capacity, m->entry_count + 1, sizeof *m->entries))
         return fail(r, RT_ERR_NOMEM, "out of memory");
     motion_entry *e = &m->entries[m->entry_count++];
@@ -141,14 +142,16 @@ static rt_status statement_pivot_axis(reader *r, char **tok, int n, int is_axis)
     motion_entry *e = current(r, tok[0]);
     if (!e) return RT_ERR_PARSE;
     size_t *given = is_axis ? &e->axis_line : &e->pivot_line;
-    if (*given) return fail(r, RT_ERR_PARSE, "a second '%s' line in this entry (the first is line %zu)", tok[0], *given);
+    if (*given)
+        return fail(r, RT_ERR_PARSE, "a second '%s' line in this entry (the first is line %zu)", tok[0], *given);
     if (n != 4) return fail(r, RT_ERR_PARSE, "'%s' takes three numbers: %s X Y Z", tok[0], tok[0]);
     rt_vec3 v;
     rt_status st = parse_vec(r, tok[0], tok, n, 1, &v);
     if (st != RT_OK) return st;
     if (is_axis) {
         double len = rt_vec_length(v);
-        if (!(len > 0.0) || !isfinite(len)) return fail(r, RT_ERR_PARSE, "axis 0 0 0: a rotation axis needs a direction");
+        if (!(len > 0.0) || !isfinite(len))
+            return fail(r, RT_ERR_PARSE, "axis 0 0 0: a rotation axis needs a direction");
         e->axis = rt_vec_scale(v, 1.0 / len);
     } else {
         e->pivot = v;
@@ -163,7 +166,8 @@ static rt_status key_parts(reader *r, char **tok, int n, rt_motion_key *k)
     int seen[3] = {0, 0, 0};
     for (int i = 2; i < n;) {
         int part = !strcmp(tok[i], "move") ? 0 : !strcmp(tok[i], "turn") ? 1 : !strcmp(tok[i], "scale") ? 2 : -1;
-        if (part < 0) return fail(r, RT_ERR_PARSE, "unknown key part '%.40s' (move X Y Z, turn DEGREES, scale S)", tok[i]);
+        if (part < 0)
+            return fail(r, RT_ERR_PARSE, "unknown key part '%.40s' (move X Y Z, turn DEGREES, scale S)", tok[i]);
         if (seen[part]) return fail(r, RT_ERR_PARSE, "'%s' twice in one key", tok[i]);
         seen[part] = 1;
         rt_status st;
@@ -276,8 +280,7 @@ void rt_motion_free(rt_motion *m)
     free(m);
 }
 
-rt_status rt_motion_parse(const char *name, const char *text, size_t length, rt_motion **out, char *msg,
-                          size_t msg_len)
+rt_status rt_motion_parse(const char *name, const char *text, size_t length, rt_motion **out, char *msg, size_t msg_len)
 {
     *out = NULL;
     reader r = {name, 0, msg, msg_len, calloc(1, sizeof(rt_motion)), 0, 0};

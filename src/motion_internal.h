@@ -16,17 +16,17 @@ typedef struct rt_motion_key {
 } rt_motion_key;
 
 typedef struct motion_entry {
-    size_t line;            /* the `objects` line */
-    uint32_t first, last;   /* objects, inclusive */
-    rt_vec3 pivot;          /* centre of rotation and scale */
-    rt_vec3 axis;           /* unit rotation axis (0 0 0: none given) */
+    size_t line;                  /* the `objects` line */
+    uint32_t first, last;         /* objects, inclusive */
+    rt_vec3 pivot;                /* centre of rotation and scale */
+    rt_vec3 axis;                 /* unit rotation axis (0 0 0: none given) */
     size_t pivot_line, axis_line; /* 0: not given */
-    rt_motion_key *keys;    /* frames strictly increasing */
+    rt_motion_key *keys;          /* frames strictly increasing */
     size_t key_count, key_capacity;
 } motion_entry;
 
 struct rt_motion {
-    char *file;             /* the name messages show */
+    char *file; /* the name messages show */
     uint32_t frames;
     motion_entry *entries;
     size_t entry_count, entry_capacity;

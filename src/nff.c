@@ -27,15 +27,15 @@
 #include "rt_nff.h"
 
 typedef struct nff_parser {
-    rt_nff_stream in;      /* tokens, their lines, and the message buffer */
-    rt_nff_entity prev;    /* last complete entity, to explain stray numbers */
+    rt_nff_stream in;   /* tokens, their lines, and the message buffer */
+    rt_nff_entity prev; /* last complete entity, to explain stray numbers */
     rt_scene *scene;
     rt_nff_warn_fn warn;
     void *warn_ctx;
-    int have_material;     /* an `f` was seen */
-    int warned_default;    /* the default-material warning was given */
-    size_t view_line;      /* line of the `v`; 0 = none yet */
-    rt_vec3 *vertices;     /* scratch for `p` and `pp`, reused between entities */
+    int have_material;  /* an `f` was seen */
+    int warned_default; /* the default-material warning was given */
+    size_t view_line;   /* line of the `v`; 0 = none yet */
+    rt_vec3 *vertices;  /* scratch for `p` and `pp`, reused between entities */
     rt_vec3 *normals;
     size_t scratch_capacity;
 } nff_parser;
@@ -79,26 +79,18 @@ static rt_status parse_view(nff_parser *P, const rt_nff_entity *e)
     rt_status st;
     if (P->view_line)
         return rt_nff_fail(&P->in, e->line, RT_ERR_PARSE,
-                           "second 'v' block (the first is at line %zu): a file has one view",
-                           P->view_line);
-    if ((st = expect_keyword(P, e, "from")) || (st = rt_nff_read_vec(&P->in, e, "from", &from)))
-        return st;
-    if ((st = expect_keyword(P, e, "at")) || (st = rt_nff_read_vec(&P->in, e, "at", &at)))
-        return st;
-    if ((st = expect_keyword(P, e, "up")) || (st = rt_nff_read_vec(&P->in, e, "up", &up)))
-        return st;
-    if ((st = expect_keyword(P, e, "angle")) ||
-        (st = rt_nff_read_number(&P->in, e, "angle", NULL, &angle)))
-        return st;
+                           "second 'v' block (the first is at line %zu): a file has one view", P->view_line);
+    if ((st = expect_keyword(P, e, "from")) || (st = rt_nff_read_vec(&P->in, e, "from", &from))) return st;
+    if ((st = expect_keyword(P, e, "at")) || (st = rt_nff_read_vec(&P->in, e, "at", &at))) return st;
+    if ((st = expect_keyword(P, e, "up")) || (st = rt_nff_read_vec(&P->in, e, "up", &up))) return st;
+    if ((st = expect_keyword(P, e, "angle")) || (st = rt_nff_read_number(&P->in, e, "angle", NULL, &angle))) return st;
     if (!(angle > 0.0 && angle < 180.0))
-        return rt_nff_fail(&P->in, P->in.token_line, RT_ERR_PARSE,
-                           "view angle must be in (0, 180) degrees, got %g", angle);
-    if ((st = expect_keyword(P, e, "hither")) ||
-        (st = rt_nff_read_number(&P->in, e, "hither", NULL, &hither)))
+        return rt_nff_fail(&P->in, P->in.token_line, RT_ERR_PARSE, "view angle must be in (0, 180) degrees, got %g",
+                           angle);
+    if ((st = expect_keyword(P, e, "hither")) || (st = rt_nff_read_number(&P->in, e, "hither", NULL, &hither)))
         return st;
     (void)hither; /* ignored: the design has no near clipping plane */
-    if ((st = expect_keyword(P, e, "resolution")) ||
-        (st = rt_nff_read_integer(&P->in, e, "resolution width", &w)))
+    if ((st = expect_keyword(P, e, "resolution")) || (st = rt_nff_read_integer(&P->in, e, "resolution width", &w)))
         return st;
     rt_nff_token w_tok = P->in.last;
     if ((st = rt_nff_read_integer(&P->in, e, "resolution height", &h))) return st;
@@ -108,12 +100,11 @@ static rt_status parse_view(nff_parser *P, const rt_nff_entity *e)
     rt_nff_show(&h_tok, h_shown);
     if (w < 1 || h < 1)
         return rt_nff_fail(&P->in, w < 1 ? w_tok.line : h_tok.line, RT_ERR_PARSE,
-                           "resolution must be at least 1 x 1 pixels, got %s x %s", w_shown,
-                           h_shown);
+                           "resolution must be at least 1 x 1 pixels, got %s x %s", w_shown, h_shown);
     if (w > (long long)RT_SCENE_MAX_RESOLUTION || h > (long long)RT_SCENE_MAX_RESOLUTION)
-        return rt_nff_fail(&P->in, w > (long long)RT_SCENE_MAX_RESOLUTION ? w_tok.line : h_tok.line,
-                           RT_ERR_LIMIT, "resolution %s x %s exceeds the limit of %u pixels a side",
-                           w_shown, h_shown, RT_SCENE_MAX_RESOLUTION);
+        return rt_nff_fail(&P->in, w > (long long)RT_SCENE_MAX_RESOLUTION ? w_tok.line : h_tok.line, RT_ERR_LIMIT,
+                           "resolution %s x %s exceeds the limit of %u pixels a side", w_shown, h_shown,
+                           RT_SCENE_MAX_RESOLUTION);
     st = rt_scene_set_view(P->scene, from, at, up, angle, (uint32_t)w, (uint32_t)h);
     if (st) return builder_fail(P, e->line, st, "view rejected by the scene builder");
     P->view_line = e->line;
@@ -128,17 +119,14 @@ static void note_object(nff_parser *P, const rt_nff_entity *e)
     P->warned_default = 1;
     if (!P->warn) return;
     char text[RT_MSG_LEN];
-    snprintf(text, sizeof text,
-             "%s:%zu: warning: object before any 'f': using f 1 1 1 1 0 0 0 1", P->in.name,
-             e->line);
+    snprintf(text, sizeof text, "%s:%zu: warning: object before any 'f': using f 1 1 1 1 0 0 0 1", P->in.name, e->line);
     P->warn(P->warn_ctx, text);
 }
 
 static rt_status object_limit(nff_parser *P, size_t line, rt_status st)
 {
     char text[160];
-    snprintf(text, sizeof text,
-             "too many objects or vertices in the scene (the limit is %u objects)",
+    snprintf(text, sizeof text, "too many objects or vertices in the scene (the limit is %u objects)",
              RT_SCENE_MAX_OBJECTS);
     return builder_fail(P, line, st, text);
 }
@@ -154,8 +142,7 @@ static rt_status parse_light(nff_parser *P, const rt_nff_entity *e)
     if (colored && (st = rt_nff_read_color(&P->in, e, "colour", &rgb))) return st;
     st = rt_scene_add_light(P->scene, pos, colored ? &rgb : NULL);
     if (st == RT_ERR_LIMIT)
-        return rt_nff_fail(&P->in, e->line, RT_ERR_LIMIT, "too many lights (the limit is %u)",
-                           RT_SCENE_MAX_LIGHTS);
+        return rt_nff_fail(&P->in, e->line, RT_ERR_LIMIT, "too many lights (the limit is %u)", RT_SCENE_MAX_LIGHTS);
     if (st) return builder_fail(P, e->line, st, "light rejected by the scene builder");
     return RT_OK;
 }
@@ -173,16 +160,12 @@ static rt_status parse_material(nff_parser *P, const rt_nff_entity *e)
         return st;
     if (m.shine < 0.0)
         return rt_nff_fail(&P->in, e->line, RT_ERR_PARSE,
-                           "bad Shine of 'f': %g is negative (the Phong exponent must be >= 0)",
-                           m.shine);
+                           "bad Shine of 'f': %g is negative (the Phong exponent must be >= 0)", m.shine);
     if (m.t > 0.0 && !(m.ior > 0.0))
         return rt_nff_fail(&P->in, e->line, RT_ERR_PARSE,
-                           "bad ior of 'f': %g with T = %g (a transmitting surface needs ior > 0)",
-                           m.ior, m.t);
+                           "bad ior of 'f': %g with T = %g (a transmitting surface needs ior > 0)", m.ior, m.t);
     st = rt_scene_set_material(P->scene, &m);
-    if (st)
-        return builder_fail(P, e->line, st,
-                            "material values out of range (|Kd|, |Ks| and |T| must be <= 1e30)");
+    if (st) return builder_fail(P, e->line, st, "material values out of range (|Kd|, |Ks| and |T| must be <= 1e30)");
     P->have_material = 1;
     return RT_OK;
 }
@@ -192,19 +175,15 @@ static rt_status parse_sphere(nff_parser *P, const rt_nff_entity *e)
     rt_vec3 c;
     double r = 0.0;
     rt_status st;
-    if ((st = rt_nff_read_vec(&P->in, e, "centre", &c)) ||
-        (st = rt_nff_read_number(&P->in, e, "radius", NULL, &r)))
+    if ((st = rt_nff_read_vec(&P->in, e, "centre", &c)) || (st = rt_nff_read_number(&P->in, e, "radius", NULL, &r)))
         return st;
     if (r < 0.0)
         return rt_nff_fail(&P->in, P->in.token_line, RT_ERR_PARSE,
                            "negative sphere radius (inside-only spheres) is not supported");
-    if (!(r > 0.0))
-        return rt_nff_fail(&P->in, P->in.token_line, RT_ERR_PARSE,
-                           "sphere radius must be > 0, got 0");
+    if (!(r > 0.0)) return rt_nff_fail(&P->in, P->in.token_line, RT_ERR_PARSE, "sphere radius must be > 0, got 0");
     note_object(P, e);
     st = rt_scene_add_sphere(P->scene, c, r);
-    if (st == RT_ERR_INVALID)
-        return rt_nff_fail(&P->in, e->line, RT_ERR_PARSE, "sphere rejected by the scene builder");
+    if (st == RT_ERR_INVALID) return rt_nff_fail(&P->in, e->line, RT_ERR_PARSE, "sphere rejected by the scene builder");
     if (st) return object_limit(P, e->line, st);
     return RT_OK;
 }
@@ -224,14 +203,12 @@ static rt_status parse_cone(nff_parser *P, const rt_nff_entity *e)
     if (rb < 0.0 || ra < 0.0)
         return rt_nff_fail(&P->in, rb < 0.0 ? rb_line : P->in.token_line, RT_ERR_PARSE,
                            "negative cone radius (inside-only cones) is not supported");
-    if (rb == 0.0 && ra == 0.0)
-        return rt_nff_fail(&P->in, e->line, RT_ERR_PARSE, "cone with both radii zero");
+    if (rb == 0.0 && ra == 0.0) return rt_nff_fail(&P->in, e->line, RT_ERR_PARSE, "cone with both radii zero");
     if (base.x == apex.x && base.y == apex.y && base.z == apex.z)
         return rt_nff_fail(&P->in, e->line, RT_ERR_PARSE, "cone base and apex are the same point");
     note_object(P, e);
     st = rt_scene_add_cone(P->scene, base, rb, apex, ra);
-    if (st == RT_ERR_INVALID)
-        return rt_nff_fail(&P->in, e->line, RT_ERR_PARSE, "cone rejected by the scene builder");
+    if (st == RT_ERR_INVALID) return rt_nff_fail(&P->in, e->line, RT_ERR_PARSE, "cone rejected by the scene builder");
     if (st) return object_limit(P, e->line, st);
     return RT_OK;
 }
@@ -245,12 +222,11 @@ static rt_status read_vertex_count(nff_parser *P, const rt_nff_entity *e, size_t
     rt_status st = rt_nff_read_integer(&P->in, e, "vertex count", &n);
     if (st) return st;
     if (n < 3)
-        return rt_nff_fail(&P->in, P->in.token_line, RT_ERR_PARSE,
-                           "'%s' needs at least 3 vertices, got %lld", e->keyword, n);
+        return rt_nff_fail(&P->in, P->in.token_line, RT_ERR_PARSE, "'%s' needs at least 3 vertices, got %lld",
+                           e->keyword, n);
     if (n > (long long)RT_SCENE_MAX_VERTICES)
-        return rt_nff_fail(&P->in, P->in.token_line, RT_ERR_LIMIT,
-                           "'%s' with %s vertices exceeds the limit of %u", e->keyword,
-                           rt_nff_show(&P->in.last, shown), RT_SCENE_MAX_VERTICES);
+        return rt_nff_fail(&P->in, P->in.token_line, RT_ERR_LIMIT, "'%s' with %s vertices exceeds the limit of %u",
+                           e->keyword, rt_nff_show(&P->in.last, shown), RT_SCENE_MAX_VERTICES);
     if ((size_t)n > P->scratch_capacity) {
         rt_vec3 *v = realloc(P->vertices, (size_t)n * sizeof *v);
         if (!v) return rt_nff_fail(&P->in, e->line, RT_ERR_NOMEM, "out of memory");
@@ -335,12 +311,10 @@ static rt_status parse_entities(nff_parser *P)
                                    "unexpected value '%s' where a keyword belongs (too many values "
                                    "for the '%s' at line %zu?)",
                                    rt_nff_show(&t, shown), P->prev.keyword, P->prev.line);
-            return rt_nff_fail(&P->in, t.line, RT_ERR_PARSE,
-                               "unexpected value '%s' where a keyword belongs",
+            return rt_nff_fail(&P->in, t.line, RT_ERR_PARSE, "unexpected value '%s' where a keyword belongs",
                                rt_nff_show(&t, shown));
         } else {
-            return rt_nff_fail(&P->in, t.line, RT_ERR_PARSE, "unknown keyword '%s'",
-                               rt_nff_show(&t, shown));
+            return rt_nff_fail(&P->in, t.line, RT_ERR_PARSE, "unknown keyword '%s'", rt_nff_show(&t, shown));
         }
         if (st) return st;
         P->prev = e;
@@ -360,17 +334,14 @@ static rt_status parse_all(nff_parser *P)
     why[0] = '\0';
     st = rt_scene_finish(P->scene, why, sizeof why);
     if (st == RT_ERR_NOMEM) return rt_nff_fail(&P->in, P->view_line, st, "out of memory");
-    if (st)
-        return rt_nff_fail(&P->in, P->view_line, RT_ERR_PARSE, "%s",
-                           why[0] ? why : "invalid view");
+    if (st) return rt_nff_fail(&P->in, P->view_line, RT_ERR_PARSE, "%s", why[0] ? why : "invalid view");
     return RT_OK;
 }
 
-
 /* ------------------------------------------------------------------ public */
 
-rt_status rt_nff_parse(const char *name, const char *text, size_t length, rt_scene **out,
-                       char *msg, size_t msg_len, rt_nff_warn_fn warn, void *warn_ctx)
+rt_status rt_nff_parse(const char *name, const char *text, size_t length, rt_scene **out, char *msg, size_t msg_len,
+                       rt_nff_warn_fn warn, void *warn_ctx)
 {
     if (msg && msg_len) msg[0] = '\0';
     if (!name) name = "<input>";
@@ -386,8 +357,7 @@ rt_status rt_nff_parse(const char *name, const char *text, size_t length, rt_sce
     P.warn = warn;
     P.warn_ctx = warn_ctx;
     if (length > RT_NFF_MAX_FILE_BYTES)
-        return rt_nff_fail(&P.in, 1, RT_ERR_LIMIT,
-                           "the input is %zu bytes, more than the limit of %u", length,
+        return rt_nff_fail(&P.in, 1, RT_ERR_LIMIT, "the input is %zu bytes, more than the limit of %u", length,
                            RT_NFF_MAX_FILE_BYTES);
     /* A UTF-8 byte-order mark is harmless: skip it. */
     if (length >= 3 && memcmp(P.in.p, "\xEF\xBB\xBF", 3) == 0) P.in.p += 3;
@@ -413,8 +383,7 @@ rt_status rt_nff_parse(const char *name, const char *text, size_t length, rt_sce
     return RT_OK;
 }
 
-rt_status rt_nff_load(const char *path, rt_scene **out, char *msg, size_t msg_len,
-                      rt_nff_warn_fn warn, void *warn_ctx)
+rt_status rt_nff_load(const char *path, rt_scene **out, char *msg, size_t msg_len, rt_nff_warn_fn warn, void *warn_ctx)
 {
     if (out) *out = NULL;
     if (msg && msg_len) msg[0] = '\0';

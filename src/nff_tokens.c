@@ -17,8 +17,7 @@
 
 /* ------------------------------------------------------------------ stream */
 
-void rt_nff_stream_init(rt_nff_stream *S, const char *name, const char *text, size_t length,
-                        char *msg, size_t msg_len)
+void rt_nff_stream_init(rt_nff_stream *S, const char *name, const char *text, size_t length, char *msg, size_t msg_len)
 {
     memset(S, 0, sizeof *S);
     S->name = name;
@@ -60,9 +59,8 @@ const char *rt_nff_show(const rt_nff_token *t, char buf[RT_NFF_SHOW_CHARS + 4])
  * points at the last line of the file. */
 rt_status rt_nff_fail_eof(rt_nff_stream *S, const rt_nff_entity *e, const char *what)
 {
-    return rt_nff_fail(S, S->last_line, RT_ERR_PARSE,
-                       "unexpected end of file: '%s' at line %zu is missing its %s", e->keyword,
-                       e->line, what);
+    return rt_nff_fail(S, S->last_line, RT_ERR_PARSE, "unexpected end of file: '%s' at line %zu is missing its %s",
+                       e->keyword, e->line, what);
 }
 
 /* ------------------------------------------------------------------- lexing */
@@ -166,8 +164,7 @@ int rt_nff_looks_numeric(const rt_nff_token *t)
     char c = t->text[0];
     if (is_digit(c) || c == '+' || c == '-' || c == '.') return 1;
     if (t->len >= 3) {
-        char w[4] = {(char)(t->text[0] | 0x20), (char)(t->text[1] | 0x20),
-                     (char)(t->text[2] | 0x20), 0};
+        char w[4] = {(char)(t->text[0] | 0x20), (char)(t->text[1] | 0x20), (char)(t->text[2] | 0x20), 0};
         return strcmp(w, "nan") == 0 || strcmp(w, "inf") == 0;
     }
     return 0;
@@ -176,19 +173,16 @@ int rt_nff_looks_numeric(const rt_nff_token *t)
 /* --------------------------------------------------------- reading values */
 
 /* Formats "the WHAT[ COMP] of 'KW'[ (line N)]" for value messages. */
-static void describe(char *buf, size_t len, const rt_nff_entity *e, const char *what,
-                     const char *comp, size_t token_line)
+static void describe(char *buf, size_t len, const rt_nff_entity *e, const char *what, const char *comp,
+                     size_t token_line)
 {
     if (token_line == e->line)
         snprintf(buf, len, "%s%s%s of '%s'", what, comp ? " " : "", comp ? comp : "", e->keyword);
-    else
-        snprintf(buf, len, "%s%s%s of '%s' (line %zu)", what, comp ? " " : "", comp ? comp : "",
-                 e->keyword, e->line);
+    else snprintf(buf, len, "%s%s%s of '%s' (line %zu)", what, comp ? " " : "", comp ? comp : "", e->keyword, e->line);
 }
 
 /* Reads one finite double; `what` and `comp` name it in messages. */
-rt_status rt_nff_read_number(rt_nff_stream *S, const rt_nff_entity *e, const char *what,
-                             const char *comp, double *out)
+rt_status rt_nff_read_number(rt_nff_stream *S, const rt_nff_entity *e, const char *what, const char *comp, double *out)
 {
     rt_nff_token t;
     char desc[160], shown[RT_NFF_SHOW_CHARS + 4];
@@ -200,15 +194,13 @@ rt_status rt_nff_read_number(rt_nff_stream *S, const rt_nff_entity *e, const cha
     describe(desc, sizeof desc, e, what, comp, t.line);
     if (!number_syntax(t.text, t.len)) {
         if (rt_nff_looks_numeric(&t))
-            return rt_nff_fail(S, t.line, RT_ERR_PARSE,
-                               "bad %s: '%s' is not a finite decimal number", desc,
+            return rt_nff_fail(S, t.line, RT_ERR_PARSE, "bad %s: '%s' is not a finite decimal number", desc,
                                rt_nff_show(&t, shown));
         return rt_nff_fail(S, t.line, RT_ERR_PARSE, "bad %s: expected a number, got '%s'", desc,
                            rt_nff_show(&t, shown));
     }
     if (t.len > NFF_MAX_NUMBER_CHARS)
-        return rt_nff_fail(S, t.line, RT_ERR_PARSE,
-                           "bad %s: number '%s' is longer than %d characters", desc,
+        return rt_nff_fail(S, t.line, RT_ERR_PARSE, "bad %s: number '%s' is longer than %d characters", desc,
                            rt_nff_show(&t, shown), NFF_MAX_NUMBER_CHARS);
     char buf[NFF_MAX_NUMBER_CHARS + 1];
     memcpy(buf, t.text, t.len);
@@ -217,19 +209,17 @@ rt_status rt_nff_read_number(rt_nff_stream *S, const rt_nff_entity *e, const cha
     errno = 0;
     double v = strtod(buf, &stop);
     if (stop != buf + t.len)
-        return rt_nff_fail(S, t.line, RT_ERR_PARSE,
-                           "bad %s: '%s' is not a finite decimal number", desc,
+        return rt_nff_fail(S, t.line, RT_ERR_PARSE, "bad %s: '%s' is not a finite decimal number", desc,
                            rt_nff_show(&t, shown));
     /* ERANGE with a tiny result is underflow: 1e-400 reads as (nearly) zero. */
     if (!isfinite(v) || (errno == ERANGE && fabs(v) > 1.0))
-        return rt_nff_fail(S, t.line, RT_ERR_PARSE, "bad %s: '%s' is out of the range of a double",
-                           desc, rt_nff_show(&t, shown));
+        return rt_nff_fail(S, t.line, RT_ERR_PARSE, "bad %s: '%s' is out of the range of a double", desc,
+                           rt_nff_show(&t, shown));
     *out = v;
     return RT_OK;
 }
 
-rt_status rt_nff_read_vec(rt_nff_stream *S, const rt_nff_entity *e, const char *what,
-                          rt_vec3 *out)
+rt_status rt_nff_read_vec(rt_nff_stream *S, const rt_nff_entity *e, const char *what, rt_vec3 *out)
 {
     rt_status st;
     if ((st = rt_nff_read_number(S, e, what, "x", &out->x)) != RT_OK) return st;
@@ -237,8 +227,7 @@ rt_status rt_nff_read_vec(rt_nff_stream *S, const rt_nff_entity *e, const char *
     return rt_nff_read_number(S, e, what, "z", &out->z);
 }
 
-rt_status rt_nff_read_color(rt_nff_stream *S, const rt_nff_entity *e, const char *what,
-                            rt_vec3 *out)
+rt_status rt_nff_read_color(rt_nff_stream *S, const rt_nff_entity *e, const char *what, rt_vec3 *out)
 {
     rt_status st;
     if ((st = rt_nff_read_number(S, e, what, "red", &out->x)) != RT_OK) return st;
@@ -248,8 +237,7 @@ rt_status rt_nff_read_color(rt_nff_stream *S, const rt_nff_entity *e, const char
 
 /* Reads a decimal integer ([+-]digits), saturated to +-2^53 so huge counts
  * compare as huge without overflow. */
-rt_status rt_nff_read_integer(rt_nff_stream *S, const rt_nff_entity *e, const char *what,
-                              long long *out)
+rt_status rt_nff_read_integer(rt_nff_stream *S, const rt_nff_entity *e, const char *what, long long *out)
 {
     rt_nff_token t;
     char desc[160], shown[RT_NFF_SHOW_CHARS + 4];
@@ -270,8 +258,7 @@ rt_status rt_nff_read_integer(rt_nff_stream *S, const rt_nff_entity *e, const ch
         return RT_OK;
     }
     if (number_syntax(t.text, t.len))
-        return rt_nff_fail(S, t.line, RT_ERR_PARSE, "bad %s: '%s' is not a whole number", desc,
-                           rt_nff_show(&t, shown));
+        return rt_nff_fail(S, t.line, RT_ERR_PARSE, "bad %s: '%s' is not a whole number", desc, rt_nff_show(&t, shown));
     return rt_nff_fail(S, t.line, RT_ERR_PARSE, "bad %s: expected a whole number, got '%s'", desc,
                        rt_nff_show(&t, shown));
 }
@@ -288,9 +275,8 @@ rt_status rt_nff_scan_text(rt_nff_stream *S)
         if (c == '\n' || (c == '\r' && (q + 1 >= S->end || q[1] != '\n'))) {
             if (q + 1 < S->end) line++;
         } else if ((c < 0x20 && !is_space(c)) || c == 0x7f) {
-            return rt_nff_fail(S, line, RT_ERR_PARSE,
-                               "binary data (byte 0x%02x at offset %zu): not an NFF text file", c,
-                               (size_t)(q - S->p));
+            return rt_nff_fail(S, line, RT_ERR_PARSE, "binary data (byte 0x%02x at offset %zu): not an NFF text file",
+                               c, (size_t)(q - S->p));
         }
     }
     S->last_line = line;

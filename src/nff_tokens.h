@@ -39,21 +39,20 @@ typedef struct rt_nff_entity {
 } rt_nff_entity;
 
 typedef struct rt_nff_stream {
-    const char *name;      /* file name used in messages */
-    const char *p, *end;   /* unread input */
-    size_t line;           /* line of *p */
-    size_t last_line;      /* line the input ends on: EOF messages point here */
-    rt_nff_token peeked;   /* one token of look-ahead (for `l`'s optional colour) */
+    const char *name;    /* file name used in messages */
+    const char *p, *end; /* unread input */
+    size_t line;         /* line of *p */
+    size_t last_line;    /* line the input ends on: EOF messages point here */
+    rt_nff_token peeked; /* one token of look-ahead (for `l`'s optional colour) */
     int has_peek;
-    size_t token_line;     /* line of the last token consumed */
-    rt_nff_token last;     /* the last token consumed, to quote it */
-    char *msg;             /* the caller's message buffer (may be NULL) */
-    size_t msg_len;        /* bytes */
+    size_t token_line; /* line of the last token consumed */
+    rt_nff_token last; /* the last token consumed, to quote it */
+    char *msg;         /* the caller's message buffer (may be NULL) */
+    size_t msg_len;    /* bytes */
 } rt_nff_stream;
 
 /* Starts reading `length` bytes of `text` at line 1; never fails. */
-void rt_nff_stream_init(rt_nff_stream *S, const char *name, const char *text, size_t length,
-                        char *msg, size_t msg_len);
+void rt_nff_stream_init(rt_nff_stream *S, const char *name, const char *text, size_t length, char *msg, size_t msg_len);
 
 /* Writes "NAME:LINE: message" into the message buffer and returns `status`. */
 rt_status rt_nff_fail(rt_nff_stream *S, size_t line, rt_status status, const char *fmt, ...);
@@ -80,17 +79,13 @@ int rt_nff_token_is(const rt_nff_token *t, const char *word);
 int rt_nff_looks_numeric(const rt_nff_token *t);
 
 /* Reads one finite double; `what` and `comp` (may be NULL) name it in messages. */
-rt_status rt_nff_read_number(rt_nff_stream *S, const rt_nff_entity *e, const char *what,
-                             const char *comp, double *out);
+rt_status rt_nff_read_number(rt_nff_stream *S, const rt_nff_entity *e, const char *what, const char *comp, double *out);
 
 /* Reads x y z, or red green blue; RT_ERR_PARSE names the bad component. */
-rt_status rt_nff_read_vec(rt_nff_stream *S, const rt_nff_entity *e, const char *what,
-                          rt_vec3 *out);
-rt_status rt_nff_read_color(rt_nff_stream *S, const rt_nff_entity *e, const char *what,
-                            rt_vec3 *out);
+rt_status rt_nff_read_vec(rt_nff_stream *S, const rt_nff_entity *e, const char *what, rt_vec3 *out);
+rt_status rt_nff_read_color(rt_nff_stream *S, const rt_nff_entity *e, const char *what, rt_vec3 *out);
 
 /* Reads a decimal integer ([+-]digits), saturated to +-2^53; RT_ERR_PARSE if not one. */
-rt_status rt_nff_read_integer(rt_nff_stream *S, const rt_nff_entity *e, const char *what,
-                              long long *out);
+rt_status rt_nff_read_integer(rt_nff_stream *S, const rt_nff_entity *e, const char *what, long long *out);
 
 #endif

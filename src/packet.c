@@ -19,8 +19,8 @@ rt_vec3 rt_primary_direction(const rt_camera *cam, uint32_t x, uint32_t y)
     return rt_vec_normalize(rt_vec_sub(rt_vec_add(w, rt_vec_scale(u, px)), rt_vec_scale(v, py)));
 }
 
-rt_status rt_primary_packet(const rt_scene *scene, const rt_grid *grid, uint32_t x, uint32_t y,
-                            rt_packet *out, int *enters)
+rt_status rt_primary_packet(const rt_scene *scene, const rt_grid *grid, uint32_t x, uint32_t y, rt_packet *out,
+                            int *enters)
 {
     const rt_camera *cam = &scene->camera;
     if (x >= cam->width || y >= cam->height) return RT_ERR_INVALID;

@@ -47,8 +47,8 @@ static int encode(FILE *fp, uint32_t width, uint32_t height, const uint8_t *rgb8
         return 0;
     }
     png_init_io(png, fp);
-    png_set_IHDR(png, info, width, height, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
-                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_set_IHDR(png, info, width, height, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
+                 PNG_FILTER_TYPE_DEFAULT);
     png_write_info(png, info);
     size_t stride = (size_t)width * 3u;
     for (uint32_t y = 0; y < height; y++) png_write_row(png, rgb8 + (size_t)y * stride);
@@ -57,14 +57,14 @@ static int encode(FILE *fp, uint32_t width, uint32_t height, const uint8_t *rgb8
     return 1;
 }
 
-rt_status rt_png_write_stream(FILE *fp, const char *name, uint32_t width, uint32_t height,
-                              const uint8_t *rgb8, char *msg, size_t msg_len)
+rt_status rt_png_write_stream(FILE *fp, const char *name, uint32_t width, uint32_t height, const uint8_t *rgb8,
+                              char *msg, size_t msg_len)
 {
-    if (!fp || !rgb8 || width == 0 || height == 0 || width > PNG_UINT_31_MAX ||
-        height > PNG_UINT_31_MAX || (size_t)width > SIZE_MAX / 3u / (size_t)height) {
+    if (!fp || !rgb8 || width == 0 || height == 0 || width > PNG_UINT_31_MAX || height > PNG_UINT_31_MAX ||
+        (size_t)width > SIZE_MAX / 3u / (size_t)height) {
         if (msg && msg_len)
-            snprintf(msg, msg_len, "%s: cannot write a %ux%u image", name ? name : "(no name)",
-                     (unsigned)width, (unsigned)height);
+            snprintf(msg, msg_len, "%s: cannot write a %ux%u image", name ? name : "(no name)", (unsigned)width,
+                     (unsigned)height);
         return RT_ERR_INVALID;
     }
     png_errors e = {"", 0};
@@ -74,7 +74,9 @@ rt_status rt_png_write_stream(FILE *fp, const char *name, uint32_t width, uint32
         /* A failed write (a full disk) is told by its errno, not libpng's "Write Error". */
         if (ok || ferror(fp))
             snprintf(msg, msg_len, "%s: cannot write: %s", name ? name : "",
-                     strerror(ok ? errno : e.err ? e.err : EIO));
+                     strerror(ok      ? errno
+                              : e.err ? e.err
+                                      : EIO));
         else snprintf(msg, msg_len, "%s: PNG write failed: %s", name ? name : "", e.text);
     }
     return RT_ERR_IO;
@@ -104,8 +106,7 @@ static rt_status decode(FILE *fp, png_errors *e, uint32_t *width, uint32_t *heig
     int depth = png_get_bit_depth(png, info), type = png_get_color_type(png, info);
     rt_status st = RT_OK;
     if (depth != 8 || type != PNG_COLOR_TYPE_RGB) {
-        snprintf(e->text, sizeof e->text, "not an 8-bit RGB PNG (bit depth %d, colour type %d)",
-                 depth, type);
+        snprintf(e->text, sizeof e->text, "not an 8-bit RGB PNG (bit depth %d, colour type %d)", depth, type);
         st = RT_ERR_INVALID;
     } else if (w == 0 || h == 0 || (size_t)w > SIZE_MAX / 3u / (size_t)h) {
         snprintf(e->text, sizeof e->text, "image too large");
@@ -120,8 +121,7 @@ static rt_status decode(FILE *fp, png_errors *e, uint32_t *width, uint32_t *heig
             st = RT_ERR_NOMEM;
         } else {
             for (int pass = 0; pass < passes; pass++)
-                for (png_uint_32 y = 0; y < h; y++)
-                    png_read_row(png, pixels + (size_t)y * stride, NULL);
+                for (png_uint_32 y = 0; y < h; y++) png_read_row(png, pixels + (size_t)y * stride, NULL);
             png_read_end(png, NULL);
         }
     }
@@ -134,8 +134,7 @@ static rt_status decode(FILE *fp, png_errors *e, uint32_t *width, uint32_t *heig
     return st;
 }
 
-rt_status rt_png_read(const char *path, uint32_t *width, uint32_t *height, uint8_t **rgb8,
-                      char *msg, size_t msg_len)
+rt_status rt_png_read(const char *path, uint32_t *width, uint32_t *height, uint8_t **rgb8, char *msg, size_t msg_len)
 {
     if (!path || !width || !height || !rgb8) {
         if (msg && msg_len) snprintf(msg, msg_len, "rt_png_read: missing argument");

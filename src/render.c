@@ -46,10 +46,7 @@ static int queue_push(queue *q, const rt_packet *p, rt_budget *budget)
     return 1;
 }
 
-static rt_status push_status(int pushed)
-{
-    return pushed > 0 ? RT_OK : pushed < 0 ? RT_ERR_LIMIT : RT_ERR_NOMEM;
-}
+static rt_status push_status(int pushed) { return pushed > 0 ? RT_OK : pushed < 0 ? RT_ERR_LIMIT : RT_ERR_NOMEM; }
 
 static rt_packet queue_pop(queue *q)
 {
@@ -61,8 +58,7 @@ static rt_packet queue_pop(queue *q)
 
 /* One packet's steps: one, or with owners one per owner it passes through. */
 static rt_status step_packet(const rt_scene *scene, const rt_grid *grid, const rt_render_options *options,
-                             rt_packet *cur, rt_step_result *r, queue *q, rt_framebuffer *fb,
-                             rt_render_stats *stats)
+                             rt_packet *cur, rt_step_result *r, queue *q, rt_framebuffer *fb, rt_render_stats *stats)
 {
     for (;;) {
         uint32_t cell = options->step.brute_force ? 0 : rt_packet_cell(grid, cur);
@@ -86,8 +82,8 @@ static rt_status step_packet(const rt_scene *scene, const rt_grid *grid, const r
     }
 }
 
-rt_status rt_render(const rt_scene *scene, const rt_grid *grid, const rt_render_options *options,
-                    rt_framebuffer *fb, rt_render_stats *stats, char *msg, size_t msg_len)
+rt_status rt_render(const rt_scene *scene, const rt_grid *grid, const rt_render_options *options, rt_framebuffer *fb,
+                    rt_render_stats *stats, char *msg, size_t msg_len)
 {
     memset(stats, 0, sizeof *stats);
     const rt_camera *cam = rt_scene_camera(scene);
@@ -130,8 +126,7 @@ rt_status rt_render(const rt_scene *scene, const rt_grid *grid, const rt_render_
     free(q.items);
     rt_step_result_release(&r);
     /* The queue is gone: give its reservation back. */
-    if (options->budget && options->budget->limit)
-        options->budget->used -= (uint64_t)q.capacity * sizeof(rt_packet);
+    if (options->budget && options->budget->limit) options->budget->used -= (uint64_t)q.capacity * sizeof(rt_packet);
     if (status == RT_ERR_LIMIT) {
         char what[160];
         snprintf(what, sizeof what,
@@ -148,8 +143,7 @@ rt_status rt_render(const rt_scene *scene, const rt_grid *grid, const rt_render_
         if (stats->packets.created[k] != stats->packets.consumed[k]) {
             if (msg)
                 snprintf(msg, msg_len, "packet conservation violated: kind %d created %llu consumed %llu", k,
-                         (unsigned long long)stats->packets.created[k],
-                         (unsigned long long)stats->packets.consumed[k]);
+                         (unsigned long long)stats->packets.created[k], (unsigned long long)stats->packets.consumed[k]);
             return RT_ERR_INVALID;
         }
     }

@@ -91,8 +91,8 @@ rt_scene *rt_scene_clone(const rt_scene *s)
     return c;
 }
 
-rt_status rt_scene_set_view(rt_scene *s, rt_vec3 from, rt_vec3 at, rt_vec3 up, double angle_deg,
-                            uint32_t width, uint32_t height)
+rt_status rt_scene_set_view(rt_scene *s, rt_vec3 from, rt_vec3 at, rt_vec3 up, double angle_deg, uint32_t width,
+                            uint32_t height)
 {
     if (!finite3(from) || !finite3(at) || !finite3(up) || !isfinite(angle_deg)) return RT_ERR_INVALID;
     if (!(angle_deg > 0.0 && angle_deg < 180.0)) return RT_ERR_INVALID;
@@ -135,8 +135,7 @@ rt_status rt_scene_add_light(rt_scene *s, rt_vec3 position, const rt_vec3 *rgb)
 {
     if (!finite3(position) || (rgb && !finite3(*rgb))) return RT_ERR_INVALID;
     if (s->light_count >= RT_SCENE_MAX_LIGHTS) return RT_ERR_LIMIT;
-    if (grow((void **)&s->lights, &s->light_capacity, s->light_count + 1, sizeof *s->lights))
-        return RT_ERR_NOMEM;
+    if (grow((void **)&s->lights, &s->light_capacity, s->light_count + 1, sizeof *s->lights)) return RT_ERR_NOMEM;
     rt_light_entry *e = &s->lights[s->light_count++];
     e->light.position = position;
     e->light.color = rgb ? *rgb : rt_vec(1, 1, 1);
@@ -150,15 +149,14 @@ rt_status rt_scene_add_light(rt_scene *s, rt_vec3 position, const rt_vec3 *rgb)
  * T > 0 (SPD's opaque surfaces say `0`). */
 static int material_valid(const rt_material *m)
 {
-    return finite3(m->color) && sane(m->kd) && sane(m->ks) && isfinite(m->shine) &&
-           sane(m->t) && isfinite(m->ior) && m->shine >= 0.0 && (m->t <= 0.0 || m->ior > 0.0);
+    return finite3(m->color) && sane(m->kd) && sane(m->ks) && isfinite(m->shine) && sane(m->t) && isfinite(m->ior) &&
+           m->shine >= 0.0 && (m->t <= 0.0 || m->ior > 0.0);
 }
 
 rt_status rt_scene_set_material(rt_scene *s, const rt_material *m)
 {
     if (!material_valid(m)) return RT_ERR_INVALID;
-    if (grow((void **)&s->materials, &s->material_capacity, s->material_count + 1,
-             sizeof *s->materials))
+    if (grow((void **)&s->materials, &s->material_capacity, s->material_count + 1, sizeof *s->materials))
         return RT_ERR_NOMEM;
     s->materials[s->material_count++] = *m;
     s->has_material = 1;
@@ -176,8 +174,7 @@ static rt_status new_object(rt_scene *s, rt_object **out)
         if (st) return st;
         s->used_default = 1;
     }
-    if (grow((void **)&s->objects, &s->object_capacity, s->object_count + 1, sizeof *s->objects))
-        return RT_ERR_NOMEM;
+    if (grow((void **)&s->objects, &s->object_capacity, s->object_count + 1, sizeof *s->objects)) return RT_ERR_NOMEM;
     rt_object *o = &s->objects[s->object_count];
     memset(o, 0, sizeof *o);
     o->material = (uint32_t)(s->material_count - 1);
@@ -238,7 +235,10 @@ void rt_scene_derive_polygon(const rt_scene *s, rt_object *o)
         rt_vec3 c = rt_vec_cross(rt_vec_sub(v[i], v[0]), rt_vec_sub(v[i + 1], v[0]));
         double a = rt_vec_length(c);
         area += a;
-        if (a > best) { best = a; best_cross = c; }
+        if (a > best) {
+            best = a;
+            best_cross = c;
+        }
     }
     double floor_area = 1e-14 * scale * scale;
     p->degenerate = !(area > 1e-300) || !(area > floor_area) || !isfinite(area);
@@ -265,8 +265,7 @@ rt_status rt_scene_add_polygon(rt_scene *s, const rt_vec3 *v, size_t n)
     for (size_t i = 0; i < n; i++)
         if (!finite3(v[i])) return RT_ERR_INVALID;
     if (s->vertex_count + n > UINT32_MAX) return RT_ERR_LIMIT;
-    if (grow((void **)&s->vertices, &s->vertex_capacity, s->vertex_count + n, sizeof *s->vertices))
-        return RT_ERR_NOMEM;
+    if (grow((void **)&s->vertices, &s->vertex_capacity, s->vertex_count + n, sizeof *s->vertices)) return RT_ERR_NOMEM;
     rt_object *o;
     rt_status st = new_object(s, &o);
     if (st) return st;
@@ -286,8 +285,7 @@ void rt_scene_derive_triangle(rt_object *o)
     rt_triangle_data *t = &o->u.triangle;
     rt_vec3 g = rt_vec_cross(rt_vec_sub(t->v[1], t->v[0]), rt_vec_sub(t->v[2], t->v[0]));
     double len = rt_vec_length(g);
-    double scale = fmax(rt_vec_max_abs(rt_vec_sub(t->v[1], t->v[0])),
-                        rt_vec_max_abs(rt_vec_sub(t->v[2], t->v[0])));
+    double scale = fmax(rt_vec_max_abs(rt_vec_sub(t->v[1], t->v[0])), rt_vec_max_abs(rt_vec_sub(t->v[2], t->v[0])));
     t->degenerate = !(len > 1e-300) || !(len > 1e-14 * scale * scale) || !isfinite(len);
     t->normal = t->degenerate ? rt_vec(0, 0, 1) : rt_vec_scale(g, 1.0 / len);
     /* A zero vertex normal falls back to the face normal. */
@@ -392,10 +390,7 @@ const rt_camera *rt_scene_camera(const rt_scene *s) { return &s->camera; }
 rt_vec3 rt_scene_background(const rt_scene *s) { return s->background; }
 rt_vec3 rt_scene_ambient(const rt_scene *s) { return s->ambient; }
 size_t rt_scene_light_count(const rt_scene *s) { return s->light_count; }
-const rt_light *rt_scene_light(const rt_scene *s, size_t i)
-{
-    return i < s->light_count ? &s->lights[i].light : NULL;
-}
+const rt_light *rt_scene_light(const rt_scene *s, size_t i) { return i < s->light_count ? &s->lights[i].light : NULL; }
 size_t rt_scene_object_count(const rt_scene *s) { return s->object_count; }
 rt_object_kind rt_scene_object_kind(const rt_scene *s, size_t i) { return s->objects[i].kind; }
 const rt_material *rt_scene_object_material(const rt_scene *s, size_t i)
@@ -411,10 +406,10 @@ uint32_t rt_scene_object_bytes(const rt_scene *s, size_t i)
 {
     const rt_object *o = &s->objects[i];
     switch (o->kind) {
-    case RT_OBJ_SPHERE: return 4u * 4u + 4u;                          /* centre, radius, material */
+    case RT_OBJ_SPHERE: return 4u * 4u + 4u;                              /* centre, radius, material */
     case RT_OBJ_POLYGON: return 4u + 16u + 12u * o->u.polygon.count + 4u; /* count, plane, vertices, material */
-    case RT_OBJ_TRIANGLE: return 3u * 24u + 12u + 4u;                 /* vertices+normals, face normal, material */
-    case RT_OBJ_CONE: return 8u * 4u + 4u;                            /* two centres and radii, material */
+    case RT_OBJ_TRIANGLE: return 3u * 24u + 12u + 4u;                     /* vertices+normals, face normal, material */
+    case RT_OBJ_CONE: return 8u * 4u + 4u;                                /* two centres and radii, material */
     }
     return 0;
 }

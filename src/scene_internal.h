@@ -15,32 +15,32 @@ typedef struct rt_sphere_data {
 typedef struct rt_polygon_data {
     uint32_t first_vertex; /* into scene->vertices */
     uint32_t count;
-    rt_vec3 normal;        /* unit Newell normal (vertex order, counter-clockwise = front) */
-    double offset;         /* plane: dot(normal, p) == offset */
-    int drop_axis;         /* axis dropped for the 2D inside test (largest normal component) */
-    int degenerate;        /* zero area: never hit */
+    rt_vec3 normal; /* unit Newell normal (vertex order, counter-clockwise = front) */
+    double offset;  /* plane: dot(normal, p) == offset */
+    int drop_axis;  /* axis dropped for the 2D inside test (largest normal component) */
+    int degenerate; /* zero area: never hit */
 } rt_polygon_data;
 
 typedef struct rt_triangle_data {
-    rt_vec3 v[3];          /* vertices */
-    rt_vec3 n[3];          /* unit vertex normals */
-    rt_vec3 normal;        /* unit geometric normal from the vertex order */
-    double side;           /* +1 or -1: the side of `normal` the vertex normals, summed, lie on */
-    int degenerate;        /* zero area: never hit */
+    rt_vec3 v[3];   /* vertices */
+    rt_vec3 n[3];   /* unit vertex normals */
+    rt_vec3 normal; /* unit geometric normal from the vertex order */
+    double side;    /* +1 or -1: the side of `normal` the vertex normals, summed, lie on */
+    int degenerate; /* zero area: never hit */
 } rt_triangle_data;
 
 typedef struct rt_cone_data {
-    rt_vec3 base, apex;    /* axis end points */
+    rt_vec3 base, apex; /* axis end points */
     double base_radius, apex_radius;
-    rt_vec3 axis;          /* unit vector base -> apex */
-    double height;         /* |apex - base| */
-    double slope;          /* (apex_radius - base_radius) / height */
+    rt_vec3 axis;  /* unit vector base -> apex */
+    double height; /* |apex - base| */
+    double slope;  /* (apex_radius - base_radius) / height */
 } rt_cone_data;
 
 typedef struct rt_object {
     rt_object_kind kind;
-    uint32_t material;     /* into scene->materials */
-    rt_box bounds;         /* axis-aligned bounds (lo > hi: none) */
+    uint32_t material; /* into scene->materials */
+    rt_box bounds;     /* axis-aligned bounds (lo > hi: none) */
     union {
         rt_sphere_data sphere;
         rt_polygon_data polygon;
@@ -65,13 +65,13 @@ struct rt_scene {
 
     rt_material *materials;
     size_t material_count, material_capacity;
-    int has_material;      /* set_material was called */
-    int used_default;      /* an object got the default material */
+    int has_material; /* set_material was called */
+    int used_default; /* an object got the default material */
 
     rt_object *objects;
     size_t object_count, object_capacity;
 
-    rt_vec3 *vertices;     /* polygon vertex pool */
+    rt_vec3 *vertices; /* polygon vertex pool */
     size_t vertex_count, vertex_capacity;
 
     int has_transmission;

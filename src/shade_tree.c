@@ -111,18 +111,16 @@ double rt_shade_tree_packets(const rt_scene *s, int max_depth, double min_weight
         rays = -1.0;
         /* Weights that only fall, a cut by weight and few kinds of surface: node by node. */
         if (all_below_one && min_weight > 0.0 && pairs <= MAX_PAIRS)
-            rays = per_material_rays((const double (*)[2])pair, pairs, max_depth, min_weight);
+            rays = per_material_rays((const double(*)[2])pair, pairs, max_depth, min_weight);
         if (rays < 0.0)
-            rays = both ? tree_rays(ks, t, max_depth, min_weight)
-                        : tree_rays(fmax(ks, t), 0.0, max_depth, min_weight);
+            rays = both ? tree_rays(ks, t, max_depth, min_weight) : tree_rays(fmax(ks, t), 0.0, max_depth, min_weight);
     }
     /* Every ray that hits sends one shadow packet per light at most. */
     return fmin(rays * (1.0 + (double)s->light_count), SATURATED);
 }
 
-rt_status rt_shade_tree_check(const rt_scene *s, const rt_step_params *params,
-                              const rt_budget *budget, uint64_t packet_bytes, char *msg,
-                              size_t msg_len)
+rt_status rt_shade_tree_check(const rt_scene *s, const rt_step_params *params, const rt_budget *budget,
+                              uint64_t packet_bytes, char *msg, size_t msg_len)
 {
     if (!budget || budget->limit == 0) return RT_OK;
     double packets = rt_shade_tree_packets(s, params->max_depth, params->min_weight);

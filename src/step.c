@@ -40,10 +40,7 @@ void rt_step_result_release(rt_step_result *r)
     memset(r, 0, sizeof *r);
 }
 
-uint32_t rt_packet_cell(const rt_grid *grid, const rt_packet *p)
-{
-    return rt_grid_index(grid->dims, p->dda.cell);
-}
+uint32_t rt_packet_cell(const rt_grid *grid, const rt_packet *p) { return rt_grid_index(grid->dims, p->dda.cell); }
 
 /* Adds a frame-buffer contribution unless it is black (no write then). */
 static void contribute(rt_step_result *out, const rt_packet *p, rt_vec3 rgb)
@@ -64,8 +61,8 @@ static rt_vec3 escape_value(const rt_scene *scene, const rt_packet *p)
 
 /* Sends a new packet on its way: it starts in the cell its origin's ray
  * enters; a ray that never meets the object space contributes at once. */
-static void launch(const rt_scene *scene, const rt_grid *grid, const rt_step_params *params,
-                   rt_packet *np, rt_step_result *out)
+static void launch(const rt_scene *scene, const rt_grid *grid, const rt_step_params *params, rt_packet *np,
+                   rt_step_result *out)
 {
     if (params->brute_force) {
         memset(&np->dda, 0, sizeof np->dda);
@@ -84,21 +81,20 @@ static void launch(const rt_scene *scene, const rt_grid *grid, const rt_step_par
 
 static int worth_a_ray(const rt_step_params *params, int depth, rt_vec3 weight)
 {
-    return depth <= params->max_depth && rt_vec_max_component(weight) >= params->min_weight &&
-           !rt_vec_is_zero(weight);
+    return depth <= params->max_depth && rt_vec_max_component(weight) >= params->min_weight && !rt_vec_is_zero(weight);
 }
 
 /* What the shading of one hit needs to know of the surface there. */
 typedef struct surface {
     const rt_material *m;
-    rt_vec3 nf;      /* shading normal toward the ray */
-    rt_vec3 refl;    /* mirror direction */
-    rt_vec3 above;   /* secondary rays start here, off the surface on the ray's side */
-    rt_vec3 below;   /* and here on the far side (refraction) */
-    rt_vec3 pt;      /* the hit point */
-    rt_vec3 gf;      /* geometric normal toward the ray */
-    int entering;    /* the ray enters the object */
-    int smooth;      /* the shading normal is not the geometric one (`pp` triangles) */
+    rt_vec3 nf;    /* shading normal toward the ray */
+    rt_vec3 refl;  /* mirror direction */
+    rt_vec3 above; /* secondary rays start here, off the surface on the ray's side */
+    rt_vec3 below; /* and here on the far side (refraction) */
+    rt_vec3 pt;    /* the hit point */
+    rt_vec3 gf;    /* geometric normal toward the ray */
+    int entering;  /* the ray enters the object */
+    int smooth;    /* the shading normal is not the geometric one (`pp` triangles) */
 } surface;
 
 /* Where a new ray along `dir` starts. Off a smooth triangle it starts on the side of the plane
@@ -111,8 +107,8 @@ static rt_vec3 start_point(const surface *s, rt_vec3 dir, rt_vec3 usual)
 }
 
 /* One shadow packet toward every light the surface faces (into `np`, reused). */
-static void shadow_rays(const rt_scene *scene, const rt_grid *grid, const rt_step_params *params,
-                        const rt_packet *p, const surface *s, rt_packet *np, rt_step_result *out)
+static void shadow_rays(const rt_scene *scene, const rt_grid *grid, const rt_step_params *params, const rt_packet *p,
+                        const surface *s, rt_packet *np, rt_step_result *out)
 {
     const rt_material *m = s->m;
     for (size_t j = 0; j < scene->light_count; j++) {
@@ -145,8 +141,8 @@ static void shadow_rays(const rt_scene *scene, const rt_grid *grid, const rt_ste
 }
 
 /* The reflected and the refracted ray, where they are worth tracing. */
-static void secondary_rays(const rt_scene *scene, const rt_grid *grid, const rt_step_params *params,
-                           const rt_packet *p, const surface *s, rt_packet *np, rt_step_result *out)
+static void secondary_rays(const rt_scene *scene, const rt_grid *grid, const rt_step_params *params, const rt_packet *p,
+                           const surface *s, rt_packet *np, rt_step_result *out)
 {
     const rt_material *m = s->m;
     rt_vec3 d = p->dir, w = p->weight;
@@ -176,8 +172,7 @@ static void secondary_rays(const rt_scene *scene, const rt_grid *grid, const rt_
                 np->origin = start_point(s, s->refl, s->above);
                 np->dir = s->refl;
             } else {
-                np->dir = rt_vec_normalize(
-                    rt_vec_add(rt_vec_scale(d, eta), rt_vec_scale(s->nf, eta * cosi - sqrt(k))));
+                np->dir = rt_vec_normalize(rt_vec_add(rt_vec_scale(d, eta), rt_vec_scale(s->nf, eta * cosi - sqrt(k))));
                 np->origin = start_point(s, np->dir, s->below);
             }
             launch(scene, grid, params, np, out);
@@ -186,8 +181,8 @@ static void secondary_rays(const rt_scene *scene, const rt_grid *grid, const rt_
 }
 
 /* Shading at an accepted ray hit (docs/design.md section 3). */
-static void shade(const rt_scene *scene, const rt_grid *grid, const rt_step_params *params,
-                  const rt_packet *p, uint32_t obj, const rt_hit *hit, rt_step_result *out)
+static void shade(const rt_scene *scene, const rt_grid *grid, const rt_step_params *params, const rt_packet *p,
+                  uint32_t obj, const rt_hit *hit, rt_step_result *out)
 {
     surface s;
     s.m = &scene->materials[scene->objects[obj].material];
@@ -224,9 +219,8 @@ static void shade(const rt_scene *scene, const rt_grid *grid, const rt_step_para
 }
 
 /* Nearest hit among `objs` of a ray; ties go to the lowest index. */
-static int nearest_hit(const rt_scene *scene, const rt_step_params *params, const rt_packet *p,
-                       const uint32_t *objs, size_t n, uint32_t *best_obj, rt_hit *best,
-                       rt_step_result *out)
+static int nearest_hit(const rt_scene *scene, const rt_step_params *params, const rt_packet *p, const uint32_t *objs,
+                       size_t n, uint32_t *best_obj, rt_hit *best, rt_step_result *out)
 {
     int found = 0;
     for (size_t i = 0; i < n; i++) {
@@ -248,8 +242,8 @@ static int nearest_hit(const rt_scene *scene, const rt_step_params *params, cons
 }
 
 /* 1 if any of `objs` blocks a shadow packet before its light. */
-static int blocked(const rt_scene *scene, const rt_step_params *params, const rt_packet *p,
-                   const uint32_t *objs, size_t n, rt_step_result *out)
+static int blocked(const rt_scene *scene, const rt_step_params *params, const rt_packet *p, const uint32_t *objs,
+                   size_t n, rt_step_result *out)
 {
     for (size_t i = 0; i < n; i++) {
         uint32_t o = objs ? objs[i] : (uint32_t)i;
@@ -264,8 +258,8 @@ static int blocked(const rt_scene *scene, const rt_step_params *params, const rt
     return 0;
 }
 
-static void step_brute_force(const rt_scene *scene, const rt_grid *grid, const rt_step_params *params,
-                             rt_packet *p, rt_step_result *out)
+static void step_brute_force(const rt_scene *scene, const rt_grid *grid, const rt_step_params *params, rt_packet *p,
+                             rt_step_result *out)
 {
     size_t n = scene->object_count;
     if (p->kind == RT_PACKET_SHADOW) {
@@ -293,12 +287,11 @@ static void hand_over(rt_packet *p, uint32_t cell, rt_step_result *out)
     out->ops.handovers_sent++;
 }
 
-rt_status rt_step(const rt_scene *scene, const rt_grid *grid, const int32_t *cell_owner,
-                  int32_t my_id, const rt_step_params *params, rt_packet *p, rt_step_result *out)
+rt_status rt_step(const rt_scene *scene, const rt_grid *grid, const int32_t *cell_owner, int32_t my_id,
+                  const rt_step_params *params, rt_packet *p, rt_step_result *out)
 {
     size_t lights = scene->light_count;
-    if (out->contrib_capacity < RT_STEP_MAX_CONTRIB(lights) ||
-        out->created_capacity < RT_STEP_MAX_CREATED(lights))
+    if (out->contrib_capacity < RT_STEP_MAX_CONTRIB(lights) || out->created_capacity < RT_STEP_MAX_CREATED(lights))
         return RT_ERR_CAPACITY;
     if (p->kind >= RT_PACKET_KINDS) return RT_ERR_INVALID;
     memset(&out->ops, 0, sizeof out->ops);

@@ -12,8 +12,7 @@ const char *rt_escape_bytes(const char *s, size_t len, int ascii_only, char *buf
         unsigned char c = (unsigned char)s[i];
         char piece[5];
         if (c == '\\') snprintf(piece, sizeof piece, "\\\\");
-        else if (c < 0x20 || c == 0x7f || (ascii_only && c >= 0x80))
-            snprintf(piece, sizeof piece, "\\x%02x", c);
+        else if (c < 0x20 || c == 0x7f || (ascii_only && c >= 0x80)) snprintf(piece, sizeof piece, "\\x%02x", c);
         else piece[0] = (char)c, piece[1] = '\0';
         size_t n = strlen(piece);
         if (o + n + 4 > buf_len) { /* room for "..." and the NUL */

@@ -11,9 +11,9 @@
 #include "rt_timing.h"
 
 typedef struct timing_key {
-    const char *name;     /* as written in files */
-    size_t offset;        /* into rt_timing */
-    int positive;         /* must be > 0 (a divisor), else >= 0 */
+    const char *name; /* as written in files */
+    size_t offset;    /* into rt_timing */
+    int positive;     /* must be > 0 (a divisor), else >= 0 */
     double default_value;
 } timing_key;
 
@@ -45,10 +45,7 @@ static const timing_key keys[] = {
 
 static double *field(rt_timing *t, size_t i) { return (double *)((char *)t + keys[i].offset); }
 
-static const double *cfield(const rt_timing *t, size_t i)
-{
-    return (const double *)((const char *)t + keys[i].offset);
-}
+static const double *cfield(const rt_timing *t, size_t i) { return (const double *)((const char *)t + keys[i].offset); }
 
 void rt_timing_defaults(rt_timing *t)
 {
@@ -78,8 +75,7 @@ rt_status rt_timing_profile(const char *name, rt_timing *t, char *msg, size_t ms
         return RT_OK;
     }
     if (msg && msg_len)
-        snprintf(msg, msg_len, "unknown timing profile '%s' (expected calibrated or literal)",
-                 name ? name : "");
+        snprintf(msg, msg_len, "unknown timing profile '%s' (expected calibrated or literal)", name ? name : "");
     return RT_ERR_INVALID;
 }
 
@@ -94,8 +90,7 @@ static int find_key(const char *name)
 static void range_msg(size_t i, char *msg, size_t msg_len)
 {
     if (msg && msg_len)
-        snprintf(msg, msg_len, "'%s' needs a %s number", keys[i].name,
-                 keys[i].positive ? "positive" : "non-negative");
+        snprintf(msg, msg_len, "'%s' needs a %s number", keys[i].name, keys[i].positive ? "positive" : "non-negative");
 }
 
 rt_status rt_timing_set(rt_timing *t, const char *key, double value, char *msg, size_t msg_len)
@@ -177,8 +172,7 @@ static int parse_line(char *line, rt_timing *t, unsigned char seen[], char *msg,
     if (i < 0) {
         char quoted[4 * sizeof name];
         if (msg && msg_len)
-            snprintf(msg, msg_len, "unknown key '%s'",
-                     rt_escape_bytes(key, key_len, 1, quoted, sizeof quoted));
+            snprintf(msg, msg_len, "unknown key '%s'", rt_escape_bytes(key, key_len, 1, quoted, sizeof quoted));
         return 0;
     }
     if (seen[i]) {
@@ -188,8 +182,7 @@ static int parse_line(char *line, rt_timing *t, unsigned char seen[], char *msg,
     seen[i] = 1;
     if (!decimal_number(value, value_len)) {
         if (msg && msg_len)
-            snprintf(msg, msg_len, "'%s' needs a decimal number (such as 12.5 or 1e-3; no hexadecimal)",
-                     keys[i].name);
+            snprintf(msg, msg_len, "'%s' needs a decimal number (such as 12.5 or 1e-3; no hexadecimal)", keys[i].name);
         return 0;
     }
     char *end;
@@ -226,13 +219,11 @@ rt_status rt_timing_load(const char *path, rt_timing *timing, char *msg, size_t 
         number++;
         if ((size_t)(stop - line) > TIMING_MAX_LINE_BYTES) {
             if (msg && msg_len)
-                snprintf(msg, msg_len, "%s:%ld: line longer than %u bytes", shown, number,
-                         TIMING_MAX_LINE_BYTES);
+                snprintf(msg, msg_len, "%s:%ld: line longer than %u bytes", shown, number, TIMING_MAX_LINE_BYTES);
             st = RT_ERR_PARSE;
         } else if (memchr(line, '\0', (size_t)(stop - line))) {
             if (msg && msg_len)
-                snprintf(msg, msg_len, "%s:%ld: binary data (a NUL byte): not a timing file", shown,
-                         number);
+                snprintf(msg, msg_len, "%s:%ld: binary data (a NUL byte): not a timing file", shown, number);
             st = RT_ERR_PARSE;
         } else {
             *stop = '\0';
@@ -253,22 +244,16 @@ size_t rt_timing_key_count(void) { return KEY_COUNT; }
 const char *rt_timing_key_name(size_t index) { return index < KEY_COUNT ? keys[index].name : NULL; }
 
 /* NAN for an index past the table. */
-double rt_timing_get(const rt_timing *timing, size_t index)
-{
-    return index < KEY_COUNT ? *cfield(timing, index) : NAN;
-}
+double rt_timing_get(const rt_timing *timing, size_t index) { return index < KEY_COUNT ? *cfield(timing, index) : NAN; }
 
 double rt_timing_step_us(const rt_timing *t, const rt_op_counts *ops)
 {
     return (double)ops->tests_missed * t->test_miss_us + (double)ops->tests_hit * t->test_hit_us +
            (double)ops->dda_steps * t->dda_step_us + (double)ops->shadings * t->shading_us +
-           (double)ops->reflection_vectors * t->reflection_us +
-           (double)ops->refraction_vectors * t->refraction_us +
+           (double)ops->reflection_vectors * t->reflection_us + (double)ops->refraction_vectors * t->refraction_us +
            (double)ops->packets_analysed * t->packet_analysis_us +
-           (double)ops->packets_created * t->packet_creation_us +
-           (double)ops->fb_writes * t->fb_write_us +
-           (double)ops->handovers_sent * t->handover_send_us +
-           (double)ops->handovers_received * t->handover_receive_us;
+           (double)ops->packets_created * t->packet_creation_us + (double)ops->fb_writes * t->fb_write_us +
+           (double)ops->handovers_sent * t->handover_send_us + (double)ops->handovers_received * t->handover_receive_us;
 }
 
 double rt_timing_link_packet_us(const rt_timing *t)

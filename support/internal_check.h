@@ -21,7 +21,7 @@ class InternalError : public std::logic_error {
 
 // TORUSRT_CHECK(condition, detail): throws InternalError when the condition is false; the detail
 // (a std::string expression) is built only then.
-#define TORUSRT_CHECK(condition, detail)                                                   \
-    do {                                                                                   \
-        if (!(condition)) throw ::torusrt::InternalError(__FILE__, __LINE__, #condition, (detail)); \
+#define TORUSRT_CHECK(condition, detail)                                                                               \
+    do {                                                                                                               \
+        if (!(condition)) throw ::torusrt::InternalError(__FILE__, __LINE__, #condition, (detail));                    \
     } while (0)

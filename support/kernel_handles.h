@@ -10,10 +10,18 @@
 
 namespace torusrt {
 
-struct SceneDeleter { void operator()(rt_scene *s) const { rt_scene_free(s); } };
-struct GridDeleter { void operator()(rt_grid *g) const { rt_grid_free(g); } };
-struct CameraPathDeleter { void operator()(rt_camera_path *p) const { rt_camera_path_free(p); } };
-struct FramebufferDeleter { void operator()(rt_framebuffer *f) const { rt_framebuffer_free(f); } };
+struct SceneDeleter {
+    void operator()(rt_scene *s) const { rt_scene_free(s); }
+};
+struct GridDeleter {
+    void operator()(rt_grid *g) const { rt_grid_free(g); }
+};
+struct CameraPathDeleter {
+    void operator()(rt_camera_path *p) const { rt_camera_path_free(p); }
+};
+struct FramebufferDeleter {
+    void operator()(rt_framebuffer *f) const { rt_framebuffer_free(f); }
+};
 
 using ScenePtr = std::unique_ptr<rt_scene, SceneDeleter>;
 using GridPtr = std::unique_ptr<rt_grid, GridDeleter>;

@@ -9,8 +9,7 @@
 
 namespace torusrt {
 
-template <class Factory>
-class NameRegistry {
+template <class Factory> class NameRegistry {
   public:
     NameRegistry(std::initializer_list<std::pair<std::string, Factory>> entries) : m_entries(entries) {}
 

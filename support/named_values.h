@@ -9,15 +9,13 @@
 
 namespace torusrt {
 
-template <typename E>
-struct NamedValue {
+template <typename E> struct NamedValue {
     E value;
     const char *name;
 };
 
 // The name of `value` in `table` ("unknown" if it has none).
-template <typename E, size_t N>
-const char *name_in(const NamedValue<E> (&table)[N], E value)
+template <typename E, size_t N> const char *name_in(const NamedValue<E> (&table)[N], E value)
 {
     for (const auto &entry : table)
         if (entry.value == value) return entry.name;
@@ -25,8 +23,7 @@ const char *name_in(const NamedValue<E> (&table)[N], E value)
 }
 
 // "a, b or c": the names of `table` for a message.
-template <typename E, size_t N>
-std::string names_of(const NamedValue<E> (&table)[N])
+template <typename E, size_t N> std::string names_of(const NamedValue<E> (&table)[N])
 {
     std::string s;
     for (size_t i = 0; i < N; i++) s += std::string(i == 0 ? "" : i + 1 == N ? " or " : ", ") + table[i].name;

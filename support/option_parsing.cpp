@@ -115,7 +115,8 @@ long long parse_integer(const std::string &option, const std::string &text, long
     if (!why.empty()) bad(option, text, why);
     for (char c : text)
         if (!is_digit(c)) bad(option, text, "expected a whole decimal number (digits only)");
-    if (text.size() > 18) bad(option, text, "must be " + std::to_string(min_value) + " to " + std::to_string(max_value));
+    if (text.size() > 18)
+        bad(option, text, "must be " + std::to_string(min_value) + " to " + std::to_string(max_value));
     long long v = std::strtoll(text.c_str(), nullptr, 10);
     if (v < min_value || v > max_value)
         bad(option, text, "must be " + std::to_string(min_value) + " to " + std::to_string(max_value));
@@ -161,8 +162,9 @@ double parse_time(const std::string &option, const std::string &text, int bare_e
     int shift = (unit ? unit->exponent : bare_exponent) - result_exponent;
     const char *bare = bare_exponent == 0 ? "seconds" : "microseconds";
     if (num.empty() || (!real_syntax(num) && not_decimal(num).empty()))
-        bad(option, text, std::string("expected a time: a decimal number of ") + bare +
-                              ", or with a unit ns, us, ms or s (e.g. 500us)");
+        bad(option, text,
+            std::string("expected a time: a decimal number of ") + bare +
+                ", or with a unit ns, us, ms or s (e.g. 500us)");
     double v = read_real(option, num);
     if (v < 0) bad(option, text, "must not be negative");
     // Whole powers of ten multiply or divide exactly once: "10ms" is 10000 us, "500us" 0.0005 s.
@@ -172,8 +174,7 @@ double parse_time(const std::string &option, const std::string &text, int bare_e
     return t;
 }
 
-std::array<int, 3> parse_dims_1_to_3(const std::string &option, const std::string &text, int min_value,
-                                     int max_value)
+std::array<int, 3> parse_dims_1_to_3(const std::string &option, const std::string &text, int min_value, int max_value)
 {
     std::string lower = text;
     for (char &c : lower) c = c == 'X' ? 'x' : c;

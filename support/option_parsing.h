@@ -21,8 +21,7 @@ std::string shown_text(const std::string &bytes);
 std::string number_text(double value);
 
 // A decimal integer in [min_value, max_value].
-long long parse_integer(const std::string &option, const std::string &text, long long min_value,
-                        long long max_value);
+long long parse_integer(const std::string &option, const std::string &text, long long min_value, long long max_value);
 // A decimal real in [min_value, max_value] (finite).
 double parse_real(const std::string &option, const std::string &text, double min_value, double max_value);
 
@@ -35,15 +34,13 @@ double parse_time(const std::string &option, const std::string &text, int bare_e
 bool has_time_unit(const std::string &text);
 
 // "P", "PXxPY" or "PXxPYxPZ" (missing dimensions are 1), each in [min_value, max_value].
-std::array<int, 3> parse_dims_1_to_3(const std::string &option, const std::string &text, int min_value,
-                                     int max_value);
+std::array<int, 3> parse_dims_1_to_3(const std::string &option, const std::string &text, int min_value, int max_value);
 // "N" (N x N x N) or "NXxNYxNZ".
 std::array<int, 3> parse_triple(const std::string &option, const std::string &text, int min_value, int max_value);
 // "WxH", each side 1 to 16384.
 std::array<unsigned, 2> parse_size(const std::string &option, const std::string &text);
 // A comma-separated list of decimal integers, each in [min_value, max_value]: "0,1,5".
-std::vector<int> parse_integer_list(const std::string &option, const std::string &text, int min_value,
-                                    int max_value);
+std::vector<int> parse_integer_list(const std::string &option, const std::string &text, int min_value, int max_value);
 // A weight: "0.002" or "A/B", not negative.
 double parse_fraction(const std::string &option, const std::string &text);
 // A memory size: "512M", "4G", "1000000" (bytes); "0" = no limit.

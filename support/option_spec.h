@@ -23,15 +23,15 @@ enum class ValueKind {
 };
 
 struct OptionSpec {
-    std::string name;          // CLI11 form: "--queue", "-o,--output", "scene"
-    std::string value_name;    // "N", "TIME", "FILE"; "" for a flag
+    std::string name;        // CLI11 form: "--queue", "-o,--output", "scene"
+    std::string value_name;  // "N", "TIME", "FILE"; "" for a flag
     ValueKind kind = ValueKind::text;
     std::string default_text;  // shown in the help; "" = none
     double min = 0, max = 0;   // integer, real and time ranges
     std::string unit;          // the bare number's unit: "s", "us", "bytes", "packets"
     std::string help;          // one sentence; the default is added from default_text
     OptionGroup group = OptionGroup::run;
-    std::string key;           // machine-file and --dump-config key; "" = command line only
+    std::string key;  // machine-file and --dump-config key; "" = command line only
 
     // The long name ("--queue"; "scene" for the positional).
     std::string long_name() const;

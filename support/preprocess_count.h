@@ -8,8 +8,8 @@
 namespace torusrt {
 
 constexpr NamedValue<rt_preprocess_count> kPreprocessCountNames[] = {{RT_COUNT_SEQUENTIAL, "sequential"},
-                                                                    {RT_COUNT_PER_PLANE, "per-plane"},
-                                                                    {RT_COUNT_BOUNDING_SPHERE, "bounding-sphere"}};
+                                                                     {RT_COUNT_PER_PLANE, "per-plane"},
+                                                                     {RT_COUNT_BOUNDING_SPHERE, "bounding-sphere"}};
 
 inline const char *preprocess_count_name(rt_preprocess_count rule) { return name_in(kPreprocessCountNames, rule); }
 

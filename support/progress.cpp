@@ -7,7 +7,9 @@
 namespace torusrt {
 
 Progress::Progress(std::string label, bool quiet)
-    : m_label(std::move(label)), m_enabled(!quiet && isatty(STDERR_FILENO)) {}
+    : m_label(std::move(label)), m_enabled(!quiet && isatty(STDERR_FILENO))
+{
+}
 
 Progress::~Progress() { finish(); }
 

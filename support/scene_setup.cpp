@@ -25,29 +25,28 @@ std::string shown_path(const std::string &path)
     return rt_escape_bytes(path.data(), path.size(), 0, &buf[0], buf.size());
 }
 
-LoadedScene load_scene(const std::string &path, unsigned width, unsigned height,
-                       const std::array<int, 3> &cells, bool quiet, rt_budget *budget, rt_preprocess_count count)
+LoadedScene load_scene(const std::string &path, unsigned width, unsigned height, const std::array<int, 3> &cells,
+                       bool quiet, rt_budget *budget, rt_preprocess_count count)
 {
     char msg[RT_MSG_LEN] = "";
     rt_scene *raw = nullptr;
     bool q = quiet;
-    if (rt_nff_load(path.c_str(), &raw, msg, sizeof msg, print_warning, &q) != RT_OK)
-        throw UserError(msg);
+    if (rt_nff_load(path.c_str(), &raw, msg, sizeof msg, print_warning, &q) != RT_OK) throw UserError(msg);
     LoadedScene out;
     out.scene.reset(raw);
     if (width || height) {
         const rt_camera *cam = rt_scene_camera(raw);
         unsigned w = width ? width : cam->width, h = height ? height : cam->height;
         if (rt_scene_set_resolution(raw, w, h) != RT_OK)
-            throw UserError("--size " + std::to_string(w) + "x" + std::to_string(h) +
-                                ": each side must be 1 to " + std::to_string(RT_SCENE_MAX_RESOLUTION),
+            throw UserError("--size " + std::to_string(w) + "x" + std::to_string(h) + ": each side must be 1 to " +
+                                std::to_string(RT_SCENE_MAX_RESOLUTION),
                             2);
     }
     const rt_camera *cam = rt_scene_camera(raw);
-    std::string fb_what = "the frame buffer of " + std::to_string(cam->width) + "x" +
-                          std::to_string(cam->height) + " pixels";
-    if (rt_budget_reserve(budget, rt_framebuffer_bytes(cam->width, cam->height), fb_what.c_str(), msg,
-                          sizeof msg) != RT_OK)
+    std::string fb_what =
+        "the frame buffer of " + std::to_string(cam->width) + "x" + std::to_string(cam->height) + " pixels";
+    if (rt_budget_reserve(budget, rt_framebuffer_bytes(cam->width, cam->height), fb_what.c_str(), msg, sizeof msg) !=
+        RT_OK)
         throw UserError(shown_path(path) + ": " + msg);
     out.grid.reset(rt_grid_new_counted(raw, cells[0], cells[1], cells[2], count, budget, msg, sizeof msg));
     if (!out.grid && std::string(msg).rfind("memory budget", 0) == 0) throw UserError(shown_path(path) + ": " + msg);

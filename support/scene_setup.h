@@ -23,9 +23,8 @@ struct LoadedScene {
 // A path as messages show it: control bytes escaped as \xNN.
 std::string shown_path(const std::string &path);
 
-LoadedScene load_scene(const std::string &path, unsigned width, unsigned height,
-                       const std::array<int, 3> &cells, bool quiet, rt_budget *budget = nullptr,
-                       rt_preprocess_count count = RT_COUNT_SEQUENTIAL);
+LoadedScene load_scene(const std::string &path, unsigned width, unsigned height, const std::array<int, 3> &cells,
+                       bool quiet, rt_budget *budget = nullptr, rt_preprocess_count count = RT_COUNT_SEQUENTIAL);
 
 // Refuses (UserError, exit 1) a run whose one pixel's worst-case shade tree, at
 // `packet_bytes` a packet, cannot fit in what is left of `budget` (rt_shade_tree.h).

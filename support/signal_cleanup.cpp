@@ -18,8 +18,8 @@ struct Slot {
     bool folder = false;
 };
 
-Slot *g_slots = nullptr;             // read by the handler
-std::atomic<size_t> g_used{0};       // slots in use or freed, from the start
+Slot *g_slots = nullptr;        // read by the handler
+std::atomic<size_t> g_used{0};  // slots in use or freed, from the start
 size_t g_capacity = 0;
 
 const int kSignals[] = {SIGINT, SIGTERM, SIGHUP};

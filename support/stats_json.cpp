@@ -7,12 +7,16 @@ namespace torusrt {
 
 nlohmann::json ops_json(const rt_op_counts &o)
 {
-    return {{"tests_missed", o.tests_missed},       {"tests_hit", o.tests_hit},
-            {"dda_steps", o.dda_steps},             {"shadings", o.shadings},
+    return {{"tests_missed", o.tests_missed},
+            {"tests_hit", o.tests_hit},
+            {"dda_steps", o.dda_steps},
+            {"shadings", o.shadings},
             {"reflection_vectors", o.reflection_vectors},
             {"refraction_vectors", o.refraction_vectors},
-            {"packets_analysed", o.packets_analysed}, {"packets_created", o.packets_created},
-            {"fb_writes", o.fb_writes},             {"handovers_sent", o.handovers_sent},
+            {"packets_analysed", o.packets_analysed},
+            {"packets_created", o.packets_created},
+            {"fb_writes", o.fb_writes},
+            {"handovers_sent", o.handovers_sent},
             {"handovers_received", o.handovers_received}};
 }
 

@@ -25,8 +25,7 @@ std::string timing_limit_problem(const rt_timing &t, std::string *key)
     }
     if (link > 0 && link < 1e-6) {  // SystemC counts whole picoseconds: it would round to 0
         if (key) *key = "link transfer";
-        return "a packet's link transfer takes " + number_text(link) +
-               " us, below SystemC's time resolution of 1 ps";
+        return "a packet's link transfer takes " + number_text(link) + " us, below SystemC's time resolution of 1 ps";
     }
     return "";
 }

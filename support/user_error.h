@@ -10,7 +10,9 @@ class UserError : public std::runtime_error {
   public:
     // exit_code 2 = bad command line, 1 = bad input file or failed run.
     explicit UserError(const std::string &message, int exit_code = 1)
-        : std::runtime_error(message), m_exit_code(exit_code) {}
+        : std::runtime_error(message), m_exit_code(exit_code)
+    {
+    }
     int exit_code() const { return m_exit_code; }
 
   private:

@@ -38,10 +38,7 @@ struct RenderOptions {
     AnimationOptions anim;
 };
 
-void on_progress(void *ctx, uint64_t done, uint64_t total)
-{
-    static_cast<Progress *>(ctx)->update(done, total);
-}
+void on_progress(void *ctx, uint64_t done, uint64_t total) { static_cast<Progress *>(ctx)->update(done, total); }
 
 // One frame's image and counts, rendered with the scene's current camera.
 struct FrameResult {
@@ -53,11 +50,11 @@ struct FrameResult {
 // The settings every run shares, prepared once (the grid is built once for every frame, or,
 // with --motion, over every frame's object space and updated frame by frame).
 struct RenderSetup {
-    CommonSettings settings; // cells, step limits, timing
-    rt_budget budget; // outlives every frame: ro.budget points at it
+    CommonSettings settings;  // cells, step limits, timing
+    rt_budget budget;         // outlives every frame: ro.budget points at it
     LoadedScene loaded;
-    std::unique_ptr<SceneMotion> motion; // --motion: owns the scene file's objects and the frame's copy
-    rt_scene *scene = nullptr;           // what is rendered: the scene, or the motion's frame copy
+    std::unique_ptr<SceneMotion> motion;  // --motion: owns the scene file's objects and the frame's copy
+    rt_scene *scene = nullptr;            // what is rendered: the scene, or the motion's frame copy
     rt_render_options ro;
 };
 
@@ -67,8 +64,8 @@ FrameResult render_frame(RenderSetup &setup, const std::string &label, const Ren
     const rt_camera *cam = rt_scene_camera(setup.scene);
     FramebufferPtr fb(rt_framebuffer_new(cam->width, cam->height));
     if (!fb)
-        throw UserError("out of memory for a " + std::to_string(cam->width) + "x" +
-                        std::to_string(cam->height) + " image");
+        throw UserError("out of memory for a " + std::to_string(cam->width) + "x" + std::to_string(cam->height) +
+                        " image");
     Progress progress(label, opt.common.quiet);
     rt_render_options ro = setup.ro;
     ro.progress = on_progress;
@@ -76,8 +73,7 @@ FrameResult render_frame(RenderSetup &setup, const std::string &label, const Ren
     if (cost) cost->attach(&ro);
     FrameResult fr;
     char msg[RT_MSG_LEN] = "";
-    if (rt_render(setup.scene, setup.loaded.grid.get(), &ro, fb.get(), &fr.st, msg,
-                  sizeof msg) != RT_OK)
+    if (rt_render(setup.scene, setup.loaded.grid.get(), &ro, fb.get(), &fr.st, msg, sizeof msg) != RT_OK)
         throw UserError(shown_path(opt.common.scene) + ": " + msg);
     progress.finish();
     fr.rgb.resize(static_cast<size_t>(cam->width) * cam->height * 3);
@@ -92,8 +88,8 @@ uint64_t rays_of(const rt_render_stats &st)
     return st.packets.created[RT_PACKET_RAY] + st.packets.created[RT_PACKET_SHADOW];
 }
 
-nlohmann::json stats_json(const RenderOptions &opt, const RenderSetup &setup, const rt_render_stats &st,
-                          double t1_s, double wall)
+nlohmann::json stats_json(const RenderOptions &opt, const RenderSetup &setup, const rt_render_stats &st, double t1_s,
+                          double wall)
 {
     const rt_scene *scene = setup.scene;
     const rt_camera *cam = rt_scene_camera(scene);
@@ -165,10 +161,9 @@ int run_single(const RenderOptions &opt, RenderSetup &setup, RenderOutputs &outs
     outputs.commit();
     if (!opt.common.quiet)
         std::printf("%s: %ux%u, %zu objects, %llu packets, T(1) %.3f s (%s timing), wall %.3f s\n",
-                    opt.common.scene.c_str(), cam->width, cam->height,
-                    rt_scene_object_count(setup.scene),
-                    static_cast<unsigned long long>(rays_of(fr.st)),
-                    fr.t1_s, setup.settings.timing_label.c_str(), wall);
+                    opt.common.scene.c_str(), cam->width, cam->height, rt_scene_object_count(setup.scene),
+                    static_cast<unsigned long long>(rays_of(fr.st)), fr.t1_s, setup.settings.timing_label.c_str(),
+                    wall);
     if (!opt.common.quiet) {
         std::printf("  wrote        %s", opt.common.output.c_str());
         for (const std::string *f : {&opt.common.stats, &opt.cost_image})
@@ -220,7 +215,7 @@ int run_frames(const RenderOptions &opt, RenderSetup &setup, RenderOutputs &outs
                std::chrono::steady_clock::time_point t0)
 {
     rt_scene *scene = setup.scene;
-    CameraPathPtr path = make_camera_path(opt.anim, scene, std::move(file)); // null: the camera stays
+    CameraPathPtr path = make_camera_path(opt.anim, scene, std::move(file));  // null: the camera stays
     size_t n = animation_frame_count(opt.anim, path.get());
     OutputSet &outputs = outs.set;
     rt_render_stats total{};
@@ -239,8 +234,11 @@ int run_frames(const RenderOptions &opt, RenderSetup &setup, RenderOutputs &outs
         write_png_file(outputs.staged(outs.png + k), file, cam->width, cam->height, fr.rgb);
         add_frame_stats(total, fr.st);
         t1_total += fr.t1_s;
-        frames.push_back({{"index", k}, {"file", file}, {"camera", camera_pose_json(rt_camera_pose_of(cam))},
-                          {"ops", ops_json(fr.st.ops)}, {"packets", packets_json(fr.st.packets)},
+        frames.push_back({{"index", k},
+                          {"file", file},
+                          {"camera", camera_pose_json(rt_camera_pose_of(cam))},
+                          {"ops", ops_json(fr.st.ops)},
+                          {"packets", packets_json(fr.st.packets)},
                           {"t1_s", fr.t1_s}});
         if (setup.motion) frames.back()["motion"] = motion;
     }
@@ -259,8 +257,8 @@ int run_frames(const RenderOptions &opt, RenderSetup &setup, RenderOutputs &outs
         std::printf("%s: %zu frames of %ux%u, %zu objects, %llu packets, "
                     "T(1) %.3f s in all (%s timing), wall %.3f s\n",
                     opt.common.scene.c_str(), n, rt_scene_camera(scene)->width, rt_scene_camera(scene)->height,
-                    rt_scene_object_count(scene), static_cast<unsigned long long>(rays_of(total)),
-                    t1_total, setup.settings.timing_label.c_str(), wall);
+                    rt_scene_object_count(scene), static_cast<unsigned long long>(rays_of(total)), t1_total,
+                    setup.settings.timing_label.c_str(), wall);
     if (!opt.common.quiet && setup.motion)
         std::printf("  motion       %llu objects moved, %llu preprocessing units updating the lists "
                     "(%llu rebuilding them every frame)\n",
@@ -311,8 +309,8 @@ int run(RenderOptions &opt)
                               setup.settings.preprocess_count);
     setup.scene = setup.loaded.scene.get();
     if (motion) {
-        setup.motion = std::make_unique<SceneMotion>(std::move(motion), std::move(setup.loaded.scene),
-                                                     opt.anim.motion, opt.common.quiet);
+        setup.motion = std::make_unique<SceneMotion>(std::move(motion), std::move(setup.loaded.scene), opt.anim.motion,
+                                                     opt.common.quiet);
         setup.scene = setup.motion->frame_scene();
     }
     check_shade_tree(opt.common.scene, setup.scene, setup.settings.step, setup.budget, sizeof(rt_packet));
@@ -334,21 +332,23 @@ std::vector<OptionSpec> render_option_specs()
 
 void declare_options(CLI::App &app)
 {
-    const std::string output_help = "PNG image to write; with --frames/--camera-path/--motion a pattern like out_%04d.png";
+    const std::string output_help =
+        "PNG image to write; with --frames/--camera-path/--motion a pattern like out_%04d.png";
     add_common_options(app, output_help, {"scene", "--size"});
     add_spec_option(app, render_option_specs()[0]);
-    add_common_options(app, output_help, {"--cells", "--max-depth", "--min-weight", "--timing-profile", "--timing",
-                                             "--preprocess-count"});
+    add_common_options(
+        app, output_help,
+        {"--cells", "--max-depth", "--min-weight", "--timing-profile", "--timing", "--preprocess-count"});
     add_common_options(app, output_help, {"--output", "--stats"});
     add_spec_option(app, render_option_specs()[1]);
     for (const OptionSpec &spec : animation_option_specs()) add_spec_option(app, spec);
     add_spec_option(app, motion_option_spec());
     add_common_options(app, output_help, {"--memory-budget", "--quiet"});
-    set_help_layout(app, "Usage: torusrt-render SCENE -o FILE [OPTIONS]",
-                    "A bare number is decimal: 010 and 0x10 are refused.",
-                    "  torusrt-render scenes/paper-image1.nff -o ref.png\n"
-                    "  torusrt-render scenes/paper-image2.nff -o ref.png --size 64x64 --stats ref.json\n"
-                    "  torusrt-render scenes/bouncing-balls.nff -o 'b_%02d.png' --motion scenes/bouncing-balls.motion\n");
+    set_help_layout(
+        app, "Usage: torusrt-render SCENE -o FILE [OPTIONS]", "A bare number is decimal: 010 and 0x10 are refused.",
+        "  torusrt-render scenes/paper-image1.nff -o ref.png\n"
+        "  torusrt-render scenes/paper-image2.nff -o ref.png --size 64x64 --stats ref.json\n"
+        "  torusrt-render scenes/bouncing-balls.nff -o 'b_%02d.png' --motion scenes/bouncing-balls.motion\n");
 }
 
 }  // namespace

@@ -88,18 +88,21 @@ void declare_options(CLI::App &app, std::shared_ptr<MachineFileReader> reader)
 {
     const std::string output_help = "PNG image to write; with --frames/--camera-path a pattern like out_%04d.png";
     add_common_options(app, output_help, {"scene", "--size"});
-    app.set_config("--config", "", wrapped("read the machine from this TOML file (as --dump-config writes it); "
-                                           "options on the command line take precedence", kHelpColumns - 31))
+    app.set_config("--config", "",
+                   wrapped("read the machine from this TOML file (as --dump-config writes it); "
+                           "options on the command line take precedence",
+                           kHelpColumns - 31))
         ->type_name("FILE")
         ->group(group_title(OptionGroup::machine))
-        ->check(input_file_check(kMachineFileMaxBytes));  // before CLI11's own blocking read
+        ->check(input_file_check(kMachineFileMaxBytes));      // before CLI11's own blocking read
     app.allow_config_extras(CLI::config_extras_mode::error);  // an unknown key is an error
     app.config_formatter(reader);
     add_spec_option(app, {"--dump-config", "", ValueKind::flag, "", 0, 0, "",
                           "print the machine as TOML and exit without running", OptionGroup::machine, ""});
     add_spec_option(app, {"--with-timing", "", ValueKind::flag, "", 0, 0, "",
                           "with --dump-config: write every timing value (timing-values), so that the file needs "
-                          "no timing file", OptionGroup::machine, ""});
+                          "no timing file",
+                          OptionGroup::machine, ""});
     for (const MachineOption &o : machine_option_table()) add_spec_option(app, o.spec);
     add_common_options(app, output_help, {"--output", "--stats"});
     for (const RunOption &o : run_option_table())
@@ -199,8 +202,11 @@ void fill_request(CommandLine &cl, SimRequest &r)
     }
     r.image = cl.common.output;
     r.stats = cl.common.stats;
-    r.inputs = {{"scene", cl.common.scene}, {"--config", cl.config_file}, {"--timing", r.config.timing_file},
-                {"--map-file", r.config.map_file}, {"--camera-path", cl.anim.camera_path}};
+    r.inputs = {{"scene", cl.common.scene},
+                {"--config", cl.config_file},
+                {"--timing", r.config.timing_file},
+                {"--map-file", r.config.map_file},
+                {"--camera-path", cl.anim.camera_path}};
 }
 
 int run(CommandLine &cl, double wall_start)
@@ -233,25 +239,25 @@ int sc_main(int argc, char **argv)
                  "multiprocessor (Kubota et al.): intersection processors on a torus exchange ray packets."};
     auto reader = std::make_shared<MachineFileReader>(machine_keys(false), machine_keys(true));
     declare_options(app, reader);
-    return run_cli("torusrt-sim", app, argc, argv,
-                   [&] {
-                       cl.given = given_options(app);
-                       resolve_mapping_sources(cl, argc, argv);
-                       if (app.get_config_ptr()->count() > 0) cl.config_file = app.get_config_ptr()->as<std::string>();
-                       resolve_config_relative_paths(cl, argc, argv);
-                       cl.common = common_options_given(cl.given);
-                       cl.anim = animation_options_given(cl.given);
-                       cl.dump_config = cl.has("--dump-config");
-                       cl.with_timing = cl.has("--with-timing");
-                       try {
-                           if (cl.with_timing && !cl.dump_config)
-                               throw UserError("--with-timing: only with --dump-config", 2);
-                           return cl.dump_config ? dump_config(cl) : run(cl, wall_start);
-                       } catch (const UserError &e) {
-                           throw naming_config_file(cl, *reader, e, argc, argv);
-                       }
-                   },
-                   "  3 deadlock: the network stalled with packets outstanding\n");
+    return run_cli(
+        "torusrt-sim", app, argc, argv,
+        [&] {
+            cl.given = given_options(app);
+            resolve_mapping_sources(cl, argc, argv);
+            if (app.get_config_ptr()->count() > 0) cl.config_file = app.get_config_ptr()->as<std::string>();
+            resolve_config_relative_paths(cl, argc, argv);
+            cl.common = common_options_given(cl.given);
+            cl.anim = animation_options_given(cl.given);
+            cl.dump_config = cl.has("--dump-config");
+            cl.with_timing = cl.has("--with-timing");
+            try {
+                if (cl.with_timing && !cl.dump_config) throw UserError("--with-timing: only with --dump-config", 2);
+                return cl.dump_config ? dump_config(cl) : run(cl, wall_start);
+            } catch (const UserError &e) {
+                throw naming_config_file(cl, *reader, e, argc, argv);
+            }
+        },
+        "  3 deadlock: the network stalled with packets outstanding\n");
 }
 
 // Our own entry point: the SystemC banner is printed before sc_main runs, so it is switched off

@@ -19,7 +19,7 @@ namespace {
 
 struct Image {
     uint32_t width = 0, height = 0;
-    std::vector<unsigned char> rgb; // width * height * 3
+    std::vector<unsigned char> rgb;  // width * height * 3
 };
 
 bool read_png(const char *path, Image &img, std::string &err)
@@ -51,8 +51,7 @@ int main(int argc, char **argv)
         return 2;
     }
     if (a.width != b.width || a.height != b.height) {
-        std::fprintf(stderr, "png_compare: sizes differ: %ux%u against %ux%u\n", a.width, a.height, b.width,
-                     b.height);
+        std::fprintf(stderr, "png_compare: sizes differ: %ux%u against %ux%u\n", a.width, a.height, b.width, b.height);
         return 2;
     }
     double sq = 0;

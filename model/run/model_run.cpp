@@ -30,7 +30,8 @@ void warn_idle_nodes(const SimConfig &config, const std::vector<int32_t> &owner)
         if (o >= 0 && o < config.node_count()) owns[static_cast<size_t>(o)] = true;
     long idle = std::count(owns.begin(), owns.end(), false);
     if (idle > 0)
-        std::fprintf(stderr, "torusrt-sim: warning: %ld of %d nodes own no cells and stay idle (%zu cells for %d nodes)\n",
+        std::fprintf(stderr,
+                     "torusrt-sim: warning: %ld of %d nodes own no cells and stay idle (%zu cells for %d nodes)\n",
                      idle, config.node_count(), owner.size(), config.node_count());
 }
 
@@ -40,13 +41,15 @@ bool run_finished(const SimConfig &config, TorusSystem &top, const PacketLedger 
     if (ledger.over_limit()) {
         rt_budget_packets_exceeded(&memory, ledger.outstanding_over_limit(), PacketPool::bytes_per_packet(), msg,
                                    sizeof msg);
-        throw UserError(msg); // the tracer's destructor removes the partial trace
+        throw UserError(msg);  // the tracer's destructor removes the partial trace
     }
     bool finished = ledger.outstanding() == 0 && top.host().done_injecting();
     if ((!finished && sc_core::sc_pending_activity()) || ledger.image_time().to_seconds() > config.time_limit_s) {
         char text[200];
-        std::snprintf(text, sizeof text, "the simulated time passed the limit of %g s (--time-limit; at most %g s, "
-                      "as SystemC's time holds about 1.8e7 s at 1 ps)", config.time_limit_s, kMaxSimTimeS);
+        std::snprintf(text, sizeof text,
+                      "the simulated time passed the limit of %g s (--time-limit; at most %g s, "
+                      "as SystemC's time holds about 1.8e7 s at 1 ps)",
+                      config.time_limit_s, kMaxSimTimeS);
         throw UserError(text);
     }
     return finished;
@@ -63,8 +66,8 @@ void check_budget_before_start(const PacketLedger &ledger, rt_budget &memory)
 void check_conservation(const PacketLedger &ledger)
 {
     const rt_packet_totals &t = ledger.totals();
-    TORUSRT_CHECK(ledger.conserved(), "packets created " + std::to_string(t.created[0] + t.created[1]) +
-                                          ", consumed " + std::to_string(t.consumed[0] + t.consumed[1]));
+    TORUSRT_CHECK(ledger.conserved(), "packets created " + std::to_string(t.created[0] + t.created[1]) + ", consumed " +
+                                          std::to_string(t.consumed[0] + t.consumed[1]));
 }
 
 std::vector<int32_t> owner_table_of(const SimConfig &config, const rt_grid *grid)
@@ -75,7 +78,8 @@ std::vector<int32_t> owner_table_of(const SimConfig &config, const rt_grid *grid
     char msg[RT_MSG_LEN] = "";
     if (owner.empty()) {
         owner.resize(rt_grid_cell_count(grid));
-        if (rt_mapping_fill(dims, config.ips.data(), config.mapping, config.block, owner.data(), msg, sizeof msg) != RT_OK)
+        if (rt_mapping_fill(dims, config.ips.data(), config.mapping, config.block, owner.data(), msg, sizeof msg) !=
+            RT_OK)
             throw UserError(std::string("--map: ") + msg, 2);
     }
     return owner;
@@ -120,7 +124,7 @@ double one_processor_time(const SimConfig &config, const rt_scene *scene, const 
     SimConfig one = config;
     one.ips = {1, 1, 1};
     one.cluster = 1;
-    one.mapping = RT_MAP_BLOCK; // one node owns every cell, whatever the mapping
+    one.mapping = RT_MAP_BLOCK;  // one node owns every cell, whatever the mapping
     one.owner_table.clear();
     one.replica_first.clear();
     one.replica_extra.clear();
@@ -130,7 +134,7 @@ double one_processor_time(const SimConfig &config, const rt_scene *scene, const 
     one.quiet = true;
     one.style = TimingStyle::at;
     one.quantum_us = 0;
-    one.queue_capacity = 0; // T(1) is the unconstrained sequential time
+    one.queue_capacity = 0;  // T(1) is the unconstrained sequential time
     int fds[2];
     if (pipe(fds) != 0) throw UserError("cannot create a pipe for the T(1) run");
     std::fflush(nullptr);

@@ -15,11 +15,11 @@
 namespace torusrt {
 
 struct ModelOutcome {
-    bool deadlock = false;            // the network stalled with packets outstanding
-    std::string deadlock_details;     // which queues were full (deadlock_text)
-    double sim_time_s = 0;            // simulated image time (deadlock: the time of the stall)
-    std::vector<uint8_t> rgb8;        // final image (empty after a deadlock)
-    RunReport report;                 // the full statistics, also after a deadlock
+    bool deadlock = false;         // the network stalled with packets outstanding
+    std::string deadlock_details;  // which queues were full (deadlock_text)
+    double sim_time_s = 0;         // simulated image time (deadlock: the time of the stall)
+    std::vector<uint8_t> rgb8;     // final image (empty after a deadlock)
+    RunReport report;              // the full statistics, also after a deadlock
 };
 
 // Runs `config` on a loaded scene as one frame of run_frames (run_frames.h): the image under the

@@ -32,10 +32,7 @@ FramebufferPtr new_frame_buffer(const rt_scene *scene)
     return fb;
 }
 
-uint64_t created(const PacketLedger &ledger)
-{
-    return ledger.totals().created[0] + ledger.totals().created[1];
-}
+uint64_t created(const PacketLedger &ledger) { return ledger.totals().created[0] + ledger.totals().created[1]; }
 
 // Under LT a frame starts on a quantum boundary, so its quantum syncs fall as in a run alone.
 sc_core::sc_time frame_start(const SimConfig &config, double earliest_s)
@@ -70,8 +67,8 @@ double frames_t1(const std::vector<FrameRecord> &frames)
 
 // The report's run facts. A single image's T(1) is the plan's, or (t1 < 0) this run's image
 // time `image_time_s`; an animation's is the sum of its frames' pilots.
-RunFacts run_facts(const Machine &m, const FramePlan &plan, const std::vector<FrameRecord> &frames,
-                   double image_time_s, double wall_start_s)
+RunFacts run_facts(const Machine &m, const FramePlan &plan, const std::vector<FrameRecord> &frames, double image_time_s,
+                   double wall_start_s)
 {
     RunFacts facts;
     if (plan.animated()) {
@@ -115,7 +112,7 @@ bool run_frame(const SimConfig &config, Machine &m, const std::string &label)
 void next_mapping(Remapper &remapper, const RemapContext &ctx, Machine &m, const FrameLoads &loads, FrameRecord &rec)
 {
     RemapDecision d = remapper.decide(ctx, m.owner, loads);
-    std::copy(d.owner.begin(), d.owner.end(), m.owner.begin()); // same storage: the modules' pointer stays
+    std::copy(d.owner.begin(), d.owner.end(), m.owner.begin());  // same storage: the modules' pointer stays
     rec.decision = d.decision;
     rec.reason = d.reason;
     rec.predicted_gain_s = d.predicted_gain_s;
@@ -126,8 +123,8 @@ void next_mapping(Remapper &remapper, const RemapContext &ctx, Machine &m, const
 
 // Adaptive's host preview of frame k, made while frame k-1 ran for `previous_time_s`: only its
 // modelled host time past that delays frame k.
-std::unique_ptr<FramePilot> host_preview(const SimConfig &config, rt_scene *scene, const rt_grid *grid,
-                                         double fraction, double previous_time_s, FrameRecord &rec)
+std::unique_ptr<FramePilot> host_preview(const SimConfig &config, rt_scene *scene, const rt_grid *grid, double fraction,
+                                         double previous_time_s, FrameRecord &rec)
 {
     auto preview = std::make_unique<FramePilot>(config, scene, grid, fraction);
     rec.preview_pixels = preview->pixels();
@@ -169,12 +166,12 @@ struct FrameLoop {
     RemapContext ctx;
     Remapper remapper;
     std::unique_ptr<FramePilot> pilot, previous, before, preview;  // frames k, k-1, k-2; adaptive's preview
-    double end_s = 0;                                               // when the last frame ended
-    sc_core::sc_time start;                                         // when the current frame started
+    double end_s = 0;                                              // when the last frame ended
+    sc_core::sc_time start;                                        // when the current frame started
 
     FrameLoop(const SimConfig &c, rt_scene *s, const rt_grid *g, const FramePlan &p)
-        : config(c), scene(s), grid(g), plan(p), routing(c.ips, c.topology == Topology::torus),
-          ctx{c, s, g, routing}, remapper(p.policy, p.adaptive.window, p.adaptive.margin)
+        : config(c), scene(s), grid(g), plan(p), routing(c.ips, c.topology == Topology::torus), ctx{c, s, g, routing},
+          remapper(p.policy, p.adaptive.window, p.adaptive.margin)
     {
     }
 
@@ -209,9 +206,10 @@ FrameRecord FrameLoop::prepare(Machine &m, size_t k, const std::vector<FrameReco
         double previous_time_s = done.back().image_time_s;
         if (plan.policy == RemapPolicy::adaptive && plan.adaptive.pilot_fraction > 0)
             preview = host_preview(config, scene, grid, plan.adaptive.pilot_fraction, previous_time_s, rec);
-        next_mapping(remapper, ctx, m, FrameLoads{*previous, previous_time_s, *pilot, before.get(), preview.get(),
-                                                  rt_camera_path_pose(plan.path, k - 1),
-                                                  rt_camera_path_pose(plan.path, k)}, rec);
+        next_mapping(remapper, ctx, m,
+                     FrameLoads{*previous, previous_time_s, *pilot, before.get(), preview.get(),
+                                rt_camera_path_pose(plan.path, k - 1), rt_camera_path_pose(plan.path, k)},
+                     rec);
         m.fb = new_frame_buffer(scene);
         start = frame_start(config, end_s + rec.charged_migration_s() + rec.host_pilot_charged_s);
         m.top->start_frame(m.fb.get(), m.owner.data(), start);

@@ -21,7 +21,7 @@ struct FramePlan {
     const rt_camera_path *path = nullptr;  // the frames' poses; null: one frame, the scene's camera
     std::vector<std::string> files;        // each frame's PNG, for the report (an animation)
     RemapPolicy policy = RemapPolicy::static_map;
-    AdaptiveSettings adaptive;             // --remap-pilot, --remap-window, --remap-margin
+    AdaptiveSettings adaptive;  // --remap-pilot, --remap-window, --remap-margin
     // A single image's T(1): < 0, this run is T(1) (one processor); else the value and where
     // it came from. An animation's T(1) is the sum of its frames' pilots.
     double t1_s = -1;
@@ -31,12 +31,12 @@ struct FramePlan {
 };
 
 struct RunOutcome {
-    bool deadlock = false;                    // the network stalled with packets outstanding
-    std::string deadlock_details;             // which queues were full (deadlock_text)
-    double sim_time_s = 0;                    // the image time (a deadlock: the time of the stall)
-    std::vector<std::vector<uint8_t>> images; // every completed frame's RGB
-    std::vector<FrameRecord> frames;          // an animation's frame records
-    RunReport report;                         // the statistics, also after a deadlock
+    bool deadlock = false;                     // the network stalled with packets outstanding
+    std::string deadlock_details;              // which queues were full (deadlock_text)
+    double sim_time_s = 0;                     // the image time (a deadlock: the time of the stall)
+    std::vector<std::vector<uint8_t>> images;  // every completed frame's RGB
+    std::vector<FrameRecord> frames;           // an animation's frame records
+    RunReport report;                          // the statistics, also after a deadlock
 };
 
 // Runs `plan`'s frames on `config`'s machine and the loaded scene (an animation leaves the

@@ -99,7 +99,8 @@ FramePlan frame_plan(SimRequest &r, const LoadedScene &loaded, const StagedOutpu
     if (r.animated()) {
         path = camera_path(r, loaded.scene.get());
         plan.path = path.get();
-        for (size_t k = 0; k < r.frame_files.size(); k++) plan.files.push_back(outputs.set.path(outputs.first_frame + k));
+        for (size_t k = 0; k < r.frame_files.size(); k++)
+            plan.files.push_back(outputs.set.path(outputs.first_frame + k));
         plan.policy = r.remap;
         plan.adaptive = r.adaptive;
         return plan;

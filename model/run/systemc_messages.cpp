@@ -14,8 +14,7 @@ void to_stderr(const sc_core::sc_report &report, const sc_core::sc_actions &acti
 {
     if (actions & sc_core::SC_DISPLAY) {
         bool minor = report.get_severity() < sc_core::SC_ERROR;
-        if (!(g_quiet && minor))
-            std::fprintf(stderr, "%s\n", sc_core::sc_report_compose_message(report).c_str());
+        if (!(g_quiet && minor)) std::fprintf(stderr, "%s\n", sc_core::sc_report_compose_message(report).c_str());
     }
     // Everything but the display (throwing, stopping, aborting) stays SystemC's own.
     sc_core::sc_report_handler::default_handler(report, actions & ~sc_core::SC_DISPLAY);

@@ -8,8 +8,8 @@
  * cube-corner directions, 4 grandchildren of radius R/4 on each child (41 spheres). */
 static void flake(scene *sc, vec3 centre, const double bc[3])
 {
-    const double R = 1.0;           /* radius of a group's big sphere */
-    const double child_dist = 1.6;  /* child centre from its parent's centre, x parent radius */
+    const double R = 1.0;          /* radius of a group's big sphere */
+    const double child_dist = 1.6; /* child centre from its parent's centre, x parent radius */
     diffuse(sc, bc[0], bc[1], bc[2], 0.8);
     sphere(sc, centre, R);
 
@@ -20,8 +20,7 @@ static void flake(scene *sc, vec3 centre, const double bc[3])
         child_centre[k] = vadd(centre, vmul(d, child_dist * R));
     }
     diffuse(sc, 0.95, 0.8, 0.45, 0.8);
-    for (int k = 0; k < 8; ++k)
-        sphere(sc, child_centre[k], R / 2);
+    for (int k = 0; k < 8; ++k) sphere(sc, child_centre[k], R / 2);
 
     diffuse(sc, 0.92, 0.92, 0.95, 0.8);
     for (int k = 0; k < 8; ++k) {
@@ -53,7 +52,7 @@ static void image1_setting(scene *sc)
 /* Nine flakes on the 3 x 3 grid of x and y, 5 apart; column gx at z = z_step * (gx - 1). */
 static void flake_grid(scene *sc, double z_step)
 {
-    const double spacing = 5.0;     /* between group centres on the 3 x 3 grid */
+    const double spacing = 5.0; /* between group centres on the 3 x 3 grid */
     for (int gy = 0; gy < 3; ++gy)
         for (int gx = 0; gx < 3; ++gx)
             flake(sc, v3(spacing * (gx - 1), spacing * (1 - gy), z_step == 0.0 ? 0.0 : z_step * (gx - 1)),
@@ -115,7 +114,7 @@ static vec3 tilted(vec3 d, double tilt, double azimuth)
 /* Image 1, tree layout: one four-level sphereflake-like tree. */
 void build_paper_image1_tree(scene *sc)
 {
-    const double R = 4.0, dist = 1.6;  /* root radius; child centre at 1.6 x the parent's radius */
+    const double R = 4.0, dist = 1.6; /* root radius; child centre at 1.6 x the parent's radius */
     note(sc, "Image 1, tree layout (docs/fidelity.md): one recursive tree, 1 + 8 + 72 + 288 = 369");
     note(sc, "diffuse spheres. Root radius 4; 8 children of radius 2 centred 1.6 x 4 from it along");
     note(sc, "the cube-corner directions; on each child 9 grandchildren of radius 1 centred 1.6 x 2");
@@ -133,7 +132,9 @@ void build_paper_image1_tree(scene *sc)
     for (int k = 0; k < 8; ++k) sphere(sc, c1[k], R / 2);
     for (int k = 0; k < 8; ++k)
         for (int j = 0; j < 9; ++j) {
-            vec3 d = j == 0 ? d1[k] : j < 5 ? tilted(d1[k], 60, 90.0 * (j - 1)) : tilted(d1[k], 100, 45 + 90.0 * (j - 5));
+            vec3 d = j == 0  ? d1[k]
+                     : j < 5 ? tilted(d1[k], 60, 90.0 * (j - 1))
+                             : tilted(d1[k], 100, 45 + 90.0 * (j - 5));
             d2[9 * k + j] = d;
             c2[9 * k + j] = vadd(c1[k], vmul(d, dist * R / 2));
         }

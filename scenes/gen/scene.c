@@ -20,8 +20,7 @@ void scene_free(scene *sc)
 
 void note(scene *sc, const char *fmt, ...)
 {
-    if (sc->nnotes >= MAX_NOTES)
-        return;
+    if (sc->nnotes >= MAX_NOTES) return;
     va_list ap;
     va_start(ap, fmt);
     vsnprintf(sc->notes[sc->nnotes++], NOTE_LEN, fmt, ap);
@@ -43,8 +42,7 @@ static item *push_item(scene *sc, item_kind kind)
     item *it = &sc->items[sc->nitems++];
     memset(it, 0, sizeof *it);
     it->kind = kind;
-    if (kind != IT_MATERIAL)
-        sc->nobjects++;
+    if (kind != IT_MATERIAL) sc->nobjects++;
     return it;
 }
 
@@ -61,44 +59,43 @@ void view(scene *sc, vec3 from, vec3 at, vec3 up, double angle, int w, int h)
 
 void background(scene *sc, double r, double g, double b)
 {
-    sc->bg[0] = r; sc->bg[1] = g; sc->bg[2] = b;
+    sc->bg[0] = r;
+    sc->bg[1] = g;
+    sc->bg[2] = b;
 }
 
 void ambient(scene *sc, double r, double g, double b)
 {
     sc->has_ambient = 1;
-    sc->ambient[0] = r; sc->ambient[1] = g; sc->ambient[2] = b;
+    sc->ambient[0] = r;
+    sc->ambient[1] = g;
+    sc->ambient[2] = b;
 }
 
 void add_light(scene *sc, vec3 pos, double r, double g, double b)
 {
-    if (sc->nlights >= MAX_LIGHTS)
-        return;
+    if (sc->nlights >= MAX_LIGHTS) return;
     light *l = &sc->lights[sc->nlights++];
     l->pos = q9v(pos);
-    l->r = r; l->g = g; l->b = b;
+    l->r = r;
+    l->g = g;
+    l->b = b;
 }
 
 /* `f r g b Kd Ks Shine T ior` for the objects that follow. */
-void mat(scene *sc, double r, double g, double b, double kd, double ks, double shine,
-         double t, double ior)
+void mat(scene *sc, double r, double g, double b, double kd, double ks, double shine, double t, double ior)
 {
     item *it = push_item(sc, IT_MATERIAL);
-    if (!it)
-        return;
+    if (!it) return;
     material m = {r, g, b, kd, ks, shine, t, ior};
     it->mat = m;
 }
-void diffuse(scene *sc, double r, double g, double b, double kd)
-{
-    mat(sc, r, g, b, kd, 0, 0, 0, 1);
-}
+void diffuse(scene *sc, double r, double g, double b, double kd) { mat(sc, r, g, b, kd, 0, 0, 0, 1); }
 
 void sphere(scene *sc, vec3 c, double radius)
 {
     item *it = push_item(sc, IT_SPHERE);
-    if (!it)
-        return;
+    if (!it) return;
     it->centre = q9v(c);
     it->radius = q9(radius);
 }
@@ -106,8 +103,7 @@ void sphere(scene *sc, vec3 c, double radius)
 void cone(scene *sc, vec3 base, double base_radius, vec3 apex, double apex_radius)
 {
     item *it = push_item(sc, IT_CONE);
-    if (!it)
-        return;
+    if (!it) return;
     it->base = q9v(base);
     it->apex = q9v(apex);
     it->base_radius = q9(base_radius);
@@ -131,8 +127,7 @@ vec3 newell(int n, const vec3 *v)
 void polygon_n(scene *sc, int n, const vec3 *v, const vec3 *normals)
 {
     item *it = push_item(sc, normals ? IT_PATCH : IT_POLYGON);
-    if (!it)
-        return;
+    if (!it) return;
     it->nverts = n;
     it->verts = malloc((size_t)n * sizeof *it->verts);
     it->normals = normals ? malloc((size_t)n * sizeof *it->normals) : NULL;
@@ -143,8 +138,7 @@ void polygon_n(scene *sc, int n, const vec3 *v, const vec3 *normals)
     }
     for (int i = 0; i < n; ++i) {
         it->verts[i] = q9v(v[i]);
-        if (normals)
-            it->normals[i] = q9v(vnorm(normals[i]));
+        if (normals) it->normals[i] = q9v(vnorm(normals[i]));
     }
 }
 void polygon(scene *sc, int n, const vec3 *v) { polygon_n(sc, n, v, NULL); }
@@ -206,8 +200,7 @@ static void camera_basis(const scene *sc, vec3 *w, vec3 *u, vec3 *v)
 static double extent_tan(double a, double z, double r)
 {
     double rho = sqrt(a * a + z * z);
-    if (r >= rho)
-        return 1e30;
+    if (r >= rho) return 1e30;
     double ang = atan2(fabs(a), z) + asin(r / rho);
     return ang >= PI / 2 ? 1e30 : tan(ang);
 }
@@ -225,10 +218,17 @@ void frame_all(scene *sc, double margin)
         double r[64];
         int n = 0;
         switch (it->kind) {
-        case IT_SPHERE: c[0] = it->centre; r[0] = it->radius; n = 1; break;
+        case IT_SPHERE:
+            c[0] = it->centre;
+            r[0] = it->radius;
+            n = 1;
+            break;
         case IT_CONE:
-            c[0] = it->base; r[0] = it->base_radius;
-            c[1] = it->apex; r[1] = it->apex_radius; n = 2;
+            c[0] = it->base;
+            r[0] = it->base_radius;
+            c[1] = it->apex;
+            r[1] = it->apex_radius;
+            n = 2;
             break;
         case IT_POLYGON:
         case IT_PATCH:

@@ -25,7 +25,11 @@ typedef struct {
     double x, y, z;
 } vec3;
 
-static inline vec3 v3(double x, double y, double z) { vec3 r = {x, y, z}; return r; }
+static inline vec3 v3(double x, double y, double z)
+{
+    vec3 r = {x, y, z};
+    return r;
+}
 static inline vec3 vadd(vec3 a, vec3 b) { return v3(a.x + b.x, a.y + b.y, a.z + b.z); }
 static inline vec3 vsub(vec3 a, vec3 b) { return v3(a.x - b.x, a.y - b.y, a.z - b.z); }
 static inline vec3 vmul(vec3 a, double s) { return v3(a.x * s, a.y * s, a.z * s); }
@@ -47,14 +51,14 @@ typedef enum { IT_MATERIAL, IT_SPHERE, IT_POLYGON, IT_PATCH, IT_CONE } item_kind
 
 typedef struct {
     item_kind kind;
-    material mat;                      /* IT_MATERIAL */
-    vec3 centre;                       /* IT_SPHERE */
-    double radius;                     /* IT_SPHERE */
-    vec3 base, apex;                   /* IT_CONE: axis end points */
-    double base_radius, apex_radius;   /* IT_CONE */
-    int nverts;                        /* IT_POLYGON, IT_PATCH */
-    vec3 *verts;                       /* IT_POLYGON, IT_PATCH: nverts points */
-    vec3 *normals;                     /* IT_PATCH: nverts unit vertex normals */
+    material mat;                    /* IT_MATERIAL */
+    vec3 centre;                     /* IT_SPHERE */
+    double radius;                   /* IT_SPHERE */
+    vec3 base, apex;                 /* IT_CONE: axis end points */
+    double base_radius, apex_radius; /* IT_CONE */
+    int nverts;                      /* IT_POLYGON, IT_PATCH */
+    vec3 *verts;                     /* IT_POLYGON, IT_PATCH: nverts points */
+    vec3 *normals;                   /* IT_PATCH: nverts unit vertex normals */
 } item;
 
 #define MAX_NOTES 24
@@ -70,7 +74,7 @@ typedef struct {
     char notes[MAX_NOTES][NOTE_LEN]; /* header comment lines, without the leading "# " */
     int nnotes;
     vec3 from, at, up;
-    double angle;   /* degrees */
+    double angle; /* degrees */
     double hither;
     int width, height;
     double bg[3];
@@ -81,8 +85,8 @@ typedef struct {
     item *items;
     int nitems, cap;
     int nobjects;
-    int failed;     /* out of memory while building */
-    double factor;  /* the scale the scene is written at (set before its builder runs) */
+    int failed;    /* out of memory while building */
+    double factor; /* the scale the scene is written at (set before its builder runs) */
 } scene;
 
 /* ---------------------------------------------------------------- building */
@@ -102,8 +106,7 @@ void ambient(scene *sc, double r, double g, double b);
 void add_light(scene *sc, vec3 pos, double r, double g, double b);
 
 /* `f r g b Kd Ks Shine T ior` for the objects that follow. */
-void mat(scene *sc, double r, double g, double b, double kd, double ks, double shine,
-         double t, double ior);
+void mat(scene *sc, double r, double g, double b, double kd, double ks, double shine, double t, double ior);
 /* A material with Ks = 0, Shine = 0, T = 0, ior = 1. */
 void diffuse(scene *sc, double r, double g, double b, double kd);
 

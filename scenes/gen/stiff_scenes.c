@@ -16,11 +16,11 @@ void build_axis_rays(scene *sc)
     mat(sc, 0.9, 0.25, 0.2, 0.7, 0.3, 30, 0, 1);
     sphere(sc, v3(0, 0, 0), 1.5);
     diffuse(sc, 0.6, 0.65, 0.8, 0.8);
-    quad(sc, v3(-5, -5, -4), v3(5, -5, -4), v3(5, 5, -4), v3(-5, 5, -4));   /* z = -4, faces +z */
+    quad(sc, v3(-5, -5, -4), v3(5, -5, -4), v3(5, 5, -4), v3(-5, 5, -4)); /* z = -4, faces +z */
     diffuse(sc, 0.85, 0.85, 0.8, 0.8);
-    floor_quad(sc, -5, -5, 5, -4, 6);                                       /* y = -5, faces +y */
+    floor_quad(sc, -5, -5, 5, -4, 6); /* y = -5, faces +y */
     diffuse(sc, 0.4, 0.75, 0.4, 0.8);
-    quad(sc, v3(-5, -5, -4), v3(-5, 5, -4), v3(-5, 5, 6), v3(-5, -5, 6));   /* x = -5, faces +x */
+    quad(sc, v3(-5, -5, -4), v3(-5, 5, -4), v3(-5, 5, 6), v3(-5, -5, 6)); /* x = -5, faces +x */
     view(sc, v3(0, 0, 10), v3(0, 0, 0), v3(0, 1, 0), 40, 33, 33);
     background(sc, 0.1, 0.1, 0.15);
     ambient(sc, 0.1, 0.1, 0.1);
@@ -40,7 +40,7 @@ void build_grid_corners(scene *sc)
     diffuse(sc, 0.8, 0.45, 0.4, 0.8);
     quad(sc, v3(-12, -12, -12), v3(-12, 12, -12), v3(-12, 12, 12), v3(-12, -12, 12)); /* x */
     diffuse(sc, 0.75, 0.75, 0.72, 0.8);
-    floor_quad(sc, -12, -12, 12, -12, 12);                                             /* y */
+    floor_quad(sc, -12, -12, 12, -12, 12); /* y */
     diffuse(sc, 0.4, 0.5, 0.8, 0.8);
     quad(sc, v3(-12, -12, -12), v3(12, -12, -12), v3(12, 12, -12), v3(-12, 12, -12)); /* z */
     mat(sc, 0.8, 0.8, 0.85, 0.4, 0.5, 40, 0, 1);
@@ -67,9 +67,8 @@ void build_grid_corners(scene *sc)
     add_light(sc, v3(4, 10, 6), 0.3, 0.3, 0.3);
 }
 
-static const double PALETTE6[6][3] = {
-    {0.9, 0.25, 0.2}, {0.95, 0.65, 0.15}, {0.85, 0.85, 0.2},
-    {0.25, 0.75, 0.3}, {0.2, 0.45, 0.9}, {0.65, 0.3, 0.85}};
+static const double PALETTE6[6][3] = {{0.9, 0.25, 0.2},  {0.95, 0.65, 0.15}, {0.85, 0.85, 0.2},
+                                      {0.25, 0.75, 0.3}, {0.2, 0.45, 0.9},   {0.65, 0.3, 0.85}};
 
 void build_eye_inside(scene *sc)
 {
@@ -125,7 +124,7 @@ void build_grazing(scene *sc)
     diffuse(sc, 0.8, 0.8, 0.8, 0.8);
     floor_quad(sc, 0, -6, 6, -60, 9.5);
     diffuse(sc, 0.9, 0.3, 0.25, 0.8);
-    quad(sc, v3(0, 0, -10), v3(0, 0, -20), v3(0, 2, -20), v3(0, 2, -10));    /* plane x = 0 */
+    quad(sc, v3(0, 0, -10), v3(0, 0, -20), v3(0, 2, -20), v3(0, 2, -10)); /* plane x = 0 */
     diffuse(sc, 0.3, 0.5, 0.9, 0.8);
     quad(sc, v3(1, 0.25, -4), v3(3, 0.25, -4), v3(3, 0.25, -8), v3(1, 0.25, -8)); /* y = 0.25 */
     diffuse(sc, 0.95, 0.75, 0.2, 0.8);
@@ -156,10 +155,8 @@ void build_tir(scene *sc)
     note(sc, "side face inside the box is totally reflected there (critical angle 41.8 degrees).");
     for (int j = 0; j < 6; ++j) {
         for (int i = 0; i < 6; ++i) {
-            if ((i + j) % 2)
-                diffuse(sc, 0.85, 0.85, 0.8, 0.8);
-            else
-                diffuse(sc, 0.7, 0.15, 0.15, 0.8);
+            if ((i + j) % 2) diffuse(sc, 0.85, 0.85, 0.8, 0.8);
+            else diffuse(sc, 0.7, 0.15, 0.15, 0.8);
             double x0 = -4.5 + 1.5 * i, z0 = -4.5 + 1.5 * j;
             floor_quad(sc, 0, x0, x0 + 1.5, z0, z0 + 1.5);
         }
@@ -234,14 +231,11 @@ void build_one_cell(scene *sc)
         double py = 1.8 * lcg_next() - 0.9;
         double pz = 1.8 * lcg_next() - 0.9;
         vec3 p = v3(px, py, pz);
-        if (vlen(p) > 0.9)
-            continue;
+        if (vlen(p) > 0.9) continue;
         int ok = 1;
         for (int k = 0; k < n && ok; ++k)
-            if (vlen(vsub(p, c[k])) < 0.26)
-                ok = 0;
-        if (ok)
-            c[n++] = q9v(p);
+            if (vlen(vsub(p, c[k])) < 0.26) ok = 0;
+        if (ok) c[n++] = q9v(p);
     }
     for (int k = 0; k < n; ++k) {
         const double *col = PALETTE6[k % 6];
@@ -328,22 +322,23 @@ static void hemisphere_patches(scene *sc, vec3 c, double r)
             double a0 = 2 * PI * k / seg, a1 = 2 * PI * (k + 1) / seg;
             double pts[4][2] = {{lo, a0}, {lo, a1}, {hi, a1}, {hi, a0}};
             for (int q = 0; q < 4; ++q) {
-                if (b == 2 && q == 3)
-                    break; /* the pole: one vertex, a triangle */
+                if (b == 2 && q == 3) break; /* the pole: one vertex, a triangle */
                 double la = pts[q][0], az = pts[q][1];
-                n[m] = b == 2 && q == 2 ? v3(0, 1, 0)
-                                        : v3(cos(la) * cos(az), sin(la), cos(la) * sin(az));
+                n[m] = b == 2 && q == 2 ? v3(0, 1, 0) : v3(cos(la) * cos(az), sin(la), cos(la) * sin(az));
                 v[m] = vadd(c, vmul(n[m], r));
                 ++m;
             }
             /* Counter-clockwise seen from outside. */
             vec3 mid = v3(0, 0, 0);
-            for (int q = 0; q < m; ++q)
-                mid = vadd(mid, vmul(v[q], 1.0 / m));
+            for (int q = 0; q < m; ++q) mid = vadd(mid, vmul(v[q], 1.0 / m));
             if (vdot(newell(m, v), vsub(mid, c)) < 0) {
                 for (int q = 0; q < m / 2; ++q) {
-                    vec3 t = v[q]; v[q] = v[m - 1 - q]; v[m - 1 - q] = t;
-                    t = n[q]; n[q] = n[m - 1 - q]; n[m - 1 - q] = t;
+                    vec3 t = v[q];
+                    v[q] = v[m - 1 - q];
+                    v[m - 1 - q] = t;
+                    t = n[q];
+                    n[q] = n[m - 1 - q];
+                    n[m - 1 - q] = t;
                 }
             }
             polygon_n(sc, m, v, n);

@@ -20,8 +20,8 @@ std::vector<OptionSpec> animation_option_specs()
     using K = ValueKind;
     return {
         {"--frames", "N", K::integer, "", 1, RT_CAMERA_PATH_MAX_FRAMES, "",
-         "frames of an animation (with --orbit; 1 to " + std::to_string(RT_CAMERA_PATH_MAX_FRAMES) + ")",
-         G::animation, ""},
+         "frames of an animation (with --orbit; 1 to " + std::to_string(RT_CAMERA_PATH_MAX_FRAMES) + ")", G::animation,
+         ""},
         {"--orbit", "DEG", K::real, "", 0, 0, "", "turn the eye about 'at' around 'up' by DEG degrees over the frames",
          G::animation, ""},
         {"--camera-path", "FILE", K::file, "", 0, 0, "",
@@ -52,7 +52,8 @@ void check_animation_options(AnimationOptions &opt)
             opt.frames = parse_integer("--frames", opt.frames_text, 1, max);
         } catch (const UserError &e) {  // "--frames 0: ..." as the option was typed
             throw UserError("--frames " + shown_text(opt.frames_text) + ": must be a whole decimal number from 1 to " +
-                                std::to_string(max) + " (" + e.what() + ")", 2);
+                                std::to_string(max) + " (" + e.what() + ")",
+                            2);
         }
     }
     if (!opt.orbit.empty() && !opt.camera_path.empty())
@@ -65,7 +66,8 @@ void check_animation_options(AnimationOptions &opt)
         if (!std::isfinite(static_cast<double>(opt.frames - 1) * degrees))
             throw UserError("--orbit " + shown_text(opt.orbit) + ": the last frame's angle (" +
                                 std::to_string(opt.frames - 1) + " x DEG / " + std::to_string(opt.frames) +
-                                ") would not be a finite number", 2);
+                                ") would not be a finite number",
+                            2);
     }
     if (opt.frames >= 0 && opt.orbit.empty() && opt.camera_path.empty() && opt.motion.empty())
         throw UserError("--frames " + std::to_string(opt.frames) +
@@ -84,8 +86,8 @@ CameraPathPtr read_camera_path_file(const AnimationOptions &opt)
     CameraPathPtr path(raw);
     size_t count = rt_camera_path_count(raw);
     if (opt.frames >= 0 && static_cast<size_t>(opt.frames) != count)
-        throw UserError("--frames " + std::to_string(opt.frames) + ": " + shown_text(opt.camera_path) +
-                            " holds " + std::to_string(count) + " camera lines (one per frame)",
+        throw UserError("--frames " + std::to_string(opt.frames) + ": " + shown_text(opt.camera_path) + " holds " +
+                            std::to_string(count) + " camera lines (one per frame)",
                         2);
     return path;
 }

@@ -8,21 +8,21 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "kernel_handles.h" // CameraPathPtr
+#include "kernel_handles.h"  // CameraPathPtr
 #include "rt_camera_path.h"
 #include "option_spec.h"
 #include "rt_scene.h"
-#include "stats_json.h" // camera_pose_json
+#include "stats_json.h"  // camera_pose_json
 
 namespace torusrt {
 
 struct AnimationOptions {
-    std::string frames_text; // --frames as given; empty: not given
-    long long frames = -1;   // set by check_animation_options: the number, -1 if not given
-    std::string orbit;       // total degrees; empty: not given
-    double orbit_degrees = 0; // set by check_animation_options: --orbit's value
-    std::string camera_path; // file; empty: not given
-    std::string motion;      // --motion file; empty: not given (or not an option of the executable)
+    std::string frames_text;   // --frames as given; empty: not given
+    long long frames = -1;     // set by check_animation_options: the number, -1 if not given
+    std::string orbit;         // total degrees; empty: not given
+    double orbit_degrees = 0;  // set by check_animation_options: --orbit's value
+    std::string camera_path;   // file; empty: not given
+    std::string motion;        // --motion file; empty: not given (or not an option of the executable)
     // Any of them given: the run is an animation and -o is a pattern.
     bool animated() const { return !frames_text.empty() || !orbit.empty() || !camera_path.empty() || !motion.empty(); }
     // --orbit or --camera-path given: the camera moves (else it stays where the scene puts it).

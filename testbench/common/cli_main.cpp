@@ -73,7 +73,8 @@ int run_cli(const char *program, CLI::App &app, int argc, char **argv, const std
         ->group(group_title(OptionGroup::run));
     app.set_help_flag("-h,--help", "print this help and exit")->group(group_title(OptionGroup::run));  // listed last
     app.footer(std::string("Exit status:\n  0 success\n  1 bad input file or failed run (a write error included)\n"
-                           "  2 bad command line\n") + extra_exit_statuses);
+                           "  2 bad command line\n") +
+               extra_exit_statuses);
     std::string empty = empty_value_option(app, argc, argv);
     if (!empty.empty()) {
         std::fprintf(stderr, "%s: %s: an empty value\nRun with --help for more information.\n", program, empty.c_str());

@@ -55,7 +55,8 @@ CommonSettings parse_common_options(const CommonOptions &o)
     s.cells = parse_triple("--cells", o.cells, 1, static_cast<int>(cells.max));
     if (!o.size.empty()) s.size = parse_size("--size", o.size);
     s.step = rt_step_params_default();
-    s.step.max_depth = static_cast<int>(parse_integer("--max-depth", o.max_depth, 0, static_cast<long long>(depth.max)));
+    s.step.max_depth =
+        static_cast<int>(parse_integer("--max-depth", o.max_depth, 0, static_cast<long long>(depth.max)));
     s.step.min_weight = parse_fraction("--min-weight", o.min_weight);
     s.preprocess_count = value_named("--preprocess-count", o.preprocess_count, kPreprocessCountNames);
     s.memory_bytes = parse_memory_size("--memory-budget", o.memory_budget);

@@ -18,8 +18,7 @@ namespace torusrt {
 
 // As typed (the defaults as the help states them).
 struct CommonOptions {
-    std::string scene, output, stats, cells = "24", size, max_depth = "8", min_weight = "1/512",
-                                      memory_budget = "4G";
+    std::string scene, output, stats, cells = "24", size, max_depth = "8", min_weight = "1/512", memory_budget = "4G";
     std::string timing_file, timing_profile, preprocess_count = "sequential";
     bool quiet = false;
 };
@@ -39,12 +38,12 @@ void require_scene_and_output(const CommonOptions &options);
 // bad timing file 1 (naming the file). Ranges are checked by the validators.
 struct CommonSettings {
     std::array<int, 3> cells{};
-    std::array<unsigned, 2> size{0, 0};      // 0x0: the scene's
+    std::array<unsigned, 2> size{0, 0};  // 0x0: the scene's
     rt_step_params step{};
     uint64_t memory_bytes = 0;
     rt_timing timing{};
-    std::string timing_label;                // the profile, with " + FILE" for a timing file
-    std::string timing_base;                 // the profile
+    std::string timing_label;  // the profile, with " + FILE" for a timing file
+    std::string timing_base;   // the profile
     rt_preprocess_count preprocess_count = RT_COUNT_SEQUENTIAL;
 };
 CommonSettings parse_common_options(const CommonOptions &options);

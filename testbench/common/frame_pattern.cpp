@@ -60,8 +60,8 @@ void check_frame_pattern(const std::string &option, const std::string &pattern)
     }
     if (conversions != 1)
         throw UserError(option + " '" + pattern + "': an animation's output is a pattern with " +
-                            "exactly one %d or %0Nd for the frame number (found " +
-                            std::to_string(conversions) + "), e.g. out_%04d.png",
+                            "exactly one %d or %0Nd for the frame number (found " + std::to_string(conversions) +
+                            "), e.g. out_%04d.png",
                         2);
 }
 

@@ -22,14 +22,14 @@ bool under_valgrind()
 
 void reexec_with_huge_pages(char **argv)
 {
-    if (std::getenv("GLIBC_TUNABLES") || under_valgrind()) return; // the user's choice, or our second start
+    if (std::getenv("GLIBC_TUNABLES") || under_valgrind()) return;  // the user's choice, or our second start
     char self[PATH_MAX];
     ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
     if (n <= 0) return;
     self[n] = '\0';
     if (setenv("GLIBC_TUNABLES", "glibc.malloc.hugetlb=1", 1) != 0) return;
     execv(self, argv);
-    unsetenv("GLIBC_TUNABLES"); // exec failed: run on as we are
+    unsetenv("GLIBC_TUNABLES");  // exec failed: run on as we are
 }
 
 }  // namespace torusrt

@@ -15,7 +15,9 @@ namespace torusrt {
 class MachineFileError : public CLI::ConfigError {
   public:
     MachineFileError(int line, const std::string &what)
-        : CLI::ConfigError(std::to_string(line) + ": " + what), m_line(line) {}
+        : CLI::ConfigError(std::to_string(line) + ": " + what), m_line(line)
+    {
+    }
     int line() const { return m_line; }
 
   private:

@@ -43,8 +43,8 @@ int run(int argc, char **argv)
     config.quiet = true;
     torusrt::validate(config);
 
-    torusrt::LoadedScene loaded = torusrt::load_scene(config.scene_path, config.width, config.height,
-                                                      config.cells, config.quiet, &config.memory);
+    torusrt::LoadedScene loaded =
+        torusrt::load_scene(config.scene_path, config.width, config.height, config.cells, config.quiet, &config.memory);
     double t1 = torusrt::one_processor_time(config, loaded.scene.get(), loaded.grid.get());
     torusrt::ModelOutcome out =
         torusrt::run_model(config, loaded.scene.get(), loaded.grid.get(), t1, "one-processor run", 0);

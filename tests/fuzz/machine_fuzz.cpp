@@ -17,8 +17,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (size > 64 * 1024) return 0;
     std::istringstream text(std::string(reinterpret_cast<const char *>(data), size));
     // The keys of the seed files; a bare number for quantum would be seconds.
-    static const std::vector<std::string> keys = {"ips",  "map",   "topology", "queue",  "flow",   "link-us",
-                                                  "style", "timing", "cells",   "quantum", "cluster", "timing-file"};
+    static const std::vector<std::string> keys = {"ips",   "map",    "topology", "queue",   "flow",    "link-us",
+                                                  "style", "timing", "cells",    "quantum", "cluster", "timing-file"};
     torusrt::MachineFileReader reader(keys, {"quantum"});
     try {
         reader.from_config(text);

@@ -23,8 +23,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     int32_t *extra = NULL;
     size_t count = 0;
     char msg[256];
-    if (rt_map_file_parse_replicas("fuzz.map", (const char *)data, size, dims, nodes, owner, first, &extra, &count,
-                                   msg, sizeof msg) != RT_OK)
+    if (rt_map_file_parse_replicas("fuzz.map", (const char *)data, size, dims, nodes, owner, first, &extra, &count, msg,
+                                   sizeof msg) != RT_OK)
         return 0;
     if (first[0] != 0 || first[cells] != count) abort();
     for (int i = 0; i < cells; i++) {

@@ -45,12 +45,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (size > FUZZ_MAX_INPUT) return 0;
     rt_scene *scene = NULL;
     char msg[RT_MSG_LEN];
-    if (rt_nff_parse("fuzz.nff", (const char *)data, size, &scene, msg, sizeof msg, NULL, NULL) !=
-        RT_OK)
-        return 0;
+    if (rt_nff_parse("fuzz.nff", (const char *)data, size, &scene, msg, sizeof msg, NULL, NULL) != RT_OK) return 0;
     rt_budget budget = rt_budget_make(FUZZ_BUDGET);
-    rt_grid *grid = rt_grid_new_budget(scene, FUZZ_CELLS, FUZZ_CELLS, FUZZ_CELLS, &budget, msg,
-                                       sizeof msg);
+    rt_grid *grid = rt_grid_new_budget(scene, FUZZ_CELLS, FUZZ_CELLS, FUZZ_CELLS, &budget, msg, sizeof msg);
     if (grid) render_small(scene, grid, &budget);
     rt_grid_free(grid);
     rt_scene_free(scene);

@@ -35,10 +35,7 @@ static int replay_file(const char *path)
     return ok;
 }
 
-static int by_name(const void *a, const void *b)
-{
-    return strcmp(*(char *const *)a, *(char *const *)b);
-}
+static int by_name(const void *a, const void *b) { return strcmp(*(char *const *)a, *(char *const *)b); }
 
 /* Replays every regular file of a folder in name order; returns how many, -1 on error. */
 static long replay_folder(const char *dir)
@@ -79,9 +76,7 @@ int main(int argc, char **argv)
     long total = 0;
     for (int i = 1; i < argc; i++) {
         struct stat st;
-        long n = stat(argv[i], &st) != 0 ? -1
-                 : S_ISDIR(st.st_mode)     ? replay_folder(argv[i])
-                                           : replay_file(argv[i]);
+        long n = stat(argv[i], &st) != 0 ? -1 : S_ISDIR(st.st_mode) ? replay_folder(argv[i]) : replay_file(argv[i]);
         if (n < 0) {
             fprintf(stderr, "nff_fuzz_replay: cannot replay %s\n", argv[i]);
             return 1;

@@ -6,11 +6,20 @@
 
 #include "rt_budget.h"
 
-TEST(Budget, ParsesSizesWithBinaryUnits) {
-    struct Case { const char *text; uint64_t bytes; };
-    const Case ok[] = {{"0", 0},           {"1000000", 1000000},        {"512M", 512ull << 20},
-                       {"4G", 4ull << 30}, {"1.5G", 3ull << 29},        {"64KiB", 64ull << 10},
-                       {"2TB", 2ull << 40}, {"100B", 100}};
+TEST(Budget, ParsesSizesWithBinaryUnits)
+{
+    struct Case {
+        const char *text;
+        uint64_t bytes;
+    };
+    const Case ok[] = {{"0", 0},
+                       {"1000000", 1000000},
+                       {"512M", 512ull << 20},
+                       {"4G", 4ull << 30},
+                       {"1.5G", 3ull << 29},
+                       {"64KiB", 64ull << 10},
+                       {"2TB", 2ull << 40},
+                       {"100B", 100}};
     for (const Case &c : ok) {
         uint64_t b = 1;
         EXPECT_EQ(rt_budget_parse(c.text, &b, nullptr, 0), RT_OK) << c.text;
@@ -25,7 +34,8 @@ TEST(Budget, ParsesSizesWithBinaryUnits) {
     }
 }
 
-TEST(Budget, ReserveTakesFromWhatIsLeftAndNamesTheOverrun) {
+TEST(Budget, ReserveTakesFromWhatIsLeftAndNamesTheOverrun)
+{
     rt_budget b = rt_budget_make(1000);
     char msg[RT_MSG_LEN] = "";
     EXPECT_EQ(rt_budget_reserve(&b, 600, "first", msg, sizeof msg), RT_OK);
@@ -38,7 +48,8 @@ TEST(Budget, ReserveTakesFromWhatIsLeftAndNamesTheOverrun) {
     EXPECT_EQ(rt_budget_packets_allowed(&b, 100), 4u);
 }
 
-TEST(Budget, ZeroIsNoLimit) {
+TEST(Budget, ZeroIsNoLimit)
+{
     rt_budget b = rt_budget_make(0);
     EXPECT_EQ(rt_budget_reserve(&b, UINT64_MAX, "all", nullptr, 0), RT_OK);
     EXPECT_EQ(rt_budget_left(&b), UINT64_MAX);

@@ -79,8 +79,8 @@ TEST(CameraOrbit, HalfTurnMirrorsTheEyeThroughTheAxisExactly)
     rt_camera_pose p = rt_camera_orbit_pose(&s, 360.0, 4, 2);
     EXPECT_EQ(p.from.x, 1);
     EXPECT_EQ(p.from.y, 2);
-    EXPECT_EQ(p.from.z, -3); // 2 at - from, the eye offset being orthogonal to up
-    rt_camera_pose q = rt_camera_orbit_pose(&s, 360.0, 4, 1); // a quarter turn about +y
+    EXPECT_EQ(p.from.z, -3);                                   // 2 at - from, the eye offset being orthogonal to up
+    rt_camera_pose q = rt_camera_orbit_pose(&s, 360.0, 4, 1);  // a quarter turn about +y
     EXPECT_EQ(q.from.x, 7);
     EXPECT_EQ(q.from.y, 2);
     EXPECT_EQ(q.from.z, 3);
@@ -117,8 +117,7 @@ TEST(CameraOrbit, PathRejectsZeroFramesAndBadInput)
     rt_camera_path *cp = nullptr;
     char msg[RT_MSG_LEN];
     EXPECT_EQ(rt_camera_path_orbit(&s, 90, 0, &cp, msg, sizeof msg), RT_ERR_INVALID);
-    EXPECT_EQ(rt_camera_path_orbit(&s, 90, RT_CAMERA_PATH_MAX_FRAMES + 1, &cp, msg, sizeof msg),
-              RT_ERR_INVALID);
+    EXPECT_EQ(rt_camera_path_orbit(&s, 90, RT_CAMERA_PATH_MAX_FRAMES + 1, &cp, msg, sizeof msg), RT_ERR_INVALID);
     EXPECT_EQ(rt_camera_path_orbit(&s, NAN, 3, &cp, msg, sizeof msg), RT_ERR_INVALID);
     EXPECT_EQ(cp, nullptr);
     ASSERT_EQ(rt_camera_path_orbit(&s, 90, 3, &cp, msg, sizeof msg), RT_OK);
@@ -130,12 +129,11 @@ TEST(CameraOrbit, PathRejectsZeroFramesAndBadInput)
 
 TEST(CameraPathFile, ReadsPosesCommentsAndBlankLines)
 {
-    std::string path = write_file("good.txt",
-                                  "# eye, target, up, angle\n"
-                                  "\n"
-                                  "0 0 5  0 0 0  0 1 0  45   # first\n"
-                                  "\t1e1 -0 5 0 0 0 0 1 0 30\r\n"
-                                  "   \n");
+    std::string path = write_file("good.txt", "# eye, target, up, angle\n"
+                                              "\n"
+                                              "0 0 5  0 0 0  0 1 0  45   # first\n"
+                                              "\t1e1 -0 5 0 0 0 0 1 0 30\r\n"
+                                              "   \n");
     rt_camera_path *cp = nullptr;
     char msg[RT_MSG_LEN] = "";
     ASSERT_EQ(rt_camera_path_load(path.c_str(), &cp, msg, sizeof msg), RT_OK) << msg;
@@ -190,9 +188,7 @@ TEST(CameraPathFile, LimitsOnLineLengthAndFrameCount)
     for (unsigned i = 0; i <= RT_CAMERA_PATH_MAX_FRAMES; i++) many += "0 0 5 0 0 0 0 1 0 45\n";
     msg = load_error("many", many, &st);
     EXPECT_EQ(st, RT_ERR_LIMIT);
-    EXPECT_NE(msg.find("many:" + std::to_string(RT_CAMERA_PATH_MAX_FRAMES + 1) + ": "),
-              std::string::npos)
-        << msg;
+    EXPECT_NE(msg.find("many:" + std::to_string(RT_CAMERA_PATH_MAX_FRAMES + 1) + ": "), std::string::npos) << msg;
 }
 
 TEST(CameraPathFile, OnlyRegularFilesAreRead)
@@ -210,8 +206,7 @@ TEST(SceneCamera, SetCameraKeepsResolutionAndTheGridIgnoresTheEye)
 {
     rt_scene *s = rt_scene_new();
     ASSERT_NE(s, nullptr);
-    ASSERT_EQ(rt_scene_set_view(s, rt_vec(0, 0, 10), rt_vec(0, 0, 0), rt_vec(0, 1, 0), 45, 32, 24),
-              RT_OK);
+    ASSERT_EQ(rt_scene_set_view(s, rt_vec(0, 0, 10), rt_vec(0, 0, 0), rt_vec(0, 1, 0), 45, 32, 24), RT_OK);
     ASSERT_EQ(rt_scene_add_sphere(s, rt_vec(0, 0, 0), 1), RT_OK);
     ASSERT_EQ(rt_scene_finish(s, nullptr, 0), RT_OK);
     char msg[RT_MSG_LEN];
@@ -227,11 +222,11 @@ TEST(SceneCamera, SetCameraKeepsResolutionAndTheGridIgnoresTheEye)
     ASSERT_NE(g1, nullptr);
     ASSERT_NE(g2, nullptr);
     rt_box b1 = rt_grid_bounds(g1), b2 = rt_grid_bounds(g2);
-    EXPECT_EQ(0, std::memcmp(&b1, &b2, sizeof b1)); // the object space is the objects' box
+    EXPECT_EQ(0, std::memcmp(&b1, &b2, sizeof b1));  // the object space is the objects' box
     EXPECT_LT(b1.hi.x, 2.0);
     rt_camera_pose bad = pose(rt_vec(1, 0, 0), rt_vec(1, 0, 0), rt_vec(0, 0, 1), 20);
     EXPECT_EQ(rt_scene_set_camera(s, &bad, msg, sizeof msg), RT_ERR_INVALID);
-    EXPECT_EQ(rt_scene_camera(s)->from.x, 100); // unchanged
+    EXPECT_EQ(rt_scene_camera(s)->from.x, 100);  // unchanged
     rt_grid_free(g1);
     rt_grid_free(g2);
     rt_scene_free(s);

@@ -16,7 +16,8 @@ namespace {
 
 // `copies` unit spheres at the origin, then a smaller one off centre, a triangle twice and a
 // cone twice.
-ScenePtr coincident(int copies) {
+ScenePtr coincident(int copies)
+{
     ScenePtr s(rt_scene_new());
     for (int i = 0; i < copies; i++) EXPECT_EQ(rt_scene_add_sphere(s.get(), rt_vec(0, 0, 0), 1.0), RT_OK);
     EXPECT_EQ(rt_scene_add_sphere(s.get(), rt_vec(0.3, 0.2, 0.1), 0.4), RT_OK);
@@ -29,7 +30,8 @@ ScenePtr coincident(int copies) {
     return s;
 }
 
-std::vector<uint32_t> lists(const rt_grid *g) {
+std::vector<uint32_t> lists(const rt_grid *g)
+{
     std::vector<uint32_t> out;
     for (size_t c = 0; c < rt_grid_cell_count(g); c++) {
         size_t n;
@@ -40,9 +42,10 @@ std::vector<uint32_t> lists(const rt_grid *g) {
     return out;
 }
 
-} // namespace
+}  // namespace
 
-TEST(GridBudget, ListsThatFitAreTheSameAsWithoutABudget) {
+TEST(GridBudget, ListsThatFitAreTheSameAsWithoutABudget)
+{
     ScenePtr s = coincident(50);
     GridPtr free_grid = make_grid(s.get(), 12, 12, 12);
     ASSERT_TRUE(free_grid);
@@ -54,7 +57,8 @@ TEST(GridBudget, ListsThatFitAreTheSameAsWithoutABudget) {
     EXPECT_EQ(rt_grid_units_serial(g.get()), rt_grid_units_serial(free_grid.get()));
 }
 
-TEST(GridBudget, ListsThatCannotFitAreRefusedBeforeTheyAreMade) {
+TEST(GridBudget, ListsThatCannotFitAreRefusedBeforeTheyAreMade)
+{
     ScenePtr s = coincident(20000);
     // 20000 spheres in most of 24^3 cells: about 150 million entries, 1.2 GB; 64 MiB allowed.
     rt_budget b = rt_budget_make(64ull << 20);

@@ -114,7 +114,7 @@ bool segment_meets_convex(P2 a, P2 b, const std::vector<P2> &q)
     double t0 = 0, t1 = 1;
     for (size_t i = 0; i < q.size(); i++) {
         P2 e = {q[(i + 1) % q.size()].x - q[i].x, q[(i + 1) % q.size()].y - q[i].y};
-        P2 n = {-e.y, e.x}; // inward for counter-clockwise
+        P2 n = {-e.y, e.x};  // inward for counter-clockwise
         double num = (a.x - q[i].x) * n.x + (a.y - q[i].y) * n.y;
         double den = (b.x - a.x) * n.x + (b.y - a.y) * n.y;
         if (den == 0) {
@@ -163,7 +163,7 @@ bool flat_meets_box(const std::vector<rt_vec3> &v, const rt_box &b)
         q = clip_convex(q, a, axis(b.lo, a), 1.0);
         if (q.size() >= 3) q = clip_convex(q, a, axis(b.hi, a), -1.0);
     }
-    if (q.size() < 3) return false; // no cross-section (touching at an edge has measure zero here)
+    if (q.size() < 3) return false;  // no cross-section (touching at an edge has measure zero here)
 
     auto to2d = [&](rt_vec3 p) {
         rt_vec3 d = rt_vec_sub(p, c);
@@ -173,9 +173,9 @@ bool flat_meets_box(const std::vector<rt_vec3> &v, const rt_box &b)
     for (const rt_vec3 &p : q) q2.push_back(to2d(p));
     for (const rt_vec3 &p : v) p2.push_back(to2d(p));
     for (const P2 &p : q2)
-        if (inside_even_odd(p2, p)) return true; // the cross-section lies (partly) inside
+        if (inside_even_odd(p2, p)) return true;  // the cross-section lies (partly) inside
     for (size_t i = 0; i < p2.size(); i++)
-        if (segment_meets_convex(p2[i], p2[(i + 1) % p2.size()], q2)) return true; // an edge crosses it
+        if (segment_meets_convex(p2[i], p2[(i + 1) % p2.size()], q2)) return true;  // an edge crosses it
     return false;
 }
 
@@ -214,8 +214,8 @@ void expect_lists_match_oracle(const TestScene &ts, const rt_grid *g)
                     std::string w, h;
                     for (uint32_t o : want) w += " " + std::to_string(o);
                     for (uint32_t o : got) h += " " + std::to_string(o);
-                    ADD_FAILURE() << "cell (" << ix << "," << iy << "," << iz << "): oracle {" << w
-                                  << " } grid {" << h << " }";
+                    ADD_FAILURE() << "cell (" << ix << "," << iy << "," << iz << "): oracle {" << w << " } grid {" << h
+                                  << " }";
                 }
             }
     EXPECT_EQ(mismatches, 0u);
@@ -253,15 +253,14 @@ void random_scene(TestScene &ts, uint64_t seed, int spheres, int triangles, int 
     for (int i = 0; i < spheres; i++) ts.sphere(rng.point(0, 10), rng.uniform(0.05, 1.5));
     for (int i = 0; i < triangles; i++) {
         rt_vec3 c = rng.point(0, 10);
-        int n = i % 4 == 0 ? 5 : 3; // some fans of three triangles
+        int n = i % 4 == 0 ? 5 : 3;  // some fans of three triangles
         std::vector<rt_vec3> v;
         for (int k = 0; k < n; k++) v.push_back(rt_vec_add(c, rng.point(-2, 2)));
         ts.patch(v);
     }
     for (int i = 0; i < stars; i++) {
         double r = rng.uniform(0.5, 3.0);
-        ts.polygon(star(rng.point(0, 10), rng.unit(), r, r * rng.uniform(0.2, 0.5), 5 + i % 3,
-                        rng.uniform(0, 6.3)));
+        ts.polygon(star(rng.point(0, 10), rng.unit(), r, r * rng.uniform(0.2, 0.5), 5 + i % 3, rng.uniform(0, 6.3)));
     }
     for (int i = 0; i < pentagrams; i++)
         ts.polygon(pentagram(rng.point(0, 10), rng.unit(), rng.uniform(0.5, 3.0), rng.uniform(0, 6.3)));
@@ -280,7 +279,7 @@ void expect_lists_match_oracle_on_every_grid(const TestScene &ts)
     }
 }
 
-} // namespace
+}  // namespace
 
 TEST(GridLists, SpheresMatchOracle)
 {
@@ -339,7 +338,7 @@ TEST(GridLists, CellInTheNotchOfAUIsNotListed)
         ts.sphere(rt_vec(0.05, 0.05, 0), 0.05);
         ts.sphere(rt_vec(4.95, 4.95, 1), 0.05);
         // Outer 5 x 5, notch x in [1.5, 3.5], y in [1.5, 5] at z = 0.5.
-        std::vector<rt_vec3> u = {rt_vec(0, 0, .5),   rt_vec(5, 0, .5),   rt_vec(5, 5, .5),   rt_vec(3.5, 5, .5),
+        std::vector<rt_vec3> u = {rt_vec(0, 0, .5),     rt_vec(5, 0, .5),     rt_vec(5, 5, .5),   rt_vec(3.5, 5, .5),
                                   rt_vec(3.5, 1.5, .5), rt_vec(1.5, 1.5, .5), rt_vec(1.5, 5, .5), rt_vec(0, 5, .5)};
         if (opening)
             for (rt_vec3 &p : u) p = rt_vec(p.y, p.x, p.z);
@@ -385,7 +384,7 @@ TEST(GridLists, ObjectsTouchingAFaceAreListedOnBothSides)
         ts.sphere(rt_vec(c.x + 1.0, 1.0, 1.0), 1.0);
         GridPtr g = make_grid(ts.scene.get(), 4, 4, 4);
         ASSERT_TRUE(g);
-        ASSERT_EQ(rt_grid_cell_box(g.get(), 2, 0, 0).lo.x, plane); // same object space
+        ASSERT_EQ(rt_grid_cell_box(g.get(), 2, 0, 0).lo.x, plane);  // same object space
         int d[3];
         rt_grid_dims(g.get(), d);
         for (int ix = 0; ix < 4; ix++) {
@@ -569,7 +568,7 @@ TEST(GridUnits, SerialIsSumOfObjects)
         EXPECT_EQ(rt_grid_units_serial(g.get()), sum);
         EXPECT_EQ(rt_grid_units_parallel(g.get(), 1), sum);
         if (d[0] == 1 && d[1] == 1 && d[2] == 1) {
-            EXPECT_EQ(sum, 0u); // nothing to split
+            EXPECT_EQ(sum, 0u);  // nothing to split
         } else {
             EXPECT_GT(sum, 0u);
         }
@@ -580,17 +579,18 @@ TEST(GridUnits, ParallelShrinksWithProcessors)
 {
     ScenePtr s(rt_scene_new());
     TestRng rng(369);
-    for (int i = 0; i < 369; i++) ASSERT_EQ(rt_scene_add_sphere(s.get(), rng.point(0, 100), rng.uniform(0.5, 4)), RT_OK);
+    for (int i = 0; i < 369; i++)
+        ASSERT_EQ(rt_scene_add_sphere(s.get(), rng.point(0, 100), rng.uniform(0.5, 4)), RT_OK);
     GridPtr g = make_grid(s.get(), 24, 24, 24);
     ASSERT_TRUE(g);
     uint64_t serial = rt_grid_units_serial(g.get());
     EXPECT_EQ(rt_grid_units_parallel(g.get(), 1), serial);
-    EXPECT_EQ(rt_grid_units_parallel(g.get(), 0), serial); // P < 1 counts as 1
+    EXPECT_EQ(rt_grid_units_parallel(g.get(), 0), serial);  // P < 1 counts as 1
     uint64_t prev = serial;
     for (int p : {2, 4, 8, 16, 32, 64}) {
         uint64_t u = rt_grid_units_parallel(g.get(), p);
         EXPECT_LE(u, prev) << "P = " << p;
-        EXPECT_GE(u * uint64_t(p), serial) << "P = " << p; // the busiest does at least the mean
+        EXPECT_GE(u * uint64_t(p), serial) << "P = " << p;  // the busiest does at least the mean
         prev = u;
     }
     EXPECT_LT(rt_grid_units_parallel(g.get(), 16), serial);

@@ -33,7 +33,8 @@ struct Hit {
     rt_vec3 point, n_geo, n_shade;
 };
 
-Hit shoot(const rt_scene *s, uint32_t obj, rt_vec3 o, rt_vec3 d, double t_min = 0.0, double t_max = kInf) {
+Hit shoot(const rt_scene *s, uint32_t obj, rt_vec3 o, rt_vec3 d, double t_min = 0.0, double t_max = kInf)
+{
     Hit r{};
     r.hit = rt_intersect_object(s, obj, o, d, t_min, t_max, &r.h) != 0;
     if (r.hit) {
@@ -46,13 +47,15 @@ Hit shoot(const rt_scene *s, uint32_t obj, rt_vec3 o, rt_vec3 d, double t_min = 
 
 ScenePtr one_sphere(rt_vec3 c, double r) { return scene_with_spheres({{c, r}}); }
 
-ScenePtr one_polygon(const std::vector<rt_vec3> &v) {
+ScenePtr one_polygon(const std::vector<rt_vec3> &v)
+{
     ScenePtr s(rt_scene_new());
     EXPECT_EQ(rt_scene_add_polygon(s.get(), v.data(), v.size()), RT_OK);
     return s;
 }
 
-ScenePtr one_cone(rt_vec3 base, double rb, rt_vec3 apex, double ra) {
+ScenePtr one_cone(rt_vec3 base, double rb, rt_vec3 apex, double ra)
+{
     ScenePtr s(rt_scene_new());
     EXPECT_EQ(rt_scene_add_cone(s.get(), base, rb, apex, ra), RT_OK);
     return s;
@@ -60,43 +63,43 @@ ScenePtr one_cone(rt_vec3 base, double rb, rt_vec3 apex, double ra) {
 
 // Nearest t > 0 of the ray on the sphere, in long double from the same double inputs.
 // Returns -1 for a miss.
-long double sphere_t_ld(rt_vec3 o, rt_vec3 d, rt_vec3 c, double r) {
+long double sphere_t_ld(rt_vec3 o, rt_vec3 d, rt_vec3 c, double r)
+{
     long double ox = (long double)o.x - c.x, oy = (long double)o.y - c.y, oz = (long double)o.z - c.z;
     long double a = (long double)d.x * d.x + (long double)d.y * d.y + (long double)d.z * d.z;
-    long double b = (ox * d.x + oy * d.y + oz * d.z) / a; // t of the point nearest the centre
+    long double b = (ox * d.x + oy * d.y + oz * d.z) / a;  // t of the point nearest the centre
     long double px = ox - b * d.x, py = oy - b * d.y, pz = oz - b * d.z;
     long double disc = ((long double)r * r - (px * px + py * py + pz * pz)) / a;
-    if (disc < 0)
-        return -1;
+    if (disc < 0) return -1;
     long double h = sqrtl(disc);
-    if (-b - h > 0)
-        return -b - h;
-    if (-b + h > 0)
-        return -b + h;
+    if (-b - h > 0) return -b - h;
+    if (-b + h > 0) return -b + h;
     return -1;
 }
 
 void expect_unit(rt_vec3 v, double tol = 1e-12) { EXPECT_NEAR(rt_vec_length(v), 1.0, tol); }
 
-void expect_vec_near(rt_vec3 a, rt_vec3 b, double tol) {
+void expect_vec_near(rt_vec3 a, rt_vec3 b, double tol)
+{
     EXPECT_NEAR(a.x, b.x, tol);
     EXPECT_NEAR(a.y, b.y, tol);
     EXPECT_NEAR(a.z, b.z, tol);
 }
 
 // Even-odd test in the x-y plane, written here.
-bool inside_xy(const std::vector<rt_vec3> &poly, double px, double py) {
+bool inside_xy(const std::vector<rt_vec3> &poly, double px, double py)
+{
     bool in = false;
     for (size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
         const rt_vec3 &a = poly[i], &b = poly[j];
-        if ((a.y > py) != (b.y > py) && px < a.x + (py - a.y) / (b.y - a.y) * (b.x - a.x))
-            in = !in;
+        if ((a.y > py) != (b.y > py) && px < a.x + (py - a.y) / (b.y - a.y) * (b.x - a.x)) in = !in;
     }
     return in;
 }
 
 // Distance in the x-y plane from (px, py) to the polygon's boundary.
-double edge_distance_xy(const std::vector<rt_vec3> &poly, double px, double py) {
+double edge_distance_xy(const std::vector<rt_vec3> &poly, double px, double py)
+{
     double best = INFINITY;
     for (size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
         double ax = poly[j].x, ay = poly[j].y, bx = poly[i].x, by = poly[i].y;
@@ -110,7 +113,8 @@ double edge_distance_xy(const std::vector<rt_vec3> &poly, double px, double py) 
 }
 
 // A five-pointed star, outer radius 1, inner radius 0.4: concave, not self-crossing.
-std::vector<rt_vec3> star(double z) {
+std::vector<rt_vec3> star(double z)
+{
     std::vector<rt_vec3> v;
     for (int k = 0; k < 10; k++) {
         double a = M_PI / 2 + k * M_PI / 5, r = k % 2 ? 0.4 : 1.0;
@@ -119,11 +123,12 @@ std::vector<rt_vec3> star(double z) {
     return v;
 }
 
-} // namespace
+}  // namespace
 
 // --- spheres -------------------------------------------------------------
 
-TEST(IntersectSphere, FrontHitPointAndNormal) {
+TEST(IntersectSphere, FrontHitPointAndNormal)
+{
     ScenePtr s = one_sphere(rt_vec(0, 0, 5), 1.0);
     Hit h = shoot(s.get(), 0, rt_vec(0, 0, 0), rt_vec(0, 0, 1));
     ASSERT_TRUE(h.hit);
@@ -141,7 +146,8 @@ TEST(IntersectSphere, FrontHitPointAndNormal) {
     EXPECT_LT(rt_vec_dot(h.n_geo, d), 0.0);
 }
 
-TEST(IntersectSphere, RandomHitsMatchLongDouble) {
+TEST(IntersectSphere, RandomHitsMatchLongDouble)
+{
     TestRng rng(5);
     for (int i = 0; i < 5000; i++) {
         rt_vec3 c = rt_vec(rng.uniform(-10, 10), rng.uniform(-10, 10), rng.uniform(-10, 10));
@@ -172,7 +178,8 @@ TEST(IntersectSphere, RandomHitsMatchLongDouble) {
     }
 }
 
-TEST(IntersectSphere, FromInsideHitsTheFarSideWithOutwardNormal) {
+TEST(IntersectSphere, FromInsideHitsTheFarSideWithOutwardNormal)
+{
     ScenePtr s = one_sphere(rt_vec(1, 2, 3), 2.0);
     TestRng rng(11);
     for (int i = 0; i < 200; i++) {
@@ -191,7 +198,8 @@ TEST(IntersectSphere, FromInsideHitsTheFarSideWithOutwardNormal) {
     }
 }
 
-TEST(IntersectSphere, TangentAndJustMissed) {
+TEST(IntersectSphere, TangentAndJustMissed)
+{
     ScenePtr s = one_sphere(rt_vec(0, 0, 5), 1.0);
     // Exactly tangent (discriminant 0): a hit, if any, is at the tangent point.
     Hit h = shoot(s.get(), 0, rt_vec(0, 1, 0), rt_vec(0, 0, 1));
@@ -218,7 +226,8 @@ TEST(IntersectSphere, TangentAndJustMissed) {
     EXPECT_FALSE(shoot(s.get(), 0, rt_vec_sub(touch, rt_vec_scale(dd, 3)), dd).hit);
 }
 
-TEST(IntersectSphere, BehindAndInterval) {
+TEST(IntersectSphere, BehindAndInterval)
+{
     ScenePtr s = one_sphere(rt_vec(0, 0, 5), 1.0);
     EXPECT_FALSE(shoot(s.get(), 0, rt_vec(0, 0, 0), rt_vec(0, 0, -1)).hit);
     // t_max before the near root: no hit; t_min between the roots: the far root.
@@ -234,11 +243,12 @@ TEST(IntersectSphere, BehindAndInterval) {
     EXPECT_DOUBLE_EQ(h.t, 6.0);
 }
 
-TEST(IntersectSphere, TinySphereSeenFromDistanceOne) {
+TEST(IntersectSphere, TinySphereSeenFromDistanceOne)
+{
     TestRng rng(17);
     const double r = 1e-6;
     for (int i = 0; i < 2000; i++) {
-        rt_vec3 c = rt_vec_scale(rng.unit(), 1.0); // at distance 1 from the origin
+        rt_vec3 c = rt_vec_scale(rng.unit(), 1.0);  // at distance 1 from the origin
         ScenePtr s = one_sphere(c, r);
         rt_vec3 o = rt_vec(0, 0, 0);
         rt_vec3 aim = rt_vec_add(c, rt_vec_scale(rng.unit(), r * rng.uniform(0, 0.999)));
@@ -260,7 +270,8 @@ TEST(IntersectSphere, TinySphereSeenFromDistanceOne) {
     }
 }
 
-TEST(IntersectSphere, HugeSphere) {
+TEST(IntersectSphere, HugeSphere)
+{
     TestRng rng(23);
     const double r = 1e6;
     rt_vec3 c = rt_vec(0, 0, 3e6);
@@ -281,15 +292,15 @@ TEST(IntersectSphere, HugeSphere) {
         want = sphere_t_ld(oi, n, c, r);
         h = shoot(s.get(), 0, oi, n);
         ASSERT_TRUE(h.hit);
-        EXPECT_NEAR(h.t, (double)want, 1e-9)
-            << "t ~ 1 from inside, rounding of 1e6 coordinates allows ~1e-10";
+        EXPECT_NEAR(h.t, (double)want, 1e-9) << "t ~ 1 from inside, rounding of 1e6 coordinates allows ~1e-10";
         EXPECT_GT(rt_vec_dot(h.n_geo, n), 0.0);
     }
 }
 
 // --- polygons ------------------------------------------------------------
 
-TEST(IntersectPolygon, SquareFrontAndBack) {
+TEST(IntersectPolygon, SquareFrontAndBack)
+{
     std::vector<rt_vec3> sq = {rt_vec(0, 0, 0), rt_vec(1, 0, 0), rt_vec(1, 1, 0), rt_vec(0, 1, 0)};
     ScenePtr s = one_polygon(sq);
     Hit h = shoot(s.get(), 0, rt_vec(0.25, 0.5, 2), rt_vec(0, 0, -1));
@@ -319,7 +330,8 @@ TEST(IntersectPolygon, SquareFrontAndBack) {
     expect_vec_near(h.n_geo, rt_vec(0, 0, -1), 1e-15);
 }
 
-TEST(IntersectPolygon, TiltedPolygonNewellNormal) {
+TEST(IntersectPolygon, TiltedPolygonNewellNormal)
+{
     // A regular hexagon in a tilted plane, counter-clockwise about n.
     rt_vec3 n = rt_vec_normalize(rt_vec(1, 2, 3));
     rt_vec3 u = rt_vec_normalize(rt_vec_cross(n, rt_vec(0, 0, 1)));
@@ -342,7 +354,8 @@ TEST(IntersectPolygon, TiltedPolygonNewellNormal) {
     EXPECT_FALSE(shoot(s.get(), 0, rt_vec_add(near_out, n), rt_vec_scale(n, -1)).hit);
 }
 
-TEST(IntersectPolygon, ConcaveStarNotchesMiss) {
+TEST(IntersectPolygon, ConcaveStarNotchesMiss)
+{
     std::vector<rt_vec3> st = star(0.0);
     ScenePtr s = one_polygon(st);
     rt_vec3 down = rt_vec(0, 0, -1);
@@ -350,12 +363,10 @@ TEST(IntersectPolygon, ConcaveStarNotchesMiss) {
     EXPECT_TRUE(shoot(s.get(), 0, rt_vec(0, 0, 1), down).hit);
     for (int k = 0; k < 5; k++) {
         double a = M_PI / 2 + k * 2 * M_PI / 5;
-        EXPECT_TRUE(shoot(s.get(), 0, rt_vec(0.8 * std::cos(a), 0.8 * std::sin(a), 1), down).hit)
-            << "arm " << k;
+        EXPECT_TRUE(shoot(s.get(), 0, rt_vec(0.8 * std::cos(a), 0.8 * std::sin(a), 1), down).hit) << "arm " << k;
         // The notch between two arms, beyond the inner vertex: outside the star.
         double b = a + M_PI / 5;
-        EXPECT_FALSE(shoot(s.get(), 0, rt_vec(0.6 * std::cos(b), 0.6 * std::sin(b), 1), down).hit)
-            << "notch " << k;
+        EXPECT_FALSE(shoot(s.get(), 0, rt_vec(0.6 * std::cos(b), 0.6 * std::sin(b), 1), down).hit) << "notch " << k;
         EXPECT_FALSE(shoot(s.get(), 0, rt_vec(0.95 * std::cos(b), 0.95 * std::sin(b), 1), down).hit) << k;
     }
     // Random points against the even-odd oracle, away from the boundary.
@@ -363,8 +374,7 @@ TEST(IntersectPolygon, ConcaveStarNotchesMiss) {
     int hits = 0, misses = 0;
     for (int i = 0; i < 20000; i++) {
         double x = rng.uniform(-1.1, 1.1), y = rng.uniform(-1.1, 1.1);
-        if (edge_distance_xy(st, x, y) < 1e-9)
-            continue;
+        if (edge_distance_xy(st, x, y) < 1e-9) continue;
         bool want = inside_xy(st, x, y);
         Hit h = shoot(s.get(), 0, rt_vec(x, y, 1), down);
         ASSERT_EQ(h.hit, want) << x << " " << y;
@@ -374,17 +384,18 @@ TEST(IntersectPolygon, ConcaveStarNotchesMiss) {
     EXPECT_GT(misses, 1000);
 }
 
-TEST(IntersectPolygon, AsymmetricBowTieLobesHitMiddleMisses) {
+TEST(IntersectPolygon, AsymmetricBowTieLobesHitMiddleMisses)
+{
     // Edges (0,0)-(4,2) and (4,0)-(0,1) cross at (4/3, 2/3): lobes of area 2/3 and 8/3.
     std::vector<rt_vec3> bow = {rt_vec(0, 0, 0), rt_vec(4, 2, 0), rt_vec(4, 0, 0), rt_vec(0, 1, 0)};
     ScenePtr s = one_polygon(bow);
     rt_vec3 down = rt_vec(0, 0, -1);
-    EXPECT_TRUE(shoot(s.get(), 0, rt_vec(0.3, 0.5, 1), down).hit);  // left lobe
-    EXPECT_TRUE(shoot(s.get(), 0, rt_vec(3.5, 1.0, 1), down).hit);  // right lobe
-    EXPECT_TRUE(shoot(s.get(), 0, rt_vec(2.0, 0.75, 1), down).hit); // right lobe, narrow part
-    EXPECT_FALSE(shoot(s.get(), 0, rt_vec(2.0, 0.3, 1), down).hit); // below the crossing
-    EXPECT_FALSE(shoot(s.get(), 0, rt_vec(0.3, 1.5, 1), down).hit); // above the left lobe
-    EXPECT_FALSE(shoot(s.get(), 0, rt_vec(1.0, 1.2, 1), down).hit); // between the lobes, above
+    EXPECT_TRUE(shoot(s.get(), 0, rt_vec(0.3, 0.5, 1), down).hit);   // left lobe
+    EXPECT_TRUE(shoot(s.get(), 0, rt_vec(3.5, 1.0, 1), down).hit);   // right lobe
+    EXPECT_TRUE(shoot(s.get(), 0, rt_vec(2.0, 0.75, 1), down).hit);  // right lobe, narrow part
+    EXPECT_FALSE(shoot(s.get(), 0, rt_vec(2.0, 0.3, 1), down).hit);  // below the crossing
+    EXPECT_FALSE(shoot(s.get(), 0, rt_vec(0.3, 1.5, 1), down).hit);  // above the left lobe
+    EXPECT_FALSE(shoot(s.get(), 0, rt_vec(1.0, 1.2, 1), down).hit);  // between the lobes, above
     // The Newell normal follows the larger lobe: clockwise in x-y, so -z.
     Hit h = shoot(s.get(), 0, rt_vec(3.5, 1.0, 1), down);
     ASSERT_TRUE(h.hit);
@@ -392,13 +403,13 @@ TEST(IntersectPolygon, AsymmetricBowTieLobesHitMiddleMisses) {
     TestRng rng(8);
     for (int i = 0; i < 20000; i++) {
         double x = rng.uniform(-0.5, 4.5), y = rng.uniform(-0.5, 2.5);
-        if (edge_distance_xy(bow, x, y) < 1e-9)
-            continue;
+        if (edge_distance_xy(bow, x, y) < 1e-9) continue;
         ASSERT_EQ(shoot(s.get(), 0, rt_vec(x, y, 1), down).hit, inside_xy(bow, x, y)) << x << " " << y;
     }
 }
 
-TEST(IntersectPolygon, PentagramCentreIsOutsideByEvenOdd) {
+TEST(IntersectPolygon, PentagramCentreIsOutsideByEvenOdd)
+{
     // {5/2}: the points are crossed once (inside), the central pentagon twice (outside by
     // even-odd, though its winding number is 2).
     std::vector<rt_vec3> pg;
@@ -412,19 +423,18 @@ TEST(IntersectPolygon, PentagramCentreIsOutsideByEvenOdd) {
     EXPECT_FALSE(shoot(s.get(), 0, rt_vec(0.1, 0.1, 1), down).hit);
     for (int k = 0; k < 5; k++) {
         double a = M_PI / 2 + k * 2 * M_PI / 5;
-        EXPECT_TRUE(shoot(s.get(), 0, rt_vec(0.7 * std::cos(a), 0.7 * std::sin(a), 1), down).hit)
-            << "point " << k;
+        EXPECT_TRUE(shoot(s.get(), 0, rt_vec(0.7 * std::cos(a), 0.7 * std::sin(a), 1), down).hit) << "point " << k;
     }
     TestRng rng(41);
     for (int i = 0; i < 20000; i++) {
         double x = rng.uniform(-1.1, 1.1), y = rng.uniform(-1.1, 1.1);
-        if (edge_distance_xy(pg, x, y) < 1e-9)
-            continue;
+        if (edge_distance_xy(pg, x, y) < 1e-9) continue;
         ASSERT_EQ(shoot(s.get(), 0, rt_vec(x, y, 1), down).hit, inside_xy(pg, x, y)) << x << " " << y;
     }
 }
 
-TEST(IntersectPolygon, SymmetricBowTieIsHit) {
+TEST(IntersectPolygon, SymmetricBowTieIsHit)
+{
     // A self-crossing polygon whose two lobes have equal area: its Newell vector is zero
     // (the signed areas cancel), yet it covers an area of 2 and docs/design.md section 3 says
     // self-crossing polygons work and only zero-area polygons are never hit.
@@ -438,13 +448,14 @@ TEST(IntersectPolygon, SymmetricBowTieIsHit) {
     EXPECT_LE(b.lo.x, b.hi.x) << "a symmetric bow-tie has area, so it has bounds (and grid cells)";
 }
 
-TEST(IntersectPolygon, ZeroAreaPolygonsAreNeverHit) {
+TEST(IntersectPolygon, ZeroAreaPolygonsAreNeverHit)
+{
     TestRng rng(19);
     std::vector<std::vector<rt_vec3>> degenerate = {
-        {rt_vec(0, 0, 0), rt_vec(1, 0, 0), rt_vec(2, 0, 0)},                        // collinear
-        {rt_vec(0, 0, 0), rt_vec(1, 1, 1), rt_vec(2, 2, 2), rt_vec(0.5, 0.5, 0.5)}, // collinear, 4
-        {rt_vec(1, 1, 1), rt_vec(1, 1, 1), rt_vec(1, 1, 1)},                        // one point
-        {rt_vec(0, 0, 0), rt_vec(1, 0, 0), rt_vec(0, 0, 0), rt_vec(1, 0, 0)},       // back and forth
+        {rt_vec(0, 0, 0), rt_vec(1, 0, 0), rt_vec(2, 0, 0)},                         // collinear
+        {rt_vec(0, 0, 0), rt_vec(1, 1, 1), rt_vec(2, 2, 2), rt_vec(0.5, 0.5, 0.5)},  // collinear, 4
+        {rt_vec(1, 1, 1), rt_vec(1, 1, 1), rt_vec(1, 1, 1)},                         // one point
+        {rt_vec(0, 0, 0), rt_vec(1, 0, 0), rt_vec(0, 0, 0), rt_vec(1, 0, 0)},        // back and forth
     };
     for (size_t k = 0; k < degenerate.size(); k++) {
         ScenePtr s = one_polygon(degenerate[k]);
@@ -452,21 +463,19 @@ TEST(IntersectPolygon, ZeroAreaPolygonsAreNeverHit) {
         EXPECT_FALSE(b.lo.x <= b.hi.x && b.lo.y <= b.hi.y && b.lo.z <= b.hi.z) << "polygon " << k;
         for (int i = 0; i < 2000; i++) {
             // Rays through points of the segment from every direction, including along it.
-            rt_vec3 p =
-                rt_vec_add(degenerate[k][0],
-                           rt_vec_scale(rt_vec_sub(degenerate[k][1], degenerate[k][0]), rng.uniform(0, 1)));
+            rt_vec3 p = rt_vec_add(degenerate[k][0],
+                                   rt_vec_scale(rt_vec_sub(degenerate[k][1], degenerate[k][0]), rng.uniform(0, 1)));
             rt_vec3 d = rng.unit();
-            if (i == 0)
-                d = rt_vec_normalize(rt_vec_sub(degenerate[k][1], degenerate[k][0]));
-            if (rt_vec_is_zero(d))
-                d = rt_vec(0, 0, 1);
+            if (i == 0) d = rt_vec_normalize(rt_vec_sub(degenerate[k][1], degenerate[k][0]));
+            if (rt_vec_is_zero(d)) d = rt_vec(0, 0, 1);
             EXPECT_FALSE(shoot(s.get(), 0, rt_vec_sub(p, rt_vec_scale(d, 3)), d).hit)
                 << "polygon " << k << " ray " << i;
         }
     }
 }
 
-TEST(IntersectPolygon, EdgeOnRaysNeverHit) {
+TEST(IntersectPolygon, EdgeOnRaysNeverHit)
+{
     std::vector<rt_vec3> sq = {rt_vec(0, 0, 0), rt_vec(1, 0, 0), rt_vec(1, 1, 0), rt_vec(0, 1, 0)};
     ScenePtr s = one_polygon(sq);
     // In the plane, across the inside.
@@ -485,10 +494,11 @@ TEST(IntersectPolygon, EdgeOnRaysNeverHit) {
 
 // --- pp triangles ---------------------------------------------------------
 
-TEST(IntersectTriangle, BarycentricsAndInterpolatedNormal) {
+TEST(IntersectTriangle, BarycentricsAndInterpolatedNormal)
+{
     ScenePtr s(rt_scene_new());
     rt_vec3 v[3] = {rt_vec(0, 0, 0), rt_vec(2, 0, 0), rt_vec(0, 2, 0)};
-    rt_vec3 n[3] = {rt_vec(0, 0, 2), rt_vec(1, 0, 1), rt_vec(0, -3, 3)}; // not unit: normalised by the scene
+    rt_vec3 n[3] = {rt_vec(0, 0, 2), rt_vec(1, 0, 1), rt_vec(0, -3, 3)};  // not unit: normalised by the scene
     ASSERT_EQ(rt_scene_add_patch(s.get(), v, n, 3), RT_OK);
     ASSERT_EQ(rt_scene_object_count(s.get()), 1u);
     ASSERT_EQ(rt_scene_object_kind(s.get(), 0), RT_OBJ_TRIANGLE);
@@ -497,8 +507,7 @@ TEST(IntersectTriangle, BarycentricsAndInterpolatedNormal) {
     for (int i = 0; i < 1000; i++) {
         double a = rng.uniform(0.001, 0.998), b = rng.uniform(0.001, 0.998 - a);
         double w = 1 - a - b;
-        rt_vec3 p =
-            rt_vec_add(rt_vec_scale(v[0], w), rt_vec_add(rt_vec_scale(v[1], a), rt_vec_scale(v[2], b)));
+        rt_vec3 p = rt_vec_add(rt_vec_scale(v[0], w), rt_vec_add(rt_vec_scale(v[1], a), rt_vec_scale(v[2], b)));
         bool from_above = i % 2 == 0;
         rt_vec3 o = rt_vec_add(p, rt_vec(0.1, -0.2, from_above ? 1 : -1));
         rt_vec3 d = rt_vec_normalize(rt_vec_sub(p, o));
@@ -529,9 +538,10 @@ TEST(IntersectTriangle, BarycentricsAndInterpolatedNormal) {
     EXPECT_FALSE(shoot(s.get(), 0, rt_vec(-1, 0.5, 0), rt_vec(1, 0, 0)).hit);
 }
 
-TEST(IntersectTriangle, VertexOrderGivesGeometricNormal) {
+TEST(IntersectTriangle, VertexOrderGivesGeometricNormal)
+{
     ScenePtr s(rt_scene_new());
-    rt_vec3 v[3] = {rt_vec(0, 0, 0), rt_vec(0, 2, 0), rt_vec(2, 0, 0)}; // clockwise about +z
+    rt_vec3 v[3] = {rt_vec(0, 0, 0), rt_vec(0, 2, 0), rt_vec(2, 0, 0)};  // clockwise about +z
     rt_vec3 n[3] = {rt_vec(0, 0, 1), rt_vec(0, 0, 1), rt_vec(0, 0, 1)};
     ASSERT_EQ(rt_scene_add_patch(s.get(), v, n, 3), RT_OK);
     Hit h = shoot(s.get(), 0, rt_vec(0.5, 0.5, 1), rt_vec(0, 0, -1));
@@ -541,7 +551,8 @@ TEST(IntersectTriangle, VertexOrderGivesGeometricNormal) {
     expect_vec_near(h.n_shade, rt_vec(0, 0, 1), 1e-15);
 }
 
-TEST(IntersectTriangle, PatchIsAFanAndZeroAreaTrianglesNeverHit) {
+TEST(IntersectTriangle, PatchIsAFanAndZeroAreaTrianglesNeverHit)
+{
     ScenePtr s(rt_scene_new());
     rt_vec3 v[5] = {rt_vec(0, 0, 0), rt_vec(1, 0, 0), rt_vec(1, 1, 0), rt_vec(0.5, 1.5, 0), rt_vec(0, 1, 0)};
     rt_vec3 n[5] = {rt_vec(0, 0, 1), rt_vec(0, 0, 1), rt_vec(0, 0, 1), rt_vec(0, 0, 1), rt_vec(0, 0, 1)};
@@ -566,7 +577,8 @@ TEST(IntersectTriangle, PatchIsAFanAndZeroAreaTrianglesNeverHit) {
 
 // --- cones and cylinders -----------------------------------------------------
 
-TEST(IntersectCone, CylinderOutsideInsideAndBeyondTheEnds) {
+TEST(IntersectCone, CylinderOutsideInsideAndBeyondTheEnds)
+{
     ScenePtr s = one_cone(rt_vec(0, 0, 0), 1.0, rt_vec(0, 0, 2), 1.0);
     // From outside.
     Hit h = shoot(s.get(), 0, rt_vec(-5, 0, 1), rt_vec(1, 0, 0));
@@ -589,10 +601,8 @@ TEST(IntersectCone, CylinderOutsideInsideAndBeyondTheEnds) {
     // Beyond the ends: no caps, so these miss.
     EXPECT_FALSE(shoot(s.get(), 0, rt_vec(-5, 0, 2.5), rt_vec(1, 0, 0)).hit);
     EXPECT_FALSE(shoot(s.get(), 0, rt_vec(-5, 0, -0.01), rt_vec(1, 0, 0)).hit);
-    EXPECT_FALSE(shoot(s.get(), 0, rt_vec(0, 0, -1), rt_vec(0, 0, 1)).hit)
-        << "up the axis through both open ends";
-    EXPECT_FALSE(shoot(s.get(), 0, rt_vec(0.5, 0.2, 1), rt_vec(0, 0, 1)).hit)
-        << "inside, out through the top";
+    EXPECT_FALSE(shoot(s.get(), 0, rt_vec(0, 0, -1), rt_vec(0, 0, 1)).hit) << "up the axis through both open ends";
+    EXPECT_FALSE(shoot(s.get(), 0, rt_vec(0.5, 0.2, 1), rt_vec(0, 0, 1)).hit) << "inside, out through the top";
     // Hits the side only over its height: a ray through the wall at z = 2.5 misses.
     d = rt_vec_normalize(rt_vec(1, 0, 0.5));
     h = shoot(s.get(), 0, rt_vec(-3, 0, 0), d);
@@ -603,7 +613,8 @@ TEST(IntersectCone, CylinderOutsideInsideAndBeyondTheEnds) {
     EXPECT_FALSE(shoot(s.get(), 0, rt_vec(1 + 1e-9, 0, -1), rt_vec(0, 0, 1)).hit);
 }
 
-TEST(IntersectCone, TrueConeNormalAndHits) {
+TEST(IntersectCone, TrueConeNormalAndHits)
+{
     // Base radius 1 at z = 0, apex at z = 2: radius 1 - z/2.
     ScenePtr s = one_cone(rt_vec(0, 0, 0), 1.0, rt_vec(0, 0, 2), 0.0);
     Hit h = shoot(s.get(), 0, rt_vec(-5, 0, 1), rt_vec(1, 0, 0));
@@ -632,7 +643,8 @@ TEST(IntersectCone, TrueConeNormalAndHits) {
     }
 }
 
-TEST(IntersectCone, RandomOrientedConesHitPointsLieOnTheSurface) {
+TEST(IntersectCone, RandomOrientedConesHitPointsLieOnTheSurface)
+{
     TestRng rng(37);
     int hits = 0;
     for (int i = 0; i < 3000; i++) {
@@ -641,8 +653,7 @@ TEST(IntersectCone, RandomOrientedConesHitPointsLieOnTheSurface) {
         double len = rng.uniform(0.5, 4);
         rt_vec3 apex = rt_vec_add(base, rt_vec_scale(axis, len));
         double rb = rng.uniform(0, 2), ra = i % 3 == 0 ? 0.0 : rng.uniform(0.1, 2);
-        if (rb == 0 && ra == 0)
-            continue;
+        if (rb == 0 && ra == 0) continue;
         ScenePtr s = one_cone(base, rb, apex, ra);
         // A random point P on the surface; a ray from outside aimed at it must hit at or before P.
         double hgt = rng.uniform(0.01, 0.99) * len;
@@ -666,8 +677,8 @@ TEST(IntersectCone, RandomOrientedConesHitPointsLieOnTheSurface) {
         // The normal is unit, perpendicular to the surface line through the point, outward.
         expect_unit(h.n_geo);
         rt_vec3 radial = rt_vec_normalize(rt_vec_sub(q, rt_vec_scale(axis, hq)));
-        rt_vec3 line = rt_vec_sub(rt_vec_add(rt_vec_scale(axis, len), rt_vec_scale(radial, ra)),
-                                  rt_vec_scale(radial, rb));
+        rt_vec3 line =
+            rt_vec_sub(rt_vec_add(rt_vec_scale(axis, len), rt_vec_scale(radial, ra)), rt_vec_scale(radial, rb));
         EXPECT_NEAR(rt_vec_dot(h.n_geo, rt_vec_normalize(line)), 0.0, 1e-9) << i;
         EXPECT_GT(rt_vec_dot(h.n_geo, radial), 0.0) << i;
     }

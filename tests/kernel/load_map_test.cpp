@@ -24,7 +24,7 @@ double drawn(const rt_canvas *c, uint32_t x0, uint32_t y0, uint32_t x1, uint32_t
     return static_cast<double>(n) / ((x1 - x0) * (y1 - y0));
 }
 
-} // namespace
+}  // namespace
 
 TEST(LoadMap, WorkPerNodeSumsTheCellsEachNodeOwns)
 {

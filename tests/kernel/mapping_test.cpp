@@ -25,7 +25,7 @@ std::vector<int> owners_1d(rt_map_kind kind, int block, int cells, int procs)
     return v;
 }
 
-} // namespace
+}  // namespace
 
 TEST(MappingAxis, TwentyFourCellsOverFour)
 {
@@ -118,7 +118,7 @@ TEST(MappingFill, MoreProcessorsThanCellsWorks)
     for (rt_map_kind kind : {RT_MAP_BLOCK, RT_MAP_CYCLIC, RT_MAP_BLOCK_CYCLIC}) {
         ASSERT_EQ(rt_mapping_fill(cells, procs, kind, 1, owner.data(), msg, sizeof msg), RT_OK) << msg;
         std::set<int32_t> used(owner.begin(), owner.end());
-        EXPECT_EQ(used.size(), 8u); // each cell its own processor
+        EXPECT_EQ(used.size(), 8u);  // each cell its own processor
         for (int32_t o : owner) EXPECT_TRUE(o >= 0 && o < 64);
     }
 }
@@ -237,7 +237,7 @@ TEST(Memory, WholeSceneBoundsEveryOwner)
             EXPECT_LE(u.material_bytes, whole.material_bytes);
             lists += u.list_bytes;
         }
-        EXPECT_EQ(lists, whole.list_bytes); // every cell owned exactly once
+        EXPECT_EQ(lists, whole.list_bytes);  // every cell owned exactly once
     }
 }
 
@@ -306,10 +306,11 @@ TEST(CostMap, PilotWorkSumsToTheRenderersTimeAndTrafficToItsHandOvers)
         for (int n = 0; n < 6; n++) EXPECT_GT(used[n], 0) << "node " << n << " got no cell";
         EXPECT_GE(f.max_node_work_us, f.mean_node_work_us);
         EXPECT_GE(f.cut_hops, f.cut_packets);
-        ASSERT_EQ(rt_cost_map(&pilot, nodes, torus, rt_cost_edge_us(&t), again.data(), nullptr, msg, sizeof msg), RT_OK);
+        ASSERT_EQ(rt_cost_map(&pilot, nodes, torus, rt_cost_edge_us(&t), again.data(), nullptr, msg, sizeof msg),
+                  RT_OK);
         EXPECT_EQ(owner, again) << "reproducible";
     }
-    {   // Folded: fold 1 is the plain mapping; fold 2 still uses only real nodes, every one.
+    {  // Folded: fold 1 is the plain mapping; fold 2 still uses only real nodes, every one.
         int nodes[3] = {2, 2, 1};
         std::vector<int32_t> plain(pilot.cells), one(pilot.cells), two(pilot.cells);
         double e = rt_cost_edge_us(&t);

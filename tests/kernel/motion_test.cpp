@@ -136,7 +136,8 @@ TEST(MotionFile, EveryErrorNamesFileAndLine)
         {"objects 4000000\n", "t.motion:1: objects FIRST 4000000 is above 3999999"},
         {"objects 0\nkey 0\nobjects 1\n", "t.motion:3: objects 1-1 have no 'key' line"},
         {"objects 0\npivot 1 2\n", "t.motion:2: 'pivot' takes three numbers"},
-        {"objects 0\npivot 0 0 0\npivot 1 1 1\n", "t.motion:3: a second 'pivot' line in this entry (the first is line 2)"},
+        {"objects 0\npivot 0 0 0\npivot 1 1 1\n",
+         "t.motion:3: a second 'pivot' line in this entry (the first is line 2)"},
         {"objects 0\naxis 0 0 0\n", "t.motion:2: axis 0 0 0: a rotation axis needs a direction"},
         {"objects 0\naxis 0 nan 1\n", "t.motion:2: axis 'nan' is not a number"},
         {"objects 0\nkey 0 move 1 2\n", "t.motion:2: move needs three numbers"},
@@ -181,7 +182,9 @@ TEST(MotionFile, LoadReadsThroughTheFileReader)
     std::string path = testing::TempDir() + "torusrt_motion_load.motion";
     FILE *f = std::fopen(path.c_str(), "wb");
     ASSERT_NE(f, nullptr);
-    std::fputs("\xEF\xBB\xBF" "frames 3\nobjects 1\nkey 2 move 0 0 1\n", f); /* a byte-order mark first */
+    std::fputs("\xEF\xBB\xBF"
+               "frames 3\nobjects 1\nkey 2 move 0 0 1\n",
+               f); /* a byte-order mark first */
     std::fclose(f);
     char msg[256] = "";
     rt_motion *m = nullptr;
@@ -239,7 +242,8 @@ TEST(MotionApply, ZeroAndFullTurnsAreExactlyTheIdentity)
         ScenePtr f = at_frame(m.get(), s.get(), k, &moved);
         EXPECT_EQ(moved, std::vector<uint8_t>(5, 0)) << "frame " << k;
         for (size_t o = 0; o < 5; o++)
-            EXPECT_EQ(std::memcmp(&f->objects[o], &s->objects[o], sizeof(rt_object)), 0) << "frame " << k << " object " << o;
+            EXPECT_EQ(std::memcmp(&f->objects[o], &s->objects[o], sizeof(rt_object)), 0)
+                << "frame " << k << " object " << o;
         EXPECT_EQ(std::memcmp(f->vertices, s->vertices, s->vertex_count * sizeof(rt_vec3)), 0);
     }
 }

@@ -34,8 +34,7 @@ long message_line(const std::string &msg, const std::string &name)
     if (msg.compare(0, name.size() + 1, name + ":") != 0) return 0;
     size_t i = name.size() + 1, start = i;
     long line = 0;
-    while (i < msg.size() && msg[i] >= '0' && msg[i] <= '9' && i - start < 12)
-        line = line * 10 + (msg[i++] - '0');
+    while (i < msg.size() && msg[i] >= '0' && msg[i] <= '9' && i - start < 12) line = line * 10 + (msg[i++] - '0');
     if (i == start || i >= msg.size() || msg[i] != ':') return 0;
     return line;
 }
@@ -51,7 +50,7 @@ struct Loaded {
 void load_file(const std::string &path, Loaded &r)
 {
     char msg[RT_MSG_LEN] = "";
-    r.scene = reinterpret_cast<rt_scene *>(&r); // must be overwritten with NULL on failure
+    r.scene = reinterpret_cast<rt_scene *>(&r);  // must be overwritten with NULL on failure
     r.status = rt_nff_load(path.c_str(), &r.scene, msg, sizeof msg, collect_warning, &r.warnings);
     r.msg = msg;
 }
@@ -60,8 +59,7 @@ void parse_text(const std::string &text, Loaded &r, const char *name = "mem.nff"
 {
     char msg[RT_MSG_LEN] = "";
     r.scene = reinterpret_cast<rt_scene *>(&r);
-    r.status = rt_nff_parse(name, text.data(), text.size(), &r.scene, msg, sizeof msg,
-                            collect_warning, &r.warnings);
+    r.status = rt_nff_parse(name, text.data(), text.size(), &r.scene, msg, sizeof msg, collect_warning, &r.warnings);
     r.msg = msg;
 }
 
@@ -76,7 +74,7 @@ std::vector<fs::path> bad_files()
 
 const char *kView = "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 45\nhither 1\nresolution 64 64\n";
 
-} // namespace
+}  // namespace
 
 // ------------------------------------------------------------ the bad corpus
 
@@ -109,7 +107,7 @@ struct ExpectedError {
     const char *file;
     long line;
     rt_status status;
-    const char *text; // a fragment of the message
+    const char *text;  // a fragment of the message
 };
 
 // Each line below was checked by hand against the file.
@@ -130,8 +128,7 @@ TEST(NffBad, HandCheckedLineNumbers)
         {"binary-garbage.nff", 10, RT_ERR_PARSE, "binary data"},  // the file reader finds its NUL first
         {"utf16-text.nff", 1, RT_ERR_PARSE, "binary data"},
         {"nul-byte.nff", 8, RT_ERR_PARSE, "binary data"},
-        {"negative-radius.nff", 9, RT_ERR_PARSE,
-         "negative sphere radius (inside-only spheres) is not supported"},
+        {"negative-radius.nff", 9, RT_ERR_PARSE, "negative sphere radius (inside-only spheres) is not supported"},
         {"zero-radius.nff", 9, RT_ERR_PARSE, "sphere radius"},
         {"cone-both-radii-zero.nff", 9, RT_ERR_PARSE, "both radii zero"},
         {"two-views.nff", 10, RT_ERR_PARSE, "second 'v'"},
@@ -185,7 +182,9 @@ TEST(NffBad, FileOverTheSizeLimitIsRejectedUnread)
     fs::path dir = fs::temp_directory_path() / ("nff_test_" + std::to_string(::getpid()));
     fs::create_directories(dir);
     fs::path big = dir / "big.nff";
-    { std::ofstream(big) << "v"; }
+    {
+        std::ofstream(big) << "v";
+    }
     fs::resize_file(big, static_cast<std::uintmax_t>(RT_NFF_MAX_FILE_BYTES) + 1);
     Loaded r;
     load_file(big.string(), r);
@@ -210,8 +209,8 @@ TEST(NffBad, ParseUsesTheNameAndCountsCrLfLines)
 
 TEST(NffBad, NumbersThatAreNotFiniteDecimals)
 {
-    const char *bad[] = {"nan", "NaN", "inf", "-inf", "+Infinity", "0x10", "1.2.3", "1e", "e5",
-                         ".", "-", "+", "1e+", "1..", "--1", "1e5.5", "1e999", "-1e999", "1f"};
+    const char *bad[] = {"nan", "NaN", "inf", "-inf", "+Infinity", "0x10",  "1.2.3", "1e",     "e5", ".",
+                         "-",   "+",   "1e+", "1..",  "--1",       "1e5.5", "1e999", "-1e999", "1f"};
     for (const char *number : bad) {
         SCOPED_TRACE(number);
         Loaded r;
@@ -233,8 +232,7 @@ TEST(NffBad, EveryPrefixOfAGoodFileIsSafe)
         Loaded r;
         std::vector<char> copy(text.begin(), text.begin() + static_cast<long>(cut));
         char msg[RT_MSG_LEN] = "";
-        r.status = rt_nff_parse("cut.nff", copy.data(), copy.size(), &r.scene, msg, sizeof msg,
-                                nullptr, nullptr);
+        r.status = rt_nff_parse("cut.nff", copy.data(), copy.size(), &r.scene, msg, sizeof msg, nullptr, nullptr);
         r.msg = msg;
         if (r.status != RT_OK) {
             EXPECT_TRUE(r.scene == nullptr) << cut;
@@ -247,23 +245,22 @@ TEST(NffBad, EveryPrefixOfAGoodFileIsSafe)
 
 TEST(NffGood, TokenStreamReadsBack)
 {
-    const std::string text =
-        "# SPD-like token stream: b before v, c on one line, 1e-16 and -0\n"
-        "b 0.1 0.2 0.3\n"                                // line 2
-        "am 0.05 0.06 0.07\n"                            // line 3
-        "v from 0 -0 10 at 0 0 0\n"                      // line 4
-        "up 0 1 0 angle 45 hither 1e-16 resolution 32 24\n"
-        "l 5 5 5\n"                                      // light without colour
-        "l -5 5 5 1 0.5 0.25   # coloured\n"             // light with colour
-        "s 0 0 0 1\n"                                    // line 8: before any f
-        "s 2 0 0 0.5\n"                                  // before any f again
-        "f 1 0 0 1 0 0 0 1\n"
-        "c 0 0 0 1 0 1 0 0.5\n"
-        "pp 4\n"
-        "0 0 0 0 0 1 1 0 0 0 0 1\n"
-        "1 1 0 0 0 1 0 1 0 0 0 1\n"
-        "p 3 0 0 0 1 0 0 0 1 -0\n"
-        "l 0 0 20\n";
+    const std::string text = "# SPD-like token stream: b before v, c on one line, 1e-16 and -0\n"
+                             "b 0.1 0.2 0.3\n"            // line 2
+                             "am 0.05 0.06 0.07\n"        // line 3
+                             "v from 0 -0 10 at 0 0 0\n"  // line 4
+                             "up 0 1 0 angle 45 hither 1e-16 resolution 32 24\n"
+                             "l 5 5 5\n"                           // light without colour
+                             "l -5 5 5 1 0.5 0.25   # coloured\n"  // light with colour
+                             "s 0 0 0 1\n"                         // line 8: before any f
+                             "s 2 0 0 0.5\n"                       // before any f again
+                             "f 1 0 0 1 0 0 0 1\n"
+                             "c 0 0 0 1 0 1 0 0.5\n"
+                             "pp 4\n"
+                             "0 0 0 0 0 1 1 0 0 0 0 1\n"
+                             "1 1 0 0 0 1 0 1 0 0 0 1\n"
+                             "p 3 0 0 0 1 0 0 0 1 -0\n"
+                             "l 0 0 20\n";
     Loaded r;
     parse_text(text, r);
     ASSERT_EQ(r.status, RT_OK) << r.msg;
@@ -281,7 +278,7 @@ TEST(NffGood, TokenStreamReadsBack)
     const rt_camera *cam = rt_scene_camera(r.scene);
     EXPECT_EQ(cam->from.x, 0.0);
     EXPECT_EQ(cam->from.y, 0.0);
-    EXPECT_TRUE(std::signbit(cam->from.y)); // "-0" is read as negative zero
+    EXPECT_TRUE(std::signbit(cam->from.y));  // "-0" is read as negative zero
     EXPECT_EQ(cam->from.z, 10.0);
     EXPECT_EQ(cam->up.y, 1.0);
     EXPECT_EQ(cam->angle, 45.0);
@@ -298,7 +295,7 @@ TEST(NffGood, TokenStreamReadsBack)
     EXPECT_DOUBLE_EQ(am.z, 0.07);
 
     ASSERT_EQ(rt_scene_light_count(r.scene), 3u);
-    const double d = 1.0 / std::sqrt(3.0); // uncoloured lights: (1,1,1)/sqrt(lights)
+    const double d = 1.0 / std::sqrt(3.0);  // uncoloured lights: (1,1,1)/sqrt(lights)
     EXPECT_DOUBLE_EQ(rt_scene_light(r.scene, 0)->position.x, 5.0);
     EXPECT_DOUBLE_EQ(rt_scene_light(r.scene, 0)->color.x, d);
     EXPECT_DOUBLE_EQ(rt_scene_light(r.scene, 1)->position.x, -5.0);
@@ -310,8 +307,7 @@ TEST(NffGood, TokenStreamReadsBack)
 
     // Objects before the `f` have the default material; one warning names line 8.
     ASSERT_EQ(r.warnings.size(), 1u);
-    EXPECT_EQ(r.warnings[0],
-              "mem.nff:8: warning: object before any 'f': using f 1 1 1 1 0 0 0 1");
+    EXPECT_EQ(r.warnings[0], "mem.nff:8: warning: object before any 'f': using f 1 1 1 1 0 0 0 1");
     EXPECT_TRUE(rt_scene_used_default_material(r.scene));
     rt_material def = rt_material_default();
     const rt_material *m0 = rt_scene_object_material(r.scene, 1);
@@ -338,10 +334,7 @@ TEST(NffGood, WarningWithoutCallbackIsHarmless)
     std::string text = std::string(kView) + "s 0 0 0 1\n";
     rt_scene *scene = nullptr;
     char msg[RT_MSG_LEN] = "";
-    ASSERT_EQ(rt_nff_parse("x", text.data(), text.size(), &scene, msg, sizeof msg, nullptr,
-                           nullptr),
-              RT_OK)
-        << msg;
+    ASSERT_EQ(rt_nff_parse("x", text.data(), text.size(), &scene, msg, sizeof msg, nullptr, nullptr), RT_OK) << msg;
     EXPECT_EQ(rt_scene_object_count(scene), 1u);
     rt_scene_free(scene);
 }
@@ -379,8 +372,7 @@ TEST(NffGood, CommentsAndByteOrderMark)
 TEST(NffGood, OneZeroRadiusConeIsATrueCone)
 {
     Loaded r;
-    parse_text(std::string(kView) + "f 1 1 1 1 0 0 0 1\nc 0 0 0 1 0 2 0 0\nc 0 0 0 0 0 2 0 1\n",
-               r);
+    parse_text(std::string(kView) + "f 1 1 1 1 0 0 0 1\nc 0 0 0 1 0 2 0 0\nc 0 0 0 0 0 2 0 1\n", r);
     ASSERT_EQ(r.status, RT_OK) << r.msg;
     EXPECT_EQ(rt_scene_object_count(r.scene), 2u);
 }
@@ -403,7 +395,9 @@ TEST(NffGood, LoadsFromAFile)
     fs::path dir = fs::temp_directory_path() / ("nff_good_" + std::to_string(::getpid()));
     fs::create_directories(dir);
     fs::path file = dir / "one.nff";
-    { std::ofstream(file) << kView << "l 1 1 1\nf 1 1 1 1 0 0 0 1\ns 0 0 0 1\n"; }
+    {
+        std::ofstream(file) << kView << "l 1 1 1\nf 1 1 1 1 0 0 0 1\ns 0 0 0 1\n";
+    }
     Loaded r;
     load_file(file.string(), r);
     EXPECT_EQ(r.status, RT_OK) << r.msg;

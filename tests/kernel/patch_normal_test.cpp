@@ -22,7 +22,8 @@ using namespace torusrt_test;
 
 namespace {
 
-ScenePtr load_opposing() {
+ScenePtr load_opposing()
+{
     std::string path = std::string(TORUSRT_SOURCE_DIR) + "/scenes/opposing-normals.nff";
     char msg[RT_MSG_LEN] = "";
     rt_scene *s = nullptr;
@@ -31,7 +32,8 @@ ScenePtr load_opposing() {
 }
 
 // The nearest object a ray hits, by testing every object; -1 for none.
-long nearest(const rt_scene *s, rt_vec3 o, rt_vec3 d, rt_hit *best) {
+long nearest(const rt_scene *s, rt_vec3 o, rt_vec3 d, rt_hit *best)
+{
     long found = -1;
     for (uint32_t i = 0; i < rt_scene_object_count(s); i++) {
         rt_hit h;
@@ -43,9 +45,10 @@ long nearest(const rt_scene *s, rt_vec3 o, rt_vec3 d, rt_hit *best) {
     return found;
 }
 
-} // namespace
+}  // namespace
 
-TEST(PatchNormal, UnitFiniteAndOnTheVertexNormalsSideForEveryHit) {
+TEST(PatchNormal, UnitFiniteAndOnTheVertexNormalsSideForEveryHit)
+{
     ScenePtr s = load_opposing();
     ASSERT_TRUE(s);
     GridPtr g = make_grid(s.get(), 8, 8, 8);
@@ -64,8 +67,7 @@ TEST(PatchNormal, UnitFiniteAndOnTheVertexNormalsSideForEveryHit) {
             rt_vec3 d = rt_vec_normalize(rt_vec_add(p.dir, rt_vec(du * 0.01, dv * 0.01, 0)));
             rt_hit h;
             long o = nearest(s.get(), p.origin, d, &h);
-            if (o < 0 || rt_scene_object_kind(s.get(), size_t(o)) != RT_OBJ_TRIANGLE)
-                continue;
+            if (o < 0 || rt_scene_object_kind(s.get(), size_t(o)) != RT_OBJ_TRIANGLE) continue;
             patch_hits++;
             const rt_triangle_data &t = s->objects[o].u.triangle;
             rt_vec3 sum = rt_vec_add(t.n[0], rt_vec_add(t.n[1], t.n[2]));
@@ -76,13 +78,14 @@ TEST(PatchNormal, UnitFiniteAndOnTheVertexNormalsSideForEveryHit) {
             ASSERT_TRUE(rt_vec_is_finite(ns)) << "object " << o;
             ASSERT_NEAR(rt_vec_length(ns), 1.0, 1e-12) << "object " << o;
             ASSERT_GT(rt_vec_dot(ns, face), 0.0)
-                << "object " << o << " at u " << h.u << " v " << h.v << ": shading normal (" << ns.x
-                << ", " << ns.y << ", " << ns.z << ") is behind the face";
+                << "object " << o << " at u " << h.u << " v " << h.v << ": shading normal (" << ns.x << ", " << ns.y
+                << ", " << ns.z << ") is behind the face";
         }
     EXPECT_GT(patch_hits, 1000) << "the camera must see the lid";
 }
 
-TEST(PatchNormal, RenderedLidHasNoIsolatedDarkPixel) {
+TEST(PatchNormal, RenderedLidHasNoIsolatedDarkPixel)
+{
     ScenePtr s = load_opposing();
     ASSERT_TRUE(s);
     Image im = render(s.get(), 24);

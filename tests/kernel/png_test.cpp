@@ -38,7 +38,6 @@ std::vector<std::string> list_dir(const std::string &dir)
     return names;
 }
 
-
 std::vector<uint8_t> pattern(uint32_t w, uint32_t h)
 {
     std::vector<uint8_t> px(size_t(w) * h * 3);
@@ -80,7 +79,7 @@ rt_status write_png(const std::string &path, uint32_t w, uint32_t h, const uint8
     return st;
 }
 
-} // namespace
+}  // namespace
 
 TEST(Png, RoundTripIsExact)
 {

@@ -108,9 +108,8 @@ TEST(Replicas, CostReplicationByHand)
     size_t count = 0;
     rt_cost_map_facts facts{};
     char msg[RT_MSG_LEN] = "";
-    ASSERT_EQ(rt_cost_replicate(&pilot, t.scene.get(), t.grid.get(), two, 1, RT_REPLICA_HASH, owner, 1.0, nullptr, first,
-                                &extra, &count,
-                                &facts, msg, sizeof msg),
+    ASSERT_EQ(rt_cost_replicate(&pilot, t.scene.get(), t.grid.get(), two, 1, RT_REPLICA_HASH, owner, 1.0, nullptr,
+                                first, &extra, &count, &facts, msg, sizeof msg),
               RT_OK)
         << msg;
     ASSERT_EQ(count, 2u);
@@ -119,9 +118,8 @@ TEST(Replicas, CostReplicationByHand)
     EXPECT_EQ(extra[1], 0);  // cell 1 also on node 0
     EXPECT_DOUBLE_EQ(facts.max_node_work_us, 5.0);
     std::free(extra);
-    ASSERT_EQ(rt_cost_replicate(&pilot, t.scene.get(), t.grid.get(), two, 1, RT_REPLICA_HASH, owner, 0.5, nullptr, first,
-                                &extra, &count,
-                                &facts, msg, sizeof msg),
+    ASSERT_EQ(rt_cost_replicate(&pilot, t.scene.get(), t.grid.get(), two, 1, RT_REPLICA_HASH, owner, 0.5, nullptr,
+                                first, &extra, &count, &facts, msg, sizeof msg),
               RT_OK);
     EXPECT_EQ(count, 0u);
     EXPECT_EQ(first[2], 0u);
@@ -151,8 +149,8 @@ std::string parse(const std::string &text, int32_t *owner, uint32_t *first, std:
     int32_t *e = nullptr;
     size_t count = 0;
     char msg[RT_MSG_LEN] = "";
-    rt_status st = rt_map_file_parse_replicas("t.map", text.data(), text.size(), dims, 8, owner, first, &e, &count,
-                                              msg, sizeof msg);
+    rt_status st = rt_map_file_parse_replicas("t.map", text.data(), text.size(), dims, 8, owner, first, &e, &count, msg,
+                                              sizeof msg);
     extra.assign(e, e + count);
     std::free(e);
     return st == RT_OK ? "" : msg;

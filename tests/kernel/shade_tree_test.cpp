@@ -16,14 +16,14 @@ using namespace torusrt_test;
 namespace {
 
 // Two lights, a floor of material `floor` and a sphere of material `ball`.
-ScenePtr scene_of(const char *floor, const char *ball) {
+ScenePtr scene_of(const char *floor, const char *ball)
+{
     std::string text = std::string("v from 0 3 6 at 0 0 0 up 0 1 0 angle 45 hither 1 resolution 12 12\n"
                                    "l 4 6 4\nl -4 6 4\nf ") +
                        floor + "\np 4 -5 0 -5  5 0 -5  5 0 5  -5 0 5\nf " + ball + "\ns 0 1 0 1\n";
     char msg[RT_MSG_LEN] = "";
     rt_scene *s = nullptr;
-    EXPECT_EQ(rt_nff_parse("tree.nff", text.c_str(), text.size(), &s, msg, sizeof msg, nullptr, nullptr), RT_OK)
-        << msg;
+    EXPECT_EQ(rt_nff_parse("tree.nff", text.c_str(), text.size(), &s, msg, sizeof msg, nullptr, nullptr), RT_OK) << msg;
     return ScenePtr(s);
 }
 
@@ -32,9 +32,10 @@ const char *kMirror = "0.8 0.8 0.8 0.1 0.9 30 0 1";
 const char *kGlass = "0.9 0.9 0.9 0.05 0.5 60 0.5 1.5";
 const char *kClearGlass = "0.9 0.9 0.9 0.1 0 0 0.9 1.5";
 
-} // namespace
+}  // namespace
 
-TEST(ShadeTree, DiffuseSceneMakesOneRayAtAnyDepth) {
+TEST(ShadeTree, DiffuseSceneMakesOneRayAtAnyDepth)
+{
     ScenePtr s = scene_of(kDiffuse, kDiffuse);
     ASSERT_TRUE(s);
     // One ray and a shadow packet per light (2).
@@ -47,7 +48,8 @@ TEST(ShadeTree, DiffuseSceneMakesOneRayAtAnyDepth) {
     EXPECT_EQ(rt_shade_tree_check(s.get(), &p, &b, 176, msg, sizeof msg), RT_OK) << msg;
 }
 
-TEST(ShadeTree, OneBranchPerHitIsAChain) {
+TEST(ShadeTree, OneBranchPerHitIsAChain)
+{
     // Mirrors only, and glass that does not reflect: each hit makes one ray at most.
     for (const char *m : {kMirror, kClearGlass}) {
         ScenePtr s = scene_of(kDiffuse, m);
@@ -63,7 +65,8 @@ TEST(ShadeTree, OneBranchPerHitIsAChain) {
     EXPECT_LE(cut, 80.0 * 3.0);
 }
 
-TEST(ShadeTree, ReflectingGlassBranchesTwice) {
+TEST(ShadeTree, ReflectingGlassBranchesTwice)
+{
     ScenePtr s = scene_of(kDiffuse, kGlass);
     ASSERT_TRUE(s);
     // Ks 0.5 and T 0.5: every node splits, weights 2^-d; depth 8 holds all 2^9 - 1 rays.
@@ -75,7 +78,8 @@ TEST(ShadeTree, ReflectingGlassBranchesTwice) {
     EXPECT_GE(rt_shade_tree_packets(s.get(), 1000, 0.0), 1e300);
 }
 
-TEST(ShadeTree, BoundIsNeverBelowWhatARenderMakes) {
+TEST(ShadeTree, BoundIsNeverBelowWhatARenderMakes)
+{
     for (const char *ball : {kDiffuse, kMirror, kGlass, kClearGlass})
         for (int depth : {0, 1, 3, 8}) {
             ScenePtr s = scene_of(kMirror, ball);
@@ -91,15 +95,17 @@ TEST(ShadeTree, BoundIsNeverBelowWhatARenderMakes) {
 
 // paper-image2's mirrors (Ks 0.9) and glass (Ks 0.1, T 0.9): one branch keeps nine tenths of
 // the weight, the other one tenth, so a cut at 1/65536 leaves a tree far smaller than 2^33.
-TEST(ShadeTree, EachSurfaceBranchesByItsOwnCoefficients) {
+TEST(ShadeTree, EachSurfaceBranchesByItsOwnCoefficients)
+{
     ScenePtr s = scene_of("0.8 0.8 0.8 0.1 0.9 30 0 1", "0.9 0.9 0.9 0.05 0.1 60 0.9 1.5");
     ASSERT_TRUE(s);
     double bound = rt_shade_tree_packets(s.get(), 32, 1.0 / 65536.0);
     EXPECT_LT(bound, 1e7);
-    EXPECT_GE(bound, 33.0 * 3.0); // the chain through the mirrors alone
+    EXPECT_GE(bound, 33.0 * 3.0);  // the chain through the mirrors alone
 }
 
-TEST(ShadeTree, CheckRefusesWhatCannotFitAndNamesTheLimits) {
+TEST(ShadeTree, CheckRefusesWhatCannotFitAndNamesTheLimits)
+{
     ScenePtr s = scene_of(kMirror, kGlass);
     ASSERT_TRUE(s);
     rt_step_params p = rt_step_params_default();

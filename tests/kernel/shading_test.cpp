@@ -31,7 +31,8 @@ using namespace torusrt_test;
 
 namespace {
 
-rt_material mat(rt_vec3 c, double kd, double ks, double shine, double t, double ior) {
+rt_material mat(rt_vec3 c, double kd, double ks, double shine, double t, double ior)
+{
     rt_material m;
     m.color = c;
     m.kd = kd;
@@ -43,14 +44,15 @@ rt_material mat(rt_vec3 c, double kd, double ks, double shine, double t, double 
 }
 
 // A scene under construction: camera set so rt_scene_finish succeeds.
-ScenePtr new_scene() {
+ScenePtr new_scene()
+{
     ScenePtr s(rt_scene_new());
-    EXPECT_EQ(rt_scene_set_view(s.get(), rt_vec(0, 0, 10), rt_vec(0, 0, 0), rt_vec(0, 1, 0), 45, 8, 8),
-              RT_OK);
+    EXPECT_EQ(rt_scene_set_view(s.get(), rt_vec(0, 0, 10), rt_vec(0, 0, 0), rt_vec(0, 1, 0), 45, 8, 8), RT_OK);
     return s;
 }
 
-void finish(rt_scene *s) {
+void finish(rt_scene *s)
+{
     char msg[RT_MSG_LEN] = "";
     ASSERT_EQ(rt_scene_finish(s, msg, sizeof msg), RT_OK) << msg;
 }
@@ -61,10 +63,10 @@ struct Mode {
     bool brute;
     int cells;
 };
-const Mode kModes[] = {
-    {"brute force", true, 24}, {"grid 1", false, 1}, {"grid 24", false, 24}, {"grid 7", false, 7}};
+const Mode kModes[] = {{"brute force", true, 24}, {"grid 1", false, 1}, {"grid 24", false, 24}, {"grid 7", false, 7}};
 
-rt_step_params params_for(const Mode &m) {
+rt_step_params params_for(const Mode &m)
+{
     rt_step_params p = rt_step_params_default();
     p.brute_force = m.brute ? 1 : 0;
     return p;
@@ -72,7 +74,8 @@ rt_step_params params_for(const Mode &m) {
 
 // A packet at its start; in grid mode its walk starts where the ray meets the space.
 rt_packet make_packet(const rt_grid *g, rt_packet_kind kind, rt_vec3 o, rt_vec3 d, rt_vec3 w, int depth = 0,
-                      double t_light = INFINITY, bool *enters = nullptr) {
+                      double t_light = INFINITY, bool *enters = nullptr)
+{
     rt_packet p;
     std::memset(&p, 0, sizeof p);
     p.kind = uint8_t(kind);
@@ -84,8 +87,7 @@ rt_packet make_packet(const rt_grid *g, rt_packet_kind kind, rt_vec3 o, rt_vec3 
     p.x = 3;
     p.y = 5;
     int e = rt_dda_start(g, o, d, 0.0, &p.dda);
-    if (enters)
-        *enters = e != 0;
+    if (enters) *enters = e != 0;
     return p;
 }
 
@@ -100,7 +102,8 @@ struct StepOut {
 };
 
 StepOut run_step(const rt_scene *s, const rt_grid *g, const rt_step_params &params, rt_packet p,
-                 const int32_t *owner = nullptr, int32_t me = 0) {
+                 const int32_t *owner = nullptr, int32_t me = 0)
+{
     rt_step_result r;
     EXPECT_EQ(rt_step_result_init(&r, s), RT_OK);
     StepOut out;
@@ -118,63 +121,63 @@ StepOut run_step(const rt_scene *s, const rt_grid *g, const rt_step_params &para
 // Steps a packet until it is absorbed or leaves (following it across forwards, which
 // cannot happen without owners). Returns the sum of its contributions.
 rt_vec3 run_to_end(const rt_scene *s, const rt_grid *g, const rt_step_params &params, rt_packet p,
-                   std::vector<rt_packet> *created = nullptr, rt_fate *fate = nullptr) {
+                   std::vector<rt_packet> *created = nullptr, rt_fate *fate = nullptr)
+{
     StepOut o = run_step(s, g, params, p);
     EXPECT_EQ(o.status, RT_OK);
     rt_vec3 sum = rt_vec(0, 0, 0);
-    for (auto &c : o.contrib)
-        sum = rt_vec_add(sum, c.rgb);
-    if (created)
-        *created = o.created;
-    if (fate)
-        *fate = o.fate;
+    for (auto &c : o.contrib) sum = rt_vec_add(sum, c.rgb);
+    if (created) *created = o.created;
+    if (fate) *fate = o.fate;
     return sum;
 }
 
-::testing::AssertionResult vec_near(rt_vec3 a, rt_vec3 b, double rel, double abs_tol = 0) {
+::testing::AssertionResult vec_near(rt_vec3 a, rt_vec3 b, double rel, double abs_tol = 0)
+{
     double scale = std::max(rt_vec_max_abs(a), rt_vec_max_abs(b));
     double tol = rel * scale + abs_tol;
     if (std::fabs(a.x - b.x) <= tol && std::fabs(a.y - b.y) <= tol && std::fabs(a.z - b.z) <= tol)
         return ::testing::AssertionSuccess();
     std::ostringstream m;
     m.precision(17);
-    m << "(" << a.x << ", " << a.y << ", " << a.z << ") vs (" << b.x << ", " << b.y << ", " << b.z
-      << "), tolerance " << tol;
+    m << "(" << a.x << ", " << a.y << ", " << a.z << ") vs (" << b.x << ", " << b.y << ", " << b.z << "), tolerance "
+      << tol;
     return ::testing::AssertionFailure() << m.str();
 }
 
-const rt_packet *find_kind(const std::vector<rt_packet> &v, rt_packet_kind k, int nth = 0) {
+const rt_packet *find_kind(const std::vector<rt_packet> &v, rt_packet_kind k, int nth = 0)
+{
     for (auto &p : v)
-        if (p.kind == k && nth-- == 0)
-            return &p;
+        if (p.kind == k && nth-- == 0) return &p;
     return nullptr;
 }
 
-size_t count_kind(const std::vector<rt_packet> &v, rt_packet_kind k) {
+size_t count_kind(const std::vector<rt_packet> &v, rt_packet_kind k)
+{
     return size_t(std::count_if(v.begin(), v.end(), [&](const rt_packet &p) { return p.kind == k; }));
 }
 
 // Every created packet must carry something and, in grid mode, start in the cell its
 // origin's ray enters.
-void check_created(const rt_grid *g, const Mode &m, const std::vector<rt_packet> &created) {
+void check_created(const rt_grid *g, const Mode &m, const std::vector<rt_packet> &created)
+{
     for (auto &p : created) {
         EXPECT_FALSE(rt_vec_is_zero(p.weight)) << "a packet with zero weight was made";
         EXPECT_NEAR(rt_vec_length(p.dir), 1.0, 1e-12);
-        if (m.brute)
-            continue;
+        if (m.brute) continue;
         rt_dda d;
-        ASSERT_TRUE(rt_dda_start(g, p.origin, p.dir, 0.0, &d))
-            << "a created packet that never enters the space";
+        ASSERT_TRUE(rt_dda_start(g, p.origin, p.dir, 0.0, &d)) << "a created packet that never enters the space";
         EXPECT_EQ(std::memcmp(d.cell, p.dda.cell, sizeof d.cell), 0) << "created packet's start cell";
         EXPECT_EQ(d.t_enter, p.dda.t_enter);
     }
 }
 
-} // namespace
+}  // namespace
 
 // --- shading -----------------------------------------------------------------
 
-TEST(ShadingAmbient, WeightTimesColourTimesAmbient) {
+TEST(ShadingAmbient, WeightTimesColourTimesAmbient)
+{
     ScenePtr s = new_scene();
     ASSERT_EQ(rt_scene_set_ambient(s.get(), rt_vec(0.2, 0.3, 0.5)), RT_OK);
     rt_material m = mat(rt_vec(0.8, 0.6, 0.4), 0.7, 0, 0, 0, 1);
@@ -190,8 +193,7 @@ TEST(ShadingAmbient, WeightTimesColourTimesAmbient) {
         ASSERT_EQ(o.status, RT_OK);
         EXPECT_EQ(o.fate, RT_FATE_ABSORBED);
         ASSERT_EQ(o.contrib.size(), 1u);
-        EXPECT_TRUE(
-            vec_near(o.contrib[0].rgb, rt_vec(1 * 0.8 * 0.2, 0.5 * 0.6 * 0.3, 0.25 * 0.4 * 0.5), 1e-15));
+        EXPECT_TRUE(vec_near(o.contrib[0].rgb, rt_vec(1 * 0.8 * 0.2, 0.5 * 0.6 * 0.3, 0.25 * 0.4 * 0.5), 1e-15));
         EXPECT_EQ(o.contrib[0].x, 3u);
         EXPECT_EQ(o.contrib[0].y, 5u);
         EXPECT_TRUE(o.created.empty()) << "no lights, no Ks, no T: nothing to make";
@@ -201,7 +203,8 @@ TEST(ShadingAmbient, WeightTimesColourTimesAmbient) {
     }
 }
 
-TEST(ShadingAmbient, ZeroAmbientWritesNothing) {
+TEST(ShadingAmbient, ZeroAmbientWritesNothing)
+{
     ScenePtr s = new_scene();
     rt_material m = mat(rt_vec(0.8, 0.6, 0.4), 0.7, 0, 0, 0, 1);
     ASSERT_EQ(rt_scene_set_material(s.get(), &m), RT_OK);
@@ -210,9 +213,8 @@ TEST(ShadingAmbient, ZeroAmbientWritesNothing) {
     for (const Mode &md : kModes) {
         SCOPED_TRACE(md.name);
         GridPtr g = make_grid(s.get(), md.cells, md.cells, md.cells);
-        StepOut o =
-            run_step(s.get(), g.get(), params_for(md),
-                     make_packet(g.get(), RT_PACKET_RAY, rt_vec(0, 0, 5), rt_vec(0, 0, -1), rt_vec(1, 1, 1)));
+        StepOut o = run_step(s.get(), g.get(), params_for(md),
+                             make_packet(g.get(), RT_PACKET_RAY, rt_vec(0, 0, 5), rt_vec(0, 0, -1), rt_vec(1, 1, 1)));
         EXPECT_EQ(o.fate, RT_FATE_ABSORBED);
         EXPECT_TRUE(o.contrib.empty());
         EXPECT_EQ(o.ops.fb_writes, 0u);
@@ -220,7 +222,8 @@ TEST(ShadingAmbient, ZeroAmbientWritesNothing) {
     }
 }
 
-TEST(ShadingShadow, ValueDirectionAndTLight) {
+TEST(ShadingShadow, ValueDirectionAndTLight)
+{
     // Sphere at the origin, radius 1; the ray comes down the z axis and hits (0, 0, 1),
     // N = (0, 0, 1), D = (0, 0, -1), R = (0, 0, 1). Light at (3, 4, 5).
     const rt_vec3 C = rt_vec(0.8, 0.6, 0.4), I = rt_vec(0.9, 0.8, 0.7), Lpos = rt_vec(3, 4, 5);
@@ -233,11 +236,11 @@ TEST(ShadingShadow, ValueDirectionAndTLight) {
     finish(s.get());
     const rt_vec3 P = rt_vec(0, 0, 1);
     const rt_vec3 L = rt_vec_normalize(rt_vec_sub(Lpos, P));
-    const double c = L.z;                          // N.L
-    const double spec = ks * std::pow(L.z, shine); // R.L = L.z
+    const double c = L.z;                           // N.L
+    const double spec = ks * std::pow(L.z, shine);  // R.L = L.z
     const rt_vec3 w = rt_vec(1, 0.5, 0.25);
-    const rt_vec3 want = rt_vec(w.x * I.x * (kd * c * C.x + spec), w.y * I.y * (kd * c * C.y + spec),
-                                w.z * I.z * (kd * c * C.z + spec));
+    const rt_vec3 want =
+        rt_vec(w.x * I.x * (kd * c * C.x + spec), w.y * I.y * (kd * c * C.y + spec), w.z * I.z * (kd * c * C.z + spec));
     for (const Mode &md : kModes) {
         SCOPED_TRACE(md.name);
         GridPtr g = make_grid(s.get(), md.cells, md.cells, md.cells);
@@ -277,34 +280,34 @@ TEST(ShadingShadow, ValueDirectionAndTLight) {
     }
 }
 
-TEST(ShadingShadow, OnlyLitSidesAndNoHighlightWithoutShine) {
+TEST(ShadingShadow, OnlyLitSidesAndNoHighlightWithoutShine)
+{
     // Two lights: one above the hit point, one below the surface's tangent plane.
     const rt_vec3 C = rt_vec(0.5, 0.5, 0.5);
     ScenePtr s = new_scene();
-    rt_material m = mat(C, 1.0, 0.5, 0.0, 0, 1); // Ks > 0 but Shine 0: no highlight
+    rt_material m = mat(C, 1.0, 0.5, 0.0, 0, 1);  // Ks > 0 but Shine 0: no highlight
     ASSERT_EQ(rt_scene_set_material(s.get(), &m), RT_OK);
     ASSERT_EQ(rt_scene_add_sphere(s.get(), rt_vec(0, 0, 0), 1.0), RT_OK);
     rt_vec3 white = rt_vec(1, 1, 1);
     ASSERT_EQ(rt_scene_add_light(s.get(), rt_vec(0, 0, 4), &white), RT_OK);
     ASSERT_EQ(rt_scene_add_light(s.get(), rt_vec(0, 0, -4), &white), RT_OK);
     ASSERT_EQ(rt_scene_add_light(s.get(), rt_vec(5, 0, 1), &white),
-              RT_OK); // exactly in the tangent plane: c = 0
+              RT_OK);  // exactly in the tangent plane: c = 0
     finish(s.get());
     for (const Mode &md : kModes) {
         SCOPED_TRACE(md.name);
         GridPtr g = make_grid(s.get(), md.cells, md.cells, md.cells);
-        StepOut o =
-            run_step(s.get(), g.get(), params_for(md),
-                     make_packet(g.get(), RT_PACKET_RAY, rt_vec(0, 0, 5), rt_vec(0, 0, -1), rt_vec(1, 1, 1)));
-        ASSERT_EQ(count_kind(o.created, RT_PACKET_SHADOW), 1u)
-            << "only the light with N.L > 0 gets a shadow packet";
+        StepOut o = run_step(s.get(), g.get(), params_for(md),
+                             make_packet(g.get(), RT_PACKET_RAY, rt_vec(0, 0, 5), rt_vec(0, 0, -1), rt_vec(1, 1, 1)));
+        ASSERT_EQ(count_kind(o.created, RT_PACKET_SHADOW), 1u) << "only the light with N.L > 0 gets a shadow packet";
         const rt_packet *sh = find_kind(o.created, RT_PACKET_SHADOW);
         EXPECT_TRUE(vec_near(sh->weight, C, 1e-15)) << "Kd * 1 * C, no highlight term";
         EXPECT_GT(sh->dir.z, 0.99);
     }
 }
 
-TEST(ShadingShadow, PolygonsAndPatchesAreLitFromTheSideTheRayIsOn) {
+TEST(ShadingShadow, PolygonsAndPatchesAreLitFromTheSideTheRayIsOn)
+{
     // A square (vertex-order normal +z) and a `pp` triangle (vertex normals tilted, +z side),
     // seen from below with a light below and another above: only the light on the ray's
     // side makes a shadow packet, with c = Nf.L for the flipped (shading) normal.
@@ -331,22 +334,23 @@ TEST(ShadingShadow, PolygonsAndPatchesAreLitFromTheSideTheRayIsOn) {
         for (const Mode &md : kModes) {
             SCOPED_TRACE(md.name);
             GridPtr g = make_grid(s.get(), md.cells, md.cells, md.cells);
-            StepOut o = run_step(
-                s.get(), g.get(), params_for(md),
-                make_packet(g.get(), RT_PACKET_RAY, rt_vec(0, 0, -5), rt_vec(0, 0, 1), rt_vec(1, 1, 1)));
+            StepOut o =
+                run_step(s.get(), g.get(), params_for(md),
+                         make_packet(g.get(), RT_PACKET_RAY, rt_vec(0, 0, -5), rt_vec(0, 0, 1), rt_vec(1, 1, 1)));
             ASSERT_EQ(o.fate, RT_FATE_ABSORBED);
             ASSERT_EQ(count_kind(o.created, RT_PACKET_SHADOW), 1u);
             const rt_packet *sh = find_kind(o.created, RT_PACKET_SHADOW);
             EXPECT_LT(sh->dir.z, 0.0) << "toward the light below";
             EXPECT_LT(sh->origin.z, 0.0) << "starts on the ray's side of the surface";
-            rt_vec3 L = rt_vec_normalize(below); // from the hit point (0, 0, 0)
+            rt_vec3 L = rt_vec_normalize(below);  // from the hit point (0, 0, 0)
             double c = rt_vec_dot(rt_vec_scale(nshade, -1), L);
             EXPECT_TRUE(vec_near(sh->weight, rt_vec(c, c, c), 1e-12));
         }
     }
 }
 
-TEST(ShadingShadow, ZeroValueMakesNoPacket) {
+TEST(ShadingShadow, ZeroValueMakesNoPacket)
+{
     // A red surface under a cyan light: the value is zero in every channel.
     ScenePtr s = new_scene();
     rt_material m = mat(rt_vec(1, 0, 0), 1.0, 0, 0, 0, 1);
@@ -359,9 +363,8 @@ TEST(ShadingShadow, ZeroValueMakesNoPacket) {
     for (const Mode &md : kModes) {
         SCOPED_TRACE(md.name);
         GridPtr g = make_grid(s.get(), md.cells, md.cells, md.cells);
-        StepOut o =
-            run_step(s.get(), g.get(), params_for(md),
-                     make_packet(g.get(), RT_PACKET_RAY, rt_vec(0, 0, 5), rt_vec(0, 0, -1), rt_vec(1, 1, 1)));
+        StepOut o = run_step(s.get(), g.get(), params_for(md),
+                             make_packet(g.get(), RT_PACKET_RAY, rt_vec(0, 0, 5), rt_vec(0, 0, -1), rt_vec(1, 1, 1)));
         EXPECT_EQ(o.fate, RT_FATE_ABSORBED);
         EXPECT_TRUE(o.created.empty());
         EXPECT_TRUE(o.contrib.empty());
@@ -369,7 +372,8 @@ TEST(ShadingShadow, ZeroValueMakesNoPacket) {
     }
 }
 
-TEST(ShadingShadow, TinyValueIsStillSent) {
+TEST(ShadingShadow, TinyValueIsStillSent)
+{
     // min_weight limits ray packets only: a faint but non-zero shadow packet is made.
     ScenePtr s = new_scene();
     rt_material m = mat(rt_vec(1, 1, 1), 1.0, 0, 0, 0, 1);
@@ -382,15 +386,16 @@ TEST(ShadingShadow, TinyValueIsStillSent) {
         SCOPED_TRACE(md.name);
         GridPtr g = make_grid(s.get(), md.cells, md.cells, md.cells);
         rt_step_params prm = params_for(md);
-        StepOut o = run_step(s.get(), g.get(), prm,
-                             make_packet(g.get(), RT_PACKET_RAY, rt_vec(0, 0, 5), rt_vec(0, 0, -1),
-                                         rt_vec(1, 1, 1), prm.max_depth));
+        StepOut o = run_step(
+            s.get(), g.get(), prm,
+            make_packet(g.get(), RT_PACKET_RAY, rt_vec(0, 0, 5), rt_vec(0, 0, -1), rt_vec(1, 1, 1), prm.max_depth));
         ASSERT_EQ(count_kind(o.created, RT_PACKET_SHADOW), 1u);
         EXPECT_TRUE(vec_near(find_kind(o.created, RT_PACKET_SHADOW)->weight, faint, 1e-12));
     }
 }
 
-TEST(ShadingShadow, BlockedByAnObjectButNotByOneBeyondTheLight) {
+TEST(ShadingShadow, BlockedByAnObjectButNotByOneBeyondTheLight)
+{
     // Lit sphere at the origin, light at (0, 0, 6). A blocker between them kills the shadow
     // packet; a sphere beyond the light does not.
     for (bool blocker_between : {true, false}) {
@@ -408,9 +413,9 @@ TEST(ShadingShadow, BlockedByAnObjectButNotByOneBeyondTheLight) {
             GridPtr g = make_grid(s.get(), md.cells, md.cells, md.cells);
             // Primary ray from the side, along (1, 0, -1), onto the top of the sphere at (0, 0, 1).
             rt_vec3 o = rt_vec(-3, 0, 4);
-            StepOut st = run_step(
-                s.get(), g.get(), params_for(md),
-                make_packet(g.get(), RT_PACKET_RAY, o, rt_vec_normalize(rt_vec(1, 0, -1)), rt_vec(1, 1, 1)));
+            StepOut st =
+                run_step(s.get(), g.get(), params_for(md),
+                         make_packet(g.get(), RT_PACKET_RAY, o, rt_vec_normalize(rt_vec(1, 0, -1)), rt_vec(1, 1, 1)));
             ASSERT_EQ(st.fate, RT_FATE_ABSORBED);
             ASSERT_EQ(count_kind(st.created, RT_PACKET_SHADOW), 1u);
             const rt_packet *sh = find_kind(st.created, RT_PACKET_SHADOW);
@@ -427,7 +432,8 @@ TEST(ShadingShadow, BlockedByAnObjectButNotByOneBeyondTheLight) {
     }
 }
 
-TEST(ShadingShadow, LightInsideTheGridIsReachedInsideACell) {
+TEST(ShadingShadow, LightInsideTheGridIsReachedInsideACell)
+{
     // A ring of spheres around a light at the centre of the space.
     ScenePtr s = new_scene();
     rt_material m = mat(rt_vec(1, 1, 1), 1.0, 0, 0, 0, 1);
@@ -444,16 +450,14 @@ TEST(ShadingShadow, LightInsideTheGridIsReachedInsideACell) {
         SCOPED_TRACE(md.name);
         GridPtr g = make_grid(s.get(), md.cells, md.cells, md.cells);
         // A ray from the light outward hits sphere 0 on its inner side, facing the light.
-        StepOut o =
-            run_step(s.get(), g.get(), params_for(md),
-                     make_packet(g.get(), RT_PACKET_RAY, rt_vec(0, 0, 0), rt_vec(1, 0, 0), rt_vec(1, 1, 1)));
+        StepOut o = run_step(s.get(), g.get(), params_for(md),
+                             make_packet(g.get(), RT_PACKET_RAY, rt_vec(0, 0, 0), rt_vec(1, 0, 0), rt_vec(1, 1, 1)));
         ASSERT_EQ(o.fate, RT_FATE_ABSORBED);
         ASSERT_EQ(count_kind(o.created, RT_PACKET_SHADOW), 1u);
         const rt_packet *sh = find_kind(o.created, RT_PACKET_SHADOW);
         rt_vec3 P = rt_vec(4, 0, 0);
         rt_vec3 L = rt_vec_normalize(rt_vec_sub(Lpos, P));
-        EXPECT_TRUE(vec_near(sh->weight, rt_vec(-L.x, -L.x, -L.x), 1e-12))
-            << "Kd * (Nf.L) * C with Nf = (-1, 0, 0)";
+        EXPECT_TRUE(vec_near(sh->weight, rt_vec(-L.x, -L.x, -L.x), 1e-12)) << "Kd * (Nf.L) * C with Nf = (-1, 0, 0)";
         StepOut so = run_step(s.get(), g.get(), params_for(md), *sh);
         ASSERT_EQ(so.status, RT_OK);
         EXPECT_EQ(so.fate, RT_FATE_ABSORBED) << "reached the light inside a cell";
@@ -468,7 +472,8 @@ TEST(ShadingShadow, LightInsideTheGridIsReachedInsideACell) {
     }
 }
 
-TEST(ShadingReflection, DirectionAndWeightOnAnObliqueHit) {
+TEST(ShadingReflection, DirectionAndWeightOnAnObliqueHit)
+{
     TestRng rng(101);
     ScenePtr s = new_scene();
     const double ks = 0.6;
@@ -482,11 +487,9 @@ TEST(ShadingReflection, DirectionAndWeightOnAnObliqueHit) {
         for (int i = 0; i < 200; i++) {
             rt_vec3 n = rng.unit();
             rt_vec3 P = rt_vec_add(rt_vec(1, 2, 3), rt_vec_scale(n, 2.0));
-            rt_vec3 o = rt_vec_add(
-                P, rt_vec_scale(rt_vec_normalize(rt_vec_add(n, rt_vec_scale(rng.unit(), 0.9))), 6));
+            rt_vec3 o = rt_vec_add(P, rt_vec_scale(rt_vec_normalize(rt_vec_add(n, rt_vec_scale(rng.unit(), 0.9))), 6));
             rt_vec3 D = rt_vec_normalize(rt_vec_sub(P, o));
-            if (rt_vec_dot(D, n) > -0.05)
-                continue;
+            if (rt_vec_dot(D, n) > -0.05) continue;
             bool enters;
             rt_vec3 w = rt_vec(rng.uniform(0.1, 1), rng.uniform(0.1, 1), rng.uniform(0.1, 1));
             rt_packet p = make_packet(g.get(), RT_PACKET_RAY, o, D, w, 0, INFINITY, &enters);
@@ -500,8 +503,7 @@ TEST(ShadingReflection, DirectionAndWeightOnAnObliqueHit) {
             EXPECT_TRUE(vec_near(r.dir, R, 1e-9));
             EXPECT_TRUE(vec_near(r.weight, rt_vec_scale(w, ks), 1e-15));
             EXPECT_TRUE(vec_near(r.origin, P, 0, 1e-8));
-            EXPECT_GT(rt_vec_length(rt_vec_sub(r.origin, rt_vec(1, 2, 3))), 2.0)
-                << "reflection starts outside";
+            EXPECT_GT(rt_vec_length(rt_vec_sub(r.origin, rt_vec(1, 2, 3))), 2.0) << "reflection starts outside";
         }
     }
 }
@@ -509,13 +511,12 @@ TEST(ShadingReflection, DirectionAndWeightOnAnObliqueHit) {
 namespace {
 
 // Angle between a and b, accurate near 0 and pi.
-double angle_between(rt_vec3 a, rt_vec3 b) {
-    return std::atan2(rt_vec_length(rt_vec_cross(a, b)), rt_vec_dot(a, b));
-}
+double angle_between(rt_vec3 a, rt_vec3 b) { return std::atan2(rt_vec_length(rt_vec_cross(a, b)), rt_vec_dot(a, b)); }
 
-} // namespace
+}  // namespace
 
-TEST(ShadingRefraction, SnellEnteringAndLeavingASphere) {
+TEST(ShadingRefraction, SnellEnteringAndLeavingASphere)
+{
     const double ior = 1.5, T = 0.9;
     ScenePtr s = new_scene();
     rt_material m = mat(rt_vec(1, 1, 1), 0, 0, 0, T, ior);
@@ -527,8 +528,8 @@ TEST(ShadingRefraction, SnellEnteringAndLeavingASphere) {
             SCOPED_TRACE(std::string(md.name) + " offset " + std::to_string(h));
             GridPtr g = make_grid(s.get(), md.cells, md.cells, md.cells);
             rt_vec3 D = rt_vec(0, 0, -1), w = rt_vec(1, 0.8, 0.6);
-            StepOut in = run_step(s.get(), g.get(), params_for(md),
-                                  make_packet(g.get(), RT_PACKET_RAY, rt_vec(0, h, 5), D, w));
+            StepOut in =
+                run_step(s.get(), g.get(), params_for(md), make_packet(g.get(), RT_PACKET_RAY, rt_vec(0, h, 5), D, w));
             ASSERT_EQ(in.fate, RT_FATE_ABSORBED);
             check_created(g.get(), md, in.created);
             ASSERT_EQ(in.created.size(), 1u);
@@ -574,7 +575,8 @@ TEST(ShadingRefraction, SnellEnteringAndLeavingASphere) {
     }
 }
 
-TEST(ShadingRefraction, TotalInternalReflectionGoesAlongR) {
+TEST(ShadingRefraction, TotalInternalReflectionGoesAlongR)
+{
     const double ior = 1.5, T = 0.9;
     ScenePtr s = new_scene();
     rt_material m = mat(rt_vec(1, 1, 1), 0, 0, 0, T, ior);
@@ -586,8 +588,8 @@ TEST(ShadingRefraction, TotalInternalReflectionGoesAlongR) {
         GridPtr g = make_grid(s.get(), md.cells, md.cells, md.cells);
         // From inside at (0, 0.9, 0) along +z: sin(theta_i) = 0.9 > 1/1.5.
         rt_vec3 D = rt_vec(0, 0, 1), w = rt_vec(1, 1, 1);
-        StepOut st = run_step(s.get(), g.get(), params_for(md),
-                              make_packet(g.get(), RT_PACKET_RAY, rt_vec(0, 0.9, 0), D, w));
+        StepOut st =
+            run_step(s.get(), g.get(), params_for(md), make_packet(g.get(), RT_PACKET_RAY, rt_vec(0, 0.9, 0), D, w));
         ASSERT_EQ(st.fate, RT_FATE_ABSORBED);
         check_created(g.get(), md, st.created);
         ASSERT_EQ(st.created.size(), 1u);
@@ -599,8 +601,8 @@ TEST(ShadingRefraction, TotalInternalReflectionGoesAlongR) {
         EXPECT_TRUE(vec_near(t.weight, rt_vec_scale(w, T), 1e-15));
         EXPECT_LT(rt_vec_length(t.origin), 1.0) << "a totally reflected ray stays inside";
         // Just below the critical angle it leaves: sin = 0.66 < 1/1.5.
-        StepOut st2 = run_step(s.get(), g.get(), params_for(md),
-                               make_packet(g.get(), RT_PACKET_RAY, rt_vec(0, 0.66, 0), D, w));
+        StepOut st2 =
+            run_step(s.get(), g.get(), params_for(md), make_packet(g.get(), RT_PACKET_RAY, rt_vec(0, 0.66, 0), D, w));
         ASSERT_EQ(st2.created.size(), 1u);
         EXPECT_GT(rt_vec_length(st2.created[0].origin), 1.0);
         EXPECT_NEAR(angle_between(st2.created[0].dir, rt_vec(0, 0.66, std::sqrt(1 - 0.66 * 0.66))),
@@ -608,7 +610,8 @@ TEST(ShadingRefraction, TotalInternalReflectionGoesAlongR) {
     }
 }
 
-TEST(ShadingLimits, MaxDepthAndMinWeight) {
+TEST(ShadingLimits, MaxDepthAndMinWeight)
+{
     const double ks = 0.5, T = 0.5;
     ScenePtr s = new_scene();
     rt_material m = mat(rt_vec(1, 1, 1), 0, ks, 0, T, 1.0);
@@ -620,9 +623,8 @@ TEST(ShadingLimits, MaxDepthAndMinWeight) {
         GridPtr g = make_grid(s.get(), md.cells, md.cells, md.cells);
         rt_step_params prm = params_for(md);
         auto created_at = [&](int depth, rt_vec3 w, const rt_step_params &pp) {
-            StepOut o =
-                run_step(s.get(), g.get(), pp,
-                         make_packet(g.get(), RT_PACKET_RAY, rt_vec(0, 0, 5), rt_vec(0, 0, -1), w, depth));
+            StepOut o = run_step(s.get(), g.get(), pp,
+                                 make_packet(g.get(), RT_PACKET_RAY, rt_vec(0, 0, 5), rt_vec(0, 0, -1), w, depth));
             EXPECT_EQ(o.fate, RT_FATE_ABSORBED);
             check_created(g.get(), md, o.created);
             for (auto &p : o.created) {
@@ -654,7 +656,8 @@ TEST(ShadingLimits, MaxDepthAndMinWeight) {
     }
 }
 
-TEST(StepEscape, RayLeavingTheSpaceAddsWeightTimesBackground) {
+TEST(StepEscape, RayLeavingTheSpaceAddsWeightTimesBackground)
+{
     ScenePtr s = new_scene();
     ASSERT_EQ(rt_scene_set_background(s.get(), rt_vec(0.1, 0.2, 0.3)), RT_OK);
     rt_material m = mat(rt_vec(1, 1, 1), 1, 0, 0, 0, 1);
@@ -668,8 +671,7 @@ TEST(StepEscape, RayLeavingTheSpaceAddsWeightTimesBackground) {
         GridPtr g = make_grid(s.get(), md.cells, md.cells, md.cells);
         // Crosses the space between the spheres.
         bool enters;
-        rt_packet p =
-            make_packet(g.get(), RT_PACKET_RAY, rt_vec(-5, 5, 0), rt_vec(1, 0, 0), w, 1, INFINITY, &enters);
+        rt_packet p = make_packet(g.get(), RT_PACKET_RAY, rt_vec(-5, 5, 0), rt_vec(1, 0, 0), w, 1, INFINITY, &enters);
         ASSERT_TRUE(enters);
         StepOut o = run_step(s.get(), g.get(), params_for(md), p);
         ASSERT_EQ(o.status, RT_OK);
@@ -694,7 +696,8 @@ static void add_two_spheres(rt_scene *s)
     finish(s);
 }
 
-TEST(StepForward, NextCellWithAnotherOwner) {
+TEST(StepForward, NextCellWithAnotherOwner)
+{
     // Sphere A (radius 1) at x = 0, sphere B (radius 2) at x = 10: the space is
     // [-1, 12] x [-2, 2] x [-2, 2], two cells along x split at 5.5, owned by 0 and 1.
     ScenePtr s = new_scene();
@@ -756,15 +759,16 @@ TEST(StepForward, NextCellWithAnotherOwner) {
     EXPECT_TRUE(vec_near(ob.created[0].weight, b.created[0].weight, 0));
     EXPECT_TRUE(vec_near(ob.created[0].origin, b.created[0].origin, 0));
     // A shadow packet forwarded back toward cell 0.
-    rt_packet sh = make_packet(g.get(), RT_PACKET_SHADOW, rt_vec(8, 0, 1.9), rt_vec(-1, 0, 0),
-                               rt_vec(0.5, 0.5, 0.5), 0, 7.0);
+    rt_packet sh =
+        make_packet(g.get(), RT_PACKET_SHADOW, rt_vec(8, 0, 1.9), rt_vec(-1, 0, 0), rt_vec(0.5, 0.5, 0.5), 0, 7.0);
     ASSERT_EQ(sh.dda.cell[0], 1);
     StepOut sf = run_step(s.get(), g.get(), prm, sh, owner, 1);
     EXPECT_EQ(sf.fate, RT_FATE_FORWARDED);
     EXPECT_EQ(sf.next_cell, 0u);
 }
 
-TEST(StepOps, HandCountedGridAndBruteForce) {
+TEST(StepOps, HandCountedGridAndBruteForce)
+{
     // The scene of StepForward with no owners: the ray tests A in cell 0 (miss), steps to
     // cell 1, tests B (hit), shades and makes one shadow packet (one start-cell step).
     ScenePtr s = new_scene();
@@ -814,9 +818,8 @@ TEST(StepOps, HandCountedGridAndBruteForce) {
     // nearest hit, (-1, 0, 0) on A, faces away from the light: no shadow packet.
     GridPtr g1 = make_grid(s.get(), 1, 1, 1);
     rt_step_params pg = rt_step_params_default();
-    StepOut both =
-        run_step(s.get(), g1.get(), pg,
-                 make_packet(g1.get(), RT_PACKET_RAY, rt_vec(-5, 0, 0), rt_vec(1, 0, 0), rt_vec(1, 1, 1)));
+    StepOut both = run_step(s.get(), g1.get(), pg,
+                            make_packet(g1.get(), RT_PACKET_RAY, rt_vec(-5, 0, 0), rt_vec(1, 0, 0), rt_vec(1, 1, 1)));
     EXPECT_EQ(both.ops.tests_hit, 2u);
     EXPECT_EQ(both.ops.tests_missed, 0u);
     EXPECT_EQ(both.ops.shadings, 1u);
@@ -824,7 +827,8 @@ TEST(StepOps, HandCountedGridAndBruteForce) {
     EXPECT_EQ(both.ops.packets_created, 0u);
 }
 
-TEST(StepTies, ObjectListedFirstWinsATie) {
+TEST(StepTies, ObjectListedFirstWinsATie)
+{
     // The same sphere twice, and the same square twice: red listed first, blue second.
     for (bool spheres : {true, false}) {
         SCOPED_TRACE(spheres ? "spheres" : "squares");
@@ -848,13 +852,11 @@ TEST(StepTies, ObjectListedFirstWinsATie) {
             for (int i = 0; i < 200; i++) {
                 rt_vec3 o = rt_vec(rng.uniform(-0.9, 0.9), rng.uniform(-0.9, 0.9), 5);
                 // Aimed within 0.5 of the sphere's centre on x and y, or into the square.
-                rt_vec3 aim = spheres
-                                  ? rt_vec(0.1 + rng.uniform(-0.5, 0.5), 0.2 + rng.uniform(-0.5, 0.5), 0.3)
-                                  : rt_vec(rng.uniform(-0.9, 0.9), rng.uniform(-0.9, 0.9), 0);
+                rt_vec3 aim = spheres ? rt_vec(0.1 + rng.uniform(-0.5, 0.5), 0.2 + rng.uniform(-0.5, 0.5), 0.3)
+                                      : rt_vec(rng.uniform(-0.9, 0.9), rng.uniform(-0.9, 0.9), 0);
                 rt_vec3 d = rt_vec_normalize(rt_vec_sub(aim, o));
                 bool enters;
-                rt_packet p =
-                    make_packet(g.get(), RT_PACKET_RAY, o, d, rt_vec(1, 1, 1), 0, INFINITY, &enters);
+                rt_packet p = make_packet(g.get(), RT_PACKET_RAY, o, d, rt_vec(1, 1, 1), 0, INFINITY, &enters);
                 ASSERT_TRUE(enters);
                 StepOut st = run_step(s.get(), g.get(), params_for(md), p);
                 ASSERT_EQ(st.fate, RT_FATE_ABSORBED);
@@ -865,7 +867,8 @@ TEST(StepTies, ObjectListedFirstWinsATie) {
     }
 }
 
-TEST(StepErrors, CapacityAndBadPackets) {
+TEST(StepErrors, CapacityAndBadPackets)
+{
     ScenePtr s = new_scene();
     ASSERT_EQ(rt_scene_add_sphere(s.get(), rt_vec(0, 0, 0), 1.0), RT_OK);
     rt_vec3 white = rt_vec(1, 1, 1);
@@ -892,7 +895,8 @@ TEST(StepErrors, CapacityAndBadPackets) {
 
 // --- frame buffer --------------------------------------------------------------
 
-TEST(FramebufferOrder, TenThousandContributionsInTwoOrders) {
+TEST(FramebufferOrder, TenThousandContributionsInTwoOrders)
+{
     const uint32_t W = 16, H = 12;
     TestRng rng(555);
     std::vector<rt_contribution> c(10000);
@@ -905,15 +909,11 @@ TEST(FramebufferOrder, TenThousandContributionsInTwoOrders) {
     }
     FbPtr a(rt_framebuffer_new(W, H)), b(rt_framebuffer_new(W, H));
     ASSERT_TRUE(a && b);
-    for (auto &x : c)
-        rt_framebuffer_add(a.get(), x.x, x.y, x.rgb);
+    for (auto &x : c) rt_framebuffer_add(a.get(), x.x, x.y, x.rgb);
     std::vector<size_t> order(c.size());
-    for (size_t i = 0; i < order.size(); i++)
-        order[i] = i;
-    for (size_t i = order.size() - 1; i > 0; i--)
-        std::swap(order[i], order[rng.below(uint32_t(i + 1))]);
-    for (size_t i : order)
-        rt_framebuffer_add(b.get(), c[i].x, c[i].y, c[i].rgb);
+    for (size_t i = 0; i < order.size(); i++) order[i] = i;
+    for (size_t i = order.size() - 1; i > 0; i--) std::swap(order[i], order[rng.below(uint32_t(i + 1))]);
+    for (size_t i : order) rt_framebuffer_add(b.get(), c[i].x, c[i].y, c[i].rgb);
     std::vector<uint8_t> pa(W * H * 3), pb(W * H * 3);
     rt_framebuffer_to_rgb8(a.get(), pa.data());
     rt_framebuffer_to_rgb8(b.get(), pb.data());
@@ -944,15 +944,14 @@ TEST(FramebufferOrder, TenThousandContributionsInTwoOrders) {
         }
 }
 
-TEST(FramebufferRounding, FloorTimes255PlusHalf) {
+TEST(FramebufferRounding, FloorTimes255PlusHalf)
+{
     FbPtr fb(rt_framebuffer_new(1, 1));
     ASSERT_TRUE(fb);
     TestRng rng(7);
-    std::vector<double> values = {0.0,         1.0,          0.5,         0.25,
-                                  1.0 / 255,   0.5 / 255,    0.49 / 255,  0.51 / 255,
-                                  254.5 / 255, 254.49 / 255, 127.5 / 255, 100.5 / 255};
-    for (int i = 0; i < 20000; i++)
-        values.push_back(rng.uniform(0, 1));
+    std::vector<double> values = {0.0,        1.0,        0.5,         0.25,         1.0 / 255,   0.5 / 255,
+                                  0.49 / 255, 0.51 / 255, 254.5 / 255, 254.49 / 255, 127.5 / 255, 100.5 / 255};
+    for (int i = 0; i < 20000; i++) values.push_back(rng.uniform(0, 1));
     for (int k = 0; k < 255; k++) {
         values.push_back((k + 0.5) / 255 + 1e-7);
         values.push_back((k + 0.5) / 255 - 1e-7);
@@ -988,31 +987,31 @@ TEST(FramebufferRounding, FloorTimes255PlusHalf) {
     }
 }
 
-TEST(FramebufferClamp, ClampAtTheEndNotPerContribution) {
+TEST(FramebufferClamp, ClampAtTheEndNotPerContribution)
+{
     FbPtr fb(rt_framebuffer_new(4, 2));
     ASSERT_TRUE(fb);
-    rt_framebuffer_add(fb.get(), 0, 0, rt_vec(1.7, -0.3, 5e5)); // 255, 0, 255
+    rt_framebuffer_add(fb.get(), 0, 0, rt_vec(1.7, -0.3, 5e5));  // 255, 0, 255
     rt_framebuffer_add(fb.get(), 1, 0, rt_vec(0.75, 0.75, 0.75));
-    rt_framebuffer_add(fb.get(), 1, 0, rt_vec(0.75, -1.0, -0.25)); // 1.5, -0.25, 0.5
+    rt_framebuffer_add(fb.get(), 1, 0, rt_vec(0.75, -1.0, -0.25));  // 1.5, -0.25, 0.5
     rt_framebuffer_add(fb.get(), 2, 0, rt_vec(3.0, 3.0, 3.0));
-    rt_framebuffer_add(fb.get(), 2, 0, rt_vec(-2.5, -2.5, -2.5));    // 0.5: not clamped on the way
-    rt_framebuffer_add(fb.get(), 3, 0, rt_vec(NAN, 0.25, INFINITY)); // NaN adds nothing
-    rt_framebuffer_add(fb.get(), 4, 0, rt_vec(1, 1, 1));             // outside: ignored
-    rt_framebuffer_add(fb.get(), 0, 2, rt_vec(1, 1, 1));             // outside: ignored
+    rt_framebuffer_add(fb.get(), 2, 0, rt_vec(-2.5, -2.5, -2.5));     // 0.5: not clamped on the way
+    rt_framebuffer_add(fb.get(), 3, 0, rt_vec(NAN, 0.25, INFINITY));  // NaN adds nothing
+    rt_framebuffer_add(fb.get(), 4, 0, rt_vec(1, 1, 1));              // outside: ignored
+    rt_framebuffer_add(fb.get(), 0, 2, rt_vec(1, 1, 1));              // outside: ignored
     uint8_t px[4 * 2 * 3];
     rt_framebuffer_to_rgb8(fb.get(), px);
     const uint8_t want_row0[12] = {255, 0, 255, 255, 0, 128, 128, 128, 128, 0, 64, 255};
-    for (int i = 0; i < 12; i++)
-        EXPECT_EQ(px[i], want_row0[i]) << "byte " << i;
-    for (int i = 12; i < 24; i++)
-        EXPECT_EQ(px[i], 0) << "row 1 untouched, byte " << i;
+    for (int i = 0; i < 12; i++) EXPECT_EQ(px[i], want_row0[i]) << "byte " << i;
+    for (int i = 12; i < 24; i++) EXPECT_EQ(px[i], 0) << "row 1 untouched, byte " << i;
     EXPECT_EQ(rt_framebuffer_get(fb.get(), 2, 0).x, 0.5);
     EXPECT_EQ(rt_framebuffer_get(fb.get(), 1, 0).y, -0.25) << "negative sums are kept until the end";
     EXPECT_EQ(rt_framebuffer_new(0, 5), nullptr);
     EXPECT_EQ(rt_framebuffer_new(5, 0), nullptr);
 }
 
-TEST(FramebufferClamp, ContributionClampIsTheDocumentedTwoToThe20) {
+TEST(FramebufferClamp, ContributionClampIsTheDocumentedTwoToThe20)
+{
     // rt_framebuffer.h: each contribution is "clamped to +-2^20 per contribution". A
     // contribution of 2^19 is inside that range and must be kept; 2^25 becomes 2^20.
     FbPtr fb(rt_framebuffer_new(2, 1));
@@ -1035,34 +1034,32 @@ namespace {
 // inside and outside the object space.
 // Every coordinate and size is multiplied by `scale`; eye_inside puts the camera in the
 // middle of the object space.
-ScenePtr random_scene(uint64_t seed, uint32_t size, double scale = 1.0, bool eye_inside = false) {
+ScenePtr random_scene(uint64_t seed, uint32_t size, double scale = 1.0, bool eye_inside = false)
+{
     TestRng rng(seed);
     ScenePtr s(rt_scene_new());
     auto P = [scale](double x, double y, double z) { return rt_vec(x * scale, y * scale, z * scale); };
     if (eye_inside) {
-        EXPECT_EQ(rt_scene_set_view(s.get(), P(5.1, 5.2, 5.3), P(2, 3, -1), rt_vec(0, 1, 0), 100, size, size),
-                  RT_OK);
+        EXPECT_EQ(rt_scene_set_view(s.get(), P(5.1, 5.2, 5.3), P(2, 3, -1), rt_vec(0, 1, 0), 100, size, size), RT_OK);
     } else {
-        EXPECT_EQ(rt_scene_set_view(s.get(), P(5, 4, 22), P(5, 5, 5), rt_vec(0, 1, 0), 50, size, size),
-                  RT_OK);
+        EXPECT_EQ(rt_scene_set_view(s.get(), P(5, 4, 22), P(5, 5, 5), rt_vec(0, 1, 0), 50, size, size), RT_OK);
     }
     EXPECT_EQ(rt_scene_set_background(s.get(), rt_vec(0.1, 0.15, 0.3)), RT_OK);
     EXPECT_EQ(rt_scene_set_ambient(s.get(), rt_vec(0.1, 0.1, 0.1)), RT_OK);
     rt_vec3 l1 = rt_vec(0.8, 0.8, 0.7), l2 = rt_vec(0.4, 0.5, 0.6);
     EXPECT_EQ(rt_scene_add_light(s.get(), P(-10, 20, 20), &l1), RT_OK);
-    EXPECT_EQ(rt_scene_add_light(s.get(), P(5, 5.5, 4), &l2), RT_OK); // inside the space
+    EXPECT_EQ(rt_scene_add_light(s.get(), P(5, 5.5, 4), &l2), RT_OK);  // inside the space
     for (int i = 0; i < 40; i++) {
         if (i % 5 == 0) {
             int kind = (i / 5) % 3;
-            rt_material m = kind == 0   ? mat(rt_vec(rng.uniform(0, 1), rng.uniform(0, 1), rng.uniform(0, 1)),
-                                              0.8, 0, 0, 0, 1)
+            rt_material m = kind == 0
+                                ? mat(rt_vec(rng.uniform(0, 1), rng.uniform(0, 1), rng.uniform(0, 1)), 0.8, 0, 0, 0, 1)
                             : kind == 1 ? mat(rt_vec(0.9, 0.9, 0.9), 0.3, 0.6, 20, 0, 1)
                                         : mat(rt_vec(1, 1, 1), 0.1, 0.2, 50, 0.7, 1.5);
             EXPECT_EQ(rt_scene_set_material(s.get(), &m), RT_OK);
         }
         rt_vec3 c = P(rng.uniform(0, 10), rng.uniform(0, 10), rng.uniform(0, 10));
-        if (eye_inside && rt_vec_length(rt_vec_sub(c, P(5.1, 5.2, 5.3))) < 2 * scale)
-            c = P(rng.uniform(0, 3), 0, 0);
+        if (eye_inside && rt_vec_length(rt_vec_sub(c, P(5.1, 5.2, 5.3))) < 2 * scale) c = P(rng.uniform(0, 3), 0, 0);
         EXPECT_EQ(rt_scene_add_sphere(s.get(), c, rng.uniform(0.2, 1.5) * scale), RT_OK);
     }
     rt_material floor_m = mat(rt_vec(0.7, 0.7, 0.6), 0.7, 0.3, 0, 0, 1);
@@ -1077,8 +1074,7 @@ ScenePtr random_scene(uint64_t seed, uint32_t size, double scale = 1.0, bool eye
         rt_vec3 u = rt_vec_normalize(rt_vec_cross(nrm, rng.unit())), w = rt_vec_cross(nrm, u);
         for (int k = 0; k < n; k++) {
             double a = 2 * M_PI * k / n, r = (k % 2 ? 0.8 : 2.0) * scale;
-            v.push_back(rt_vec_add(
-                c, rt_vec_add(rt_vec_scale(u, r * std::cos(a)), rt_vec_scale(w, r * std::sin(a)))));
+            v.push_back(rt_vec_add(c, rt_vec_add(rt_vec_scale(u, r * std::cos(a)), rt_vec_scale(w, r * std::sin(a)))));
         }
         EXPECT_EQ(rt_scene_add_polygon(s.get(), v.data(), v.size()), RT_OK);
     }
@@ -1092,23 +1088,24 @@ ScenePtr random_scene(uint64_t seed, uint32_t size, double scale = 1.0, bool eye
     return s;
 }
 
-size_t differing_bytes(const std::vector<uint8_t> &a, const std::vector<uint8_t> &b) {
+size_t differing_bytes(const std::vector<uint8_t> &a, const std::vector<uint8_t> &b)
+{
     size_t n = 0;
-    for (size_t i = 0; i < a.size() && i < b.size(); i++)
-        n += a[i] != b[i];
+    for (size_t i = 0; i < a.size() && i < b.size(); i++) n += a[i] != b[i];
     return n + (a.size() > b.size() ? a.size() - b.size() : b.size() - a.size());
 }
 
-void expect_conserved(const rt_render_stats &st) {
-    for (int k = 0; k < RT_PACKET_KINDS; k++)
-        EXPECT_EQ(st.packets.created[k], st.packets.consumed[k]) << "kind " << k;
+void expect_conserved(const rt_render_stats &st)
+{
+    for (int k = 0; k < RT_PACKET_KINDS; k++) EXPECT_EQ(st.packets.created[k], st.packets.consumed[k]) << "kind " << k;
     EXPECT_EQ(st.packets.forwarded, 0u);
     EXPECT_EQ(st.ops.packets_analysed, st.packets.consumed[0] + st.packets.consumed[1]);
 }
 
-} // namespace
+}  // namespace
 
-TEST(RenderDeterminism, TwoRendersAreByteIdentical) {
+TEST(RenderDeterminism, TwoRendersAreByteIdentical)
+{
     ScenePtr s = random_scene(1, 48);
     Image a = render(s.get(), 24, false), b = render(s.get(), 24, false);
     EXPECT_EQ(a.rgb, b.rgb);
@@ -1118,7 +1115,8 @@ TEST(RenderDeterminism, TwoRendersAreByteIdentical) {
     expect_conserved(a.stats);
 }
 
-TEST(RenderGridVsBruteForce, RandomSceneAtSeveralGridSizes) {
+TEST(RenderGridVsBruteForce, RandomSceneAtSeveralGridSizes)
+{
     for (uint64_t seed : {1ull, 2ull, 3ull}) {
         ScenePtr s = random_scene(seed, 64);
         Image bf = render(s.get(), 1, true);
@@ -1126,8 +1124,7 @@ TEST(RenderGridVsBruteForce, RandomSceneAtSeveralGridSizes) {
         EXPECT_EQ(bf.stats.ops.dda_steps, 0u);
         // The image is not trivial: many distinct byte values.
         std::vector<bool> seen(256);
-        for (uint8_t v : bf.rgb)
-            seen[v] = true;
+        for (uint8_t v : bf.rgb) seen[v] = true;
         EXPECT_GT(std::count(seen.begin(), seen.end(), true), 100);
         for (int cells : {1, 7, 24, 64}) {
             SCOPED_TRACE("seed " + std::to_string(seed) + " cells " + std::to_string(cells));
@@ -1138,8 +1135,7 @@ TEST(RenderGridVsBruteForce, RandomSceneAtSeveralGridSizes) {
             // Brute force makes a packet of every ray; the grid adds a ray that never meets the
             // space to the frame buffer at once instead.
             EXPECT_EQ(bf.stats.packets.primary_missed, 0u);
-            EXPECT_LE(gr.stats.packets.created[0] + gr.stats.packets.primary_missed,
-                      bf.stats.packets.created[0]);
+            EXPECT_LE(gr.stats.packets.created[0] + gr.stats.packets.primary_missed, bf.stats.packets.created[0]);
             EXPECT_EQ(gr.stats.ops.shadings, bf.stats.ops.shadings);
             EXPECT_EQ(gr.stats.ops.reflection_vectors, bf.stats.ops.reflection_vectors);
             EXPECT_EQ(gr.stats.ops.refraction_vectors, bf.stats.ops.refraction_vectors);
@@ -1147,7 +1143,8 @@ TEST(RenderGridVsBruteForce, RandomSceneAtSeveralGridSizes) {
     }
 }
 
-TEST(RenderGridVsBruteForce, TinyHugeAndEyeInside) {
+TEST(RenderGridVsBruteForce, TinyHugeAndEyeInside)
+{
     for (double scale : {1e-6, 1.0, 1e6}) {
         for (bool inside : {false, true}) {
             ScenePtr s = random_scene(4, 40, scale, inside);
@@ -1166,7 +1163,8 @@ TEST(RenderGridVsBruteForce, TinyHugeAndEyeInside) {
     }
 }
 
-TEST(RenderConservation, PacketsCreatedEqualConsumed) {
+TEST(RenderConservation, PacketsCreatedEqualConsumed)
+{
     ScenePtr s = random_scene(9, 32);
     for (int cells : {1, 3, 24}) {
         for (bool brute : {false, true}) {
@@ -1179,7 +1177,8 @@ TEST(RenderConservation, PacketsCreatedEqualConsumed) {
     }
 }
 
-TEST(ShadingHighlight, HugeShineGivesFiniteValuesWhereRLIsOne) {
+TEST(ShadingHighlight, HugeShineGivesFiniteValuesWhereRLIsOne)
+{
     // A light straight along the mirror direction makes R.L 1 up to rounding, which can
     // land above 1: pow of that to a huge Shine must not overflow. SPD files use Shine
     // up to 100000; any finite Shine >= 0 is accepted.

@@ -19,11 +19,11 @@ using namespace torusrt_test;
 
 namespace {
 
-ScenePtr parse(const std::string &text) {
+ScenePtr parse(const std::string &text)
+{
     char msg[RT_MSG_LEN] = "";
     rt_scene *s = nullptr;
-    EXPECT_EQ(rt_nff_parse("fin.nff", text.c_str(), text.size(), &s, msg, sizeof msg, nullptr, nullptr), RT_OK)
-        << msg;
+    EXPECT_EQ(rt_nff_parse("fin.nff", text.c_str(), text.size(), &s, msg, sizeof msg, nullptr, nullptr), RT_OK) << msg;
     return ScenePtr(s);
 }
 
@@ -31,7 +31,8 @@ ScenePtr parse(const std::string &text) {
 // seen from above and aside as the teapot is. The vertex normals of the lower edge point down,
 // those of the upper edge up, all in the plane y = 0 but for `noise` in their y component, with
 // signs that differ from vertex to vertex. With `mask`, the fin alone in ambient white on black.
-std::string fin_scene(double noise, bool mask = false) {
+std::string fin_scene(double noise, bool mask = false)
+{
     const char *setting = mask ? "b 0 0 0\nam 1 1 1\nf 1 1 1 0 0 0 0 0\n"
                                : "b 0.078 0.361 0.753\nl -3.1 9.8 12.1\nl 11.3 5.1 8.8\n"
                                  "f 0.5 0.5 0.5 0.5 0.5 4.8 0 0\np 4 -2 -3 0  5 -3 0  5 3 0  -2 3 0\n"
@@ -43,13 +44,13 @@ std::string fin_scene(double noise, bool mask = false) {
                   "pp 3  1.5 0 2.4 0.6 %g 0.8  0 0 2.4 0.16 %g 0.99  0 0 0.9 -0.16 %g -0.99\n"
                   "pp 3  1.5 0 0.9 -0.6 %g -0.8  3 0 0.9 0.38 %g -0.92  3 0 2.4 -0.41 %g 0.91\n"
                   "pp 3  3 0 2.4 -0.41 %g 0.91  1.5 0 2.4 0.6 %g 0.8  1.5 0 0.9 -0.6 %g -0.8\n",
-                  setting, noise, -noise, noise, noise, -noise, -noise, -noise, noise, -noise, -noise,
-                  noise, -noise);
+                  setting, noise, -noise, noise, noise, -noise, -noise, -noise, noise, -noise, -noise, noise, -noise);
     return buf;
 }
 
 // Pixels whose primary ray hits the fin.
-std::vector<uint8_t> fin_mask(double noise) {
+std::vector<uint8_t> fin_mask(double noise)
+{
     ScenePtr s = parse(fin_scene(noise, true));
     Image im = render(s.get(), 8, true);
     std::vector<uint8_t> mask(size_t(im.w) * im.h, 0);
@@ -57,14 +58,16 @@ std::vector<uint8_t> fin_mask(double noise) {
     return mask;
 }
 
-int level(const Image &im, uint32_t x, uint32_t y) {
+int level(const Image &im, uint32_t x, uint32_t y)
+{
     const uint8_t *p = &im.rgb[(size_t(y) * im.w + x) * 3];
     return int(p[0]) + p[1] + p[2];
 }
 
-} // namespace
+}  // namespace
 
-TEST(SmoothTriangle, RoundingInTheFinsNormalsDoesNotChangeTheImage) {
+TEST(SmoothTriangle, RoundingInTheFinsNormalsDoesNotChangeTheImage)
+{
     ScenePtr exact = parse(fin_scene(0.0)), noisy = parse(fin_scene(7.3e-17));
     ASSERT_TRUE(exact && noisy);
     Image a = render(exact.get()), b = render(noisy.get());
@@ -81,7 +84,8 @@ TEST(SmoothTriangle, RoundingInTheFinsNormalsDoesNotChangeTheImage) {
 // Both lights are above the fin, on the camera's side: every fin pixel gets light from one of
 // them (POV-Ray on the same triangles agrees). A dark pixel is one whose shadow or mirror ray
 // hit its own triangle, or whose shading normal was turned away from the camera.
-TEST(SmoothTriangle, FinHasNoDarkPixel) {
+TEST(SmoothTriangle, FinHasNoDarkPixel)
+{
     ScenePtr s = parse(fin_scene(7.3e-17));
     ASSERT_TRUE(s);
     Image im = render(s.get());
@@ -96,14 +100,15 @@ TEST(SmoothTriangle, FinHasNoDarkPixel) {
     std::sort(sorted.begin(), sorted.end());
     int median = sorted[sorted.size() / 2], dark = 0;
     for (int l : levels) dark += 4 * l < median;
-    EXPECT_EQ(dark, 0) << "fin pixels darker than a quarter of the fin's median level " << median
-                       << " (of " << levels.size() << ")";
+    EXPECT_EQ(dark, 0) << "fin pixels darker than a quarter of the fin's median level " << median << " (of "
+                       << levels.size() << ")";
 }
 
 // One triangle facing the camera (+z), its vertex normals tilted toward +x, and one light far
 // out at +x slightly behind the plane: the shading normal faces the light, the face does not.
 // Nothing but the triangle itself lies between them, so the pixel gets the light's diffuse term.
-TEST(SmoothTriangle, TiltedNormalIsNotShadowedByItsOwnTriangle) {
+TEST(SmoothTriangle, TiltedNormalIsNotShadowedByItsOwnTriangle)
+{
     const char *text = "v from 0 0 5 at 0 0 0 up 0 1 0 angle 10 hither 1 resolution 3 3\n"
                        "l 100 0 -10 1 1 1\n"
                        "f 1 1 1 1 0 0 0 0\n"

@@ -40,17 +40,18 @@ const char *const kStiffScenes[] = {
     "grazing",     "axis-rays",         "grid-corners",      "eye-inside",      "empty",
     "one-cell",    "one-big-sphere",    "cones-and-patches", "one-pixel",       "opposing-normals"};
 
-std::string scene_dir() {
+std::string scene_dir()
+{
     const char *env = std::getenv("TORUSRT_SCENE_DIR");
-    if (env && *env)
-        return env;
+    if (env && *env) return env;
     return std::string(TORUSRT_SOURCE_DIR) + "/scenes";
 }
 
 std::string scene_path(const std::string &name) { return scene_dir() + "/" + name + ".nff"; }
 
 // Loads a scene; a missing or unreadable file is a test failure naming it.
-ScenePtr load(const std::string &name) {
+ScenePtr load(const std::string &name)
+{
     std::string path = scene_path(name);
     struct stat st;
     if (stat(path.c_str(), &st) != 0) {
@@ -68,29 +69,29 @@ ScenePtr load(const std::string &name) {
     return ScenePtr(s);
 }
 
-Image render_named(const std::string &name, int cells = 24, bool brute = false) {
+Image render_named(const std::string &name, int cells = 24, bool brute = false)
+{
     ScenePtr s = load(name);
-    if (!s)
-        return Image();
+    if (!s) return Image();
     return render(s.get(), cells, brute);
 }
 
 // Per-pixel largest channel difference.
-std::vector<int> pixel_diffs(const Image &a, const Image &b) {
+std::vector<int> pixel_diffs(const Image &a, const Image &b)
+{
     std::vector<int> d;
-    if (a.rgb.size() != b.rgb.size())
-        return d;
+    if (a.rgb.size() != b.rgb.size()) return d;
     for (size_t i = 0; i < a.rgb.size(); i += 3) {
         int m = 0;
-        for (int c = 0; c < 3; c++)
-            m = std::max(m, std::abs(int(a.rgb[i + c]) - int(b.rgb[i + c])));
+        for (int c = 0; c < 3; c++) m = std::max(m, std::abs(int(a.rgb[i + c]) - int(b.rgb[i + c])));
         d.push_back(m);
     }
     return d;
 }
 
 // max abs difference <= 2 levels on >= 99.5 % of pixels, and no pixel off by more than 64.
-void expect_close(const Image &a, const Image &b, const std::string &what) {
+void expect_close(const Image &a, const Image &b, const std::string &what)
+{
     ASSERT_TRUE(a.ok && b.ok) << what;
     ASSERT_EQ(a.w, b.w) << what;
     ASSERT_EQ(a.h, b.h) << what;
@@ -106,12 +107,13 @@ void expect_close(const Image &a, const Image &b, const std::string &what) {
 // ray packets made per depth, and which pixels a shadow packet lit.
 struct TreeWalk {
     std::vector<uint64_t> rays_by_depth;
-    std::vector<uint8_t> lit; // per pixel: some shadow packet added light
+    std::vector<uint8_t> lit;  // per pixel: some shadow packet added light
     std::vector<uint8_t> rgb;
     uint64_t created[RT_PACKET_KINDS] = {0, 0}, consumed[RT_PACKET_KINDS] = {0, 0};
 };
 
-TreeWalk walk_trees(const rt_scene *s, const rt_grid *g, const rt_step_params &params) {
+TreeWalk walk_trees(const rt_scene *s, const rt_grid *g, const rt_step_params &params)
+{
     TreeWalk tw;
     const rt_camera *cam = rt_scene_camera(s);
     tw.lit.assign(size_t(cam->width) * cam->height, 0);
@@ -119,10 +121,8 @@ TreeWalk walk_trees(const rt_scene *s, const rt_grid *g, const rt_step_params &p
     rt_step_result r;
     EXPECT_EQ(rt_step_result_init(&r, s), RT_OK);
     auto count_ray = [&](const rt_packet &p) {
-        if (p.kind != RT_PACKET_RAY)
-            return;
-        if (tw.rays_by_depth.size() <= p.depth)
-            tw.rays_by_depth.resize(p.depth + 1u, 0);
+        if (p.kind != RT_PACKET_RAY) return;
+        if (tw.rays_by_depth.size() <= p.depth) tw.rays_by_depth.resize(p.depth + 1u, 0);
         tw.rays_by_depth[p.depth]++;
     };
     for (uint32_t y = 0; y < cam->height; y++)
@@ -143,8 +143,7 @@ TreeWalk walk_trees(const rt_scene *s, const rt_grid *g, const rt_step_params &p
                 EXPECT_EQ(rt_step(s, g, nullptr, 0, &params, &cur, &r), RT_OK);
                 for (size_t i = 0; i < r.contrib_count; i++) {
                     rt_framebuffer_add(fb.get(), r.contrib[i].x, r.contrib[i].y, r.contrib[i].rgb);
-                    if (cur.kind == RT_PACKET_SHADOW)
-                        tw.lit[size_t(y) * cam->width + x] = 1;
+                    if (cur.kind == RT_PACKET_SHADOW) tw.lit[size_t(y) * cam->width + x] = 1;
                 }
                 for (size_t i = 0; i < r.created_count; i++) {
                     tw.created[r.created[i].kind]++;
@@ -161,21 +160,24 @@ TreeWalk walk_trees(const rt_scene *s, const rt_grid *g, const rt_step_params &p
     return tw;
 }
 
-uint8_t to_byte(double v) {
+uint8_t to_byte(double v)
+{
     v = v < 0 ? 0 : v > 1 ? 1 : v;
     return uint8_t(std::floor(v * 255 + 0.5));
 }
 
-} // namespace
+}  // namespace
 
-TEST(RenderStiffScenes, EverySceneFileIsPresent) {
+TEST(RenderStiffScenes, EverySceneFileIsPresent)
+{
     for (const char *name : kStiffScenes) {
         struct stat st;
         EXPECT_EQ(stat(scene_path(name).c_str(), &st), 0) << "scene file missing: " << scene_path(name);
     }
 }
 
-TEST(RenderStiffScale, PowerOfTwoScalesAreByteIdentical) {
+TEST(RenderStiffScale, PowerOfTwoScalesAreByteIdentical)
+{
     Image one = render_named("scale-1");
     ASSERT_TRUE(one.ok);
     for (const char *name : {"scale-pow2-tiny", "scale-pow2-huge"}) {
@@ -184,35 +186,34 @@ TEST(RenderStiffScale, PowerOfTwoScalesAreByteIdentical) {
         EXPECT_EQ(im.rgb, one.rgb) << name << " differs from scale-1";
         EXPECT_EQ(im.stats.ops.shadings, one.stats.ops.shadings) << name;
         EXPECT_EQ(im.stats.packets.created[RT_PACKET_RAY], one.stats.packets.created[RT_PACKET_RAY]) << name;
-        EXPECT_EQ(im.stats.packets.created[RT_PACKET_SHADOW], one.stats.packets.created[RT_PACKET_SHADOW])
-            << name;
+        EXPECT_EQ(im.stats.packets.created[RT_PACKET_SHADOW], one.stats.packets.created[RT_PACKET_SHADOW]) << name;
     }
 }
 
-TEST(RenderStiffScale, DecimalScalesAreClose) {
+TEST(RenderStiffScale, DecimalScalesAreClose)
+{
     Image one = render_named("scale-1");
     ASSERT_TRUE(one.ok);
     // The scene is not trivial: it has several distinct colours.
     std::vector<bool> seen(256);
-    for (uint8_t v : one.rgb)
-        seen[v] = true;
+    for (uint8_t v : one.rgb) seen[v] = true;
     EXPECT_GT(std::count(seen.begin(), seen.end(), true), 30);
-    for (const char *name : {"scale-tiny", "scale-huge"})
-        expect_close(render_named(name), one, name);
+    for (const char *name : {"scale-tiny", "scale-huge"}) expect_close(render_named(name), one, name);
 }
 
-TEST(RenderStiffTiny, TinySphereBesideAHugeOneMatchesItAlone) {
+TEST(RenderStiffTiny, TinySphereBesideAHugeOneMatchesItAlone)
+{
     Image with = render_named("tiny-sphere"), alone = render_named("tiny-sphere-alone");
     expect_close(with, alone, "tiny-sphere vs tiny-sphere-alone");
     // The tiny sphere is visible: not every pixel is one colour.
     ASSERT_TRUE(alone.ok);
     size_t differ = 0;
-    for (size_t i = 3; i < alone.rgb.size(); i++)
-        differ += alone.rgb[i] != alone.rgb[i % 3];
+    for (size_t i = 3; i < alone.rgb.size(); i++) differ += alone.rgb[i] != alone.rgb[i % 3];
     EXPECT_GT(differ, alone.rgb.size() / 10);
 }
 
-TEST(RenderStiffMirrors, RaysReachDepthEightAndNoDeeper) {
+TEST(RenderStiffMirrors, RaysReachDepthEightAndNoDeeper)
+{
     ScenePtr s = load("facing-mirrors");
     ASSERT_TRUE(s);
     char msg[RT_MSG_LEN] = "";
@@ -225,8 +226,7 @@ TEST(RenderStiffMirrors, RaysReachDepthEightAndNoDeeper) {
         TreeWalk tw = walk_trees(s.get(), g.get(), prm);
         ASSERT_EQ(tw.rays_by_depth.size(), size_t(max_depth) + 1) << "deepest ray packet made";
         EXPECT_GT(tw.rays_by_depth[max_depth], 100u) << "many rays bounce all the way to the limit";
-        for (int k = 0; k < RT_PACKET_KINDS; k++)
-            EXPECT_EQ(tw.created[k], tw.consumed[k]);
+        for (int k = 0; k < RT_PACKET_KINDS; k++) EXPECT_EQ(tw.created[k], tw.consumed[k]);
         // The renderer agrees with this walk, image and packet counts.
         Image im = render(s.get(), 24, false, max_depth);
         ASSERT_TRUE(im.ok);
@@ -234,14 +234,14 @@ TEST(RenderStiffMirrors, RaysReachDepthEightAndNoDeeper) {
         EXPECT_EQ(im.stats.packets.created[RT_PACKET_RAY], tw.created[RT_PACKET_RAY]);
         EXPECT_EQ(im.stats.packets.created[RT_PACKET_SHADOW], tw.created[RT_PACKET_SHADOW]);
         uint64_t secondary = 0;
-        for (size_t d = 1; d < tw.rays_by_depth.size(); d++)
-            secondary += tw.rays_by_depth[d];
+        for (size_t d = 1; d < tw.rays_by_depth.size(); d++) secondary += tw.rays_by_depth[d];
         EXPECT_EQ(im.stats.ops.reflection_vectors + im.stats.ops.refraction_vectors, secondary)
             << "every secondary ray packet came from one reflection or refraction vector";
     }
 }
 
-TEST(RenderStiffLight, LitOnEverySideOfTheLight) {
+TEST(RenderStiffLight, LitOnEverySideOfTheLight)
+{
     ScenePtr s = load("light-inside");
     ASSERT_TRUE(s);
     ASSERT_EQ(rt_scene_light_count(s.get()), 1u);
@@ -250,16 +250,15 @@ TEST(RenderStiffLight, LitOnEverySideOfTheLight) {
     ASSERT_TRUE(g) << msg;
     rt_vec3 L = rt_scene_light(s.get(), 0)->position;
     rt_box space = rt_grid_bounds(g.get());
-    EXPECT_TRUE(L.x > space.lo.x && L.x < space.hi.x && L.y > space.lo.y && L.y < space.hi.y &&
-                L.z > space.lo.z && L.z < space.hi.z)
+    EXPECT_TRUE(L.x > space.lo.x && L.x < space.hi.x && L.y > space.lo.y && L.y < space.hi.y && L.z > space.lo.z &&
+                L.z < space.hi.z)
         << "the light should lie inside the object space";
     // Where the light appears in the image (docs/design.md section 3 camera).
     const rt_camera *cam = rt_scene_camera(s.get());
     rt_vec3 w = rt_vec_normalize(rt_vec_sub(cam->at, cam->from));
     rt_vec3 u = rt_vec_normalize(rt_vec_cross(w, cam->up));
     rt_vec3 v = rt_vec_cross(u, w);
-    double sp =
-        2 * std::tan(cam->angle * M_PI / 360) / std::max<double>(std::max(cam->width, cam->height) - 1, 1);
+    double sp = 2 * std::tan(cam->angle * M_PI / 360) / std::max<double>(std::max(cam->width, cam->height) - 1, 1);
     rt_vec3 dl = rt_vec_sub(L, cam->from);
     ASSERT_GT(rt_vec_dot(dl, w), 0.0);
     double li = (cam->width - 1) / 2.0 + rt_vec_dot(dl, u) / rt_vec_dot(dl, w) / sp;
@@ -268,22 +267,22 @@ TEST(RenderStiffLight, LitOnEverySideOfTheLight) {
     int quadrant_lit[4] = {0, 0, 0, 0};
     for (uint32_t y = 0; y < cam->height; y++)
         for (uint32_t x = 0; x < cam->width; x++) {
-            if (!tw.lit[size_t(y) * cam->width + x])
-                continue;
+            if (!tw.lit[size_t(y) * cam->width + x]) continue;
             int q = (x < li ? 0 : 1) + (y < lj ? 0 : 2);
             quadrant_lit[q]++;
         }
     const char *names[4] = {"upper left", "upper right", "lower left", "lower right"};
     for (int q = 0; q < 4; q++)
-        EXPECT_GT(quadrant_lit[q], 10)
-            << "directly lit pixels " << names[q] << " of the light's image at (" << li << ", " << lj << ")";
+        EXPECT_GT(quadrant_lit[q], 10) << "directly lit pixels " << names[q] << " of the light's image at (" << li
+                                       << ", " << lj << ")";
     // Lit pixels are brighter than the background there.
     Image im = render(s.get());
     ASSERT_TRUE(im.ok);
     EXPECT_EQ(im.rgb, tw.rgb);
 }
 
-TEST(RenderStiffEmpty, AllBackground) {
+TEST(RenderStiffEmpty, AllBackground)
+{
     ScenePtr s = load("empty");
     ASSERT_TRUE(s);
     EXPECT_EQ(rt_scene_object_count(s.get()), 0u);
@@ -292,8 +291,7 @@ TEST(RenderStiffEmpty, AllBackground) {
     for (bool brute : {false, true}) {
         Image im = render(s.get(), 24, brute);
         ASSERT_TRUE(im.ok);
-        for (size_t i = 0; i < im.rgb.size(); i++)
-            ASSERT_EQ(im.rgb[i], want[i % 3]) << "byte " << i;
+        for (size_t i = 0; i < im.rgb.size(); i++) ASSERT_EQ(im.rgb[i], want[i % 3]) << "byte " << i;
         EXPECT_EQ(im.stats.ops.shadings, 0u);
         EXPECT_EQ(im.stats.ops.tests_hit + im.stats.ops.tests_missed, 0u);
         if (!brute) {
@@ -302,7 +300,8 @@ TEST(RenderStiffEmpty, AllBackground) {
     }
 }
 
-TEST(RenderStiffOnePixel, RendersOnePixel) {
+TEST(RenderStiffOnePixel, RendersOnePixel)
+{
     ScenePtr s = load("one-pixel");
     ASSERT_TRUE(s);
     const rt_camera *cam = rt_scene_camera(s.get());
@@ -324,12 +323,12 @@ TEST(RenderStiffOnePixel, RendersOnePixel) {
     EXPECT_NE(im.rgb, background);
 }
 
-TEST(RenderStiffScenes, EverySceneConservesPacketsAndMatchesBruteForce) {
+TEST(RenderStiffScenes, EverySceneConservesPacketsAndMatchesBruteForce)
+{
     for (const char *name : kStiffScenes) {
         SCOPED_TRACE(name);
         ScenePtr s = load(name);
-        if (!s)
-            continue; // load() has already failed the test, naming the file
+        if (!s) continue;  // load() has already failed the test, naming the file
         Image grid = render(s.get(), 24, false);
         Image bf = render(s.get(), 1, true);
         ASSERT_TRUE(grid.ok && bf.ok);

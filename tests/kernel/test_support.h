@@ -37,7 +37,8 @@ using FbPtr = std::unique_ptr<rt_framebuffer, FbDeleter>;
 class TestRng {
   public:
     explicit TestRng(uint64_t seed) : state_(seed) {}
-    uint64_t next() {
+    uint64_t next()
+    {
         uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
         z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
         z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
@@ -49,12 +50,12 @@ class TestRng {
     // A point with each coordinate uniform in [lo, hi).
     rt_vec3 point(double lo, double hi) { return rt_vec(uniform(lo, hi), uniform(lo, hi), uniform(lo, hi)); }
     // A random unit vector (rejection sampling in the unit ball, away from its centre).
-    rt_vec3 unit() {
+    rt_vec3 unit()
+    {
         for (;;) {
             rt_vec3 v = point(-1, 1);
             double l = rt_vec_length(v);
-            if (l > 0.1 && l <= 1.0)
-                return rt_vec_scale(v, 1.0 / l);
+            if (l > 0.1 && l <= 1.0) return rt_vec_scale(v, 1.0 / l);
         }
     }
 
@@ -70,16 +71,17 @@ struct Sphere {
 
 // A new scene (no view, default material) holding these spheres in order; a failed add is a
 // test failure.
-inline ScenePtr scene_with_spheres(std::initializer_list<Sphere> spheres) {
+inline ScenePtr scene_with_spheres(std::initializer_list<Sphere> spheres)
+{
     ScenePtr s(rt_scene_new());
-    for (const Sphere &sp : spheres)
-        EXPECT_EQ(rt_scene_add_sphere(s.get(), sp.center, sp.radius), RT_OK);
+    for (const Sphere &sp : spheres) EXPECT_EQ(rt_scene_add_sphere(s.get(), sp.center, sp.radius), RT_OK);
     return s;
 }
 
 // A grid of nx x ny x nz cells over s; when it cannot be built, a test failure with the reason
 // and a null GridPtr.
-inline GridPtr make_grid(const rt_scene *s, int nx, int ny, int nz) {
+inline GridPtr make_grid(const rt_scene *s, int nx, int ny, int nz)
+{
     char msg[RT_MSG_LEN] = "";
     GridPtr g(rt_grid_new(s, nx, ny, nz, msg, sizeof msg));
     EXPECT_TRUE(g) << msg;
@@ -97,19 +99,18 @@ struct Image {
 
 // Renders a finished scene at its camera's size on a cells^3 grid, with the brute-force oracle
 // when brute is set and at max_depth when it is not negative; failures are test failures.
-inline Image render(const rt_scene *s, int cells = 24, bool brute = false, int max_depth = -1) {
+inline Image render(const rt_scene *s, int cells = 24, bool brute = false, int max_depth = -1)
+{
     Image im;
     GridPtr g = make_grid(s, cells, cells, cells);
-    if (!g)
-        return im;
+    if (!g) return im;
     const rt_camera *cam = rt_scene_camera(s);
     im.w = cam->width;
     im.h = cam->height;
     FbPtr fb(rt_framebuffer_new(im.w, im.h));
     rt_render_options o = rt_render_options_default();
     o.step.brute_force = brute ? 1 : 0;
-    if (max_depth >= 0)
-        o.step.max_depth = max_depth;
+    if (max_depth >= 0) o.step.max_depth = max_depth;
     char msg[RT_MSG_LEN] = "";
     rt_status st = rt_render(s, g.get(), &o, fb.get(), &im.stats, msg, sizeof msg);
     EXPECT_EQ(st, RT_OK) << msg;
@@ -119,4 +120,4 @@ inline Image render(const rt_scene *s, int cells = 24, bool brute = false, int m
     return im;
 }
 
-} // namespace torusrt_test
+}  // namespace torusrt_test

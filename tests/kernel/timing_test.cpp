@@ -40,7 +40,7 @@ LoadResult load(const std::string &name, const std::string &text)
     return r;
 }
 
-} // namespace
+}  // namespace
 
 TEST(Timing, Defaults)
 {
@@ -78,7 +78,7 @@ TEST(Timing, KeysNameEveryField)
     for (size_t i = 0; i < rt_timing_key_count(); i++) {
         std::string k = rt_timing_key_name(i);
         bool ends_us = k.size() > 3 && k.compare(k.size() - 3, 3, "_us") == 0;
-        EXPECT_EQ(ends_us, k == "link_bytes_per_us") << k; // the unit suffix is dropped
+        EXPECT_EQ(ends_us, k == "link_bytes_per_us") << k;  // the unit suffix is dropped
         seen_link |= k == "link";
         seen_width |= k == "bus_width_bytes";
         // Setting through the key changes what get reports.
@@ -107,21 +107,20 @@ TEST(Timing, SetRejectsBadValues)
     EXPECT_EQ(rt_timing_set(&t, "bus_width_bytes", 0, msg, sizeof msg), RT_ERR_INVALID);
     EXPECT_EQ(rt_timing_set(&t, "test_miss", 0, msg, sizeof msg), RT_OK);
     EXPECT_EQ(t.test_miss_us, 0);
-    EXPECT_EQ(t.packet_bytes, 28); // failed sets change nothing
+    EXPECT_EQ(t.packet_bytes, 28);  // failed sets change nothing
 }
 
 TEST(Timing, LoadParsesCommentsAndBothForms)
 {
-    LoadResult r = load("good.timing",
-                        "# a faster IP\n"
-                        "\n"
-                        "test_miss 650   # half\n"
-                        "test_hit = 875\n"
-                        "   dda_step=170\n"
-                        "link_bytes_per_us 14\n"
-                        "bus_cycle 0.125\n"
-                        "shading 1e3\n"
-                        "\t# indented comment\n");
+    LoadResult r = load("good.timing", "# a faster IP\n"
+                                       "\n"
+                                       "test_miss 650   # half\n"
+                                       "test_hit = 875\n"
+                                       "   dda_step=170\n"
+                                       "link_bytes_per_us 14\n"
+                                       "bus_cycle 0.125\n"
+                                       "shading 1e3\n"
+                                       "\t# indented comment\n");
     ASSERT_EQ(r.status, RT_OK) << r.msg;
     EXPECT_EQ(r.timing.test_miss_us, 650);
     EXPECT_EQ(r.timing.test_hit_us, 875);
@@ -129,7 +128,7 @@ TEST(Timing, LoadParsesCommentsAndBothForms)
     EXPECT_EQ(r.timing.link_bytes_per_us, 14);
     EXPECT_EQ(r.timing.bus_cycle_us, 0.125);
     EXPECT_EQ(r.timing.shading_us, 1000);
-    EXPECT_EQ(r.timing.refraction_us, 1100); // untouched keys keep their values
+    EXPECT_EQ(r.timing.refraction_us, 1100);  // untouched keys keep their values
 }
 
 TEST(Timing, LoadWithoutFinalNewline)
@@ -201,7 +200,7 @@ TEST(Timing, HandOversHaveTheirOwnKeys)
     ops.handovers_sent = 3;
     ops.handovers_received = 2;
     EXPECT_EQ(rt_timing_step_us(&t, &ops), 3 * 100.0 + 2 * 7.0);
-    ops.packets_created = 1; // a new packet stays at packet_creation
+    ops.packets_created = 1;  // a new packet stays at packet_creation
     EXPECT_EQ(rt_timing_step_us(&t, &ops), 314.0 + t.packet_creation_us);
 }
 
@@ -232,7 +231,7 @@ TEST(Timing, LinkAndBusTimes)
     rt_timing t;
     rt_timing_defaults(&t);
     EXPECT_EQ(rt_timing_link_packet_us(&t), 50.0);
-    t.link_bytes_per_us = 14; // 28 bytes over 14 bytes/us
+    t.link_bytes_per_us = 14;  // 28 bytes over 14 bytes/us
     EXPECT_EQ(rt_timing_link_packet_us(&t), 2.0);
     t.packet_bytes = 35;
     EXPECT_EQ(rt_timing_link_packet_us(&t), 2.5);

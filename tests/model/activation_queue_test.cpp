@@ -29,7 +29,7 @@ void log(const std::string &what) { g_log.push_back({what, sc_core::sc_time_stam
 struct Client : ActivationQueue::Client {
     std::string name;
     ActivationQueue *queue = nullptr;
-    int again = 0; // times to ask again from its own activation
+    int again = 0;  // times to ask again from its own activation
     void activate() override
     {
         log(name);
@@ -65,7 +65,7 @@ std::vector<Entry> simulate()
     Client c0, c1, c2;
     c0.name = "c0", c1.name = "c1", c2.name = "c2";
     for (Client *c : {&c0, &c1, &c2}) c->queue = &queue;
-    c0.again = 1; // asks once more from its first activation
+    c0.again = 1;  // asks once more from its first activation
     Waker a("a", queue, us(10)), b("b", queue, us(10)), quiet("quiet", queue, us(10)), later("later", queue, us(20));
     a.asks = {&c2, &c0};
     b.asks = {&c1};
@@ -112,7 +112,4 @@ TEST(ActivationQueue, SameDelta)
         }
 }
 
-TEST(ActivationQueue, EmptyBetweenRounds)
-{
-    EXPECT_EQ(names_at(20), (std::vector<std::string>{"later", "c1"}));
-}
+TEST(ActivationQueue, EmptyBetweenRounds) { EXPECT_EQ(names_at(20), (std::vector<std::string>{"later", "c1"})); }

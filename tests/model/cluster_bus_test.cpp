@@ -160,8 +160,8 @@ double to_us(const sc_time &t) { return t.to_seconds() * 1e6; }
 
 // What the arbiters chose alone (before the run).
 struct ArbiterChoices {
-    std::vector<int> rr_all;        // round-robin, 5 picks with all 4 lines requesting
-    std::vector<int> rr_some;       // then 3 picks with lines 1 and 3 requesting
+    std::vector<int> rr_all;   // round-robin, 5 picks with all 4 lines requesting
+    std::vector<int> rr_some;  // then 3 picks with lines 1 and 3 requesting
     int rr_none = 0, fp_all = 0, fp_some = 0, fp_none = 0;
     bool unknown_threw = false;
     size_t named_policies = 0, built_policies = 0;
@@ -222,7 +222,7 @@ Saturation saturation(const SaturatedBus &b)
 struct Outcome {
     ArbiterChoices alone;
     Saturation rr, fp;
-    double one = 0; // one packet transfer, us
+    double one = 0;  // one packet transfer, us
     // Lone masters on a free bus: elapsed time of each transfer, and whether all succeeded.
     std::vector<double> w, r1, r3, r20, r21, ww;
     bool w_ok = false, r1_ok = false, r20_ok = false, r21_ok = false, bad_ok = true;

@@ -62,8 +62,8 @@ struct Processors {
 // What the policies chose on set loads (before the run) and what the run did.
 struct Outcome {
     bool enters = false;
-    std::vector<int> shortest_queue; // choices at loads 0 0 0, 1 0 0, 1 2 0, 1 2 2, 3 2 2
-    std::vector<int> round_robin;    // five choices at loads 3 2 2
+    std::vector<int> shortest_queue;  // choices at loads 0 0 0, 1 0 0, 1 2 0, 1 2 2, 3 2 2
+    std::vector<int> round_robin;     // five choices at loads 3 2 2
     bool unknown_policy_threw = false;
     std::vector<ClusterBus::Grant> bus_log;
     std::vector<uint64_t> dispatched, consumed;
@@ -77,16 +77,16 @@ static void choose_on_set_loads(Processors &procs, const TimedPacket &p, Outcome
     auto rr = make_dispatch_policy("round-robin");
     std::vector<IntersectionProcessor *> &v = procs.raw;
     run.shortest_queue.push_back(sq->choose(v));
-    v[0]->busy_trace() = true; // loads 1, 0, 0
+    v[0]->busy_trace() = true;  // loads 1, 0, 0
     run.shortest_queue.push_back(sq->choose(v));
     v[1]->queue().push_blocking(p);
-    v[1]->queue().push_blocking(p); // loads 1, 2, 0
+    v[1]->queue().push_blocking(p);  // loads 1, 2, 0
     run.shortest_queue.push_back(sq->choose(v));
     v[2]->queue().push_blocking(p);
-    v[2]->busy_trace() = true; // loads 1, 2, 2
+    v[2]->busy_trace() = true;  // loads 1, 2, 2
     run.shortest_queue.push_back(sq->choose(v));
     v[0]->queue().push_blocking(p);
-    v[0]->queue().push_blocking(p); // loads 3, 2, 2
+    v[0]->queue().push_blocking(p);  // loads 3, 2, 2
     run.shortest_queue.push_back(sq->choose(v));
     for (int i = 0; i < 5; i++) run.round_robin.push_back(rr->choose(v));
     for (auto *ip : v) ip->busy_trace() = false;
@@ -98,7 +98,7 @@ static void choose_on_set_loads(Processors &procs, const TimedPacket &p, Outcome
 }
 
 // The bus figures: arbitration 1 us, 4-byte width, 2 us cycle, 30-byte packets.
-static const double transfer_us = 1 + 8 * 2; // ceil(30 / 4) = 8 cycles
+static const double transfer_us = 1 + 8 * 2;  // ceil(30 / 4) = 8 cycles
 
 static Outcome simulate()
 {
@@ -106,7 +106,7 @@ static Outcome simulate()
     char msg[256];
     rt_scene *scene = rt_scene_new();
     rt_scene_set_view(scene, rt_vec(0, 0, 5), rt_vec(0, 0, 0), rt_vec(0, 1, 0), 45.0, 16, 16);
-    rt_scene_add_sphere(scene, rt_vec(0, 0, 0), 1.0); // no light: a hit creates nothing
+    rt_scene_add_sphere(scene, rt_vec(0, 0, 0), 1.0);  // no light: a hit creates nothing
     rt_scene_finish(scene, msg, sizeof msg);
     rt_grid *grid = rt_grid_new(scene, 2, 2, 2, msg, sizeof msg);
     TimedPacket p{};

@@ -70,7 +70,7 @@ std::vector<uint32_t> list_of(const rt_grid *g, size_t cell)
 
 // The tiny scene on a 2 x 1 x 1 grid, cell i owned by node i.
 class ClusterMemoryHandCount : public testing::Test {
-protected:
+  protected:
     void SetUp() override
     {
         scene = tiny_scene();
@@ -115,7 +115,7 @@ Outcome simulate()
     rt_scene *scene = tiny_scene();
     char msg[256] = "";
     rt_grid *grid = rt_grid_new(scene, 2, 1, 1, msg, sizeof msg);
-    if (!grid) return run; // every check of the run then fails; HandCountPremises says why
+    if (!grid) return run;  // every check of the run then fails; HandCountPremises says why
     int32_t owner[2] = {0, 1};
     SimConfig config;
     config.cells = {2, 1, 1};

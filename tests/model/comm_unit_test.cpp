@@ -61,7 +61,7 @@ struct LinkSender : sc_core::sc_module {
         for (const Send &s : sends) {
             tlm::tlm_generic_payload t;
             PacketExtension ext;
-            ext.pool = &pool; // a pool of the sender's own: the unit copies the packet in
+            ext.pool = &pool;  // a pool of the sender's own: the unit copies the packet in
             ext.handle = pool.add(packet_in(0, s.tag), -1);
             ext.credit = &credit;
             credit.take();
@@ -130,23 +130,23 @@ static Outcome simulate()
     rt_scene_add_sphere(scene, rt_vec(0, 0, 0), 1.0);
     rt_scene_finish(scene, msg, sizeof msg);
     rt_grid *grid = rt_grid_new(scene, 4, 1, 1, msg, sizeof msg);
-    const int32_t owner[4] = {0, 1, 2, 3}; // cell i belongs to node i
+    const int32_t owner[4] = {0, 1, 2, 3};  // cell i belongs to node i
 
     Routing routing({4, 1, 1}, true);
     CommUnit cu("cu", 0, routing, grid, owner);
     RecordingSink local, plus, minus;
     cu.local.bind(local);
-    cu.bind_link_out(direction(0, true), plus);   // port 0
-    cu.bind_link_out(direction(0, false), minus); // port 1
+    cu.bind_link_out(direction(0, true), plus);    // port 0
+    cu.bind_link_out(direction(0, false), minus);  // port 1
 
     // Port 1 sends first (1 us), port 0 later (2 us), all arriving at 5 us: delivery must still
     // put port 0's packet first.
     LinkSender port0("port0"), port1("port1");
-    port0.socket.bind(cu.next_link_in()); // source 0
-    port1.socket.bind(cu.next_link_in()); // source 1
+    port0.socket.bind(cu.next_link_in());  // source 0
+    port1.socket.bind(cu.next_link_in());  // source 1
     port1.at = us(1);
     port0.at = us(2);
-    port1.sends = {{11, us(4)}, {12, us(4)}, {13, us(2)}}; // 13 arrives first, at 3 us
+    port1.sends = {{11, us(4)}, {12, us(4)}, {13, us(2)}};  // 13 arrives first, at 3 us
     port0.sends = {{10, us(3)}};
     CreditProbe probe("probe");
     probe.senders = {&port0, &port1};
@@ -154,12 +154,12 @@ static Outcome simulate()
     ProcessorSide proc("proc");
     proc.out.bind(cu.in);
     proc.pushes = {
-        {us(20), packet_in(0, 20, us(20))}, // own cell: local
-        {us(20), packet_in(1, 21, us(20))}, // node 1: + link
-        {us(20), packet_in(3, 23, us(20))}, // node 3: - link
-        {us(20), packet_in(2, 22, us(20))}, // node 2, two hops either way: + on the tie
-        {us(30), packet_in(0, 30, us(35), true)}, // host primary stamped later: no wait
-        {us(40), packet_in(1, 40, us(47))},       // stamped ahead: leaves at its stamp
+        {us(20), packet_in(0, 20, us(20))},        // own cell: local
+        {us(20), packet_in(1, 21, us(20))},        // node 1: + link
+        {us(20), packet_in(3, 23, us(20))},        // node 3: - link
+        {us(20), packet_in(2, 22, us(20))},        // node 2, two hops either way: + on the tie
+        {us(30), packet_in(0, 30, us(35), true)},  // host primary stamped later: no wait
+        {us(40), packet_in(1, 40, us(47))},        // stamped ahead: leaves at its stamp
     };
     sc_core::sc_start();
 
@@ -191,7 +191,8 @@ TEST(CommUnit, DeliversLinkPacketsAtArrivalInPortThenSendOrder)
 TEST(CommUnit, RoutesOtherCellsToTheFirstHopLink)
 {
     EXPECT_EQ(run().plus_tags, (std::vector<uint32_t>{21, 22, 40})) << "+x link gets the packets for nodes 1 and 2";
-    EXPECT_EQ(run().plus_times, (std::vector<sc_time>{us(20), us(20), us(47)})) << "+x link times: 20, 20 and the stamp 47 us";
+    EXPECT_EQ(run().plus_times, (std::vector<sc_time>{us(20), us(20), us(47)}))
+        << "+x link times: 20, 20 and the stamp 47 us";
     EXPECT_EQ(run().minus_tags, (std::vector<uint32_t>{23})) << "-x link gets the packet for node 3";
     EXPECT_EQ(run().minus_times, (std::vector<sc_time>{us(20)})) << "at 20 us";
 }
@@ -235,6 +236,6 @@ TEST(CommUnit, LinkSocketAnswersOnlyBlockingTransport)
     EXPECT_FALSE(target->get_direct_mem_ptr(t, dmi));
     EXPECT_EQ(target->transport_dbg(t), 0u);
     t.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
-    target->b_transport(t, delay); // no packet extension: refused
+    target->b_transport(t, delay);  // no packet extension: refused
     EXPECT_EQ(t.get_response_status(), tlm::TLM_GENERIC_ERROR_RESPONSE);
 }

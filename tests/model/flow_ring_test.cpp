@@ -32,7 +32,7 @@ using sc_core::sc_time;
 using namespace torusrt;
 
 struct Relay : sc_core::sc_module, PacketSinkIf {
-    sc_core::sc_port<PacketSinkIf> out; // to the node's communication unit
+    sc_core::sc_port<PacketSinkIf> out;  // to the node's communication unit
     PacketQueue queue;
     int node, nodes;
     FlowControl flow;
@@ -85,7 +85,7 @@ struct Relay : sc_core::sc_module, PacketSinkIf {
             }
             if (flow == FlowControl::none) next = next_of(tp);
             next.stamp = sc_core::sc_time_stamp();
-            out->accept(next); // waits with the packet in hand while the link is full (none)
+            out->accept(next);  // waits with the packet in hand while the link is full (none)
         }
     }
 };
@@ -164,9 +164,9 @@ struct Ring {
 // What the six rings did.
 struct Outcome {
     size_t none2 = 0, none3 = 0, classes2 = 0, classes3 = 0;  // packets absorbed
-    size_t none2_held = 0;                                     // held at the receivers at the end
-    size_t classes_most = 0, none_most = 0;                    // most packets in one buffer
-    std::vector<sc_time> timed2, timed3;                       // absorption times, one packet per node
+    size_t none2_held = 0;                                    // held at the receivers at the end
+    size_t classes_most = 0, none_most = 0;                   // most packets in one buffer
+    std::vector<sc_time> timed2, timed3;                      // absorption times, one packet per node
     bool wrap_channel_1 = false;
 };
 

@@ -22,8 +22,8 @@ TEST(GuessScoreboard, NothingScoredTakesTheFirstGuess)
 TEST(GuessScoreboard, RatiosToEachFramesBest)
 {
     GuessScoreboard b(3, 4, 0);
-    b.record({2.0, 1.0, 4.0});   // ratios 2, 1, 4
-    b.record({1.0, 2.0, 1.0});   // ratios 1, 2, 1
+    b.record({2.0, 1.0, 4.0});  // ratios 2, 1, 4
+    b.record({1.0, 2.0, 1.0});  // ratios 1, 2, 1
     EXPECT_DOUBLE_EQ(b.mean_ratio(0), 1.5);
     EXPECT_DOUBLE_EQ(b.mean_ratio(1), 1.5);
     EXPECT_DOUBLE_EQ(b.mean_ratio(2), 2.5);
@@ -50,7 +50,7 @@ TEST(GuessScoreboard, OnlyTheLastWindowFramesCount)
 TEST(GuessScoreboard, AGuessMissingFromSomeFramesIsJudgedOnTheOthers)
 {
     GuessScoreboard b(2, 4, 0);
-    b.record({1.0, -1});   // guess 1 gave no table (the trend before it can be made)
+    b.record({1.0, -1});  // guess 1 gave no table (the trend before it can be made)
     b.record({1.1, 1.0});
     EXPECT_DOUBLE_EQ(b.mean_ratio(0), 1.05);
     EXPECT_DOUBLE_EQ(b.mean_ratio(1), 1.0);

@@ -115,7 +115,7 @@ Outcome simulate()
     rt_scene *scene = mirror_scene();
     char msg[256] = "";
     rt_grid *grid = rt_grid_new(scene, 8, 8, 8, msg, sizeof msg);
-    if (!grid) return out; // every check then fails on `built`
+    if (!grid) return out;  // every check then fails on `built`
     auto small_once = elaborate("small_once", 2, HandOverTiming::at_once, scene, grid);
     auto small_delta = elaborate("small_delta", 2, HandOverTiming::next_delta, scene, grid);
     auto large_once = elaborate("large_once", 4, HandOverTiming::at_once, scene, grid);

@@ -17,7 +17,7 @@ using namespace torusrt;
 
 struct FrameBufferStub : sc_core::sc_module {
     tlm_utils::simple_target_socket<FrameBufferStub> socket;
-    std::vector<uint32_t> pixels; // y * width + x
+    std::vector<uint32_t> pixels;  // y * width + x
     std::vector<sc_time> times;
     bool colour_ok = true;
     rt_vec3 want{};
@@ -47,7 +47,7 @@ struct NodePrimaries {
 // The expected pixels (computed from the kernel's primary rays, apart from the host) and what the
 // host did with them.
 struct Outcome {
-    std::vector<std::vector<uint32_t>> want_pixels; // per entry node, the entering pixels in order
+    std::vector<std::vector<uint32_t>> want_pixels;  // per entry node, the entering pixels in order
     std::vector<uint32_t> want_missed;
     size_t entering = 0;
     uint64_t created_before_start = 0, missed_before_start = 0;
@@ -90,7 +90,7 @@ static Outcome simulate()
     rt_scene_finish(scene, msg, sizeof msg);
     rt_grid *grid = rt_grid_new(scene, 2, 2, 2, msg, sizeof msg);
     std::vector<int32_t> owner(rt_grid_cell_count(grid));
-    for (size_t c = 0; c < owner.size(); c++) owner[c] = static_cast<int32_t>(c % 3); // 3 nodes
+    for (size_t c = 0; c < owner.size(); c++) owner[c] = static_cast<int32_t>(c % 3);  // 3 nodes
 
     run.want_pixels.resize(3);
     for (uint32_t p = 0; p < w * h; p++) {

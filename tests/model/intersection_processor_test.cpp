@@ -51,10 +51,10 @@ struct FrameBufferStub : sc_core::sc_module {
 static double step_us(const rt_timing &t, const rt_op_counts &o)
 {
     return o.tests_missed * t.test_miss_us + o.tests_hit * t.test_hit_us + o.dda_steps * t.dda_step_us +
-           o.shadings * t.shading_us + o.reflection_vectors * t.reflection_us +
-           o.refraction_vectors * t.refraction_us + o.packets_analysed * t.packet_analysis_us +
-           o.packets_created * t.packet_creation_us + o.fb_writes * t.fb_write_us +
-           o.handovers_sent * t.handover_send_us + o.handovers_received * t.handover_receive_us;
+           o.shadings * t.shading_us + o.reflection_vectors * t.reflection_us + o.refraction_vectors * t.refraction_us +
+           o.packets_analysed * t.packet_analysis_us + o.packets_created * t.packet_creation_us +
+           o.fb_writes * t.fb_write_us + o.handovers_sent * t.handover_send_us +
+           o.handovers_received * t.handover_receive_us;
 }
 
 struct Expected {
@@ -78,7 +78,7 @@ static Expected expect(const rt_scene *s, const rt_grid *g, const int32_t *owner
 // What the run recorded, and the step costs worked out apart from the model.
 struct Outcome {
     bool both_enter = false;
-    Expected ea, eb; // A: hits the sphere; B: passes beside it and is forwarded
+    Expected ea, eb;  // A: hits the sphere; B: passes beside it and is forwarded
     std::vector<sc_time> times;
     std::vector<int> kinds;
     bool stamp_mismatch = false;
@@ -95,7 +95,7 @@ static Outcome simulate()
     rt_scene *scene = rt_scene_new();
     rt_scene_set_view(scene, rt_vec(0, 0, 5), rt_vec(0, 0, 0), rt_vec(0, 1, 0), 45.0, 16, 16);
     rt_scene_add_sphere(scene, rt_vec(0, 0, 0), 1.0);
-    rt_scene_set_ambient(scene, rt_vec(0.2, 0.2, 0.2)); // a hit then writes a contribution
+    rt_scene_set_ambient(scene, rt_vec(0.2, 0.2, 0.2));  // a hit then writes a contribution
     rt_scene_add_light(scene, rt_vec(5, 5, 5), nullptr);
     rt_scene_finish(scene, msg, sizeof msg);
     rt_grid *grid = rt_grid_new(scene, 2, 2, 2, msg, sizeof msg);

@@ -129,7 +129,7 @@ TEST(LoadMotion, MovedVisitsKeepEachCellsCostPerRay)
         in.work[c] = 1;
         for (int f = 0; f < RT_CELL_FACES; f++) in.traffic[c * RT_CELL_FACES + f] = 1;
     }
-    in.work[cell(2, 1, 0)] = 4;       // 4 us per visit here ...
+    in.work[cell(2, 1, 0)] = 4;                          // 4 us per visit here ...
     in.traffic[cell(3, 1, 2) * RT_CELL_FACES + 1] = 31;  // ... and many rays through (3,1,2)
     in.pilot.total_us = in.total();
     move_visits(in.pilot, box, camera_motion(a, a), occupied, out.pilot);
@@ -137,6 +137,7 @@ TEST(LoadMotion, MovedVisitsKeepEachCellsCostPerRay)
     move_visits(in.pilot, box, camera_motion(a, b), occupied, out.pilot);
     EXPECT_NEAR(out.total(), in.total(), 1e-9);
     size_t hottest = 0;
-    for (size_t c = 0; c < cells; c++) if (out.work[c] > out.work[hottest]) hottest = c;
+    for (size_t c = 0; c < cells; c++)
+        if (out.work[c] > out.work[hottest]) hottest = c;
     EXPECT_EQ(hottest, cell(2, 1, 0));  // (3,1,2)'s rays land on the costly cell
 }

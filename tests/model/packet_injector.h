@@ -11,7 +11,7 @@ namespace model_test {
 
 struct Injector : sc_core::sc_module {
     sc_core::sc_port<torusrt::PacketSinkIf> out;  // where the packets go
-    std::vector<torusrt::TimedPacket> packets;   // handed over in order at time 0
+    std::vector<torusrt::TimedPacket> packets;    // handed over in order at time 0
     explicit Injector(sc_core::sc_module_name n) : sc_module(n), out("out")
     {
         SC_HAS_PROCESS(Injector);

@@ -15,9 +15,9 @@ using namespace torusrt;
 namespace {
 
 struct Outcome {
-    std::vector<uint32_t> copied_x, pooled_x; // packet x, in the order each reader took them
-    std::vector<uint32_t> handles;            // the handles the pooled reader was given
-    std::vector<uint32_t> pushed;             // the handles pushed into the pooled queue
+    std::vector<uint32_t> copied_x, pooled_x;  // packet x, in the order each reader took them
+    std::vector<uint32_t> handles;             // the handles the pooled reader was given
+    std::vector<uint32_t> pushed;              // the handles pushed into the pooled queue
     size_t pool_in_use_after_takes = 0, pool_in_use_after_release = 0;
     size_t occupancy_after_takes = 1;
     bool empty_after = false;
@@ -77,7 +77,7 @@ const Outcome &run()
 
 TEST(PacketQueuePooled, SameOrderAsTakingByCopy)
 {
-    std::vector<uint32_t> expected = {7, 3, 11, 5}; // arrival order, whatever the class
+    std::vector<uint32_t> expected = {7, 3, 11, 5};  // arrival order, whatever the class
     EXPECT_EQ(run().copied_x, expected);
     EXPECT_EQ(run().pooled_x, expected);
 }

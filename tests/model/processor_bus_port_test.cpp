@@ -46,9 +46,9 @@ struct Processor : sc_core::sc_module {
         sc_core::wait(us(5));
         TimedPacket p{};
         p.stamp = us(5);
-        out->accept(p); // bus 5..22
+        out->accept(p);  // bus 5..22
         p.stamp = sc_core::sc_time_stamp() + us(10);
-        out->accept(p); // stamped 10 us ahead: bus 32..49
+        out->accept(p);  // stamped 10 us ahead: bus 32..49
         TimeKeeper time(false);
         fetch_start = sc_core::sc_time_stamp();
         for (uint32_t obj : objects) {
@@ -59,15 +59,14 @@ struct Processor : sc_core::sc_module {
 };
 
 // The bus figures: arbitration 1 us, 4-byte width, 2 us cycle, 30-byte packets, 3 us memory access.
-static const double packet_us = 1 + 8 * 2; // ceil(30 / 4) = 8 cycles
+static const double packet_us = 1 + 8 * 2;  // ceil(30 / 4) = 8 cycles
 
 // What reached the communication unit, the fetch times and the counts; read1 and read3 are the
 // remote reads of objects 1 and 3 worked out from their sizes.
 struct Outcome {
     std::vector<sc_time> comm_times, comm_stamps, after_fetch;
     sc_time fetch_start, read1, read3;
-    uint64_t local_reads = 0, remote_reads = 0, mem0_reads = 0, mem1_reads = 0, packet_transfers = 0,
-             object_reads = 0;
+    uint64_t local_reads = 0, remote_reads = 0, mem0_reads = 0, mem1_reads = 0, packet_transfers = 0, object_reads = 0;
 };
 
 static Outcome simulate()

@@ -162,7 +162,8 @@ std::unique_ptr<Run> elaborate(const char *name, bool everywhere, const rt_scene
     int dims[3] = {4, 4, 4}, procs[3] = {2, 2, 1};
     char msg[256];
     if (rt_mapping_fill(dims, procs, RT_MAP_CYCLIC, 1, r->owner.data(), msg, sizeof msg) != RT_OK) return nullptr;
-    for (size_t c = 0; c <= cells; c++) r->config.replica_first.push_back(static_cast<uint32_t>(c * (everywhere ? 3 : 1)));
+    for (size_t c = 0; c <= cells; c++)
+        r->config.replica_first.push_back(static_cast<uint32_t>(c * (everywhere ? 3 : 1)));
     for (size_t c = 0; c < cells; c++) {
         for (int32_t n = 0; n < 4; n++)
             if (everywhere ? n != r->owner[c] : n == (r->owner[c] ^ 3)) r->config.replica_extra.push_back(n);

@@ -2,8 +2,8 @@
 #include "model_test.h"
 #include "routing.h"
 
-using torusrt::Routing;
 using torusrt::direction;
+using torusrt::Routing;
 
 TEST(Routing, TorusWrapsAround)
 {

@@ -37,15 +37,15 @@ struct AtUser : sc_core::sc_module {
     void run()
     {
         time.advance(ns(7));
-        sample(); // 0
+        sample();  // 0
         time.advance(ns(13));
-        sample(); // 1
+        sample();  // 1
         time.advance_to(ns(15));
-        sample(); // 2
+        sample();  // 2
         time.advance_to(ns(32));
-        sample(); // 3
+        sample();  // 3
         time.settle(ns(100));
-        sample(); // 4
+        sample();  // 4
     }
 };
 
@@ -63,46 +63,46 @@ struct LtUser : sc_core::sc_module {
     void run()
     {
         for (int i = 0; i < 3; i++) time.advance(ns(30));
-        sample(); // 0
+        sample();  // 0
         time.advance(ns(30));
-        sample(); // 1
+        sample();  // 1
         time.advance(ns(50));
-        sample(); // 2
+        sample();  // 2
         time.advance(ns(40));
-        sample(); // 3
+        sample();  // 3
         time.advance_to(ns(205));
-        sample(); // 4
+        sample();  // 4
         time.advance_to(ns(250));
-        sample(); // 5
+        sample();  // 5
         time.sync();
-        sample(); // 6
+        sample();  // 6
         time.sync();
-        sample(); // 7
+        sample();  // 7
 
         // settle: a wait on an event (here a plain wait) happened while an offset was pending.
-        time.advance(ns(20)); // local 270, simulation 250
+        time.advance(ns(20));  // local 270, simulation 250
         sc_time before = time.now();
-        sc_core::wait(ns(30)); // simulation 280, later than `before`
+        sc_core::wait(ns(30));  // simulation 280, later than `before`
         time.settle(before);
-        sample(); // 8
-        time.advance(ns(10)); // local 290, simulation 280
+        sample();              // 8
+        time.advance(ns(10));  // local 290, simulation 280
         before = time.now();
-        sc_core::wait(ns(5)); // simulation 285, earlier than `before`
+        sc_core::wait(ns(5));  // simulation 285, earlier than `before`
         time.settle(before);
-        sample(); // 9
+        sample();  // 9
     }
 };
 
 // LtUser's schedule up to sample 7, from an SC_METHOD.
 struct LtMethodUser : sc_core::sc_module {
     struct Op {
-        char kind; // a: advance, t: advance_to, s: sync
+        char kind;  // a: advance, t: advance_to, s: sync
         int ns;
         bool sample;
     };
     TimeKeeper time{true};
     std::vector<Sample> &out;
-    std::vector<Op> ops{{'a', 30, false}, {'a', 30, false}, {'a', 30, true}, {'a', 30, true}, {'a', 50, true},
+    std::vector<Op> ops{{'a', 30, false}, {'a', 30, false}, {'a', 30, true},  {'a', 30, true}, {'a', 50, true},
                         {'a', 40, true},  {'t', 205, true}, {'t', 250, true}, {'s', 0, true},  {'s', 0, true}};
     size_t next = 0;
     bool waiting = false;
@@ -119,7 +119,7 @@ struct LtMethodUser : sc_core::sc_module {
     }
     void run()
     {
-        if (waiting) { // the owed wait is over
+        if (waiting) {  // the owed wait is over
             time.resumed();
             waiting = false;
             if (ops[next++].sample) out.push_back({sc_time_stamp(), time.now()});

@@ -79,7 +79,7 @@ static Outcome simulate()
         TransactionPool pool;
         TransactionPool::Crossing first = pool.take();
         first.trans->acquire();
-        TransactionPool::Crossing second = pool.take(); // the first is still out
+        TransactionPool::Crossing second = pool.take();  // the first is still out
         second.trans->acquire();
         run.nested_made = pool.made();
         run.nested_distinct = first.trans != second.trans && first.ext != second.ext;
@@ -124,7 +124,7 @@ TEST(TransactionPool, MakesASecondOnlyWhileTheFirstIsOut)
 {
     EXPECT_EQ(run().nested_made, 2u);
     EXPECT_TRUE(run().nested_distinct);
-    EXPECT_EQ(run().nested_free_after, 2u); // both back after their last release
+    EXPECT_EQ(run().nested_free_after, 2u);  // both back after their last release
 }
 
 TEST(TransactionPool, GivesBackTheLastReleasedFirst)
@@ -143,11 +143,11 @@ TEST(TransactionPool, LinksSharingItSendEveryCrossingInOneTransaction)
     EXPECT_EQ(r.addresses, (std::vector<uint64_t>{1, 1, 2, 2}));
     for (const tlm::tlm_generic_payload *t : r.transactions) EXPECT_EQ(t, r.transactions[0]);
     EXPECT_EQ(r.made, 1u);
-    EXPECT_EQ(r.free_count, 1u); // released after every crossing
+    EXPECT_EQ(r.free_count, 1u);  // released after every crossing
 }
 
 TEST(TransactionPool, ACrossingHoldsItsTransactionAcquired)
 {
     for (unsigned c : run().ref_counts) EXPECT_EQ(c, 1u);
-    for (bool w : run().writes) EXPECT_TRUE(w); // a write of the packet in the extension
+    for (bool w : run().writes) EXPECT_TRUE(w);  // a write of the packet in the extension
 }

@@ -28,7 +28,7 @@ struct RecordingClient : WakeCalendar::Client {
     WakeCalendar *calendar = nullptr;
     int id = -1;
     std::vector<Wake> *log = nullptr;
-    std::vector<sc_time> next; // times asked for from the wakes, in turn
+    std::vector<sc_time> next;  // times asked for from the wakes, in turn
     void wake_due() override
     {
         log->push_back({sc_core::sc_time_stamp(), id, sc_core::sc_delta_count()});
@@ -40,14 +40,14 @@ struct RecordingClient : WakeCalendar::Client {
 
 struct Outcome {
     std::vector<Wake> wakes;
-    sc_time end;           // simulation time when nothing was left to do
+    sc_time end;              // simulation time when nothing was left to do
     size_t pending_left = 0;  // clients with a wake pending at the end
     bool due_after_ask = false, due_after_wake = true;
     sc_time due_seen;
-    std::vector<int> ids; // what add() returned, in the order the clients were added
-    std::vector<Wake> crowd; // the wakes of the crowd below
-    std::vector<Wake> solo;  // the wakes of a calendar with one client (its tree is a leaf)
-    std::vector<std::vector<sc_time>> crowd_want; // per crowd client, the times it must be woken at
+    std::vector<int> ids;                          // what add() returned, in the order the clients were added
+    std::vector<Wake> crowd;                       // the wakes of the crowd below
+    std::vector<Wake> solo;                        // the wakes of a calendar with one client (its tree is a leaf)
+    std::vector<std::vector<sc_time>> crowd_want;  // per crowd client, the times it must be woken at
 };
 
 // A crowd of clients (ids 4..): each asks, from time 0, for a later time and then an earlier one
@@ -114,7 +114,7 @@ static Outcome simulate()
     }
     plan_crowd(crowd, out);
     for (size_t i = 0; i < crowd.size(); i++) {
-        calendar.wake_at(crowd[i].id, out.crowd_want[i][0] + us(500)); // replaced just below
+        calendar.wake_at(crowd[i].id, out.crowd_want[i][0] + us(500));  // replaced just below
         calendar.wake_at(crowd[i].id, out.crowd_want[i][0]);
     }
     // One client alone: asks for 7 us, then 3 us (replacing it), and from its wake for 8 us.

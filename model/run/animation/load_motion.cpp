@@ -158,7 +158,8 @@ void move_visits(const rt_cost_pilot &src, const rt_box &bounds, const RigidMoti
     std::vector<double> visits = cell_visits(src);
     double cls_work[2] = {0, 0}, cls_visits[2] = {0, 0};
     for (size_t c = 0; c < src.cells; c++)
-        if (visits[c] > 0) cls_work[occupied[c] ? 1 : 0] += src.work_us[c], cls_visits[occupied[c] ? 1 : 0] += visits[c];
+        if (visits[c] > 0)
+            cls_work[occupied[c] ? 1 : 0] += src.work_us[c], cls_visits[occupied[c] ? 1 : 0] += visits[c];
     std::vector<double> per_visit(src.cells);
     for (size_t c = 0; c < src.cells; c++) {
         int k = occupied[c] ? 1 : 0;

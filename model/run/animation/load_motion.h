@@ -17,9 +17,9 @@
 namespace torusrt {
 
 struct RigidMotion {
-    double r[3][3];   // rotation, row major
-    rt_vec3 from;     // a point of pose a ...
-    rt_vec3 to;       // ... and where it goes
+    double r[3][3];  // rotation, row major
+    rt_vec3 from;    // a point of pose a ...
+    rt_vec3 to;      // ... and where it goes
     rt_vec3 apply(rt_vec3 p) const;
     rt_vec3 turn(rt_vec3 v) const;  // the rotation alone (directions)
 };

@@ -19,15 +19,15 @@
 namespace torusrt {
 
 struct MigrationCost {
-    uint64_t cells = 0;          // cells that change owner
-    uint64_t objects = 0;        // object records sent
-    uint64_t list_bytes = 0;     // cell-list bytes sent
-    uint64_t object_bytes = 0;   // object bytes sent
+    uint64_t cells = 0;         // cells that change owner
+    uint64_t objects = 0;       // object records sent
+    uint64_t list_bytes = 0;    // cell-list bytes sent
+    uint64_t object_bytes = 0;  // object bytes sent
     uint64_t bytes() const { return list_bytes + object_bytes; }
-    uint64_t byte_hops = 0;      // bytes times the hops they travel
-    int max_hops = 0;            // the longest transfer's path
+    uint64_t byte_hops = 0;  // bytes times the hops they travel
+    int max_hops = 0;        // the longest transfer's path
     uint64_t busiest_link_bytes = 0;
-    double time_s = 0;           // the busiest link's time
+    double time_s = 0;  // the busiest link's time
 };
 
 // Microseconds one link takes for `bytes` bytes under `timing`.

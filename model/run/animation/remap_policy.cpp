@@ -69,7 +69,8 @@ struct GuessKind {
 const GuessKind guesses[] = {{Guess::last, false, "frame"},         {Guess::trend, false, "trend"},
                              {Guess::moved, false, "moved"},        {Guess::last, true, "frame-blurred"},
                              {Guess::trend, true, "trend-blurred"}, {Guess::moved, true, "moved-blurred"}};
-constexpr double blur_keep = 0.25;  // a blurred guess keeps this share of a cell's work, the rest goes to its face neighbours
+constexpr double blur_keep =
+    0.25;  // a blurred guess keeps this share of a cell's work, the rest goes to its face neighbours
 
 // Frame j's load guessed from frame j-1's (`last`) and j-2's (`before`, the trend only), the
 // camera going from pose a (frame j-1) to pose b (frame j).
@@ -145,8 +146,10 @@ void adaptive_choice(const RemapContext &ctx, const std::vector<int32_t> &curren
     candidates.push_back({"keep", current});
     candidates.push_back({"remap of frame k-1", remapped(ctx, current, loads.previous)});
     if (loads.before) {
-        candidates.push_back({"remap of the trend", remapped(ctx, current, *FramePilot::extrapolated(loads.previous, *loads.before))});
-        candidates.push_back({"remap of frames k-1 and k-2", remapped(ctx, current, *FramePilot::mean(loads.previous, *loads.before))});
+        candidates.push_back(
+            {"remap of the trend", remapped(ctx, current, *FramePilot::extrapolated(loads.previous, *loads.before))});
+        candidates.push_back(
+            {"remap of frames k-1 and k-2", remapped(ctx, current, *FramePilot::mean(loads.previous, *loads.before))});
     }
     double w_prev = loads.previous.busiest_work_s(current, nodes);
     double a = w_prev > 0 ? loads.previous_time_s / w_prev : 0;
@@ -154,15 +157,16 @@ void adaptive_choice(const RemapContext &ctx, const std::vector<int32_t> &curren
     size_t best = 0;
     double best_s = keep_s, best_move = 0;
     for (size_t i = 1; i < candidates.size(); i++) {
-        double move = migration_cost(ctx.scene, ctx.grid, ctx.routing, nodes, ctx.config.timing, current,
-                                     candidates[i].owner).time_s;
+        double move =
+            migration_cost(ctx.scene, ctx.grid, ctx.routing, nodes, ctx.config.timing, current, candidates[i].owner)
+                .time_s;
         double t = a * preview.busiest_work_s(candidates[i].owner, nodes) + move;
         if (t < best_s) best = i, best_s = t, best_move = move;
     }
     d.predicted_gain_s = keep_s - (best_s - best_move);
     d.decision = best == 0 ? "keep" : "remap";
-    d.reason = std::string("adaptive: ") + candidates[best].name + ", predicted " + seconds_text(best_s) +
-               " (keep " + seconds_text(keep_s) + "), migration " + seconds_text(best_move);
+    d.reason = std::string("adaptive: ") + candidates[best].name + ", predicted " + seconds_text(best_s) + " (keep " +
+               seconds_text(keep_s) + "), migration " + seconds_text(best_move);
     d.owner = std::move(candidates[best].owner);
 }
 
@@ -267,8 +271,8 @@ std::unique_ptr<FramePilot> FramePilot::combined(const FramePilot &x, const Fram
         s->m_pilot.total_us += s->m_pilot.work_us[c];
     }
     for (size_t i = 0; i < a.cells * RT_CELL_FACES; i++)
-        s->m_pilot.traffic[i] = static_cast<uint64_t>(
-            std::llround(std::max(0.0, wx * static_cast<double>(a.traffic[i]) + wy * static_cast<double>(b.traffic[i]))));
+        s->m_pilot.traffic[i] = static_cast<uint64_t>(std::llround(
+            std::max(0.0, wx * static_cast<double>(a.traffic[i]) + wy * static_cast<double>(b.traffic[i]))));
     return s;
 }
 
@@ -283,10 +287,7 @@ double FramePilot::busiest_work_s(const std::vector<int32_t> &owner, int nodes) 
     return sum / static_cast<double>(top) * 1e-6;
 }
 
-std::vector<int32_t> oracle_mapping(const RemapContext &ctx, const FramePilot &pilot)
-{
-    return fresh_map(ctx, pilot);
-}
+std::vector<int32_t> oracle_mapping(const RemapContext &ctx, const FramePilot &pilot) { return fresh_map(ctx, pilot); }
 
 Remapper::Remapper(RemapPolicy policy, size_t window, double margin)
     : m_policy(policy), m_board(sizeof guesses / sizeof guesses[0], window, margin)

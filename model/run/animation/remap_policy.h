@@ -77,7 +77,10 @@ class FramePilot {
         return combined(last, before, 2, -1);
     }
     // The mean of two frames' loads (a table fitted to both views).
-    static std::unique_ptr<FramePilot> mean(const FramePilot &a, const FramePilot &b) { return combined(a, b, 0.5, 0.5); }
+    static std::unique_ptr<FramePilot> mean(const FramePilot &a, const FramePilot &b)
+    {
+        return combined(a, b, 0.5, 0.5);
+    }
     // The load blurred: `keep` of each cell's work stays, the rest is shared by its face
     // neighbours (load_motion.h's blur_load); traffic unchanged.
     static std::unique_ptr<FramePilot> blurred(const FramePilot &load, double keep);
@@ -89,7 +92,7 @@ class FramePilot {
     FramePilot(const FramePilot &) = delete;
     FramePilot &operator=(const FramePilot &) = delete;
     const rt_cost_pilot &get() const { return m_pilot; }
-    double work_s() const { return m_pilot.total_us * 1e-6; } // T(1) of the frame
+    double work_s() const { return m_pilot.total_us * 1e-6; }  // T(1) of the frame
     // The mean work of the busiest tenth of the nodes (at least one) under `owner`, seconds.
     double busiest_work_s(const std::vector<int32_t> &owner, int nodes) const;
     double wall_s() const { return m_wall_s; }
@@ -106,12 +109,12 @@ class FramePilot {
 };
 
 struct RemapDecision {
-    std::vector<int32_t> owner;      // the table for the frame
-    std::string decision = "keep";   // "first", "keep" or "remap"
+    std::vector<int32_t> owner;     // the table for the frame
+    std::string decision = "keep";  // "first", "keep" or "remap"
     std::string reason;
-    double predicted_gain_s = 0;     // adaptive only: predicted time of keeping minus the choice's
-    MigrationCost migration;         // from the previous table to `owner`
-    bool migration_charged = true;   // false for oracle
+    double predicted_gain_s = 0;    // adaptive only: predicted time of keeping minus the choice's
+    MigrationCost migration;        // from the previous table to `owner`
+    bool migration_charged = true;  // false for oracle
     double mapper_wall_s = 0;
 };
 
@@ -144,11 +147,11 @@ struct AdaptiveSettings {
 
 // What Remapper::decide sees of frames k-1 and k.
 struct FrameLoads {
-    const FramePilot &previous;    // frame k-1's measured load
-    double previous_time_s;        // frame k-1's measured image time
-    const FramePilot &pilot;       // frame k's own full pilot (oracle only)
-    const FramePilot *before;      // frame k-2's measured load (null for k = 1)
-    const FramePilot *preview;     // frame k's host preview (adaptive only)
+    const FramePilot &previous;           // frame k-1's measured load
+    double previous_time_s;               // frame k-1's measured image time
+    const FramePilot &pilot;              // frame k's own full pilot (oracle only)
+    const FramePilot *before;             // frame k-2's measured load (null for k = 1)
+    const FramePilot *preview;            // frame k's host preview (adaptive only)
     const rt_camera_pose *pose_previous;  // frame k-1's camera
     const rt_camera_pose *pose_next;      // frame k's camera (known in advance)
 };

@@ -60,8 +60,9 @@ void validate_shape(const MachineConfig &m)
 
 void validate_mapping(const MachineConfig &m)
 {
-    if (m.block < 1) bad(m.mapping == RT_MAP_COST ? "--map cost:K: K must be at least 1"
-                                                  : "--map block-cyclic:B: B must be at least 1");
+    if (m.block < 1)
+        bad(m.mapping == RT_MAP_COST ? "--map cost:K: K must be at least 1"
+                                     : "--map block-cyclic:B: B must be at least 1");
     if ((m.mapping == RT_MAP_FILE) != !m.map_file.empty())
         bad("--map-file: a table file goes with the file mapping, and only with it");
     if (m.pilot_size[0] > 0 || m.pilot_size[1] > 0) {

@@ -97,8 +97,7 @@ std::string timing_values_text(const MachineConfig &m)
     return s;
 }
 
-template <typename E, size_t N>
-std::string choice_help(const char *what, const NamedValue<E> (&table)[N])
+template <typename E, size_t N> std::string choice_help(const char *what, const NamedValue<E> (&table)[N])
 {
     return std::string(what) + ": " + names_of(table);
 }
@@ -107,8 +106,7 @@ std::string choice_help(const char *what, const NamedValue<E> (&table)[N])
 std::string listed(const std::vector<std::string> &names)
 {
     std::string s;
-    for (size_t i = 0; i < names.size(); i++)
-        s += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+    for (size_t i = 0; i < names.size(); i++) s += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
     return s;
 }
 
@@ -204,12 +202,13 @@ std::vector<MachineOption> timing_options()
              double us = parse_time(s.long_name(), t, -6, -6);
              if (us > s.max)
                  throw UserError(s.long_name() + " '" + shown_text(t) + "': must be at most " + number_text(s.max) +
-                                     " us (1 s)", 2);
+                                     " us (1 s)",
+                                 2);
              set_timing(s, m.timing, "link", us);
          },
          [](const MachineConfig &m) { return number(timing_value(m.timing, "link")); }},
-        {{"--packet-bytes", "BYTES", K::real, "28", 0, kMaxTimingUs, "bytes", "packet size on the wire",
-          G::machine, "packet-bytes"},
+        {{"--packet-bytes", "BYTES", K::real, "28", 0, kMaxTimingUs, "bytes", "packet size on the wire", G::machine,
+          "packet-bytes"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
              set_timing(s, m.timing, "packet_bytes", parse_real(s.long_name(), t, s.min, s.max));
          },
@@ -255,8 +254,8 @@ MachineOption layout_option(const char *name, const char *fallback, int min, con
     return {{name, "BYTES", ValueKind::integer, fallback, double(min), double(kMaxRecordBytes), "bytes", help,
              OptionGroup::machine, name + 2},
             [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
-                m.memory_layout.*Field =
-                    static_cast<uint32_t>(parse_integer(s.long_name(), t, static_cast<long long>(s.min), kMaxRecordBytes));
+                m.memory_layout.*Field = static_cast<uint32_t>(
+                    parse_integer(s.long_name(), t, static_cast<long long>(s.min), kMaxRecordBytes));
             },
             [](const MachineConfig &m) { return std::to_string(m.memory_layout.*Field); }};
 }
@@ -267,8 +266,8 @@ std::vector<MachineOption> cluster_options()
     using G = OptionGroup;
     using K = ValueKind;
     return {
-        {{"--cluster", "N", K::integer, "1", 1, kMaxCluster, "processors",
-          "processors per torus node on a shared bus", G::machine, "cluster"},
+        {{"--cluster", "N", K::integer, "1", 1, kMaxCluster, "processors", "processors per torus node on a shared bus",
+          G::machine, "cluster"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
              m.cluster = static_cast<int>(parse_integer(s.long_name(), t, 1, kMaxCluster));
          },
@@ -306,8 +305,8 @@ std::vector<MachineOption> mapping_file_options()
     using G = OptionGroup;
     using K = ValueKind;
     return {
-        {{"--map-file", "FILE", K::file, "", 0, 0, "", "explicit cell -> node table (torusrt-map 1 format)",
-          G::machine, "map-file"},
+        {{"--map-file", "FILE", K::file, "", 0, 0, "", "explicit cell -> node table (torusrt-map 1 format)", G::machine,
+          "map-file"},
          [](const OptionSpec &, const std::string &t, MachineConfig &m) {
              if (t.empty()) return;
              m.mapping = RT_MAP_FILE;
@@ -371,7 +370,8 @@ std::string toml_string(const std::string &key, const std::string &v)
             for (size_t k = 1; ok && k < n; k++) ok = (static_cast<unsigned char>(v[i + k]) & 0xc0) == 0x80;
             if (!ok)
                 throw UserError("--" + key + " '" + shown_text(v) +
-                                    "': a value that is not UTF-8 cannot be written to a machine file", 2);
+                                    "': a value that is not UTF-8 cannot be written to a machine file",
+                                2);
             out.append(v, i, n);
             i += n - 1;
         } else {
@@ -424,7 +424,8 @@ OptionList machine_options(const MachineConfig &m, bool with_timing)
 std::string machine_options_toml(const MachineConfig &m, bool with_timing)
 {
     std::string s;
-    for (const auto &kv : machine_options(m, with_timing)) s += kv.first + "=" + toml_string(kv.first, kv.second) + "\n";
+    for (const auto &kv : machine_options(m, with_timing))
+        s += kv.first + "=" + toml_string(kv.first, kv.second) + "\n";
     return s;
 }
 

@@ -38,15 +38,16 @@ std::vector<RunOption> make_table()
          [](const OptionSpec &s, const std::string &t, SimRequest &r) { r.config.t1_s = time_s(s, t); }},
         {{"--vcd", "FILE", K::file, "", 0, 0, "",
           "write a VCD trace (IP busy, queue depths, link and bus activity) and a GTKWave save file beside "
-          "it (X.gtkw for X.vcd)", G::tracing, ""},
+          "it (X.gtkw for X.vcd)",
+          G::tracing, ""},
          [](const OptionSpec &, const std::string &t, SimRequest &r) { r.config.vcd_path = t; }},
         {{"--trace-from", "TIME", K::time, "0", 0, max_s, "s", "trace only from this simulated time", G::tracing, ""},
          [](const OptionSpec &s, const std::string &t, SimRequest &r) { r.config.trace_from_us = time_us(s, t); }},
         {{"--trace-to", "TIME", K::time, "", 0, max_s, "s", "trace only up to this simulated time (default: the end)",
           G::tracing, ""},
          [](const OptionSpec &s, const std::string &t, SimRequest &r) { r.config.trace_to_us = time_us(s, t); }},
-        {{"--trace-ips", "N,N,...", K::text, "", 0, kMaxNodes - 1, "", "trace only these nodes, e.g. 0,1,5 (default all)",
-          G::tracing, ""},
+        {{"--trace-ips", "N,N,...", K::text, "", 0, kMaxNodes - 1, "",
+          "trace only these nodes, e.g. 0,1,5 (default all)", G::tracing, ""},
          [](const OptionSpec &s, const std::string &t, SimRequest &r) {
              r.config.trace_ips = parse_integer_list(s.long_name(), t, 0, kMaxNodes - 1);
          }},
@@ -55,21 +56,24 @@ std::vector<RunOption> make_table()
          [](const OptionSpec &, const std::string &t, SimRequest &r) { r.remap = parse_remap_policy(t); }},
         {{"--remap-pilot", "FRACTION", K::real, "0", 0, 1, "",
           "adaptive's host preview of each frame: this fraction of the pixels (0: no preview, guesses of the load "
-          "from earlier frames)", G::animation, ""},
+          "from earlier frames)",
+          G::animation, ""},
          [](const OptionSpec &s, const std::string &t, SimRequest &r) { r.adaptive.pilot_fraction = real(s, t); }},
         {{"--remap-window", "N", K::integer, std::to_string(default_remap_window), 1, double(max_remap_window), "",
           "adaptive without a preview: judge its guesses over this many past frames", G::animation, ""},
          [](const OptionSpec &s, const std::string &t, SimRequest &r) {
-             r.adaptive.window = static_cast<size_t>(parse_integer(s.long_name(), t, static_cast<long long>(s.min),
-                                                                   static_cast<long long>(s.max)));
+             r.adaptive.window = static_cast<size_t>(
+                 parse_integer(s.long_name(), t, static_cast<long long>(s.min), static_cast<long long>(s.max)));
          }},
         {{"--remap-margin", "FRACTION", K::real, number_text(default_remap_margin), 0, 1, "",
           "adaptive without a preview: keep the previous frame's load as the guess unless another's back-test "
-          "is better by more than this fraction", G::animation, ""},
+          "is better by more than this fraction",
+          G::animation, ""},
          [](const OptionSpec &s, const std::string &t, SimRequest &r) { r.adaptive.margin = real(s, t); }},
         {{"--time-limit", "TIME", K::time, "1e7s", 0, max_s, "s",
           "stop with an error (exit 1) when simulated time passes this (at most 1e7 s: SystemC's 64-bit "
-          "picosecond time holds 1.8e7 s)", G::run, ""},
+          "picosecond time holds 1.8e7 s)",
+          G::run, ""},
          [](const OptionSpec &s, const std::string &t, SimRequest &r) { r.config.time_limit_s = time_s(s, t); }},
     };
 }
@@ -89,7 +93,8 @@ template <class Take> void read_given(const std::map<std::string, std::string> &
 void check_guess_option(const std::string &name, const SimRequest &r)
 {
     if (r.remap != RemapPolicy::adaptive) bad(name + ": only with --remap adaptive");
-    if (r.adaptive.pilot_fraction > 0) bad(name + ": only without a preview (--remap-pilot 0); the preview judges the tables");
+    if (r.adaptive.pilot_fraction > 0)
+        bad(name + ": only without a preview (--remap-pilot 0); the preview judges the tables");
 }
 
 }  // namespace
@@ -107,7 +112,8 @@ void read_animation_run_options(const std::map<std::string, std::string> &given,
         for (const char *name : {"--remap-pilot", "--remap-window", "--remap-margin"})
             if (has(name)) bad(std::string(name) + ": only for an animation with --remap adaptive");
         for (const char *name : {"--remap", "--frames-csv"})
-            if (has(name)) bad(std::string(name) + ": only for an animation (--frames N with --orbit DEG, or --camera-path FILE)");
+            if (has(name))
+                bad(std::string(name) + ": only for an animation (--frames N with --orbit DEG, or --camera-path FILE)");
         return;
     }
     read_given(given, r, [](const OptionSpec &s) { return s.group == OptionGroup::animation; });

@@ -69,8 +69,8 @@ nlohmann::json prepare_mapping(SimConfig &config, rt_scene *scene, const rt_grid
         j.update(cost_mapping(config, scene, grid, owner, replicas));
         config.replica_first = std::move(replicas.first);
         config.replica_extra = std::move(replicas.extra);
-    } else if (rt_mapping_fill(dims, config.ips.data(), config.mapping, config.block, owner.data(), msg,
-                               sizeof msg) != RT_OK) {
+    } else if (rt_mapping_fill(dims, config.ips.data(), config.mapping, config.block, owner.data(), msg, sizeof msg) !=
+               RT_OK) {
         throw UserError(std::string("--map: ") + msg, 2);
     }
     j["cells_per_node"] = cells_per_node(owner, nodes);

@@ -15,8 +15,8 @@
 
 namespace torusrt {
 
-// Fills config.owner_table (and config.replica_first / replica_extra for a replicated table) for the loaded scene and returns what the report says about it
-// (JSON `mapping`: kind, cells per node, pilot and mapper costs for `cost`).
+// Fills config.owner_table (and config.replica_first / replica_extra for a replicated table) for the loaded scene and
+// returns what the report says about it (JSON `mapping`: kind, cells per node, pilot and mapper costs for `cost`).
 // Throws UserError naming the file and line (exit 2) for a bad --map-file.
 // Reads config.map_file for a grid of `dims` cells into `owner` (UserError naming the file and
 // line, exit 2).

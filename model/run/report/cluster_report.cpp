@@ -111,9 +111,9 @@ MemoryReport cluster_memory(const SimConfig &config, const rt_scene *scene, cons
     m.clustered = true;
     rt_replicas replicas = config.replica_table();
     m.cluster = cluster_memory_figures(scene, grid, cell_owner, config.node_count(), config.cluster,
-                                      &config.memory_layout, config.replicated() ? &replicas : nullptr);
-    m.max_per_ip_bytes = config.data == DataMode::replicated ? m.cluster.replicated_per_processor
-                                                             : m.cluster.shared_per_processor;
+                                       &config.memory_layout, config.replicated() ? &replicas : nullptr);
+    m.max_per_ip_bytes =
+        config.data == DataMode::replicated ? m.cluster.replicated_per_processor : m.cluster.shared_per_processor;
     m.total_bytes = m.max_per_ip_bytes * static_cast<uint64_t>(config.processor_count());
     m.pixel_partitioned_bytes = pixel_partitioned;
     return m;

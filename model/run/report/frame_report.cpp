@@ -32,7 +32,8 @@ nlohmann::json frame_json(const FrameRecord &f)
               {"busiest_link_bytes", m.busiest_link_bytes},
               {"link_time_s", m.time_s},
               {"charged", f.migration_charged}}},
-            {"host_pilot", {{"pixels", f.preview_pixels}, {"time_s", f.host_pilot_s}, {"charged_s", f.host_pilot_charged_s}}},
+            {"host_pilot",
+             {{"pixels", f.preview_pixels}, {"time_s", f.host_pilot_s}, {"charged_s", f.host_pilot_charged_s}}},
             {"pilot_wall_s", f.pilot_wall_s},
             {"mapper_wall_s", f.mapper_wall_s}};
 }
@@ -53,17 +54,17 @@ nlohmann::json animation_json(const std::vector<FrameRecord> &frames, const Rema
     double total = image + migration + host_charged;
     int n = frames.empty() ? 1 : frames.front().processors;
     nlohmann::json a = {{"frame_count", frames.size()},
-            {"policy", remap.policy},
-            {"total_s", total},
-            {"image_time_s", image},
-            {"migration_time_s", migration},
-            {"migration_share", total > 0 ? migration / total : 0.0},
-            {"migration_bytes", bytes},
-            {"host_pilot_time_s", host},
-            {"host_pilot_charged_s", host_charged},
-            {"mapping_changes", remaps},
-            {"t1_s", t1},
-            {"efficiency", total > 0 ? t1 / (n * total) : 0.0}};
+                        {"policy", remap.policy},
+                        {"total_s", total},
+                        {"image_time_s", image},
+                        {"migration_time_s", migration},
+                        {"migration_share", total > 0 ? migration / total : 0.0},
+                        {"migration_bytes", bytes},
+                        {"host_pilot_time_s", host},
+                        {"host_pilot_charged_s", host_charged},
+                        {"mapping_changes", remaps},
+                        {"t1_s", t1},
+                        {"efficiency", total > 0 ? t1 / (n * total) : 0.0}};
     if (remap.policy == "adaptive") {
         a["pilot_fraction"] = remap.pilot_fraction;
         a["window"] = remap.window;
@@ -102,7 +103,8 @@ void print_frame_table(const std::vector<FrameRecord> &frames, const RemapSettin
                           remap.window == 1 ? "" : "s", remap.margin);
         policy += buf;
     }
-    std::fprintf(out, "  animation    %zu frames, remap %s: total %s s = images %s s + migration %s s (%.1f %%)"
+    std::fprintf(out,
+                 "  animation    %zu frames, remap %s: total %s s = images %s s + migration %s s (%.1f %%)"
                  " + host pilot %s s\n",
                  frames.size(), policy.c_str(), sig4(a["total_s"].get<double>()).c_str(),
                  sig4(a["image_time_s"].get<double>()).c_str(), sig4(a["migration_time_s"].get<double>()).c_str(),

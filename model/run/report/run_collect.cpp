@@ -15,8 +15,8 @@ namespace torusrt {
 namespace {
 
 // Flat torus: what each node must hold for its cells, against every processor holding all.
-MemoryReport flat_memory(const SimConfig &config, const rt_scene *scene, const rt_grid *grid,
-                         const int32_t *cell_owner, uint64_t pixel_partitioned)
+MemoryReport flat_memory(const SimConfig &config, const rt_scene *scene, const rt_grid *grid, const int32_t *cell_owner,
+                         uint64_t pixel_partitioned)
 {
     std::vector<rt_memory_use> use(static_cast<size_t>(config.node_count()));
     rt_replicas replicas = config.replica_table();
@@ -53,7 +53,14 @@ QueueStats queue_stats(const QueueRef &q)
     const ClassBuffers &b = *q.buffers;
     uint64_t used = 0;
     for (uint32_t i = 0; i < b.count(); i++) used += b.find(i) != nullptr;
-    return {q.name, queue_kind_name(q.kind), q.node, used, b.capacity(), b.used(), b.high_water(), b.blocked_writers(),
+    return {q.name,
+            queue_kind_name(q.kind),
+            q.node,
+            used,
+            b.capacity(),
+            b.used(),
+            b.high_water(),
+            b.blocked_writers(),
             b.stalled_time().to_seconds()};
 }
 

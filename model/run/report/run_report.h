@@ -21,9 +21,10 @@ namespace torusrt {
 class TorusSystem;
 
 struct RunFacts {
-    double t1_s = 0;          // T(1): the same model with one processor
-    std::string t1_source;    // "passed with --t1", "one-processor run", "this run" or, for an animation, "sum of the frames' pilots"
-    double wall_s = 0;        // wall-clock seconds of the whole run
+    double t1_s = 0;        // T(1): the same model with one processor
+    std::string t1_source;  // "passed with --t1", "one-processor run", "this run" or, for an animation, "sum of the
+                            // frames' pilots"
+    double wall_s = 0;      // wall-clock seconds of the whole run
     // Wall-clock seconds of elaboration (building and binding the modules, SystemC's end of
     // elaboration and start of simulation) and of the simulation after it (sc_start).
     double elaboration_wall_s = 0, sim_wall_s = 0;
@@ -99,9 +100,8 @@ struct RunReport {
 };
 
 // Reads the system after the run. `deadlock`: the network stalled (fills report.deadlock).
-RunReport collect(const SimConfig &config, TorusSystem &top, const PacketLedger &ledger,
-                  const rt_scene *scene, const rt_grid *grid, const int32_t *cell_owner, const RunFacts &facts,
-                  bool deadlock);
+RunReport collect(const SimConfig &config, TorusSystem &top, const PacketLedger &ledger, const rt_scene *scene,
+                  const rt_grid *grid, const int32_t *cell_owner, const RunFacts &facts, bool deadlock);
 nlohmann::json to_json(const RunReport &report);
 void print_summary(const RunReport &report, std::FILE *out);
 // Lines naming the full queues (occupancy/capacity, writers waiting) and waiting bus requesters.

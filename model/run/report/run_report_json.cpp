@@ -145,44 +145,44 @@ nlohmann::json to_json(const RunReport &r)
     nlohmann::json per_ip = per_ip_json(r, busy);
     nlohmann::json queues = nlohmann::json::array();
     for (const QueueStats &q : r.queues) queues.push_back(queue_json(q));
-    nlohmann::json j = {
-        {"status", r.status},
-        {"scene", r.config.scene_path},
-        {"width", r.width},
-        {"height", r.height},
-        {"cells", r.config.cells},
-        {"objects", r.objects},
-        {"lights", r.lights},
-        {"config", config_json(r.config)},
-        {"sim_time_s", T},
-        {"t1_s", f.t1_s},
-        {"t1_source", f.t1_source},
-        {"ips", n},
-        // The headline: ideal time over actual time, T(1) / (n T(n)). Busy time over n T(n)
-        // only says how evenly the work was spread (hand-over costs count as busy).
-        {"efficiency", T > 0 ? f.t1_s / (n * T) : 0.0},
-        {"efficiency_t1", T > 0 ? f.t1_s / (n * T) : 0.0},
-        {"load_balance", T > 0 ? r.totals.busy_s / (n * T) : 0.0},
-        {"efficiency_busy", T > 0 ? r.totals.busy_s / (n * T) : 0.0},
-        {"load", {{"busy_s", min_mean_max(busy)}}},
-        {"packets", packets_json(r.packets)},
-        {"memory", memory_json(r)},
-        {"preprocess",
-         {{"units_serial", r.units_serial}, {"units_parallel", r.units_parallel},
-          {"units_parallel_by_p", r.units_parallel_by_p}}},
-        {"ops", ops_json(r.totals.ops)},
-        {"packet_bytes_wire", r.config.timing.packet_bytes},
-        {"packet_bytes_in_memory", sizeof(rt_packet)},
-        {"wall_s", f.wall_s},
-        {"elaboration_wall_s", f.elaboration_wall_s},
-        {"sim_wall_s", f.sim_wall_s},
-        // What the allocator was told (huge pages; huge_pages.h): it moves the wall times above.
-        {"allocator_tunables", std::getenv("GLIBC_TUNABLES") ? std::getenv("GLIBC_TUNABLES") : ""},
-        {"events", r.totals.events},
-        {"events_per_s", f.sim_wall_s > 0 ? r.totals.events / f.sim_wall_s : 0.0},
-        {"packet_hops", r.totals.hops},
-        {"packet_hops_per_s", f.sim_wall_s > 0 ? r.totals.hops / f.sim_wall_s : 0.0},
-        {"delta_cycles", f.delta_cycles}};
+    nlohmann::json j = {{"status", r.status},
+                        {"scene", r.config.scene_path},
+                        {"width", r.width},
+                        {"height", r.height},
+                        {"cells", r.config.cells},
+                        {"objects", r.objects},
+                        {"lights", r.lights},
+                        {"config", config_json(r.config)},
+                        {"sim_time_s", T},
+                        {"t1_s", f.t1_s},
+                        {"t1_source", f.t1_source},
+                        {"ips", n},
+                        // The headline: ideal time over actual time, T(1) / (n T(n)). Busy time over n T(n)
+                        // only says how evenly the work was spread (hand-over costs count as busy).
+                        {"efficiency", T > 0 ? f.t1_s / (n * T) : 0.0},
+                        {"efficiency_t1", T > 0 ? f.t1_s / (n * T) : 0.0},
+                        {"load_balance", T > 0 ? r.totals.busy_s / (n * T) : 0.0},
+                        {"efficiency_busy", T > 0 ? r.totals.busy_s / (n * T) : 0.0},
+                        {"load", {{"busy_s", min_mean_max(busy)}}},
+                        {"packets", packets_json(r.packets)},
+                        {"memory", memory_json(r)},
+                        {"preprocess",
+                         {{"units_serial", r.units_serial},
+                          {"units_parallel", r.units_parallel},
+                          {"units_parallel_by_p", r.units_parallel_by_p}}},
+                        {"ops", ops_json(r.totals.ops)},
+                        {"packet_bytes_wire", r.config.timing.packet_bytes},
+                        {"packet_bytes_in_memory", sizeof(rt_packet)},
+                        {"wall_s", f.wall_s},
+                        {"elaboration_wall_s", f.elaboration_wall_s},
+                        {"sim_wall_s", f.sim_wall_s},
+                        // What the allocator was told (huge pages; huge_pages.h): it moves the wall times above.
+                        {"allocator_tunables", std::getenv("GLIBC_TUNABLES") ? std::getenv("GLIBC_TUNABLES") : ""},
+                        {"events", r.totals.events},
+                        {"events_per_s", f.sim_wall_s > 0 ? r.totals.events / f.sim_wall_s : 0.0},
+                        {"packet_hops", r.totals.hops},
+                        {"packet_hops_per_s", f.sim_wall_s > 0 ? r.totals.hops / f.sim_wall_s : 0.0},
+                        {"delta_cycles", f.delta_cycles}};
     // The long arrays are moved in: an initializer list copies what it holds (keys are sorted).
     j["links"] = links_json(r);
     j["queues"] = std::move(queues);

@@ -17,8 +17,7 @@ struct Spread {
     double min = 0, mean = 0, max = 0;
 };
 
-template <typename T, typename F>
-Spread spread(const std::vector<T> &items, F value)
+template <typename T, typename F> Spread spread(const std::vector<T> &items, F value)
 {
     if (items.empty()) return {};
     Spread s{value(items[0]), 0, value(items[0])};
@@ -36,9 +35,8 @@ Spread spread(const std::vector<T> &items, F value)
 // The machine as the summary's system line gives it: timing style, buffers and flow control.
 std::string machine_text(const SimConfig &c)
 {
-    std::string style = c.style == TimingStyle::lt
-                            ? "loosely timed (LT, quantum " + sig4(c.quantum_us) + " us)"
-                            : std::string("approximately timed (AT)");
+    std::string style = c.style == TimingStyle::lt ? "loosely timed (LT, quantum " + sig4(c.quantum_us) + " us)"
+                                                   : std::string("approximately timed (AT)");
     std::string queue = c.queue_capacity ? std::to_string(c.queue_capacity) + " packets per buffer" +
                                                (c.flow == FlowControl::classes ? " and class" : "")
                                          : std::string("unbounded buffers");
@@ -59,8 +57,9 @@ void print_queues(const RunReport &r, std::FILE *out)
                  static_cast<unsigned long long>(hw->high_water), hw->name.c_str(), cap.c_str());
     if (st->stalled_s > 0) {
         double T = r.sim_time_s;
-        std::fprintf(out, "\n               writers waited for room: %s, the longest-stalled queue, %s s;"
-                          " some writer waited %s %% of the image time",
+        std::fprintf(out,
+                     "\n               writers waited for room: %s, the longest-stalled queue, %s s;"
+                     " some writer waited %s %% of the image time",
                      st->name.c_str(), sig4(st->stalled_s).c_str(),
                      T > 0 ? sig4(100 * r.any_stalled_s / T).c_str() : "-");
     } else {
@@ -91,8 +90,10 @@ void print_mapping(const RunReport &r, std::FILE *out)
 {
     if (r.mapping.is_object() && r.mapping.contains("pilot_wall_s")) {
         const auto &m = r.mapping;
-        std::fprintf(out, "  mapping      cost: pilot %.3f s modelled (%.3f s wall), Scotch %.3f s wall; not in the image time\n",
-                     m["pilot_modelled_s"].get<double>(), m["pilot_wall_s"].get<double>(), m["mapper_wall_s"].get<double>());
+        std::fprintf(
+            out,
+            "  mapping      cost: pilot %.3f s modelled (%.3f s wall), Scotch %.3f s wall; not in the image time\n",
+            m["pilot_modelled_s"].get<double>(), m["pilot_wall_s"].get<double>(), m["mapper_wall_s"].get<double>());
     }
 }
 
@@ -106,15 +107,19 @@ void print_summary(const RunReport &r, std::FILE *out)
     int n = c.processor_count();
     std::fprintf(out, "torusrt-sim: %s (%ux%u, %llu objects, %llu lights)\n", c.scene_path.c_str(), r.width, r.height,
                  static_cast<unsigned long long>(r.objects), static_cast<unsigned long long>(r.lights));
-    std::fprintf(out, "  system       %dx%dx%d %s, %s mapping, %d processor(s) per node, %s data,\n"
-                      "               %s\n", c.ips[0], c.ips[1], c.ips[2], topology_name(c.topology),
-                 mapping_name(c.mapping), c.cluster, data_mode_name(c.data), machine_text(c).c_str());
+    std::fprintf(out,
+                 "  system       %dx%dx%d %s, %s mapping, %d processor(s) per node, %s data,\n"
+                 "               %s\n",
+                 c.ips[0], c.ips[1], c.ips[2], topology_name(c.topology), mapping_name(c.mapping), c.cluster,
+                 data_mode_name(c.data), machine_text(c).c_str());
     if (r.frames.empty())
         std::fprintf(out, "  image time   %s s simulated   (T(1) %s s, %s)\n", sig4(T).c_str(), sig4(f.t1_s).c_str(),
                      f.t1_source.c_str());
     else
-        std::fprintf(out, "  time         %s s simulated over %zu frames, first frame's start to last's end"
-                          " (frames: below)\n", sig4(T).c_str(), r.frames.size());
+        std::fprintf(out,
+                     "  time         %s s simulated over %zu frames, first frame's start to last's end"
+                     " (frames: below)\n",
+                     sig4(T).c_str(), r.frames.size());
     std::fprintf(out, "  efficiency   %.1f %% = T(1)/(n T(n)), n = %d   (load balance %.1f %% = busy/(n T(n)))\n",
                  T > 0 ? 100 * (f.t1_s / (n * T)) : 0.0, n, T > 0 ? 100 * (r.totals.busy_s / (n * T)) : 0.0);
     std::fprintf(out, "  timing       profile %s (hand-over send %g us, receive %g us)\n", c.timing_profile.c_str(),
@@ -123,8 +128,9 @@ void print_summary(const RunReport &r, std::FILE *out)
     std::fprintf(out, "  busy per IP  min %s  mean %s  max %s s\n", sig4(b.min).c_str(), sig4(b.mean).c_str(),
                  sig4(b.max).c_str());
     const rt_packet_totals &p = r.packets;
-    std::fprintf(out, "  packets      ray %llu  shadow %llu  created = consumed: %s  handed between nodes %llu\n"
-                      "               primary rays that missed the scene %llu\n",
+    std::fprintf(out,
+                 "  packets      ray %llu  shadow %llu  created = consumed: %s  handed between nodes %llu\n"
+                 "               primary rays that missed the scene %llu\n",
                  static_cast<unsigned long long>(p.created[RT_PACKET_RAY]),
                  static_cast<unsigned long long>(p.created[RT_PACKET_SHADOW]), r.conserved ? "yes" : "NO",
                  static_cast<unsigned long long>(p.forwarded), static_cast<unsigned long long>(p.primary_missed));
@@ -134,9 +140,10 @@ void print_summary(const RunReport &r, std::FILE *out)
     print_bus(r, out);
     print_queues(r, out);
     const MemoryReport &m = r.memory;
-    std::fprintf(out, "  memory       %llu bytes (max per processor x n) vs %llu pixel-partitioned (%s)\n",
-                 static_cast<unsigned long long>(m.total_bytes), static_cast<unsigned long long>(m.pixel_partitioned_bytes),
-                 sig4(m.pixel_partitioned_bytes ? static_cast<double>(m.total_bytes) / m.pixel_partitioned_bytes : 0.0).c_str());
+    std::fprintf(
+        out, "  memory       %llu bytes (max per processor x n) vs %llu pixel-partitioned (%s)\n",
+        static_cast<unsigned long long>(m.total_bytes), static_cast<unsigned long long>(m.pixel_partitioned_bytes),
+        sig4(m.pixel_partitioned_bytes ? static_cast<double>(m.total_bytes) / m.pixel_partitioned_bytes : 0.0).c_str());
     if (m.replication.cells)
         std::fprintf(out, "  replication  %zu cells, %zu extra copies, %llu bytes; rays to the %s owner\n",
                      m.replication.cells, m.replication.copies, static_cast<unsigned long long>(m.replication.bytes),

@@ -150,7 +150,8 @@ void Tracer::finish()
     // cycle, and SystemC would write no VCD at all (its warning W715, naming the FIFO): one
     // picosecond more, on an event no process waits for, writes the header and the signals'
     // values. The run's figures are taken already.
-    if (m_file && sc_core::sc_time_stamp() == sc_core::SC_ZERO_TIME && sc_core::sc_get_status() != sc_core::SC_STOPPED) {
+    if (m_file && sc_core::sc_time_stamp() == sc_core::SC_ZERO_TIME &&
+        sc_core::sc_get_status() != sc_core::SC_STOPPED) {
         static sc_core::sc_event kick("torusrt_empty_trace_kick");
         kick.notify(sc_core::sc_time(1, sc_core::SC_PS));
         sc_core::sc_start(sc_core::sc_time(1, sc_core::SC_PS));
@@ -159,8 +160,7 @@ void Tracer::finish()
     m_file = nullptr;
     m_stream->finish();
     if (!m_config.gtkw_write_path.empty())
-        write_text_file(m_config.gtkw_write_path, m_config.gtkw_path,
-                        save_file_text(sc_core::sc_time_stamp().value()));
+        write_text_file(m_config.gtkw_write_path, m_config.gtkw_path, save_file_text(sc_core::sc_time_stamp().value()));
 }
 
 Tracer::~Tracer()

@@ -30,7 +30,7 @@ class VcdStream {
     std::string m_shown, m_dir, m_sc_name;
     uint64_t m_from_ps, m_to_ps;
     int m_read_fd = -1, m_hold_fd = -1, m_out_fd = -1;
-    int m_error = 0;  // errno of the first failed write or close
+    int m_error = 0;                         // errno of the first failed write or close
     size_t m_dir_slot = 0, m_fifo_slot = 0;  // their signal_cleanup registrations
     std::thread m_thread;
 };
