@@ -123,10 +123,6 @@ void check_animation(CommandLine &cl, SimRequest &request)
     take_motion_frame_count(cl.anim, request.motion.get());
     check_animation_options(cl.anim);
     read_animation_run_options(cl.given, cl.anim.animated(), request);
-    if (request.motion && request.remap != RemapPolicy::static_map)
-        throw UserError("--remap " + std::string(remap_policy_name(request.remap)) +
-                            ": not with --motion (a moving scene keeps the first frame's mapping: --remap static)",
-                        2);
     if (cl.anim.animated() && !cl.common.output.empty()) check_frame_pattern("-o", cl.common.output);
 }
 

@@ -2,8 +2,9 @@
 # sim_motion.sh - torusrt-sim --motion: the shipped moving scenes (their first frames) give the
 # renderer's frames byte for byte on a flat torus and on clusters sharing their data, with packets
 # conserved; the update's units equal the renderer's; the JSON's motion figures add up and the
-# frames wait for their updates; --orbit moves the camera as well; a bad motion file, --frames
-# against the file, --remap other than static and replicated cells are exit 2 with no output.
+# frames wait for their updates; every --remap policy gives the renderer's frames; --orbit moves
+# the camera as well; a bad motion file, --frames against the file and replicated cells are exit 2
+# with no output.
 #
 # Usage (CTest runs it so): bash tests/cli/sim_motion.sh BUILD_DIR SOURCE_DIR
 set -u
@@ -82,6 +83,29 @@ check "bouncing-balls: moved balls change other nodes' lists (entries sent)" \
 check "bouncing-balls, block mapping: a ball enters a node that did not hold it (a record sent)" \
     [ "$(json "$TMP/bouncing-balls-block.json" '.motion.objects_sent > 0')" = true ]
 
+# Every --remap policy: the renderer's frames; the total adds images, migration, host pilot and
+# updates; static moves no cell.
+scene=$(source_scene bouncing-balls) || exit 1
+for policy in static every-frame adaptive oracle; do
+    tag="remap-$policy"
+    mkdir "$TMP/$tag"
+    sim_ok "$tag" "$scene" "${size[@]}" --ips 2x2 --map cost --motion "$TMP/bouncing-balls.motion" \
+        --remap "$policy" -o "$TMP/$tag/f_%d.png" --stats "$TMP/$tag.json" || continue
+    check "$tag: the renderer's frames" diff -r "$TMP/bouncing-balls-ref" "$TMP/$tag"
+    j="$TMP/$tag.json"
+    check "$tag: conserved" [ "$(json "$j" .packets.conserved)" = true ]
+    total=$(json "$j" .animation.total_s)
+    parts=$(json "$j" '[.frames[].image_time_s, .frames[].migration_time_s, .frames[].host_pilot.charged_s,
+        .frames[].motion.time_s] | add')
+    check "$tag: total = images + migration + host pilot + updates ($total vs $parts)" close "$total" "$parts"
+    check "$tag: each frame starts after the one before, its update and its migration" \
+        [ "$(json "$j" '[range(1; .frames | length) as $k | .frames[$k - 1] as $a | .frames[$k] as $b
+            | select($b.start_s < $a.start_s + $a.image_time_s + $b.motion.time_s + $b.migration_time_s
+                - 1e-12)] | length')" = 0 ]
+done
+check "remap static: no cell moves" [ "$(json "$TMP/remap-static.json" '[.frames[].migration.cells] | add')" = 0 ]
+check "remap every-frame: cells move" [ "$(json "$TMP/remap-every-frame.json" '[.frames[].migration.cells] | add > 0')" = true ]
+
 # --orbit with --motion: the frame count is the file's, the camera turns too.
 scene=$(source_scene orbiting-mirror) || exit 1
 motion="$TMP/orbiting-mirror.motion"
@@ -103,7 +127,6 @@ printf 'frames 2\nobjects 10 20\nkey 0\n' >"$TMP/range.motion"
 bad_option "$TMP/range.motion:2: objects 10-20" "objects past the scene" --motion "$TMP/range.motion"
 printf 'frames 2\nobjects 0\nkey 0\nkey 1 move 0 1 0\n' >"$TMP/two.motion"
 bad_option "--frames 3" "--frames against the file" --motion "$TMP/two.motion" --frames 3
-bad_option "--remap" "--remap every-frame" --motion "$SRC/scenes/bouncing-balls.motion" --remap every-frame --ips 2x2
 bad_option "--replicate" "replicated cells" --motion "$SRC/scenes/bouncing-balls.motion" --ips 2x2 --map cost --replicate 0.5
 
 finish
