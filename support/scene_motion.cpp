@@ -14,7 +14,8 @@ MotionPtr read_motion_file(const std::string &path)
     char msg[RT_MSG_LEN] = "";
     rt_motion *raw = nullptr;
     // A motion file, like a --camera-path, is part of the command line: a bad one is exit 2.
-    if (rt_motion_load(path.c_str(), &raw, msg, sizeof msg) != RT_OK) throw UserError(std::string("--motion: ") + msg, 2);
+    if (rt_motion_load(path.c_str(), &raw, msg, sizeof msg) != RT_OK)
+        throw UserError(std::string("--motion: ") + msg, 2);
     return MotionPtr(raw);
 }
 
@@ -52,8 +53,8 @@ MotionFrameCost SceneMotion::move_to(uint32_t k, GridPtr &grid, const int cells[
     MotionFrameCost cost;
     for (uint8_t m : m_moved) cost.objects_moved += m;
     grid.reset();  // the scene's own grid (or the last run's) gives way to the one over every frame
-    grid.reset(rt_grid_new_in_space(m_frame.get(), cells[0], cells[1], cells[2], &m_space, rule, budget, msg,
-                                    sizeof msg));
+    grid.reset(
+        rt_grid_new_in_space(m_frame.get(), cells[0], cells[1], cells[2], &m_space, rule, budget, msg, sizeof msg));
     if (!grid) throw UserError(shown_path(m_path) + ": frame " + std::to_string(k) + ": " + msg);
     cost.update_units = cost.rebuild_units = rt_grid_units_serial(grid.get());
     cost.list_entries = rt_grid_list_entries(grid.get());
@@ -82,8 +83,8 @@ nlohmann::json SceneMotion::json() const
         rt_motion_entry_info e = rt_motion_entry(m_motion.get(), i);
         char line[RT_MSG_LEN];
         rt_motion_describe(m_motion.get(), m_scene.get(), i, line, sizeof line);
-        entries.push_back({{"line", e.line}, {"first", e.first}, {"last", e.last}, {"keys", e.keys},
-                           {"matched", line}});
+        entries.push_back(
+            {{"line", e.line}, {"first", e.first}, {"last", e.last}, {"keys", e.keys}, {"matched", line}});
     }
     nlohmann::json space = nullptr;
     if (m_space.lo.x <= m_space.hi.x) space = {{"lo", vec(m_space.lo)}, {"hi", vec(m_space.hi)}};

@@ -16,7 +16,9 @@
 
 namespace torusrt {
 
-struct MotionDeleter { void operator()(rt_motion *m) const { rt_motion_free(m); } };
+struct MotionDeleter {
+    void operator()(rt_motion *m) const { rt_motion_free(m); }
+};
 using MotionPtr = std::unique_ptr<rt_motion, MotionDeleter>;
 
 // Reads the --motion file (nullptr when `path` is empty). A bad file is exit 2 with
@@ -43,8 +45,7 @@ class SceneMotion {
     // Moves frame_scene() to frame k and brings `grid` up to date: frame 0 (or a null grid)
     // builds it over the object space with `cells` and `rule`; later frames update it in place.
     // Throws UserError naming the motion file on failure (the budget, memory).
-    MotionFrameCost move_to(uint32_t k, GridPtr &grid, const int cells[3], rt_preprocess_count rule,
-                            rt_budget *budget);
+    MotionFrameCost move_to(uint32_t k, GridPtr &grid, const int cells[3], rt_preprocess_count rule, rt_budget *budget);
     // move_to in two steps, for a caller that looks at the lists in between: the objects of
     // frame k (moved() flags those that changed), then the lists of a grid built at an earlier
     // frame, updated in place (throws UserError as move_to).
@@ -63,7 +64,7 @@ class SceneMotion {
     ScenePtr m_scene;  // as the scene file gives it
     ScenePtr m_frame;  // the current frame's copy
     std::string m_path;
-    rt_box m_space;    // every object over every frame, unpadded
+    rt_box m_space;  // every object over every frame, unpadded
     std::vector<uint8_t> m_moved;
 };
 

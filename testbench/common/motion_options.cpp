@@ -6,7 +6,8 @@
 
 namespace torusrt {
 
-OptionSpec motion_option_spec() {
+OptionSpec motion_option_spec()
+{
     return {"--motion",
             "FILE",
             ValueKind::file,
@@ -20,12 +21,14 @@ OptionSpec motion_option_spec() {
             ""};
 }
 
-void take_motion_frame_count(AnimationOptions &anim, const rt_motion *motion) {
+void take_motion_frame_count(AnimationOptions &anim, const rt_motion *motion)
+{
     if (motion && !anim.orbit.empty() && anim.frames_text.empty())
         anim.frames_text = std::to_string(rt_motion_frame_count(motion));
 }
 
-void check_motion_frames(AnimationOptions &anim, const rt_motion *motion, const rt_camera_path *file) {
+void check_motion_frames(AnimationOptions &anim, const rt_motion *motion, const rt_camera_path *file)
+{
     uint32_t n = rt_motion_frame_count(motion);
     if (anim.frames >= 0 && static_cast<uint64_t>(anim.frames) != n)
         throw UserError("--frames " + std::to_string(anim.frames) + ": " + shown_text(anim.motion) + " has " +
@@ -33,10 +36,10 @@ void check_motion_frames(AnimationOptions &anim, const rt_motion *motion, const 
                         2);
     if (file && rt_camera_path_count(file) != n)
         throw UserError("--camera-path: " + shown_text(anim.camera_path) + " holds " +
-                            std::to_string(rt_camera_path_count(file)) + " camera lines, " +
-                            shown_text(anim.motion) + " has " + std::to_string(n) + " frames",
+                            std::to_string(rt_camera_path_count(file)) + " camera lines, " + shown_text(anim.motion) +
+                            " has " + std::to_string(n) + " frames",
                         2);
     anim.frames = n;
 }
 
-} // namespace torusrt
+}  // namespace torusrt

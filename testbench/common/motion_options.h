@@ -20,4 +20,4 @@ void take_motion_frame_count(AnimationOptions &anim, const rt_motion *motion);
 // (exit 2 otherwise). Sets anim.frames.
 void check_motion_frames(AnimationOptions &anim, const rt_motion *motion, const rt_camera_path *file);
 
-} // namespace torusrt
+}  // namespace torusrt

@@ -39,7 +39,8 @@ struct Outcome {
     std::vector<uint8_t> moved[3];
 };
 
-rt_timing link_timing(double bytes_per_us) {
+rt_timing link_timing(double bytes_per_us)
+{
     rt_timing t;
     rt_timing_defaults(&t);
     t.preprocess_unit_us = 340;
@@ -49,18 +50,17 @@ rt_timing link_timing(double bytes_per_us) {
     return t;
 }
 
-Outcome simulate() {
+Outcome simulate()
+{
     Outcome out;
     char msg[RT_MSG_LEN] = "";
     rt_scene *scene = rt_scene_new();
     rt_scene_set_view(scene, rt_vec(0, 0, 20), rt_vec(0, 0, 0), rt_vec(0, 1, 0), 45.0, 8, 8);
     rt_scene_add_sphere(scene, rt_vec(-3, 0, 0), 1.0);
     rt_scene_add_sphere(scene, rt_vec(3, 0, 0), 1.0);
-    if (rt_scene_finish(scene, msg, sizeof msg) != RT_OK)
-        return out;
+    if (rt_scene_finish(scene, msg, sizeof msg) != RT_OK) return out;
     rt_motion *raw = nullptr;
-    if (rt_motion_parse("two.motion", kMotion, std::strlen(kMotion), &raw, msg, sizeof msg) != RT_OK)
-        return out;
+    if (rt_motion_parse("two.motion", kMotion, std::strlen(kMotion), &raw, msg, sizeof msg) != RT_OK) return out;
     SceneMotion motion(MotionPtr(raw), ScenePtr(scene), "two.motion", true);
     GridPtr grid;
     const int cells[3] = {2, 1, 1};
@@ -82,14 +82,16 @@ Outcome simulate() {
     return out;
 }
 
-const Outcome &run() {
+const Outcome &run()
+{
     static const Outcome r = simulate();
     return r;
 }
 
-} // namespace
+}  // namespace
 
-TEST(MotionUpdate, PremiseTheMotionMovesWhatTheCommentsSay) {
+TEST(MotionUpdate, PremiseTheMotionMovesWhatTheCommentsSay)
+{
     const Outcome &o = run();
     ASSERT_TRUE(o.built);
     EXPECT_EQ(o.moved[1], (std::vector<uint8_t>{1, 1}));
@@ -101,7 +103,8 @@ TEST(MotionUpdate, PremiseTheMotionMovesWhatTheCommentsSay) {
 //   sphere 1, x [2, 4]: "2 <= 0?" no (first = last = slab 1): 1.
 // Update 2 + 1 = 3 units; a rebuild lists both: 3 as well. Processor 0 (object 0) has 2, processor
 // 1 (object 1) has 1: the slowest has 2, 2 x 340 us = 680 us. A rebuild dealt out alike: 2.
-TEST(MotionUpdate, FrameOneUnitsAndUpdateTime) {
+TEST(MotionUpdate, FrameOneUnitsAndUpdateTime)
+{
     const MotionUpdate &u = run().per_piece[1];
     EXPECT_EQ(u.objects_moved, 2u);
     EXPECT_EQ(u.units, 3u);
@@ -116,7 +119,8 @@ TEST(MotionUpdate, FrameOneUnitsAndUpdateTime) {
 // record: centre and radius as 4 floats, material 4) = 24 bytes, one hop. Sphere 1 (node 1) stays
 // in cell 1 of its own node: nothing. The busiest link carries 24 bytes: one 28-byte piece,
 // 50 us; at 2 bytes/us, 12 us. The frame waits 680 + 50 = 730 us.
-TEST(MotionUpdate, FrameOneSendsTheRecordAndTheEntryToTheNewOwner) {
+TEST(MotionUpdate, FrameOneSendsTheRecordAndTheEntryToTheNewOwner)
+{
     const MotionUpdate &u = run().per_piece[1];
     EXPECT_EQ(u.entries_sent, 1u);
     EXPECT_EQ(u.transfer.objects, 1u);
@@ -135,7 +139,8 @@ TEST(MotionUpdate, FrameOneSendsTheRecordAndTheEntryToTheNewOwner) {
 // 680 us. Sphere 1 did not move. A rebuild: 2 + 1 = 3 units. Node 1's cell 1 loses sphere 0's
 // entry: 4 bytes from node 0, no record (removed, not gained); one piece, 50 us; at 2 bytes/us,
 // 2 us.
-TEST(MotionUpdate, FrameTwoRemovesTheEntryWithoutARecord) {
+TEST(MotionUpdate, FrameTwoRemovesTheEntryWithoutARecord)
+{
     const MotionUpdate &u = run().per_piece[2];
     EXPECT_EQ(u.objects_moved, 1u);
     EXPECT_EQ(u.units, 2u);

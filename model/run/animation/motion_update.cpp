@@ -5,36 +5,36 @@
 
 namespace torusrt {
 
-std::vector<ObjectCell> moved_entries(const rt_grid *grid, const std::vector<uint8_t> &moved) {
+std::vector<ObjectCell> moved_entries(const rt_grid *grid, const std::vector<uint8_t> &moved)
+{
     std::vector<ObjectCell> out;
     size_t cells = rt_grid_cell_count(grid);
     for (size_t c = 0; c < cells; c++) {
         size_t n = 0;
         const uint32_t *objs = rt_grid_cell_objects(grid, c, &n);
         for (size_t i = 0; i < n; i++)
-            if (objs[i] < moved.size() && moved[objs[i]])
-                out.push_back({objs[i], static_cast<uint32_t>(c)});
+            if (objs[i] < moved.size() && moved[objs[i]]) out.push_back({objs[i], static_cast<uint32_t>(c)});
     }
     std::stable_sort(out.begin(), out.end(),
                      [](const ObjectCell &a, const ObjectCell &b) { return a.object < b.object; });
-    return out; // cells ascend within an object: the scan went by cell
+    return out;  // cells ascend within an object: the scan went by cell
 }
 
 namespace {
 
 // One node's part of one moved object's update.
 struct NodeChange {
-    uint32_t gained = 0, lost = 0; // entries added to and removed from the node's cells
-    bool held = false;             // the node's cells listed the object before the update
+    uint32_t gained = 0, lost = 0;  // entries added to and removed from the node's cells
+    bool held = false;              // the node's cells listed the object before the update
 };
 
 // The half-space tests of the moved objects, dealt out as processor o mod P.
-void count_units(const rt_grid *grid, const std::vector<uint8_t> &moved, int processors,
-                 const rt_timing &timing, MotionUpdate &u) {
+void count_units(const rt_grid *grid, const std::vector<uint8_t> &moved, int processors, const rt_timing &timing,
+                 MotionUpdate &u)
+{
     std::vector<uint64_t> per(static_cast<size_t>(processors), 0);
     for (size_t o = 0; o < moved.size(); o++) {
-        if (!moved[o])
-            continue;
+        if (!moved[o]) continue;
         uint64_t units = rt_grid_units_of_object(grid, o);
         u.objects_moved++;
         u.units += units;
@@ -47,14 +47,14 @@ void count_units(const rt_grid *grid, const std::vector<uint8_t> &moved, int pro
 }
 
 // Object o's entries [b, b_end) before and [a, a_end) after, per node: what changed.
-void node_changes(const std::vector<ObjectCell> &before, size_t b, size_t b_end,
-                  const std::vector<ObjectCell> &after, size_t a, size_t a_end, const int32_t *owner,
-                  std::vector<NodeChange> &change, std::vector<int> &touched) {
+void node_changes(const std::vector<ObjectCell> &before, size_t b, size_t b_end, const std::vector<ObjectCell> &after,
+                  size_t a, size_t a_end, const int32_t *owner, std::vector<NodeChange> &change,
+                  std::vector<int> &touched)
+{
     auto at = [&](uint32_t cell) -> NodeChange & {
         int node = owner[cell];
         NodeChange &c = change[static_cast<size_t>(node)];
-        if (!c.gained && !c.lost && !c.held)
-            touched.push_back(node);
+        if (!c.gained && !c.lost && !c.held) touched.push_back(node);
         return c;
     };
     while (b < b_end || a < a_end) {
@@ -70,10 +70,11 @@ void node_changes(const std::vector<ObjectCell> &before, size_t b, size_t b_end,
     }
 }
 
-} // namespace
+}  // namespace
 
 MotionUpdate motion_update_cost(const rt_scene *scene, const rt_grid *grid, const std::vector<uint8_t> &moved,
-                                const std::vector<ObjectCell> &before, const MotionMachine &machine) {
+                                const std::vector<ObjectCell> &before, const MotionMachine &machine)
+{
     MotionUpdate u;
     int processors = machine.nodes * machine.processors_per_node;
     count_units(grid, moved, processors, machine.timing, u);
@@ -83,14 +84,11 @@ MotionUpdate motion_update_cost(const rt_scene *scene, const rt_grid *grid, cons
     LinkLoad links(machine.routing, machine.nodes);
     size_t b = 0, a = 0;
     while (b < before.size() || a < after.size()) {
-        uint32_t o = b < before.size() && (a == after.size() || before[b].object <= after[a].object)
-                         ? before[b].object
-                         : after[a].object;
+        uint32_t o = b < before.size() && (a == after.size() || before[b].object <= after[a].object) ? before[b].object
+                                                                                                     : after[a].object;
         size_t b_end = b, a_end = a;
-        while (b_end < before.size() && before[b_end].object == o)
-            b_end++;
-        while (a_end < after.size() && after[a_end].object == o)
-            a_end++;
+        while (b_end < before.size() && before[b_end].object == o) b_end++;
+        while (a_end < after.size() && after[a_end].object == o) a_end++;
         node_changes(before, b, b_end, after, a, a_end, machine.owner, change, touched);
         int handler = static_cast<int>(o % static_cast<uint32_t>(processors)) / machine.processors_per_node;
         for (int node : touched) {
@@ -117,4 +115,4 @@ MotionUpdate motion_update_cost(const rt_scene *scene, const rt_grid *grid, cons
     return u;
 }
 
-} // namespace torusrt
+}  // namespace torusrt

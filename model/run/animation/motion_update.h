@@ -36,13 +36,13 @@ std::vector<ObjectCell> moved_entries(const rt_grid *grid, const std::vector<uin
 
 // The cost of one update between two frames.
 struct MotionUpdate {
-    uint64_t objects_moved = 0;         // objects whose geometry changed
-    uint64_t units = 0;                 // the update's half-space tests, every processor's
-    uint64_t slowest_units = 0;         // the busiest processor's
-    uint64_t rebuild_units = 0;         // a rebuild of every list on one processor
-    uint64_t rebuild_slowest_units = 0; // a rebuild dealt out as above: the busiest processor's
-    double update_s = 0;                // slowest_units x preprocess_unit
-    uint64_t entries_sent = 0;          // list entries added or removed at another node
+    uint64_t objects_moved = 0;          // objects whose geometry changed
+    uint64_t units = 0;                  // the update's half-space tests, every processor's
+    uint64_t slowest_units = 0;          // the busiest processor's
+    uint64_t rebuild_units = 0;          // a rebuild of every list on one processor
+    uint64_t rebuild_slowest_units = 0;  // a rebuild dealt out as above: the busiest processor's
+    double update_s = 0;                 // slowest_units x preprocess_unit
+    uint64_t entries_sent = 0;           // list entries added or removed at another node
     // The transfers: objects = records sent, list_bytes = 4 per entry sent, object_bytes, the
     // links' figures (cells stays 0).
     MigrationCost transfer;
@@ -55,7 +55,7 @@ struct MotionMachine {
     int nodes;
     int processors_per_node;
     const rt_timing &timing;
-    const int32_t *owner; // cell -> node
+    const int32_t *owner;  // cell -> node
 };
 
 // The update that brought `grid` to `scene`'s geometry: `moved` as given to rt_grid_update and
@@ -63,4 +63,4 @@ struct MotionMachine {
 MotionUpdate motion_update_cost(const rt_scene *scene, const rt_grid *grid, const std::vector<uint8_t> &moved,
                                 const std::vector<ObjectCell> &before, const MotionMachine &machine);
 
-} // namespace torusrt
+}  // namespace torusrt
