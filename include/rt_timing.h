@@ -44,6 +44,7 @@ typedef struct rt_timing {
     double memory_access_us;    /* 2-port memory access latency from the bus side (0.5) */
     double handover_send_us;    /* sending IP: hand a packet on to the next cell's owner */
     double handover_receive_us; /* receiving IP: take up a packet another IP handed over */
+    double preprocess_unit_us;  /* one half-space test of a moving scene's cell-list update (340) */
 } rt_timing;
 
 void rt_timing_defaults(rt_timing *timing);

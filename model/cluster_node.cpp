@@ -12,7 +12,8 @@ ClusterNode::ClusterNode(sc_core::sc_module_name name, const MachineConfig &conf
                          const rt_grid *grid, const int32_t *cell_owner, int node, PacketLedger &ledger,
                          PacketPool *pool, PrimarySource *primaries, const ReplicaChoice *replicas)
     : sc_module(name), from_comm_unit("from_comm_unit"), to_comm_unit("to_comm_unit"), m_node(node),
-      m_node_objects(cluster_node_objects(grid, cell_owner, node, replicas ? replicas->table() : nullptr))
+      m_replicas(replicas ? replicas->table() : nullptr),
+      m_node_objects(cluster_node_objects(grid, cell_owner, node, m_replicas))
 {
     from_comm_unit.bind(*this);
     int m = config.cluster;
@@ -53,6 +54,11 @@ ClusterNode::ClusterNode(sc_core::sc_module_name name, const MachineConfig &conf
 }
 
 ClusterNode::~ClusterNode() = default;
+
+void ClusterNode::place_objects(const rt_grid *grid, const int32_t *cell_owner)
+{
+    m_node_objects = cluster_node_objects(grid, cell_owner, m_node, m_replicas);  // in place: held by reference
+}
 
 void ClusterNode::accept(const TimedPacket &p) { m_dispatcher->accept(p); }
 void ClusterNode::accept_pooled(PacketPool &pool, uint32_t handle) { m_dispatcher->accept_pooled(pool, handle); }

@@ -58,9 +58,13 @@ class ClusterNode : public sc_core::sc_module, public PacketSinkIf {
     TwoPortMemory &memory(int k) { return *m_memories[k]; }
     ProcessorBusPort &port(int k) { return *m_ports[k]; }
     const std::vector<uint32_t> &node_objects() const { return m_node_objects; }
+    // Places again the objects the node's cells list (a moving scene's lists change between
+    // frames); the memories and ports see the new placement.
+    void place_objects(const rt_grid *grid, const int32_t *cell_owner);
 
   private:
     int m_node;
+    const rt_replicas *m_replicas;         // replicated cells (null: none)
     std::vector<uint32_t> m_node_objects;  // objects the node's cells list, ascending
     std::vector<std::unique_ptr<IntersectionProcessor>> m_processors;
     std::vector<std::unique_ptr<TwoPortMemory>> m_memories;

@@ -87,6 +87,11 @@ void TorusSystem::start_frame(rt_framebuffer *fb, const int32_t *cell_owner, con
     for (const auto &cl : m_clusters) cl->dispatcher().inbox().wake();
 }
 
+void TorusSystem::place_objects(const rt_grid *grid, const int32_t *cell_owner)
+{
+    for (const auto &cl : m_clusters) cl->place_objects(grid, cell_owner);
+}
+
 std::vector<IntersectionProcessor *> TorusSystem::processors() const
 {
     std::vector<IntersectionProcessor *> out;

@@ -55,6 +55,9 @@ class TorusSystem : public sc_core::sc_module {
     // frame's image, its primaries from `offset` under the owner table's current contents,
     // and every idle input queue woken to take them up.
     void start_frame(rt_framebuffer *fb, const int32_t *cell_owner, const sc_core::sc_time &offset);
+    // Between two frames of a moving scene, after `grid`'s lists changed: each cluster places
+    // the objects its cells list again (flat processors read the lists as they go).
+    void place_objects(const rt_grid *grid, const int32_t *cell_owner);
 
   private:
     Routing m_routing;

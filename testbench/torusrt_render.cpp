@@ -20,6 +20,7 @@
 #include "progress.h"
 #include "rt_render.h"
 #include "rt_timing.h"
+#include "motion_options.h"
 #include "scene_motion.h"
 #include "scene_setup.h"
 #include "setting_checks.h"

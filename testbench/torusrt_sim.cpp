@@ -19,9 +19,11 @@
 #include "machine_file_reader.h"
 #include "machine_options.h"
 #include "model_run.h"
+#include "motion_options.h"
 #include "option_parsing.h"
 #include "output_files.h"
 #include "packet_pool.h"
+#include "scene_motion.h"
 #include "scene_setup.h"
 #include "sim_config.h"
 #include "mapping_setup.h"
@@ -86,7 +88,8 @@ const char *const kExamples =
 
 void declare_options(CLI::App &app, std::shared_ptr<MachineFileReader> reader)
 {
-    const std::string output_help = "PNG image to write; with --frames/--camera-path a pattern like out_%04d.png";
+    const std::string output_help =
+        "PNG image to write; with --frames/--camera-path/--motion a pattern like out_%04d.png";
     add_common_options(app, output_help, {"scene", "--size"});
     app.set_config("--config", "",
                    wrapped("read the machine from this TOML file (as --dump-config writes it); "
@@ -108,15 +111,19 @@ void declare_options(CLI::App &app, std::shared_ptr<MachineFileReader> reader)
     for (const RunOption &o : run_option_table())
         if (o.spec.group == OptionGroup::outputs || o.spec.group == OptionGroup::tracing) add_spec_option(app, o.spec);
     for (const OptionSpec &spec : animation_option_specs()) add_spec_option(app, spec);
+    add_spec_option(app, motion_option_spec());
     for (const RunOption &o : run_option_table())
         if (o.spec.group == OptionGroup::animation || o.spec.group == OptionGroup::run) add_spec_option(app, o.spec);
     add_common_options(app, output_help, {"--memory-budget", "--quiet"});
     set_help_layout(app, kUsage, kRules, kExamples);
 }
 
-// The frames and their remapping, checked before any file is read (exit 2).
+// The frames, their remapping and the motion file (read here, exit 2 with FILE:LINE when bad),
+// checked before any other file is read (exit 2).
 void check_animation(CommandLine &cl, SimRequest &request)
 {
+    request.motion = read_motion_file(cl.anim.motion);
+    take_motion_frame_count(cl.anim, request.motion.get());
     check_animation_options(cl.anim);
     read_animation_run_options(cl.given, cl.anim.animated(), request);
     if (cl.anim.animated() && !cl.common.output.empty()) check_frame_pattern("-o", cl.common.output);
@@ -194,19 +201,19 @@ int dump_config(const CommandLine &cl)
 void fill_request(CommandLine &cl, SimRequest &r)
 {
     r.camera_file = read_camera_path_file(cl.anim);
+    if (r.motion) check_motion_frames(cl.anim, r.motion.get(), r.camera_file.get());
+    r.motion_path = cl.anim.motion;
     if (cl.anim.animated()) {
         r.frame_count = animation_frame_count(cl.anim, r.camera_file.get());
         r.orbit_degrees = cl.anim.orbit_degrees;
-        r.camera_source = cl.anim.orbit.empty() ? "camera-path" : "orbit";
+        r.camera_source = !cl.anim.orbit.empty() ? "orbit" : !cl.anim.camera_path.empty() ? "camera-path" : "scene";
         for (size_t k = 0; k < r.frame_count; k++) r.frame_files.push_back(frame_file_name(cl.common.output, k));
     }
     r.image = cl.common.output;
     r.stats = cl.common.stats;
-    r.inputs = {{"scene", cl.common.scene},
-                {"--config", cl.config_file},
-                {"--timing", r.config.timing_file},
-                {"--map-file", r.config.map_file},
-                {"--camera-path", cl.anim.camera_path}};
+    r.inputs = {
+        {"scene", cl.common.scene},        {"--config", cl.config_file},           {"--timing", r.config.timing_file},
+        {"--map-file", r.config.map_file}, {"--camera-path", cl.anim.camera_path}, {"--motion", cl.anim.motion}};
 }
 
 int run(CommandLine &cl, double wall_start)
@@ -219,6 +226,10 @@ int run(CommandLine &cl, double wall_start)
     const SimConfig &config = request.config;
     if (config.replicate > 0 && request.remap != RemapPolicy::static_map)
         throw UserError("--replicate: not with --remap (a remapped table keeps one owner per cell)", 2);
+    if (config.replicate > 0 && request.motion)
+        throw UserError("--replicate: not with --motion (a moved object's transfers are counted for one owner "
+                        "per cell)",
+                        2);
     warn_about_settings("torusrt-sim", config.step, config.quiet);
     if (config.style == TimingStyle::lt && config.quantum_us == 0 && !config.quiet)
         std::fprintf(stderr, "torusrt-sim: warning: --style lt without --quantum: a quantum of 0 synchronises at "

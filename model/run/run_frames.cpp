@@ -7,6 +7,7 @@
 #include "elaboration_mark.h"
 #include "kernel_handles.h"
 #include "model_run.h"
+#include "motion_update.h"
 #include "progress.h"
 #include "torus_system.h"
 #include "tracing.h"
@@ -168,38 +169,57 @@ struct FrameLoop {
     std::unique_ptr<FramePilot> pilot, previous, before, preview;  // frames k, k-1, k-2; adaptive's preview
     double end_s = 0;                                              // when the last frame ended
     sc_core::sc_time start;                                        // when the current frame started
+    rt_camera_pose still;  // the scene's own camera: every frame's without a camera path
 
     FrameLoop(const SimConfig &c, rt_scene *s, const rt_grid *g, const FramePlan &p)
         : config(c), scene(s), grid(g), plan(p), routing(c.ips, c.topology == Topology::torus), ctx{c, s, g, routing},
-          remapper(p.policy, p.adaptive.window, p.adaptive.margin)
+          remapper(p.policy, p.adaptive.window, p.adaptive.margin), still(rt_camera_pose_of(rt_scene_camera(s)))
     {
     }
+
+    // Frame k's camera pose.
+    const rt_camera_pose *pose(size_t k) const { return plan.path ? rt_camera_path_pose(plan.path, k) : &still; }
 
     // Frame 0's table: the run's mapping, or under oracle its own pilot's.
     std::vector<int32_t> first_table()
     {
         if (!plan.animated()) return owner_table_of(config, grid);
-        set_camera(scene, plan.path, 0);
+        if (plan.path) set_camera(scene, plan.path, 0);
         pilot = std::make_unique<FramePilot>(config, scene, grid);
         return plan.policy == RemapPolicy::oracle ? oracle_mapping(ctx, *pilot) : owner_table_of(config, grid);
     }
 
-    // Frame k's record before it runs; for k > 0 the camera moves, the mapping is decided and
-    // the machine restarts at `start`.
+    // Frame k's record before it runs; for k > 0 the objects and the camera move, the mapping is
+    // decided and the machine restarts at `start`.
     FrameRecord prepare(Machine &m, size_t k, const std::vector<FrameRecord> &done);
+    // A moving scene's frame k > 0: its objects and its cell lists (their growth charged to the
+    // machine's memory budget); the update's cost in `rec`.
+    void move_objects(Machine &m, size_t k, FrameRecord &rec);
 };
+
+void FrameLoop::move_objects(Machine &m, size_t k, FrameRecord &rec)
+{
+    SceneMotion &motion = *plan.motion;
+    motion.move_objects(static_cast<uint32_t>(k));
+    std::vector<ObjectCell> old_entries = moved_entries(grid, motion.moved());
+    motion.update_lists(static_cast<uint32_t>(k), plan.moving_grid, &m.memory);
+    MotionMachine machine{routing, config.node_count(), config.cluster, config.timing, m.owner.data()};
+    rec.update = motion_update_cost(scene, grid, motion.moved(), old_entries, machine);
+}
 
 FrameRecord FrameLoop::prepare(Machine &m, size_t k, const std::vector<FrameRecord> &done)
 {
     FrameRecord rec;
     rec.index = k;
     rec.file = k < plan.files.size() ? plan.files[k] : "";
-    rec.camera = plan.animated() ? *rt_camera_path_pose(plan.path, k) : rt_camera_pose_of(rt_scene_camera(scene));
+    rec.camera = *pose(k);
+    rec.moving = plan.motion != nullptr;
     rec.processors = config.processor_count();
     rec.decision = "first";
     rec.reason = plan.policy == RemapPolicy::oracle ? "oracle: this frame's own pilot" : "the run's --map";
     if (k > 0) {
-        set_camera(scene, plan.path, k);
+        if (plan.motion) move_objects(m, k, rec);
+        if (plan.path) set_camera(scene, plan.path, k);
         before = std::move(previous);
         previous = std::move(pilot);
         pilot = std::make_unique<FramePilot>(config, scene, grid);
@@ -207,11 +227,11 @@ FrameRecord FrameLoop::prepare(Machine &m, size_t k, const std::vector<FrameReco
         if (plan.policy == RemapPolicy::adaptive && plan.adaptive.pilot_fraction > 0)
             preview = host_preview(config, scene, grid, plan.adaptive.pilot_fraction, previous_time_s, rec);
         next_mapping(remapper, ctx, m,
-                     FrameLoads{*previous, previous_time_s, *pilot, before.get(), preview.get(),
-                                rt_camera_path_pose(plan.path, k - 1), rt_camera_path_pose(plan.path, k)},
+                     FrameLoads{*previous, previous_time_s, *pilot, before.get(), preview.get(), pose(k - 1), pose(k)},
                      rec);
+        if (plan.motion) m.top->place_objects(grid, m.owner.data());
         m.fb = new_frame_buffer(scene);
-        start = frame_start(config, end_s + rec.charged_migration_s() + rec.host_pilot_charged_s);
+        start = frame_start(config, end_s + rec.charged_migration_s() + rec.host_pilot_charged_s + rec.update.time_s());
         m.top->start_frame(m.fb.get(), m.owner.data(), start);
         rec.start_s = start.to_seconds();
     }
@@ -250,7 +270,7 @@ void deadlocked(const FrameLoop &loop, Machine &m, size_t k, double wall_start_s
 RunOutcome run_frames(const SimConfig &config, rt_scene *scene, const rt_grid *grid, const FramePlan &plan,
                       double wall_start_s)
 {
-    size_t n = plan.animated() ? rt_camera_path_count(plan.path) : 1;
+    size_t n = plan.animated() ? plan.frames : 1;
     Machine m;
     m.memory = config.memory;
     m.ledger.set_limit(rt_budget_packets_allowed(&m.memory, PacketPool::bytes_per_packet()));

@@ -1,8 +1,9 @@
 // run_frames.h - the one run path: a machine elaborated once runs its frames one after
-// another. A single image is one frame under the scene's own camera; an animation is a camera
-// path of N poses, each frame starting once the one before is complete (every packet consumed)
-// and its migration, if the mapping changes, has crossed the links. The camera and the owner
-// table's contents change only between frames, with the network empty.
+// another. A single image is one frame under the scene's own camera; an animation is N frames
+// under a camera path's poses (or the scene's camera), each frame starting once the one before
+// is complete (every packet consumed) and its migration, if the mapping changes, and a moving
+// scene's cell-list update (motion_update.h) are done. The camera, the objects, the cell lists
+// and the owner table's contents change only between frames, with the network empty.
 #pragma once
 
 #include <string>
@@ -12,13 +13,15 @@
 #include "remap_policy.h"
 #include "run_report.h"
 #include "rt_camera_path.h"
+#include "scene_motion.h"
 #include "sim_config.h"
 
 namespace torusrt {
 
 // What the frames are and how the mapping follows them.
 struct FramePlan {
-    const rt_camera_path *path = nullptr;  // the frames' poses; null: one frame, the scene's camera
+    size_t frames = 0;                     // an animation's frames; 0: a single image
+    const rt_camera_path *path = nullptr;  // the frames' poses; null: the scene's camera in every frame
     std::vector<std::string> files;        // each frame's PNG, for the report (an animation)
     RemapPolicy policy = RemapPolicy::static_map;
     AdaptiveSettings adaptive;  // --remap-pilot, --remap-window, --remap-margin
@@ -27,7 +30,12 @@ struct FramePlan {
     double t1_s = -1;
     std::string t1_source;
 
-    bool animated() const { return path != nullptr; }
+    // A moving scene: frame k > 0 moves its objects and updates `moving_grid`'s lists in place
+    // (the grid the run renders, frame 0's already built); null: the objects stay.
+    SceneMotion *motion = nullptr;
+    rt_grid *moving_grid = nullptr;
+
+    bool animated() const { return frames > 0; }
 };
 
 struct RunOutcome {

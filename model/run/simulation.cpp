@@ -2,7 +2,9 @@
 // committed together.
 #include "simulation.h"
 
+#include <array>
 #include <cstdio>
+#include <memory>
 #include <optional>
 
 #include "frame_report.h"
@@ -78,10 +80,12 @@ void write_stats(StagedOutputs &outputs, const SimRequest &r, const RunReport &r
     write_text_file(outputs.set.staged(*outputs.stats), r.stats, text);
 }
 
-// The frames' camera poses: the file's, or the orbit from the scene's own camera.
+// The frames' camera poses: the file's, or the orbit from the scene's own camera; null when the
+// camera stays (a moving scene without --orbit or --camera-path).
 CameraPathPtr camera_path(SimRequest &r, const rt_scene *scene)
 {
     if (r.camera_file) return std::move(r.camera_file);
+    if (r.camera_source == "scene") return nullptr;
     char msg[RT_MSG_LEN] = "";
     rt_camera_path *raw = nullptr;
     rt_camera_pose start = rt_camera_pose_of(rt_scene_camera(scene));
@@ -91,24 +95,56 @@ CameraPathPtr camera_path(SimRequest &r, const rt_scene *scene)
     return CameraPathPtr(raw);
 }
 
+// The scene the frames render and its grid: the loaded ones, or a moving scene's frame 0 and its
+// grid over every frame's object space.
+struct FrameScene {
+    rt_scene *scene = nullptr;
+    rt_grid *grid = nullptr;
+    std::unique_ptr<SceneMotion> motion;  // null: the objects stay
+};
+
+// Loads the scene; with --motion its grid is built at frame 0 over every frame's object space
+// (the scene's own grid is then one cell, taking next to nothing of the memory budget).
+FrameScene load_frame_scene(SimRequest &r, LoadedScene &loaded)
+{
+    SimConfig &config = r.config;
+    const std::array<int, 3> one_cell = {1, 1, 1};
+    loaded = load_scene(config.scene_path, config.width, config.height, r.motion ? one_cell : config.cells,
+                        config.quiet, &config.memory, config.preprocess_count);
+    FrameScene fs;
+    fs.scene = loaded.scene.get();
+    if (r.motion) {
+        fs.motion =
+            std::make_unique<SceneMotion>(std::move(r.motion), std::move(loaded.scene), r.motion_path, config.quiet);
+        const int cells[3] = {config.cells[0], config.cells[1], config.cells[2]};
+        fs.motion->move_to(0, loaded.grid, cells, config.preprocess_count, &config.memory);
+        fs.scene = fs.motion->frame_scene();
+    }
+    fs.grid = loaded.grid.get();
+    return fs;
+}
+
 // The plan of the frames: a single image's T(1) (--t1, or a one-processor run in a child
-// process), or an animation's path, files and remapping.
-FramePlan frame_plan(SimRequest &r, const LoadedScene &loaded, const StagedOutputs &outputs, CameraPathPtr &path)
+// process), or an animation's frames, path, files, remapping and motion.
+FramePlan frame_plan(SimRequest &r, const FrameScene &fs, const StagedOutputs &outputs, CameraPathPtr &path)
 {
     FramePlan plan;
     if (r.animated()) {
-        path = camera_path(r, loaded.scene.get());
+        path = camera_path(r, fs.scene);
+        plan.frames = r.frame_count;
         plan.path = path.get();
         for (size_t k = 0; k < r.frame_files.size(); k++)
             plan.files.push_back(outputs.set.path(outputs.first_frame + k));
         plan.policy = r.remap;
         plan.adaptive = r.adaptive;
+        plan.motion = fs.motion.get();
+        plan.moving_grid = fs.motion ? fs.grid : nullptr;
         return plan;
     }
     plan.t1_s = r.config.t1_s;
     plan.t1_source = "passed with --t1";
     if (plan.t1_s < 0 && r.config.processor_count() > 1) {
-        plan.t1_s = one_processor_time(r.config, loaded.scene.get(), loaded.grid.get());
+        plan.t1_s = one_processor_time(r.config, fs.scene, fs.grid);
         plan.t1_source = "one-processor run";
     }
     return plan;
@@ -152,23 +188,30 @@ int simulate(SimRequest &r, double wall_start_s)
         ReplicaTable replicas;
         read_map_file(config, config.cells.data(), owner, replicas);
     }
-    LoadedScene loaded = load_scene(config.scene_path, config.width, config.height, config.cells, config.quiet,
-                                    &config.memory, config.preprocess_count);
-    rt_scene *scene = loaded.scene.get();
+    LoadedScene loaded;
+    FrameScene fs = load_frame_scene(r, loaded);
+    rt_scene *scene = fs.scene;
     check_shade_tree(config.scene_path, scene, config.step, config.memory, PacketPool::bytes_per_packet());
-    nlohmann::json mapping_facts = prepare_mapping(config, scene, loaded.grid.get());
+    nlohmann::json mapping_facts = prepare_mapping(config, scene, fs.grid);
     if (config.replicated() && r.remap != RemapPolicy::static_map)
         throw UserError("--map-file: a table with replicated cells is not remapped (--remap)", 2);
+    if (config.replicated() && fs.motion)
+        throw UserError("--motion: not with replicated cells (--replicate, or a map file with several owners for a "
+                        "cell): a moved object's transfers are counted for one owner per cell",
+                        2);
     // An animation's mapping outputs show frame 0's table, written before its camera moves.
-    if (r.animated())
-        write_mapping_outputs(config, scene, loaded.grid.get(), outputs.set, outputs.write_map, outputs.load_map);
+    if (r.animated()) write_mapping_outputs(config, scene, fs.grid, outputs.set, outputs.write_map, outputs.load_map);
     CameraPathPtr path;
-    FramePlan plan = frame_plan(r, loaded, outputs, path);
-    RunOutcome out = run_frames(config, scene, loaded.grid.get(), plan, wall_start_s);
+    FramePlan plan = frame_plan(r, fs, outputs, path);
+    RunOutcome out = run_frames(config, scene, fs.grid, plan, wall_start_s);
     out.report.mapping = mapping_facts;
     if (r.animated()) {
         out.report.camera_source = r.camera_source;
         out.report.output_pattern = r.image;
+    }
+    if (fs.motion) {
+        out.report.motion = fs.motion->json();
+        out.report.motion.update(motion_totals_json(out.frames));
     }
     if (out.deadlock) {  // the JSON alone (status "deadlock"), no image
         write_stats(outputs, r, out.report);
@@ -176,8 +219,7 @@ int simulate(SimRequest &r, double wall_start_s)
         report_deadlock(config, out.sim_time_s, out.deadlock_details);
         return 3;
     }
-    if (!r.animated())
-        write_mapping_outputs(config, scene, loaded.grid.get(), outputs.set, outputs.write_map, outputs.load_map);
+    if (!r.animated()) write_mapping_outputs(config, scene, fs.grid, outputs.set, outputs.write_map, outputs.load_map);
     write_outputs(r, scene, outputs, out);
     if (!config.quiet) {
         print_summary_stdout(out.report);

@@ -10,6 +10,7 @@
 
 #include "kernel_handles.h"
 #include "remap_policy.h"
+#include "scene_motion.h"
 #include "sim_config.h"
 
 namespace torusrt {
@@ -21,7 +22,11 @@ struct SimRequest {
     size_t frame_count = 0;
     double orbit_degrees = 0;
     CameraPathPtr camera_file;
-    std::string camera_source;  // "orbit" or "camera-path", for the report
+    std::string camera_source;  // "orbit", "camera-path" or "scene" (the camera stays), for the report
+    // A moving scene (--motion, read and checked against the frame count): the objects move
+    // from frame to frame (null: they stay).
+    MotionPtr motion;
+    std::string motion_path;
     RemapPolicy remap = RemapPolicy::static_map;
     AdaptiveSettings adaptive;
     // The outputs ("" = not written): -o is the image, or an animation's pattern whose frames

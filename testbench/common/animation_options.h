@@ -1,6 +1,6 @@
 // animation_options.h - the frames of an animation on the command line: --frames, --orbit,
-// --camera-path, shared by the executables, and --motion's frame count (torusrt-render only:
-// scene_motion.h registers it).
+// --camera-path, shared by the executables, and the text of --motion (motion_options.h registers
+// it).
 #pragma once
 
 #include <map>
@@ -22,7 +22,7 @@ struct AnimationOptions {
     std::string orbit;         // total degrees; empty: not given
     double orbit_degrees = 0;  // set by check_animation_options: --orbit's value
     std::string camera_path;   // file; empty: not given
-    std::string motion;        // --motion file; empty: not given (or not an option of the executable)
+    std::string motion;        // --motion file; empty: not given
     // Any of them given: the run is an animation and -o is a pattern.
     bool animated() const { return !frames_text.empty() || !orbit.empty() || !camera_path.empty() || !motion.empty(); }
     // --orbit or --camera-path given: the camera moves (else it stays where the scene puts it).
@@ -36,7 +36,7 @@ AnimationOptions animation_options_given(const std::map<std::string, std::string
 // Checks the combination before any file is read; throws UserError (exit 2) naming the option.
 // --frames N needs --orbit (and --orbit needs --frames); --camera-path gives the frame count
 // itself, and --frames beside it must agree. Every frame's orbit angle must be finite. With
-// --motion, --frames alone is allowed (scene_motion.h checks it against the motion file).
+// --motion, --frames alone is allowed (motion_options.h checks it against the motion file).
 void check_animation_options(AnimationOptions &opt);
 // The --camera-path file's poses, read before the scene so that every frame's output can be
 // checked first (nullptr for --orbit). A bad file is exit 2 with FILE:LINE, and so is --frames

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Every key of a flat, a cluster, a deadlock and an animation JSON report is in docs/report.md's key table (or
+# Every key of a flat, a cluster, a deadlock, an animation and a moving scene's JSON report is in docs/report.md's key table (or
 # its Cluster keys section), and every key the table lists unconditionally is written.
 source "$(dirname "$0")/common.bash" "$@"
 need_exe torusrt-sim
@@ -12,7 +12,11 @@ check "the deadlock run exits 3" test $? -eq 3
 "$BUILD/torusrt-sim" "$f" -q --size 16x16 -o "$TMP/an_%d.png" --stats "$TMP/an.json" --ips 2 --frames 3 --orbit 10 \
     --remap adaptive ||
     fail "animation run"
-python3 - "$SRC/docs/report.md" "$TMP/flat.json" "$TMP/cl.json" "$TMP/dl.json" "$TMP/an.json" > "$TMP/keys.txt" <<'PY'
+sed 's/^frames 64$/frames 2/' "$SRC/scenes/bouncing-balls.motion" >"$TMP/balls.motion"
+"$BUILD/torusrt-sim" "$SRC/scenes/bouncing-balls.nff" -q --size 16x16 -o "$TMP/mo_%d.png" --stats "$TMP/mo.json" \
+    --ips 2 --motion "$TMP/balls.motion" || fail "motion run"
+python3 - "$SRC/docs/report.md" "$TMP/flat.json" "$TMP/cl.json" "$TMP/dl.json" "$TMP/an.json" "$TMP/mo.json" \
+    > "$TMP/keys.txt" <<'PY'
 import json, re, sys
 readme = open(sys.argv[1]).read()
 table = readme[readme.index("## The JSON report of `torusrt-sim`"):readme.index("## Cluster keys")]

@@ -3,14 +3,13 @@
 # for byte and equal to the brute-force frames; a moved frame equals a plain render of the scene moved by hand; a still motion
 # equals the plain render; the stats' motion keys (each frame's update no dearer than a rebuild);
 # the camera stays unless --orbit moves it; every bad motion file or combination is exit 2 with
-# FILE:LINE or the option, and writes no output; torusrt-sim refuses --motion.
+# FILE:LINE or the option, and writes no output (torusrt-sim's --motion: sim_motion.sh).
 #
 # Usage (CTest runs it so): bash tests/cli/motion.sh BUILD_DIR SOURCE_DIR
 set -u
 source "$(dirname "$0")/common.bash" "$@"
-need_exe torusrt-render torusrt-sim
+need_exe torusrt-render
 render="$BUILD/torusrt-render"
-sim="$BUILD/torusrt-sim"
 time_limit 300
 size=(--size 24x24)
 
@@ -140,14 +139,5 @@ refused "--camera-path against the file" "--camera-path: $TMP/one-pose.txt holds
 out="$TMP/bad/x.png" refused "a single -o" "an animation's output is a pattern" --motion "$TMP/two.motion"
 stats="$TMP/two.motion" refused "the motion file as output" "--motion" --motion "$TMP/two.motion"
 check "the motion file is left as it was" grep -q "^key 1 move 0 1.5 -1$" "$TMP/two.motion"
-
-# 6. torusrt-sim does not move objects: --motion is not one of its options.
-rm -rf "$TMP/bad" && mkdir "$TMP/bad"
-"${run_limited[@]}" "$sim" "$TMP/two.nff" -q -o "$TMP/bad/f_%d.png" --motion "$TMP/two.motion" \
-    >/dev/null 2>"$TMP/sim.stderr" </dev/null
-rc=$?
-check "torusrt-sim --motion: exit 2 (got $rc)" [ "$rc" = 2 ]
-check "torusrt-sim --motion: names --motion ($(head -c 200 "$TMP/sim.stderr"))" grep -q -- "--motion" "$TMP/sim.stderr"
-check "torusrt-sim --motion: no output" [ -z "$(ls "$TMP/bad")" ]
 
 finish

@@ -51,8 +51,8 @@ for entry in "${kinds[@]}"; do
         refused "$exe-timing-$kind" 1 "$says" "$prog" "$scene" --timing "$p" -o "$TMP/out/a.png" -q
         refused "$exe-camera-path-$kind" 2 "--camera-path: $says" "$prog" "$scene" --camera-path "$p" \
             -o "$TMP/out/f%d.png" -q
+        refused "$exe-motion-$kind" 2 "--motion: $says" "$prog" "$scene" --motion "$p" -o "$TMP/out/f%d.png" -q
     done
-    refused "render-motion-$kind" 2 "--motion: $says" "$render" "$scene" --motion "$p" -o "$TMP/out/f%d.png" -q
     refused "sim-config-$kind" 2 "--config: $says" "$sim" "$scene" --config "$p" -o "$TMP/out/a.png" -q
     refused "sim-dump-config-$kind" 2 "--config: $says" "$sim" --dump-config --config "$p"
     refused "sim-map-file-$kind" 2 "--map-file: $says" "$sim" "$scene" --map-file "$p" -o "$TMP/out/a.png" -q
@@ -66,9 +66,9 @@ for exe in render sim; do
         -o "$TMP/out/a.png" -q
     refused "$exe-camera-path-nul" 2 "$TMP/nul.path:2: binary data" "$prog" "$scene" --camera-path "$TMP/nul.path" \
         -o "$TMP/out/f%d.png" -q
+    refused "$exe-motion-nul" 2 "--motion: $TMP/nul.motion:2: binary data" "$prog" "$scene" --motion "$TMP/nul.motion" \
+        -o "$TMP/out/f%d.png" -q
 done
-refused "render-motion-nul" 2 "--motion: $TMP/nul.motion:2: binary data" "$render" "$scene" --motion "$TMP/nul.motion" \
-    -o "$TMP/out/f%d.png" -q
 refused "sim-config-nul" 2 "--config: $TMP/nul.toml:1: binary data" "$sim" --dump-config --config "$TMP/nul.toml"
 refused "sim-map-file-nul" 2 "$TMP/nul.map:2: binary data" "$sim" "$scene" --map-file "$TMP/nul.map" -o "$TMP/out/a.png" -q
 

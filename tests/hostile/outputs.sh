@@ -106,17 +106,23 @@ for input in "${render_inputs[@]}"; do
 done
 
 # The --motion file as --stats, and as frame 1 of the -o pattern: refused, the file unchanged.
-printf 'frames 3\nobjects 0\nkey 2 move 0 1 0\n' >x1.motion && cp x1.motion keep.x1.motion
-"${run_limited[@]}" "${render[@]}" scene.nff --motion x1.motion -o "out/f%d.png" --stats x1.motion >/dev/null \
-    2>frame.err </dev/null
-rc=$?
-check "render: --stats onto the --motion file: exit $rc: $(head -c 200 frame.err)" [ "$rc" -eq 2 ]
-"${run_limited[@]}" "${render[@]}" scene.nff --motion x1.motion -o "x%d.motion" >/dev/null 2>frame.err </dev/null
-rc=$?
-check "render: frame 1 of -o x%d.motion is the --motion file: exit $rc: $(head -c 200 frame.err)" [ "$rc" -eq 2 ]
-check "render: x1.motion unchanged" cmp -s x1.motion keep.x1.motion
-check "render: no frame or stats written" [ -z "$(ls -A out)" ] && [ ! -e x0.motion ] && [ ! -e x2.motion ]
-rm -f x1.motion keep.x1.motion
+sim_animated=("$BUILD/torusrt-sim" -q --size 8x8)  # an animation takes no --t1
+for exe in render sim_animated; do
+    eval "prog=(\"\${$exe[@]}\")"
+    printf 'frames 3\nobjects 0\nkey 2 move 0 1 0\n' >x1.motion && cp x1.motion keep.x1.motion
+    "${run_limited[@]}" "${prog[@]}" scene.nff --motion x1.motion -o "out/f%d.png" --stats x1.motion >/dev/null \
+        2>frame.err </dev/null
+    rc=$?
+    check "$exe: --stats onto the --motion file: exit $rc: $(head -c 200 frame.err)" \
+        bash -c '[ "$1" -eq 2 ] && grep -q -- "--motion file" frame.err' _ "$rc"
+    "${run_limited[@]}" "${prog[@]}" scene.nff --motion x1.motion -o "x%d.motion" >/dev/null 2>frame.err </dev/null
+    rc=$?
+    check "$exe: frame 1 of -o x%d.motion is the --motion file: exit $rc: $(head -c 200 frame.err)" \
+        bash -c '[ "$1" -eq 2 ] && grep -q -- "--motion file" frame.err' _ "$rc"
+    check "$exe: x1.motion unchanged" cmp -s x1.motion keep.x1.motion
+    check "$exe: no frame or stats written" [ -z "$(ls -A out)" ] && [ ! -e x0.motion ] && [ ! -e x2.motion ]
+    rm -f x1.motion keep.x1.motion
+done
 
 # Outputs naming each other, a frame included, through another spelling of the name.
 refused "sim --stats onto frame 1" "${sim[@]}" scene.nff --frames 3 --orbit 10 -o "out/f%d.png" --stats ./out/f1.png

@@ -65,13 +65,14 @@ TEST(Timing, Defaults)
     EXPECT_EQ(t.memory_access_us, 0.5);
     EXPECT_EQ(t.handover_send_us, 0) << "the calibrated profile";
     EXPECT_EQ(t.handover_receive_us, 0);
+    EXPECT_EQ(t.preprocess_unit_us, 340) << "a next-cell determination's time";
 }
 
 TEST(Timing, KeysNameEveryField)
 {
     rt_timing t;
     rt_timing_defaults(&t);
-    ASSERT_EQ(rt_timing_key_count(), 19u);
+    ASSERT_EQ(rt_timing_key_count(), 20u);
     EXPECT_STREQ(rt_timing_key_name(0), "test_miss");
     EXPECT_EQ(rt_timing_get(&t, 0), 1300);
     bool seen_link = false, seen_width = false;
@@ -88,8 +89,8 @@ TEST(Timing, KeysNameEveryField)
     }
     EXPECT_TRUE(seen_link);
     EXPECT_TRUE(seen_width);
-    EXPECT_EQ(rt_timing_key_name(19), nullptr);
-    EXPECT_TRUE(std::isnan(rt_timing_get(&t, 19)));
+    EXPECT_EQ(rt_timing_key_name(20), nullptr);
+    EXPECT_TRUE(std::isnan(rt_timing_get(&t, 20)));
 }
 
 TEST(Timing, SetRejectsBadValues)

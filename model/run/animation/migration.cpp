@@ -23,6 +23,33 @@ uint64_t cell_move_bytes(const rt_scene *scene, const rt_grid *grid, size_t cell
     return bytes;
 }
 
+LinkLoad::LinkLoad(const Routing &routing, int nodes)
+    : m_routing(routing), m_link_bytes(static_cast<size_t>(nodes) * kDirections, 0)
+{
+}
+
+void LinkLoad::send(int from, int to, uint64_t bytes)
+{
+    int hops = 0;
+    for (int at = from; at != to; hops++) {
+        int dir = m_routing.next_direction(at, to);
+        m_link_bytes[static_cast<size_t>(at) * kDirections + static_cast<size_t>(dir)] += bytes;
+        at = m_routing.neighbour(at, dir);
+    }
+    m_byte_hops += bytes * static_cast<uint64_t>(hops);
+    m_max_hops = std::max(m_max_hops, hops);
+}
+
+void LinkLoad::finish(const rt_timing &timing, MigrationCost &m) const
+{
+    m.byte_hops = m_byte_hops;
+    m.max_hops = m_max_hops;
+    m.busiest_link_bytes = m_link_bytes.empty() ? 0 : *std::max_element(m_link_bytes.begin(), m_link_bytes.end());
+    double busiest_us = 0;
+    for (uint64_t b : m_link_bytes) busiest_us = std::max(busiest_us, link_transfer_us(timing, b));
+    m.time_s = busiest_us * 1e-6;
+}
+
 namespace {
 
 // Per node, which objects it holds under `owner`.
@@ -49,7 +76,7 @@ MigrationCost migration_cost(const rt_scene *scene, const rt_grid *grid, const R
     MigrationCost m;
     size_t objects = rt_scene_object_count(scene);
     std::vector<std::vector<bool>> holds = holdings(grid, objects, nodes, old_owner);
-    std::vector<uint64_t> link_bytes(static_cast<size_t>(nodes) * kDirections, 0);
+    LinkLoad links(routing, nodes);
     for (size_t c = 0; c < new_owner.size(); c++) {
         int from = old_owner[c], to = new_owner[c];
         if (from == to) continue;
@@ -68,19 +95,9 @@ MigrationCost migration_cost(const rt_scene *scene, const rt_grid *grid, const R
             bytes += ob;
         }
         m.cells++;
-        int hops = 0;
-        for (int at = from; at != to; hops++) {
-            int dir = routing.next_direction(at, to);
-            link_bytes[static_cast<size_t>(at) * kDirections + static_cast<size_t>(dir)] += bytes;
-            at = routing.neighbour(at, dir);
-        }
-        m.byte_hops += bytes * static_cast<uint64_t>(hops);
-        m.max_hops = std::max(m.max_hops, hops);
+        links.send(from, to, bytes);
     }
-    m.busiest_link_bytes = link_bytes.empty() ? 0 : *std::max_element(link_bytes.begin(), link_bytes.end());
-    double busiest_us = 0;
-    for (uint64_t b : link_bytes) busiest_us = std::max(busiest_us, link_transfer_us(timing, b));
-    m.time_s = busiest_us * 1e-6;
+    links.finish(timing, m);
     return m;
 }
 

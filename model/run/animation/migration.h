@@ -33,6 +33,23 @@ struct MigrationCost {
 // Microseconds one link takes for `bytes` bytes under `timing`.
 double link_transfer_us(const rt_timing &timing, uint64_t bytes);
 
+// The links' load of a set of transfers between frames: each transfer goes along the routing's
+// dimension-order path and loads every link on it with its bytes.
+class LinkLoad {
+  public:
+    LinkLoad(const Routing &routing, int nodes);
+    // One transfer of `bytes` from node `from` to node `to` (nothing when they are the same).
+    void send(int from, int to, uint64_t bytes);
+    // Fills m's byte_hops, max_hops, busiest_link_bytes and time_s (the busiest link's time).
+    void finish(const rt_timing &timing, MigrationCost &m) const;
+
+  private:
+    const Routing &m_routing;
+    std::vector<uint64_t> m_link_bytes;  // node x direction
+    uint64_t m_byte_hops = 0;
+    int m_max_hops = 0;
+};
+
 // Bytes cell `cell` takes when it moves to a node holding none of its objects.
 uint64_t cell_move_bytes(const rt_scene *scene, const rt_grid *grid, size_t cell);
 

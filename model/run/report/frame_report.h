@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "migration.h"
+#include "motion_update.h"
 #include "rt_camera_path.h"
 
 namespace torusrt {
@@ -30,6 +31,8 @@ struct FrameRecord {
     double host_pilot_s = 0;          // its modelled host time
     double host_pilot_charged_s = 0;  // the part past the previous frame's image time
     double pilot_wall_s = 0, mapper_wall_s = 0;
+    bool moving = false;  // a moving scene (--motion): `update` holds its update
+    MotionUpdate update;  // the cell-list update before the frame (none before frame 0)
     double efficiency() const { return image_time_s > 0 ? t1_s / (processors * image_time_s) : 0; }
     double charged_migration_s() const { return migration_charged ? migration.time_s : 0; }
 };
@@ -44,8 +47,12 @@ struct RemapSettings {
 
 nlohmann::json frame_json(const FrameRecord &frame);
 // Totals: frame_count, policy (and adaptive's pilot_fraction, window and margin), total_s = sum of
-// image times + charged migration + charged host pilot time, and its parts.
+// image times + charged migration + charged host pilot time + a moving scene's updates, and its
+// parts.
 nlohmann::json animation_json(const std::vector<FrameRecord> &frames, const RemapSettings &remap);
+// A moving scene's figures over every frame: objects moved, units of the updates and of rebuilds,
+// update and link time, what was sent, and the time against the frames' image time.
+nlohmann::json motion_totals_json(const std::vector<FrameRecord> &frames);
 // One header line and one row per frame (columns in docs/frames.md).
 std::string frames_csv(const std::vector<FrameRecord> &frames);
 // The summary's table (nothing for a single image).

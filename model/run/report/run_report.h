@@ -97,6 +97,7 @@ struct RunReport {
     std::vector<FrameRecord> frames;
     RemapSettings remap;
     std::string camera_source, output_pattern;
+    nlohmann::json motion;  // a moving scene: the motion file and the updates' totals (null: none)
 };
 
 // Reads the system after the run. `deadlock`: the network stalled (fills report.deadlock).

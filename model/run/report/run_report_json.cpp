@@ -202,6 +202,7 @@ nlohmann::json to_json(const RunReport &r)
         j["camera_source"] = r.camera_source;
         j["output_pattern"] = r.output_pattern;
     }
+    if (!r.motion.is_null()) j["motion"] = r.motion;
     j["flow"] = r.flow;
     if (r.status == "deadlock") {  // no image was finished: the stall's time is no T(n)
         j["deadlock"] = deadlock_json(r.deadlock);

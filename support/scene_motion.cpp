@@ -1,29 +1,12 @@
-// scene_motion.cpp - reading --motion, and moving the scene and its cell lists per frame.
+// scene_motion.cpp - reading a motion file, and moving the scene and its cell lists per frame.
 #include "scene_motion.h"
 
 #include <cstdio>
 
-#include "option_parsing.h"
-#include "rt_text.h"
 #include "scene_setup.h"
 #include "user_error.h"
 
 namespace torusrt {
-
-OptionSpec motion_option_spec()
-{
-    return {"--motion",
-            "FILE",
-            ValueKind::file,
-            "",
-            0,
-            0,
-            "",
-            "motion file: moves groups of objects per frame by keyframes (docs/motion-files.md); the "
-            "frame count is the file's unless --frames is given",
-            OptionGroup::animation,
-            ""};
-}
 
 MotionPtr read_motion_file(const std::string &path)
 {
@@ -34,27 +17,6 @@ MotionPtr read_motion_file(const std::string &path)
     if (rt_motion_load(path.c_str(), &raw, msg, sizeof msg) != RT_OK)
         throw UserError(std::string("--motion: ") + msg, 2);
     return MotionPtr(raw);
-}
-
-void take_motion_frame_count(AnimationOptions &anim, const rt_motion *motion)
-{
-    if (motion && !anim.orbit.empty() && anim.frames_text.empty())
-        anim.frames_text = std::to_string(rt_motion_frame_count(motion));
-}
-
-void check_motion_frames(AnimationOptions &anim, const rt_motion *motion, const rt_camera_path *file)
-{
-    uint32_t n = rt_motion_frame_count(motion);
-    if (anim.frames >= 0 && static_cast<uint64_t>(anim.frames) != n)
-        throw UserError("--frames " + std::to_string(anim.frames) + ": " + shown_text(anim.motion) + " has " +
-                            std::to_string(n) + " frames (leave --frames out to take them)",
-                        2);
-    if (file && rt_camera_path_count(file) != n)
-        throw UserError("--camera-path: " + shown_text(anim.camera_path) + " holds " +
-                            std::to_string(rt_camera_path_count(file)) + " camera lines, " + shown_text(anim.motion) +
-                            " has " + std::to_string(n) + " frames",
-                        2);
-    anim.frames = n;
 }
 
 SceneMotion::SceneMotion(MotionPtr motion, ScenePtr scene, const std::string &path, bool quiet)
@@ -75,26 +37,38 @@ SceneMotion::SceneMotion(MotionPtr motion, ScenePtr scene, const std::string &pa
     }
 }
 
-MotionFrameCost SceneMotion::move_to(uint32_t k, GridPtr &grid, const int cells[3], rt_preprocess_count rule,
-                                     rt_budget *budget)
+void SceneMotion::move_objects(uint32_t k)
 {
     char msg[RT_MSG_LEN] = "";
     if (rt_motion_apply(m_motion.get(), m_scene.get(), m_frame.get(), k, m_moved.data(), msg, sizeof msg) != RT_OK)
         throw UserError(std::string("--motion: ") + msg, 2);
+}
+
+MotionFrameCost SceneMotion::move_to(uint32_t k, GridPtr &grid, const int cells[3], rt_preprocess_count rule,
+                                     rt_budget *budget)
+{
+    move_objects(k);
+    if (k > 0 && grid) return update_lists(k, grid.get(), budget);
+    char msg[RT_MSG_LEN] = "";
     MotionFrameCost cost;
     for (uint8_t m : m_moved) cost.objects_moved += m;
-    if (k == 0 || !grid) {
-        grid.reset();  // the scene's own grid (or the last run's) gives way to the one over every frame
-        grid.reset(
-            rt_grid_new_in_space(m_frame.get(), cells[0], cells[1], cells[2], &m_space, rule, budget, msg, sizeof msg));
-        if (!grid) throw UserError(shown_path(m_path) + ": frame " + std::to_string(k) + ": " + msg);
-        cost.update_units = cost.rebuild_units = rt_grid_units_serial(grid.get());
-        cost.list_entries = rt_grid_list_entries(grid.get());
-        return cost;
-    }
+    grid.reset();  // the scene's own grid (or the last run's) gives way to the one over every frame
+    grid.reset(
+        rt_grid_new_in_space(m_frame.get(), cells[0], cells[1], cells[2], &m_space, rule, budget, msg, sizeof msg));
+    if (!grid) throw UserError(shown_path(m_path) + ": frame " + std::to_string(k) + ": " + msg);
+    cost.update_units = cost.rebuild_units = rt_grid_units_serial(grid.get());
+    cost.list_entries = rt_grid_list_entries(grid.get());
+    return cost;
+}
+
+MotionFrameCost SceneMotion::update_lists(uint32_t k, rt_grid *grid, rt_budget *budget)
+{
+    char msg[RT_MSG_LEN] = "";
     rt_grid_update_stats st{};
-    if (rt_grid_update(grid.get(), m_frame.get(), m_moved.data(), budget, &st, msg, sizeof msg) != RT_OK)
+    if (rt_grid_update(grid, m_frame.get(), m_moved.data(), budget, &st, msg, sizeof msg) != RT_OK)
         throw UserError(shown_path(m_path) + ": frame " + std::to_string(k) + ": " + msg);
+    MotionFrameCost cost;
+    cost.objects_moved = st.objects_moved;
     cost.update_units = st.units;
     cost.rebuild_units = st.rebuild_units;
     cost.list_entries = st.entries;

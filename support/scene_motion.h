@@ -1,6 +1,6 @@
-// scene_motion.h - --motion FILE on the command line: reading the motion file, the object
+// scene_motion.h - a scene moving by a motion file (--motion): reading the file, the object
 // space over every frame, and moving the scene and updating its cell lists frame by frame.
-// torusrt-render registers the option; torusrt-sim does not.
+// Both executables use it; the options that name the file are testbench/common/motion_options.h.
 #pragma once
 
 #include <cstdint>
@@ -9,9 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "animation_options.h"
 #include "kernel_handles.h"
-#include "option_spec.h"
 #include "rt_budget.h"
 #include "rt_grid.h"
 #include "rt_motion.h"
@@ -23,20 +21,9 @@ struct MotionDeleter {
 };
 using MotionPtr = std::unique_ptr<rt_motion, MotionDeleter>;
 
-// The --motion option (group animation).
-OptionSpec motion_option_spec();
-
 // Reads the --motion file (nullptr when `path` is empty). A bad file is exit 2 with
 // "--motion: FILE:LINE: message".
 MotionPtr read_motion_file(const std::string &path);
-
-// With --motion and --orbit but no --frames: the orbit's frame count is the motion file's (before
-// check_animation_options, which needs one for --orbit).
-void take_motion_frame_count(AnimationOptions &anim, const rt_motion *motion);
-// With --motion, after check_animation_options and read_camera_path_file: the frame count is the
-// motion file's `frames`; --frames, when given, and a --camera-path's poses must be as many
-// (exit 2 otherwise). Sets anim.frames.
-void check_motion_frames(AnimationOptions &anim, const rt_motion *motion, const rt_camera_path *file);
 
 // What one frame's move cost: the update's units against a rebuild of every list.
 struct MotionFrameCost {
@@ -59,9 +46,16 @@ class SceneMotion {
     // builds it over the object space with `cells` and `rule`; later frames update it in place.
     // Throws UserError naming the motion file on failure (the budget, memory).
     MotionFrameCost move_to(uint32_t k, GridPtr &grid, const int cells[3], rt_preprocess_count rule, rt_budget *budget);
+    // move_to in two steps, for a caller that looks at the lists in between: the objects of
+    // frame k (moved() flags those that changed), then the lists of a grid built at an earlier
+    // frame, updated in place (throws UserError as move_to).
+    void move_objects(uint32_t k);
+    MotionFrameCost update_lists(uint32_t k, rt_grid *grid, rt_budget *budget);
 
     rt_scene *frame_scene() const { return m_frame.get(); }
     uint32_t frame_count() const { return rt_motion_frame_count(m_motion.get()); }
+    // One byte per object: 1 if the last move changed its geometry.
+    const std::vector<uint8_t> &moved() const { return m_moved; }
     // The file, its entries (with what each matched) and the object space, for the JSON report.
     nlohmann::json json() const;
 
