@@ -1,0 +1,217 @@
+#!/usr/bin/env python3
+"""report.py - docs/scaling.md from the scaling study's runs (Python 3 standard library).
+
+Usage: report.py RESULTS_DIR OUT_MD PLOT_DIR STUDY_DIR JOBS WALL_S
+RESULTS_DIR holds runs.tsv (one row per scene, machine and processor count) and
+busy-paper-image2-512.tsv (machine, node, busy s). Per scene: image time, efficiency and data
+memory of every machine at every n; the fastest machine within the memory budget (2x the flat
+cyclic mapping's total data memory at the same n); the efficiency at the largest n split into
+its measured factors; plots of time against n, time against memory, and busy time per node
+before and after replication.
+"""
+import csv
+import os
+import subprocess
+import sys
+
+BUDGET = 2.0  # memory budget: this many times the flat cyclic mapping's total data memory
+FLAT = ["flat-cyclic", "flat-cost", "flat-cost-r0.5", "flat-cost-r1.0"]
+
+
+def load(path):
+    runs = {}
+    with open(path, newline="") as f:
+        for r in csv.DictReader(f, delimiter="\t"):
+            runs[(r["scene"], r["machine"], int(r["n"]))] = r
+    return runs
+
+
+def checked(runs):
+    """(every image equal to the renderer's, every run conserved its packets)."""
+    return (all(r["image_identical"] == "1" for r in runs.values()),
+            all(r["conserved"] == "true" for r in runs.values()))
+
+
+def machines(runs):
+    """The machines in a fixed order: the flat ones, then clusters by m, data and mapping."""
+    names = {k[1] for k in runs}
+    clusters = sorted(names - set(FLAT), key=lambda s: (int(s.split("-")[0][1:]), s))
+    return [m for m in FLAT if m in names] + clusters
+
+
+def t(r):
+    return float(r["sim_time_s"])
+
+
+def memory(r):
+    return float(r["memory_total_bytes"])
+
+
+def factors(r):
+    """Efficiency T(1) / (n T) as the product of three measured factors: work (T(1) over all the
+    processors' busy time: what forwarding and waiting add), balance (mean busy over the busiest)
+    and tail (the busiest processor's busy time over the image time: it too waits for rays)."""
+    n, t1 = int(r["n"]), float(r["t1_s"])
+    mean, top = float(r["busy_mean_s"]), float(r["busy_max_s"])
+    return {"work": t1 / (n * mean), "balance": mean / top, "tail": top / t(r), "links": float(r["link_util_max"])}
+
+
+def best_within_budget(runs, scene, n):
+    """The fastest machine at n whose total data memory is within BUDGET x flat cyclic's."""
+    cap = BUDGET * memory(runs[(scene, "flat-cyclic", n)])
+    fits = [r for (s, _, k), r in runs.items() if s == scene and k == n and memory(r) <= cap]
+    return min(fits, key=lambda r: (t(r), r["machine"]))
+
+
+def limit_text(f):
+    """The factor that loses most, in words."""
+    names = {"work": "work added by forwarding and waiting", "balance": "load balance",
+             "tail": "the tail (the busiest processor idle, waiting for dependent rays)"}
+    worst = min(("work", "balance", "tail"), key=lambda k: f[k])
+    text = names[worst]
+    if f["links"] > 0.8:
+        text += f"; the busiest link is {100 * f['links']:.0f} % busy"
+    return text
+
+
+def findings(runs, scenes, ns, ok):
+    top = ns[-1]
+    L = ["## Findings", ""]
+    for sc in scenes:
+        picks = [best_within_budget(runs, sc, n) for n in ns]
+        cyc = {n: runs[(sc, "flat-cyclic", n)] for n in ns}
+        best = ", ".join(f"n = {int(r['n'])}: {r['machine']} {t(r):.3g} s "
+                         f"({t(cyc[int(r['n'])]) / t(r):.2f}x flat cyclic, {100 * float(r['efficiency']):.0f} %)"
+                         for r in picks)
+        f = factors(picks[-1])
+        L.append(f"- **{sc}**, fastest within {BUDGET:g}x cyclic's memory: {best}. At n = {top} its efficiency "
+                 f"{100 * float(picks[-1]['efficiency']):.1f} % = work {100 * f['work']:.0f} % x balance "
+                 f"{100 * f['balance']:.0f} % x tail {100 * f['tail']:.0f} %; lost most to {limit_text(f)} "
+                 f"(busiest link {100 * f['links']:.1f} % busy).")
+    gains = []
+    for sc in scenes:
+        for n in ns:
+            base, rep = runs.get((sc, "flat-cost", n)), runs.get((sc, "flat-cost-r1.0", n))
+            if base and rep:
+                gains.append((t(base) / t(rep), sc, n, int(rep["copy_bytes"]), memory(base)))
+    g, sc, n, extra, base_mem = max(gains)
+    L.append(f"- Replicated hot cells (hash rule, budget 1.0) shorten the flat cost mapping's image by up to "
+             f"{g:.2f}x ({sc}, n = {n}) for {extra} bytes of copies ({100 * extra / base_mem:.2f} % more data); "
+             f"they gain more than 5 % at {sum(1 for x in gains if x[0] > 1.05)} of {len(gains)} points.")
+    flat_wins = sum(1 for sc in scenes for n in ns
+                    if best_within_budget(runs, sc, n)["machine"].startswith("flat"))
+    L.append(f"- The fastest machine within the budget is a flat torus at {flat_wins} of {len(scenes) * len(ns)} "
+             "(scene, n) points and a cluster machine at the rest.")
+    L.append(f"- {len(runs)} runs; every image equal to `torusrt-render`'s byte for byte: **{'yes' if ok[0] else 'NO'}**; "
+             f"packets conserved in every run: **{'yes' if ok[1] else 'NO'}**.")
+    return L + [""]
+
+
+def scene_table(runs, sc, ns, names):
+    L = ["| n | machine | nodes x m | image time s | efficiency | memory total | max per processor | work | balance "
+         "| tail | busiest link | copies (bytes) |", "|---" * 12 + "|"]
+    for n in ns:
+        cap = BUDGET * memory(runs[(sc, "flat-cyclic", n)])
+        pick = best_within_budget(runs, sc, n)["machine"]
+        for mc in names:
+            r = runs.get((sc, mc, n))
+            if not r:
+                continue
+            f = factors(r)
+            mark = " **(fastest in budget)**" if mc == pick else ("" if memory(r) <= cap else " (over budget)")
+            copies = f"{r['copies']} ({r['copy_bytes']})" if int(r["copies"]) else "-"
+            L.append(f"| {n} | {mc}{mark} | {r['nodes']} x {r['m']} | {t(r):.4g} | {100 * float(r['efficiency']):.1f} % "
+                     f"| {memory(r):.0f} | {r['memory_max_per_ip_bytes']} | {100 * f['work']:.0f} % "
+                     f"| {100 * f['balance']:.0f} % | {100 * f['tail']:.0f} % | {100 * f['links']:.1f} % | {copies} |")
+    return L
+
+
+def gnuplot(gp, kind, data, png, title, ncol=0):
+    subprocess.run(["gnuplot", "-e", f"kind='{kind}'; data='{data}'; out='{png}'; ttl='{title}'; ncol={ncol}", gp],
+                   check=True)
+    return os.path.basename(png)
+
+
+def scene_plots(runs, sc, ns, names, plot_dir, gp):
+    data = os.path.join(plot_dir, f"time-{sc}.dat")
+    with open(data, "w") as f:
+        f.write("n " + " ".join(names) + "\n")
+        for n in ns:
+            f.write(f"{n} " + " ".join(f"{t(runs[(sc, m, n)]):.6g}" if (sc, m, n) in runs else "-" for m in names)
+                    + "\n")
+    time_png = gnuplot(gp, "time", data, os.path.join(plot_dir, f"time-{sc}.png"), f"{sc}: image time",
+                       len(names) + 1)
+    data = os.path.join(plot_dir, f"memory-{sc}.dat")
+    with open(data, "w") as f:
+        for (s, m, n), r in sorted(runs.items()):
+            if s == sc:
+                f.write(f"{m} {n} {memory(r):.0f} {t(r):.6g}\n")
+    mem_png = gnuplot(gp, "memory", data, os.path.join(plot_dir, f"memory-{sc}.png"),
+                      f"{sc}: image time against total data memory (each machine, each n)")
+    return time_png, mem_png
+
+
+def busy_plot(res, plot_dir, gp):
+    """Busy time per node, busiest first, of each machine in busy-paper-image2-512.tsv."""
+    series = {}
+    with open(os.path.join(res, "busy-paper-image2-512.tsv")) as f:
+        for line in f:
+            mc, _, busy = line.split("\t")
+            series.setdefault(mc, []).append(float(busy))
+    names = [m for m in FLAT if m in series]
+    cols = [sorted(series[m], reverse=True) for m in names]
+    data = os.path.join(plot_dir, "busy-paper-image2-512.dat")
+    with open(data, "w") as f:
+        f.write("rank " + " ".join(names) + "\n")
+        for i in range(max(len(c) for c in cols)):
+            f.write(f"{i} " + " ".join(f"{c[i]:.6g}" for c in cols) + "\n")
+    png = gnuplot(gp, "busy", data, os.path.join(plot_dir, "busy-paper-image2-512.png"),
+                  "paper-image2, 512 IPs: busy time per node, before and after replication", len(names) + 1)
+    return png, {m: (max(series[m]), sum(series[m]) / len(series[m])) for m in names}
+
+
+def main(argv):
+    res, out_md, plot_dir, study_dir, jobs, wall = argv[1:7]
+    gp = os.path.join(study_dir, "plots.gp")
+    runs = load(os.path.join(res, "runs.tsv"))
+    os.makedirs(plot_dir, exist_ok=True)
+    scenes = sorted({k[0] for k in runs}, key=lambda s: (not s.startswith("paper"), s))
+    ns = sorted({k[2] for k in runs})
+    names = machines(runs)
+    rel = os.path.relpath(plot_dir, os.path.dirname(out_md))
+    L = ["# Scaling: which machine for a given number of processors", ""] + findings(runs, scenes, ns, checked(runs))
+    L += ["## How it was made", "",
+          "Generated by `bash experiments/scaling/study.sh` (do not edit by hand); "
+          f"{wall} s on {jobs} jobs. Each scene at its own size under the calibrated profile; T(1) from the "
+          "one-processor run. Machines at each processor count n:", "",
+          "- **flat-cyclic**, **flat-cost**: a flat torus of n IPs, `--map cyclic` or `--map cost`;",
+          "- **flat-cost-r0.5**, **flat-cost-r1.0**: `--map cost --replicate 0.5` or `1.0` with `--replica-choice "
+          "hash` (under `nearest` the rays into a hot cell mostly come from one node and reach one owner; "
+          "[cell-mappings.md](cell-mappings.md#replicated-cells));",
+          "- **mM-DATA-MAP**: n / M nodes of M processors (`--cluster M`), `--data replicated` or `shared`, "
+          "`--map cyclic` or `cost`, wherever n / M is at least 4.", "",
+          "Memory is the data memory of the report (`memory.total_bytes`: object records, materials and cell "
+          "lists over all processors, copies included). The budget is "
+          f"{BUDGET:g}x flat-cyclic's total at the same n. The efficiency T(1) / (n T) is split into measured "
+          "factors: **work** = T(1) / (n x mean busy time), what forwarding and waiting for the bus add; "
+          "**balance** = mean busy / busiest; **tail** = busiest / image time, the busiest processor's idle time "
+          "waiting for rays that depend on earlier ones; their product is the efficiency. **busiest link** is "
+          "the highest link utilisation.", ""]
+    for sc in scenes:
+        time_png, mem_png = scene_plots(runs, sc, ns, names, plot_dir, gp)
+        L += [f"## {sc}", ""] + scene_table(runs, sc, ns, names)
+        L += ["", f"![image time against n, {sc}]({rel}/{time_png})", "",
+              f"![image time against memory, {sc}]({rel}/{mem_png})", ""]
+    png, busy = busy_plot(res, plot_dir, gp)
+    L += ["## Busy time per node before and after replication (paper-image2, 512 IPs)", "",
+          "Per node, busiest first: " + "; ".join(f"{m} busiest {b[0]:.3f} s, mean {b[1]:.3f} s"
+                                                  for m, b in busy.items()) + ".", "",
+          f"![busy time per node]({rel}/{png})", ""]
+    with open(out_md + ".tmp", "w") as f:
+        f.write("\n".join(L))
+    os.replace(out_md + ".tmp", out_md)
+    print(f"scaling study: wrote {out_md}")
+
+
+if __name__ == "__main__":
+    main(sys.argv)
