@@ -2,26 +2,21 @@
 
 The report's config.options holds the machine as torusrt-sim --dump-config writes it: the
 option names without dashes and their values as the options take them. A machine file is
-key="value" lines (the subset of TOML that --dump-config writes), in --dump-config's order.
+key="value" lines (the subset of TOML that --dump-config writes), in --dump-config's order,
+which the report gives as config.option_order.
 """
 import tomllib
 
-# The keys in --dump-config's order (its option table, model/run/config/machine_options.cpp); the CLI
-# test machine_file_order checks that the two agree.
-DUMP_ORDER = ("ips", "map", "topology", "cells", "preprocess-count", "queue", "flow", "timing-profile", "timing",
-              "timing-values", "link-us", "packet-bytes", "link-bytes-per-us", "max-depth", "min-weight", "style",
-              "quantum", "cluster", "data", "arbiter", "dispatch", "cell-header-bytes", "list-entry-bytes",
-              "object-record-bytes", "map-file", "pilot-size", "replicate", "replica-choice")
-
 
 def from_report(report):
-    """The (key, value) pairs of a report's machine, in --dump-config's order (keys it does not
-    know after them, in the report's order)."""
+    """The (key, value) pairs of a report's machine, in --dump-config's order (config.option_order;
+    keys it does not list after them, in the report's order)."""
     options = report.get("config", {}).get("options")
     if not isinstance(options, dict):
         raise ValueError("the report has no config.options (written by torusrt-sim 0.1.0 and later)")
-    rank = {key: i for i, key in enumerate(DUMP_ORDER)}
-    keys = sorted(options, key=lambda k: rank.get(k, len(DUMP_ORDER)))
+    order = report["config"].get("option_order", [])
+    rank = {key: i for i, key in enumerate(order)}
+    keys = sorted(options, key=lambda k: rank.get(k, len(order)))
     return [(str(k), str(options[k])) for k in keys]
 
 

@@ -19,6 +19,11 @@ class MachineFile(unittest.TestCase):
         self.assertIn('timing="a\\"b.timing"\n', text)  # a double quote is escaped
         self.assertEqual(mf.read_machine_file(text), dict(pairs))
 
+    def test_written_in_the_reports_option_order(self):
+        report = {"config": {"options": {"ips": "2", "map": "cost", "cluster": "4"},
+                             "option_order": ["map", "cluster", "ips"]}}
+        self.assertEqual([k for k, _ in mf.from_report(report)], ["map", "cluster", "ips"])
+
     def test_differences_name_every_key(self):
         pairs = mf.from_report(REPORT)
         other = {"ips": "4x1x1", "map": "cyclic", "cluster": "2"}

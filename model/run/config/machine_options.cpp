@@ -436,4 +436,11 @@ nlohmann::json machine_options_json(const MachineConfig &m)
     return j;
 }
 
+nlohmann::json machine_option_order_json(const MachineConfig &m)
+{
+    nlohmann::json j = nlohmann::json::array();
+    for (const auto &kv : machine_options(m)) j.push_back(kv.first);
+    return j;
+}
+
 }  // namespace torusrt

@@ -46,6 +46,8 @@ std::string machine_options_toml(const MachineConfig &machine, bool with_timing 
 
 // {"key": "value", ...}.
 nlohmann::json machine_options_json(const MachineConfig &machine);
+// ["key", ...]: the keys of machine_options_json in --dump-config's order (a JSON object keeps none).
+nlohmann::json machine_option_order_json(const MachineConfig &machine);
 
 // The names a --map value may take, for the help and messages: "block, cyclic, ...".
 std::string mapping_forms();

@@ -48,7 +48,8 @@ nlohmann::json config_json(const SimConfig &config)
             {"min_weight", config.step.min_weight},
             {"timing_profile", config.timing_profile},
             {"timing", timing_json(config.timing)},
-            {"options", machine_options_json(config)}};  // the machine, as --dump-config writes it
+            {"options", machine_options_json(config)},  // the machine, as --dump-config writes it
+            {"option_order", machine_option_order_json(config)}};
 }
 
 nlohmann::json per_ip_json(const RunReport &r, std::vector<double> &busy)
