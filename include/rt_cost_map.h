@@ -42,6 +42,13 @@ extern "C" {
 /* Faces of a cell, in this order: -x, +x, -y, +y, -z, +z. */
 #define RT_CELL_FACES 6
 
+/* The part of one cell's work that one object caused (rt_cost_pilot_run_by_object). */
+typedef struct rt_object_cell_us {
+    uint32_t object;
+    uint32_t cell;
+    double us;
+} rt_object_cell_us;
+
 typedef struct rt_cost_pilot {
     int dims[3]; /* grid cells per axis */
     size_t cells;
@@ -49,10 +56,22 @@ typedef struct rt_cost_pilot {
     uint64_t *traffic; /* per cell and face: packets leaving the cell through it */
     double total_us;   /* sum of work_us: T(1) of the pilot image without hand-overs */
     rt_op_counts ops;  /* everything the pilot did, hand-overs between cells included */
+    /* NULL (count 0) unless run by object: the work of each (object, cell) pair with any, by
+     * object then cell; their sum over a cell is at most the cell's work_us. */
+    rt_object_cell_us *object_us;
+    size_t object_us_count;
 } rt_cost_pilot;
 
 rt_status rt_cost_pilot_run(const rt_scene *scene, const rt_grid *grid, const rt_step_params *params,
                             const rt_timing *timing, rt_cost_pilot *out, char *msg, size_t msg_len);
+
+/* rt_cost_pilot_run that also counts each object's work (object_us): a step's work beyond its
+ * next-cell determinations (tests, shading, new packets: what the objects it met cost) is
+ * shared by the objects it tested, in proportion to their tests; a step that tested none keeps
+ * it in the cell alone. A moving object's work can then move with it (adaptive's `objects`
+ * guess, docs/frames.md). params->on_test is replaced during the run. */
+rt_status rt_cost_pilot_run_by_object(const rt_scene *scene, const rt_grid *grid, const rt_step_params *params,
+                                      const rt_timing *timing, rt_cost_pilot *out, char *msg, size_t msg_len);
 void rt_cost_pilot_release(rt_cost_pilot *pilot);
 
 /* Microseconds one packet handed across a face costs: send + receive + link. */

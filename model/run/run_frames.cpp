@@ -18,6 +18,8 @@ namespace torusrt {
 
 namespace {
 
+rt_vec3 box_centre(const rt_box &b) { return rt_vec_scale(rt_vec_add(b.lo, b.hi), 0.5); }
+
 void set_camera(rt_scene *scene, const rt_camera_path *path, size_t k)
 {
     char msg[RT_MSG_LEN] = "";
@@ -170,6 +172,9 @@ struct FrameLoop {
     double end_s = 0;                                              // when the last frame ended
     sc_core::sc_time start;                                        // when the current frame started
     rt_camera_pose still;  // the scene's own camera: every frame's without a camera path
+    ObjectShifts shifts;   // a moving scene: what moved into the current frame
+    // Adaptive on a moving scene counts each object's work, to carry it with the objects.
+    bool by_object() const { return plan.motion && plan.policy == RemapPolicy::adaptive; }
 
     FrameLoop(const SimConfig &c, rt_scene *s, const rt_grid *g, const FramePlan &p)
         : config(c), scene(s), grid(g), plan(p), routing(c.ips, c.topology == Topology::torus), ctx{c, s, g, routing},
@@ -185,7 +190,7 @@ struct FrameLoop {
     {
         if (!plan.animated()) return owner_table_of(config, grid);
         if (plan.path) set_camera(scene, plan.path, 0);
-        pilot = std::make_unique<FramePilot>(config, scene, grid);
+        pilot = std::make_unique<FramePilot>(config, scene, grid, by_object());
         return plan.policy == RemapPolicy::oracle ? oracle_mapping(ctx, *pilot) : owner_table_of(config, grid);
     }
 
@@ -200,7 +205,14 @@ struct FrameLoop {
 void FrameLoop::move_objects(Machine &m, size_t k, FrameRecord &rec)
 {
     SceneMotion &motion = *plan.motion;
+    size_t objects = rt_scene_object_count(scene);
+    std::vector<rt_vec3> centre(objects);
+    for (size_t o = 0; o < objects; o++) centre[o] = box_centre(rt_scene_object_bounds(scene, o));
     motion.move_objects(static_cast<uint32_t>(k));
+    shifts.moved = motion.moved();
+    shifts.shift.assign(objects, rt_vec3{0, 0, 0});
+    for (size_t o = 0; o < objects; o++)
+        if (shifts.moved[o]) shifts.shift[o] = rt_vec_sub(box_centre(rt_scene_object_bounds(scene, o)), centre[o]);
     std::vector<ObjectCell> old_entries = moved_entries(grid, motion.moved());
     motion.update_lists(static_cast<uint32_t>(k), plan.moving_grid, &m.memory);
     MotionMachine machine{routing, config.node_count(), config.cluster, config.timing, m.owner.data()};
@@ -222,12 +234,13 @@ FrameRecord FrameLoop::prepare(Machine &m, size_t k, const std::vector<FrameReco
         if (plan.path) set_camera(scene, plan.path, k);
         before = std::move(previous);
         previous = std::move(pilot);
-        pilot = std::make_unique<FramePilot>(config, scene, grid);
+        pilot = std::make_unique<FramePilot>(config, scene, grid, by_object());
         double previous_time_s = done.back().image_time_s;
         if (plan.policy == RemapPolicy::adaptive && plan.adaptive.pilot_fraction > 0)
             preview = host_preview(config, scene, grid, plan.adaptive.pilot_fraction, previous_time_s, rec);
         next_mapping(remapper, ctx, m,
-                     FrameLoads{*previous, previous_time_s, *pilot, before.get(), preview.get(), pose(k - 1), pose(k)},
+                     FrameLoads{*previous, previous_time_s, *pilot, before.get(), preview.get(), pose(k - 1), pose(k),
+                                by_object() ? &shifts : nullptr},
                      rec);
         if (plan.motion) m.top->place_objects(grid, m.owner.data());
         m.fb = new_frame_buffer(scene);

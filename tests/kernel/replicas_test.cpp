@@ -100,7 +100,7 @@ TEST(Replicas, CostReplicationByHand)
     ASSERT_TRUE(t.grid);
     double work[2] = {1, 9};
     uint64_t traffic[2 * RT_CELL_FACES] = {};
-    rt_cost_pilot pilot{{2, 1, 1}, 2, work, traffic, 10, {}};
+    rt_cost_pilot pilot{{2, 1, 1}, 2, work, traffic, 10, {}, nullptr, 0};
     const int two[3] = {2, 1, 1};
     const int32_t owner[2] = {0, 1};
     uint32_t first[3];
@@ -235,7 +235,7 @@ TEST(Replicas, CostReplicationNearestFollowsTheTraffic)
     double work[2] = {1, 9};
     uint64_t traffic[2 * RT_CELL_FACES] = {};
     traffic[0 * RT_CELL_FACES + 1] = 10;  // out of cell 0 through its +x face
-    rt_cost_pilot pilot{{2, 1, 1}, 2, work, traffic, 10, {}};
+    rt_cost_pilot pilot{{2, 1, 1}, 2, work, traffic, 10, {}, nullptr, 0};
     const int two[3] = {2, 1, 1};
     const int32_t owner[2] = {0, 1};
     uint32_t first[3];

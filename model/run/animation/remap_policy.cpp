@@ -60,7 +60,7 @@ struct Candidate {
 };
 
 // Adaptive's guesses of frame j's load from what frames j-1 (and j-2) measured, each also blurred.
-enum class Guess { last, trend, moved };
+enum class Guess { last, trend, moved, objects };
 struct GuessKind {
     Guess guess;
     bool blurred;
@@ -68,18 +68,21 @@ struct GuessKind {
 };
 const GuessKind guesses[] = {{Guess::last, false, "frame"},         {Guess::trend, false, "trend"},
                              {Guess::moved, false, "moved"},        {Guess::last, true, "frame-blurred"},
-                             {Guess::trend, true, "trend-blurred"}, {Guess::moved, true, "moved-blurred"}};
+                             {Guess::trend, true, "trend-blurred"}, {Guess::moved, true, "moved-blurred"},
+                             {Guess::objects, false, "objects"},    {Guess::objects, true, "objects-blurred"}};
 constexpr double blur_keep =
     0.25;  // a blurred guess keeps this share of a cell's work, the rest goes to its face neighbours
 
 // Frame j's load guessed from frame j-1's (`last`) and j-2's (`before`, the trend only), the
-// camera going from pose a (frame j-1) to pose b (frame j).
-std::unique_ptr<FramePilot> guessed_load(const RemapContext &ctx, const GuessKind &g, const FramePilot &last,
-                                         const FramePilot *before, const rt_camera_pose &a, const rt_camera_pose &b)
+// camera going from pose a (frame j-1) to pose b (frame j), the objects by `shifts` (`objects` only).
+std::unique_ptr<FramePilot> guessed_load(const RemapContext &ctx, const GuessKind &g, const FrameLoads &loads)
 {
-    std::unique_ptr<FramePilot> p = g.guess == Guess::trend   ? FramePilot::extrapolated(last, *before)
-                                    : g.guess == Guess::moved ? FramePilot::moved(last, ctx.grid, a, b)
-                                                              : FramePilot::combined(last, last, 1, 0);
+    const FramePilot &last = loads.previous;
+    std::unique_ptr<FramePilot> p = g.guess == Guess::trend ? FramePilot::extrapolated(last, *loads.before)
+                                    : g.guess == Guess::moved
+                                        ? FramePilot::moved(last, ctx.grid, *loads.pose_previous, *loads.pose_next)
+                                    : g.guess == Guess::objects ? FramePilot::carried(last, ctx.grid, *loads.shifts)
+                                                                : FramePilot::combined(last, last, 1, 0);
     return g.blurred ? FramePilot::blurred(*p, blur_keep) : std::move(p);
 }
 
@@ -110,7 +113,8 @@ void Remapper::guess_choice(const RemapContext &ctx, const std::vector<int32_t> 
     std::unique_ptr<FramePilot> predicted;
     for (size_t g = 0; g < n; g++) {
         if (guesses[g].guess == Guess::trend && !loads.before) continue;
-        auto p = guessed_load(ctx, guesses[g], loads.previous, loads.before, *loads.pose_previous, *loads.pose_next);
+        if (guesses[g].guess == Guess::objects && !loads.shifts) continue;
+        auto p = guessed_load(ctx, guesses[g], loads);
         m_proposed[g] = remapped(ctx, current, *p);
         if (g == pick) predicted = std::move(p);
     }
@@ -192,11 +196,12 @@ const char *remap_policy_name(RemapPolicy policy)
     return "?";
 }
 
-void FramePilot::run(const SimConfig &config, const rt_scene *scene, const rt_grid *grid)
+void FramePilot::run(const SimConfig &config, const rt_scene *scene, const rt_grid *grid, bool by_object)
 {
     double t0 = wall_clock_s();
     char msg[RT_MSG_LEN] = "";
-    if (rt_cost_pilot_run(scene, grid, &config.step, &config.timing, &m_pilot, msg, sizeof msg) != RT_OK)
+    auto pilot_run = by_object ? rt_cost_pilot_run_by_object : rt_cost_pilot_run;
+    if (pilot_run(scene, grid, &config.step, &config.timing, &m_pilot, msg, sizeof msg) != RT_OK)
         throw UserError(std::string("frame pilot run: ") + msg);
     m_wall_s = wall_clock_s() - t0;
     m_host_s = m_pilot.total_us * 1e-6;
@@ -204,9 +209,9 @@ void FramePilot::run(const SimConfig &config, const rt_scene *scene, const rt_gr
     m_pixels = static_cast<uint64_t>(cam->width) * cam->height;
 }
 
-FramePilot::FramePilot(const SimConfig &config, const rt_scene *scene, const rt_grid *grid)
+FramePilot::FramePilot(const SimConfig &config, const rt_scene *scene, const rt_grid *grid, bool by_object)
 {
-    run(config, scene, grid);
+    run(config, scene, grid, by_object);
 }
 
 FramePilot::FramePilot(const SimConfig &config, rt_scene *scene, const rt_grid *grid, double fraction)
@@ -234,6 +239,8 @@ std::unique_ptr<FramePilot> FramePilot::blank_like(const FramePilot &x)
 {
     std::unique_ptr<FramePilot> s(new FramePilot());
     s->m_pilot = x.m_pilot;
+    s->m_pilot.object_us = nullptr;  // x's per-object work stays x's
+    s->m_pilot.object_us_count = 0;
     s->m_pilot.work_us = static_cast<double *>(std::malloc(x.m_pilot.cells * sizeof(double)));
     s->m_pilot.traffic = static_cast<uint64_t *>(std::malloc(x.m_pilot.cells * RT_CELL_FACES * sizeof(uint64_t)));
     if (!s->m_pilot.work_us || !s->m_pilot.traffic) throw std::bad_alloc();  // the destructor frees
@@ -251,6 +258,13 @@ std::unique_ptr<FramePilot> FramePilot::moved(const FramePilot &load, const rt_g
         occupied[c] = n > 0;
     }
     move_visits(load.m_pilot, rt_grid_bounds(grid), camera_motion(a, b), occupied, s->m_pilot);
+    return s;
+}
+
+std::unique_ptr<FramePilot> FramePilot::carried(const FramePilot &load, const rt_grid *next, const ObjectShifts &shifts)
+{
+    std::unique_ptr<FramePilot> s = blank_like(load);
+    carry_object_work(load.m_pilot, next, shifts, s->m_pilot);
     return s;
 }
 

@@ -12,11 +12,13 @@
 //               path: frame k-1's load (`frame`), the trend max(0, 2 x frame k-1 - frame k-2)
 //               (`trend`), frame k-1's load moved with the camera from pose k-1 to pose k
 //               (`moved`: its rays move, each cell's work per ray stays, load_motion.h), and
-//               each of them blurred (`-blurred`: a quarter of a cell's work stays, the rest
-//               goes to its face neighbours). Before each frame every guess gives a table (a
-//               remap from the table in force); once the frame has run, each of those tables is
-//               scored by W in the frame's measured load, as a ratio to the least W among them.
-//               The guess taken is the one with the least mean ratio over the last
+//               on a moving scene, frame k-1's load with each moved object's work carried
+//               into its frame-k cells (`objects`: the host knows where the objects will be,
+//               object_work_carry.h), and each of them blurred (`-blurred`: a quarter of a
+//               cell's work stays, the rest goes to its face neighbours). Before each frame every guess gives a table
+//               (a remap from the table in force); once the frame has run, each of those tables is scored by W in the
+//               frame's measured load, as a ratio to the least W among them. The guess taken is the one with the least
+//               mean ratio over the last
 //               --remap-window frames scored (the first in that order on a tie; `frame` for
 //               frame 1, before anything is scored; the trend is made from frame 2 on and scored
 //               from frame 3 on), unless `frame`'s mean ratio is at most 1 + --remap-margin
@@ -50,6 +52,7 @@
 
 #include "guess_scoreboard.h"
 #include "migration.h"
+#include "object_work_carry.h"
 #include "rt_camera_path.h"
 #include "rt_cost_map.h"
 #include "sim_config.h"
@@ -65,7 +68,8 @@ const char *remap_policy_name(RemapPolicy policy);
 // A pilot run of the scene's current camera (released on destruction).
 class FramePilot {
   public:
-    FramePilot(const SimConfig &config, const rt_scene *scene, const rt_grid *grid);
+    // by_object: also each object's work (rt_cost_pilot_run_by_object), for carried().
+    FramePilot(const SimConfig &config, const rt_scene *scene, const rt_grid *grid, bool by_object = false);
     // The host's preview: the scene's camera at `fraction` of the pixels (each side scaled by
     // its square root, at least one pixel), its work and traffic scaled to the full pixel count.
     FramePilot(const SimConfig &config, rt_scene *scene, const rt_grid *grid, double fraction);
@@ -88,6 +92,9 @@ class FramePilot {
     // ray stays (load_motion.h's move_visits; occupied = the cell lists anything).
     static std::unique_ptr<FramePilot> moved(const FramePilot &load, const rt_grid *grid, const rt_camera_pose &a,
                                              const rt_camera_pose &b);
+    // The load with the moved objects' work carried into `next`'s cells (object_work_carry.h);
+    // `load` counted by object.
+    static std::unique_ptr<FramePilot> carried(const FramePilot &load, const rt_grid *next, const ObjectShifts &shifts);
     ~FramePilot() { rt_cost_pilot_release(&m_pilot); }
     FramePilot(const FramePilot &) = delete;
     FramePilot &operator=(const FramePilot &) = delete;
@@ -102,7 +109,7 @@ class FramePilot {
   private:
     FramePilot() = default;
     static std::unique_ptr<FramePilot> blank_like(const FramePilot &x);  // same size, arrays allocated
-    void run(const SimConfig &config, const rt_scene *scene, const rt_grid *grid);
+    void run(const SimConfig &config, const rt_scene *scene, const rt_grid *grid, bool by_object = false);
     rt_cost_pilot m_pilot{};
     double m_wall_s = 0, m_host_s = 0;
     uint64_t m_pixels = 0;
@@ -154,6 +161,8 @@ struct FrameLoads {
     const FramePilot *preview;            // frame k's host preview (adaptive only)
     const rt_camera_pose *pose_previous;  // frame k-1's camera
     const rt_camera_pose *pose_next;      // frame k's camera (known in advance)
+    const ObjectShifts *shifts =
+        nullptr;  // a moving scene: what moved from frame k-1 to k (previous counted by object)
 };
 
 // A policy across the frames of one animation, with what adaptive remembers from frame to frame
