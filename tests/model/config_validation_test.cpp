@@ -107,8 +107,9 @@ TEST(MachineOptions, WritesTheMachineAsOptions)
     nlohmann::json j = machine_options_json(c);
     EXPECT_EQ(j["ips"], "4x2x1") << "ips as PXxPYxPZ";
     EXPECT_EQ(j["map"], "block-cyclic:3") << "block-cyclic with its block";
-    EXPECT_EQ(j["min-weight"], "0.33333333333333331") << "min-weight with 17 digits (reads back bit for bit)";
-    EXPECT_EQ(j["quantum"], "0.10000000000000001us") << "quantum in microseconds, with its unit";
+    EXPECT_EQ(j["min-weight"], "0.3333333333333333") << "min-weight in the shortest text that reads back";
+    EXPECT_EQ(std::stod(j["min-weight"].get<std::string>()), c.step.min_weight) << "bit for bit";
+    EXPECT_EQ(j["quantum"], "0.1us") << "quantum in microseconds, with its unit";
     EXPECT_TRUE(j["arbiter"] == "fixed-priority" && j["style"] == "lt" && j["cluster"] == "2") << "policies by name";
     EXPECT_EQ(j["link-us"], "50") << "link-us from the timing table";
     EXPECT_TRUE(!j.contains("map-file") || j["map-file"] == "") << "no map file";

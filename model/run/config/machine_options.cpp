@@ -18,13 +18,6 @@ namespace torusrt {
 
 namespace {
 
-std::string number(double v)
-{
-    char buf[40];
-    std::snprintf(buf, sizeof buf, "%.17g", v);
-    return buf;
-}
-
 std::string dims(const std::array<int, 3> &d)
 {
     return std::to_string(d[0]) + "x" + std::to_string(d[1]) + "x" + std::to_string(d[2]);
@@ -93,7 +86,7 @@ std::string timing_values_text(const MachineConfig &m)
 {
     std::string s;
     for (size_t i = 0; i < rt_timing_key_count(); i++)
-        s += std::string(i ? "," : "") + rt_timing_key_name(i) + "=" + number(rt_timing_get(&m.timing, i));
+        s += std::string(i ? "," : "") + rt_timing_key_name(i) + "=" + number_text(rt_timing_get(&m.timing, i));
     return s;
 }
 
@@ -206,20 +199,20 @@ std::vector<MachineOption> timing_options()
                                  2);
              set_timing(s, m.timing, "link", us);
          },
-         [](const MachineConfig &m) { return number(timing_value(m.timing, "link")); }},
+         [](const MachineConfig &m) { return number_text(timing_value(m.timing, "link")); }},
         {{"--packet-bytes", "BYTES", K::real, "28", 0, kMaxTimingUs, "bytes", "packet size on the wire", G::machine,
           "packet-bytes"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
              set_timing(s, m.timing, "packet_bytes", parse_real(s.long_name(), t, s.min, s.max));
          },
-         [](const MachineConfig &m) { return number(timing_value(m.timing, "packet_bytes")); }},
+         [](const MachineConfig &m) { return number_text(timing_value(m.timing, "packet_bytes")); }},
         {{"--link-bytes-per-us", "RATE", K::real, "0", 0, HUGE_VAL, "bytes/us",
           "link bandwidth; when > 0 a packet takes packet-bytes / this (0: --link-us)", G::machine,
           "link-bytes-per-us"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
              set_timing(s, m.timing, "link_bytes_per_us", parse_real(s.long_name(), t, s.min, s.max));
          },
-         [](const MachineConfig &m) { return number(timing_value(m.timing, "link_bytes_per_us")); }},
+         [](const MachineConfig &m) { return number_text(timing_value(m.timing, "link_bytes_per_us")); }},
         {common_option_spec("--max-depth"),
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
              m.step.max_depth = static_cast<int>(parse_integer(s.long_name(), t, 0, static_cast<long long>(s.max)));
@@ -229,7 +222,7 @@ std::vector<MachineOption> timing_options()
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
              m.step.min_weight = parse_fraction(s.long_name(), t);
          },
-         [](const MachineConfig &m) { return number(m.step.min_weight); }},
+         [](const MachineConfig &m) { return number_text(m.step.min_weight); }},
         {{"--style", "at|lt", K::text, "at", 0, 0, "",
           choice_help("timing style", kStyleNames) + " (approximately or loosely timed; lt needs --quantum)",
           G::machine, "style"},
@@ -242,7 +235,7 @@ std::vector<MachineOption> timing_options()
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
              m.quantum_us = parse_time(s.long_name(), t, 0, -6);
          },
-         [](const MachineConfig &m) { return number(m.quantum_us) + "us"; }},
+         [](const MachineConfig &m) { return number_text(m.quantum_us) + "us"; }},
     };
 }
 
@@ -328,7 +321,7 @@ std::vector<MachineOption> mapping_file_options()
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
              m.replicate = parse_real(s.long_name(), t, 0, 64);
          },
-         [](const MachineConfig &m) { return number(m.replicate); }},
+         [](const MachineConfig &m) { return number_text(m.replicate); }},
         {{"--replica-choice", "RULE", K::text, "nearest", 0, 0, "",
           choice_help("owner of a replicated cell a packet goes to", kReplicaRuleNames) +
               " (nearest: fewest hops, then lowest node; hash: of pixel and depth)",
