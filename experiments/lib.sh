@@ -175,3 +175,15 @@ study_args() {
     [ ${#positional[@]} -lt 2 ] || JOBS=${positional[1]}
     set_build "$BUILD"
 }
+
+# study_dirs NAME [PICTURES]: a study's folders: here (experiments/NAME), root, build, res
+# (here/results), work (res/points, made) and pics (docs/PICTURES, default docs/NAME, made).
+study_dirs() {
+    here="$EXP/$1"
+    root=$REPO
+    build=$BUILD
+    res="$here/results"
+    work="$res/points"
+    pics="$root/docs/${2:-$1}"
+    mkdir -p "$work" "$pics"
+}

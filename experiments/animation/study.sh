@@ -16,13 +16,7 @@ set -euo pipefail
 source "$(dirname "$0")/../lib.sh"
 JOBS=2
 study_args "$@"
-here="$EXP/animation"
-root=$REPO
-build=$BUILD
-res="$here/results"
-pics="$root/docs/animation"
-work="$res/points"
-mkdir -p "$work" "$pics"
+study_dirs animation
 frames=32 orbit=360 size=64x64
 dense="256 128" # the frame counts of the finer orbits (every policy but the preview; longest first)
 preview=0.015625 # the preview row's --remap-pilot: 1/64 of the pixels (8x8 of 64x64)

@@ -10,12 +10,7 @@ set -euo pipefail
 source "$(dirname "$0")/../lib.sh"
 JOBS=2
 study_args "$@"
-here="$EXP/calibration"
-root=$REPO
-build=$BUILD
-res="$here/results"
-work="$res/points"
-mkdir -p "$work" "$root/docs/calibration"
+study_dirs calibration
 
 costs=(0 50 340 580 1090 2180)
 maps=(block cyclic block-cyclic:2 block-cyclic:3 block-cyclic:4 block-cyclic:6)

@@ -11,13 +11,7 @@ set -euo pipefail
 source "$(dirname "$0")/../lib.sh"
 JOBS=2
 study_args "$@"
-here="$EXP/mapping"
-root=$REPO
-build=$BUILD
-res="$here/results"
-pics="$root/docs/mapping"
-work="$res/points"
-mkdir -p "$work" "$pics"
+study_dirs mapping
 scenes=(paper-image1 paper-image2 cones-and-patches facing-mirrors)
 t1() { # SCENE; T(1): no hand-overs, so the same under both profiles
   "$build/torusrt-sim" "$root/scenes/$1.nff" -o "$work/$1.png" --stats "$work/$TAG.part.json" -q

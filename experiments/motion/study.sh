@@ -16,13 +16,7 @@ source "$(dirname "$0")/../lib.sh"
 JOBS=2
 study_args "$@"
 start=$(date +%s)
-here="$EXP/motion"
-root=$REPO
-build=$BUILD
-res="$here/results"
-pics="$root/docs/motion"
-work="$res/points"
-mkdir -p "$work" "$pics"
+study_dirs motion
 size=64x64
 scenes=(bouncing-balls orbiting-mirror)
 reference() { # SCENE: the renderer's frames, the golden images

@@ -14,13 +14,7 @@ source "$(dirname "$0")/../lib.sh"
 JOBS=2
 study_args "$@"
 start=$(date +%s)
-here="$EXP/scaling"
-root=$REPO
-build=$BUILD
-res="$here/results"
-pics="$root/docs/scaling"
-work="$res/points"
-mkdir -p "$work" "$pics"
+study_dirs scaling
 scenes=(paper-image1 paper-image2 cones-and-patches facing-mirrors)
 ref() { # SCENE: the renderer's image (the golden one) and T(1), the one-processor run's time
   "$build/torusrt-render" "$root/scenes/$1.nff" -o "$work/$1.png" -q
