@@ -127,7 +127,9 @@ def findings(table, frames, ok):
              f"**{'yes' if never else 'NO'}** ({'; '.join(parts)}). Over all processors the update does "
              + ", ".join(f"{100 * int(r['update_units']) / int(r['rebuild_units']):.1f} % of a rebuild's units "
                          f"({sc})" for sc, r in sorted({k[0]: table[k]['adaptive'] for k in table}.items()))
-             + ".")
+             + ". Where one object moved and a rebuild gives each processor at most one object (as many "
+             "processors as objects or more), the rebuild takes as long as its costliest object and the update "
+             "as long as the moved one: the ratio reaches 1.00 on frames where they are the same object.")
     share = ", ".join(f"{k[0]} {k[1]} nodes {100 * float(table[k]['adaptive']['motion_time_s']) / total(table[k]['adaptive']):.1f} %"
                       for k in cases(table))
     L.append(f"- **Update and its transfers against the render**: share of adaptive's total spent updating lists "
