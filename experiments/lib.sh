@@ -187,3 +187,14 @@ study_dirs() {
     pics="$root/docs/${2:-$1}"
     mkdir -p "$work" "$pics"
 }
+
+# study_elapsed WORK START: the seconds the study has taken, this run (from START, epoch
+# seconds) added to the earlier runs that kept WORK's points, so a resumed study reports its
+# whole time, not the resume's (kept in WORK/elapsed_s; gone with the points).
+study_elapsed() {
+    local f="$1/elapsed_s" before=0
+    [ ! -f "$f" ] || before=$(cat "$f")
+    echo $((before + $(date +%s) - $2)) >"$f.tmp"
+    mv -f "$f.tmp" "$f"
+    cat "$f"
+}

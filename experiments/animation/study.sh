@@ -94,6 +94,6 @@ run_points "$work/run" animation "$work/phase1.list" "$work/phase2.list"
   printf 'scene\tn\tpolicy\tframes\ttotal_s\timage_time_s\tmigration_time_s\tmapping_changes\tconserved\timages_identical\twall_s\n'
   study_rows "$work/phase2.list" dense | sort -t$'\t' -k1,1 -k2,2n -k4,4n -k3,3
 } > "$res/density.tsv"
-elapsed=$(( $(date +%s) - start ))
+elapsed=$(study_elapsed "$work" "$start")
 python3 "$root/experiments/report/animation.py" "$res" "$root/docs/animation.md" "$pics" \
   "$root/experiments/plots/animation.gp" "${JOBS:-$BACKEND}" "$elapsed"

@@ -72,4 +72,4 @@ for sc in "${scenes[@]}"; do
   for k in 0 8 16 24 32 40 48 56; do printf 'points/ref-%s/f_%03d.png\n' "$sc" "$k"; done
 done > "$res/strip.list"
 python3 "$here/report.py" "$res" "$root/docs/motion.md" "$pics" "$here" \
-  "${JOBS:-$BACKEND}" "$(($(date +%s) - start))"
+  "${JOBS:-$BACKEND}" "$(study_elapsed "$work" "$start")"

@@ -66,4 +66,4 @@ for mc in flat-cost flat-cost-r0.5 flat-cost-r1.0; do
   r=${mc#flat-cost}; r=${r#-r}
   sed 's/^/'"$mc"'\t/' "$work/point_paper-image2_${mc}_8x8x8_1_replicated_cost_${r:-0}.busy"
 done > "$res/busy-paper-image2-512.tsv"
-python3 "$here/report.py" "$res" "$root/docs/scaling.md" "$pics" "$here" "$JOBS" "$(($(date +%s) - start))"
+python3 "$here/report.py" "$res" "$root/docs/scaling.md" "$pics" "$here" "$JOBS" "$(study_elapsed "$work" "$start")"
