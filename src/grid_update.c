@@ -102,7 +102,9 @@ static void merge_lists(const rt_grid *g, const uint8_t *moved, const moved_pair
 /* Checks the update's input; RT_OK or RT_ERR_INVALID with a message. */
 static rt_status check_input(const rt_grid *g, const rt_scene *s, const uint8_t *moved, char *msg, size_t msg_len)
 {
-    if (!s || !moved) return fail(msg, msg_len, RT_ERR_INVALID, "no scene or no moved flags given for the update");
+    /* A scene without objects has no flags to give (an empty array may be a null pointer). */
+    if (!s || (!moved && s->object_count))
+        return fail(msg, msg_len, RT_ERR_INVALID, "no scene or no moved flags given for the update");
     if (s->object_count != g->object_count) {
         if (msg && msg_len)
             snprintf(msg, msg_len, "the scene holds %zu objects, the grid was built for %zu", s->object_count,

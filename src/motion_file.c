@@ -122,11 +122,6 @@ static rt_status statement_objects(reader *r, char **tok, int n)
     rt_motion *m = r->m;
     if (m->entry_count == RT_MOTION_MAX_ENTRIES)
         return fail(r, RT_ERR_LIMIT, "more than %u 'objects' lines", RT_MOTION_MAX_ENTRIES);
-    for (size_t i = 0; i < m->entry_count; i++)
-        if (first <= m->entries[i].last && m->entries[i].first <= last)
-            return fail(r, RT_ERR_PARSE,
-                        "objects %u-%u overlap objects %u-%u of line %zu (an object moves by one entry)", first, last,
-                        m->entries[i].first, m->entries[i].last, m->entries[i].line);
     if (grow((void **)&m->entries, &m->entry_capacity, m->entry_count + 1, sizeof *m->entries))
         return fail(r, RT_ERR_NOMEM, "out of memory");
     motion_entry *e = &m->entries[m->entry_count++];
@@ -149,10 +144,14 @@ static rt_status statement_pivot_axis(reader *r, char **tok, int n, int is_axis)
     rt_status st = parse_vec(r, tok[0], tok, n, 1, &v);
     if (st != RT_OK) return st;
     if (is_axis) {
-        double len = rt_vec_length(v);
-        if (!(len > 0.0) || !isfinite(len))
-            return fail(r, RT_ERR_PARSE, "axis 0 0 0: a rotation axis needs a direction");
-        e->axis = rt_vec_scale(v, 1.0 / len);
+        /* Scaled by its largest component first, so that 1e-200 or 1e30 keeps its direction
+         * (the squares would underflow or overflow). */
+        double big = fmax(fabs(v.x), fmax(fabs(v.y), fabs(v.z)));
+        if (!(big > 0.0))
+            return fail(r, RT_ERR_PARSE, "axis %.40s %.40s %.40s: a rotation axis needs a direction", tok[1], tok[2],
+                        tok[3]);
+        rt_vec3 u = rt_vec(v.x / big, v.y / big, v.z / big); /* 1 / big overflows for a subnormal big */
+        e->axis = rt_vec_scale(u, 1.0 / rt_vec_length(u));
     } else {
         e->pivot = v;
     }
@@ -249,10 +248,46 @@ static rt_status next_line(reader *r, const char *text, size_t length, size_t *a
     return RT_OK;
 }
 
-/* After the last line: every entry has a key; the frame count is known. */
+static int by_first_then_line(const void *a, const void *b)
+{
+    const motion_entry *x = *(const motion_entry *const *)a, *y = *(const motion_entry *const *)b;
+    if (x->first != y->first) return x->first < y->first ? -1 : 1;
+    return x->line < y->line ? -1 : x->line > y->line;
+}
+
+/* An object moves by one entry: sorted by first object, an entry overlaps an earlier one if it
+ * starts at or before the furthest end so far. Of the pairs found, the one whose later line comes
+ * first is reported, at that line. */
+static rt_status check_overlaps(reader *r)
+{
+    rt_motion *m = r->m;
+    if (m->entry_count < 2) return RT_OK;
+    const motion_entry **order = malloc(m->entry_count * sizeof *order);
+    if (!order) return fail(r, RT_ERR_NOMEM, "out of memory");
+    for (size_t i = 0; i < m->entry_count; i++) order[i] = &m->entries[i];
+    qsort(order, m->entry_count, sizeof *order, by_first_then_line);
+    const motion_entry *furthest = order[0], *early = NULL, *late = NULL;
+    for (size_t i = 1; i < m->entry_count; i++) {
+        const motion_entry *e = order[i];
+        if (e->first <= furthest->last) {
+            const motion_entry *a = e->line < furthest->line ? e : furthest, *b = a == e ? furthest : e;
+            if (!late || b->line < late->line) early = a, late = b;
+        }
+        if (e->last > furthest->last) furthest = e;
+    }
+    free(order);
+    if (!late) return RT_OK;
+    r->line = late->line;
+    return fail(r, RT_ERR_PARSE, "objects %u-%u overlap objects %u-%u of line %zu (an object moves by one entry)",
+                late->first, late->last, early->first, early->last, early->line);
+}
+
+/* After the last line: entries do not overlap, every entry has a key; the frame count is known. */
 static rt_status finish(reader *r)
 {
     rt_motion *m = r->m;
+    rt_status st = check_overlaps(r);
+    if (st != RT_OK) return st;
     uint32_t last_key = 0;
     for (size_t i = 0; i < m->entry_count; i++) {
         const motion_entry *e = &m->entries[i];

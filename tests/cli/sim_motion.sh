@@ -3,7 +3,7 @@
 # renderer's frames byte for byte on a flat torus and on clusters sharing their data, with packets
 # conserved; the update's units equal the renderer's; the JSON's motion figures add up and the
 # frames wait for their updates; every --remap policy gives the renderer's frames; --orbit moves
-# the camera as well; a bad motion file, --frames against the file and replicated cells are exit 2
+# the camera as well; a scene without objects runs; a bad motion file, --frames against the file and replicated cells are exit 2
 # with no output.
 #
 # Usage (CTest runs it so): bash tests/cli/sim_motion.sh BUILD_DIR SOURCE_DIR
@@ -115,6 +115,20 @@ if sim_ok orbit "$scene" "${size[@]}" --ips 2x2 --motion "$motion" --orbit 40 -o
     --stats "$TMP/orbit.json"; then
     check "motion + orbit: the renderer's frames" diff -r "$TMP/orbit-ref" "$TMP/orbit"
     check "motion + orbit: camera_source orbit" [ "$(json "$TMP/orbit.json" .camera_source)" = orbit ]
+fi
+
+# A scene without objects (only a view and lights) under a motion file of two frames: both
+# executables run it, nothing moves, the frames are equal.
+sed -n '/^[sp] /q;p' "$(source_scene bouncing-balls)" | grep -v '^f ' >"$TMP/empty.nff"
+printf 'frames 2\n' >"$TMP/still.motion"
+check "the empty scene has no object" [ "$(grep -c '^[spc] ' "$TMP/empty.nff")" = 0 ]
+mkdir "$TMP/empty"
+if ref_ok empty-ref "$TMP/empty.nff" "$TMP/empty-ref" "${size[@]}" --motion "$TMP/still.motion" &&
+    sim_ok empty "$TMP/empty.nff" "${size[@]}" --ips 2x2 --motion "$TMP/still.motion" -o "$TMP/empty/f_%d.png" \
+        --stats "$TMP/empty.json"; then
+    check "empty scene: the renderer's frames" diff -r "$TMP/empty-ref" "$TMP/empty"
+    check "empty scene: 2 frames, nothing moved" \
+        [ "$(json "$TMP/empty.json" '[(.frames | length), .motion.objects_moved] | tostring')" = "[2,0]" ]
 fi
 
 # Refused: exit 2, the file and line or the option, no frame and no stats.

@@ -243,6 +243,23 @@ TEST(GridUpdate, RefusesAnObjectOutsideTheSpaceAndLeavesTheGrid)
     EXPECT_STREQ(msg, "the scene holds 0 objects, the grid was built for 2");
 }
 
+// A scene without objects has no moved flags to give (an empty vector's data may be null): the
+// update is a no-op, not an error.
+TEST(GridUpdate, AnEmptySceneNeedsNoFlags)
+{
+    ScenePtr s(rt_scene_new());
+    rt_scene_set_view(s.get(), rt_vec(0, 0, 10), rt_vec(0, 0, 0), rt_vec(0, 1, 0), 45, 8, 8);
+    rt_scene_finish(s.get(), nullptr, 0);
+    char msg[256] = "";
+    GridPtr g(rt_grid_new(s.get(), 2, 2, 2, msg, sizeof msg));
+    ASSERT_NE(g, nullptr) << msg;
+    rt_grid_update_stats st;
+    std::memset(&st, 0xff, sizeof st);
+    EXPECT_EQ(rt_grid_update(g.get(), s.get(), nullptr, nullptr, &st, msg, sizeof msg), RT_OK) << msg;
+    EXPECT_EQ(st.units, 0u);
+    EXPECT_EQ(st.objects_moved, 0u);
+}
+
 TEST(GridUpdate, GrowthIsChargedToTheBudget)
 {
     ScenePtr s = two_spheres();

@@ -139,6 +139,12 @@ TEST(MotionFile, EveryErrorNamesFileAndLine)
         {"objects 0\npivot 0 0 0\npivot 1 1 1\n",
          "t.motion:3: a second 'pivot' line in this entry (the first is line 2)"},
         {"objects 0\naxis 0 0 0\n", "t.motion:2: axis 0 0 0: a rotation axis needs a direction"},
+        {"objects 0\naxis -0 0e5 0.0\n", "t.motion:2: axis -0 0e5 0.0: a rotation axis needs a direction"},
+        /* The overlap is found wherever it is in the file, and said at the later line. */
+        {"objects 0 9\nkey 0\nobjects 20\nkey 0\nobjects 12\nkey 0\nobjects 9 11\nkey 0\n",
+         "t.motion:7: objects 9-11 overlap objects 0-9 of line 1"},
+        {"objects 30\nkey 0\nobjects 5 40\nkey 0\nobjects 6\nkey 0\n",
+         "t.motion:3: objects 5-40 overlap objects 30-30 of line 1"},
         {"objects 0\naxis 0 nan 1\n", "t.motion:2: axis 'nan' is not a number"},
         {"objects 0\nkey 0 move 1 2\n", "t.motion:2: move needs three numbers"},
         {"objects 0\nkey 0 move 1e31 0 0\n", "t.motion:2: move '1e31' is not finite or above 1e30"},
@@ -229,6 +235,37 @@ TEST(MotionApply, RotationAboutAPivotByHand)
     double h = std::sqrt(0.5);
     expect_near(center(at_frame(m.get(), s.get(), 1).get(), 1), rt_vec(1 + h, h, 0), 1e-15);
     EXPECT_EQ(s->objects[1].u.sphere.radius, at_frame(m.get(), s.get(), 1)->objects[1].u.sphere.radius);
+}
+
+// An axis of tiny or huge components keeps its direction: its squares would underflow to 0 or
+// overflow, so it is scaled before it is normalised.
+TEST(MotionApply, TinyAndHugeAxesTurnLikeUnitOnes)
+{
+    ScenePtr s = five_objects();
+    const char *unit = "objects 1\npivot 1 0 0\naxis 0 0 1\nkey 0\nkey 1 turn 90\n";
+    MotionPtr want = parse(unit);
+    ASSERT_NE(want, nullptr);
+    rt_vec3 c = center(at_frame(want.get(), s.get(), 1).get(), 1);
+    for (const char *axis : {"0 0 1e-200", "0 0 4e-320", "0 0 1e30", "1e-300 -1e-300 1e30"}) {
+        std::string text = std::string("objects 1\npivot 1 0 0\naxis ") + axis + "\nkey 0\nkey 1 turn 90\n";
+        MotionPtr m = parse(text);
+        ASSERT_NE(m, nullptr) << axis;
+        expect_near(center(at_frame(m.get(), s.get(), 1).get(), 1), c, 1e-15);
+    }
+    expect_near(c, rt_vec(1, 1, 0), 0);
+}
+
+// At the limit of 'objects' lines, with one pair overlapping far apart in the file.
+TEST(MotionFile, ManyEntriesAndOneOverlapFarApart)
+{
+    std::string text = "frames 2\n";
+    for (unsigned i = 0; i < RT_MOTION_MAX_ENTRIES - 1; i++) text += "objects " + std::to_string(2 * i) + "\nkey 0\n";
+    MotionPtr m = parse(text);
+    ASSERT_NE(m, nullptr);
+    EXPECT_EQ(rt_motion_entry_count(m.get()), RT_MOTION_MAX_ENTRIES - 1);
+    std::string error = refused(text + "objects 3 4\nkey 0\n");
+    EXPECT_EQ(error, "t.motion:" + std::to_string(2 * RT_MOTION_MAX_ENTRIES) +
+                         ": objects 3-4 overlap objects 4-4 of line 6 (an object moves by one entry)");
 }
 
 TEST(MotionApply, ZeroAndFullTurnsAreExactlyTheIdentity)
