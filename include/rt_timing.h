@@ -50,9 +50,14 @@ typedef struct rt_timing {
 void rt_timing_defaults(rt_timing *timing);
 
 /* A named profile (the files in timing/): "literal" (a hand-over costs a packet
- * creation plus an analysis) or "calibrated" (the hand-over cost the calibration
- * study supports; the defaults). RT_ERR_INVALID naming an unknown profile. */
+ * creation plus an analysis), "calibrated" (the hand-over cost the calibration
+ * study supports; the defaults) or "fitted" (calibrated with the bus and memory timing
+ * the fidelity study fitted). RT_ERR_INVALID naming an unknown profile. */
 rt_status rt_timing_profile(const char *name, rt_timing *timing, char *msg, size_t msg_len);
+
+/* Number of built-in profiles and the i-th one's name (NULL past the end). */
+size_t rt_timing_profile_count(void);
+const char *rt_timing_profile_name(size_t index);
 
 /* The name of the built-in profile the defaults are. */
 const char *rt_timing_default_profile(void);

@@ -55,30 +55,43 @@ void rt_timing_defaults(rt_timing *t)
     for (size_t i = 0; i < KEY_COUNT; i++) *field(t, i) = keys[i].default_value;
 }
 
-/* Profiles: the defaults with these hand-over costs (send, receive). */
+/* Profiles: the defaults with these hand-over costs (send, receive) and cluster bus and memory
+ * timing (cycle, access). */
 typedef struct timing_profile {
     const char *name;
     double handover_send, handover_receive;
+    double bus_cycle, memory_access;
 } timing_profile;
 
 static const timing_profile profiles[] = {
-    {"calibrated", 0.0, 0.0},
-    {"literal", 1600.0, 580.0},
+    {"calibrated", 0.0, 0.0, 0.5, 0.5},
+    {"literal", 1600.0, 580.0, 0.5, 0.5},
+    /* The fidelity study's fit (docs/fidelity.md): bus and memory timing on the shared-data
+     * penalty, the hand-over on the 1024-processor times. */
+    {"fitted", 0.0, 0.0, 2.0, 2.0},
 };
+#define PROFILE_COUNT (sizeof profiles / sizeof profiles[0])
 
 const char *rt_timing_default_profile(void) { return "calibrated"; }
 
+size_t rt_timing_profile_count(void) { return PROFILE_COUNT; }
+
+const char *rt_timing_profile_name(size_t index) { return index < PROFILE_COUNT ? profiles[index].name : NULL; }
+
 rt_status rt_timing_profile(const char *name, rt_timing *t, char *msg, size_t msg_len)
 {
-    for (size_t i = 0; i < sizeof profiles / sizeof profiles[0]; i++) {
+    for (size_t i = 0; i < PROFILE_COUNT; i++) {
         if (!name || strcmp(profiles[i].name, name) != 0) continue;
         rt_timing_defaults(t);
         t->handover_send_us = profiles[i].handover_send;
         t->handover_receive_us = profiles[i].handover_receive;
+        t->bus_cycle_us = profiles[i].bus_cycle;
+        t->memory_access_us = profiles[i].memory_access;
         return RT_OK;
     }
     if (msg && msg_len)
-        snprintf(msg, msg_len, "unknown timing profile '%s' (expected calibrated or literal)", name ? name : "");
+        snprintf(msg, msg_len, "unknown timing profile '%s' (expected calibrated, literal or fitted)",
+                 name ? name : "");
     return RT_ERR_INVALID;
 }
 

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "rt_timing.h"
 
@@ -225,6 +227,47 @@ TEST(Timing, ProfilesDifferOnlyInTheHandOver)
     EXPECT_STREQ(rt_timing_default_profile(), "calibrated");
     EXPECT_EQ(rt_timing_profile("nonesuch", &lit, msg, sizeof msg), RT_ERR_INVALID);
     EXPECT_NE(std::string(msg).find("nonesuch"), std::string::npos) << msg;
+}
+
+// The fitted profile is the calibrated one with the fidelity study's bus and memory timing.
+TEST(Timing, FittedIsCalibratedWithSlowerBusAndMemory)
+{
+    rt_timing fit, cal;
+    char msg[RT_MSG_LEN] = "";
+    ASSERT_EQ(rt_timing_profile("fitted", &fit, msg, sizeof msg), RT_OK) << msg;
+    ASSERT_EQ(rt_timing_profile("calibrated", &cal, msg, sizeof msg), RT_OK) << msg;
+    EXPECT_EQ(fit.bus_cycle_us, 2.0);
+    EXPECT_EQ(fit.memory_access_us, 2.0);
+    for (size_t i = 0; i < rt_timing_key_count(); i++) {
+        std::string k = rt_timing_key_name(i);
+        if (k == "bus_cycle" || k == "memory_access") continue;
+        EXPECT_EQ(rt_timing_get(&fit, i), rt_timing_get(&cal, i)) << k;
+    }
+}
+
+// Each built-in profile's file in timing/ holds its values, every key written out; the machine
+// files' timing file is the fitted profile.
+TEST(Timing, ProfileFilesHoldTheProfiles)
+{
+    ASSERT_EQ(rt_timing_profile_count(), 3u);
+    EXPECT_EQ(rt_timing_profile_name(3), nullptr);
+    const std::string src = TORUSRT_SOURCE_DIR;
+    std::vector<std::pair<std::string, std::string>> pairs;
+    for (size_t p = 0; p < rt_timing_profile_count(); p++)
+        pairs.emplace_back(rt_timing_profile_name(p), src + "/timing/" + rt_timing_profile_name(p) + ".timing");
+    pairs.emplace_back("fitted", src + "/machines/timing/fitted.timing");
+    for (const auto &[name, path] : pairs) {
+        rt_timing want, got;
+        char msg[RT_MSG_LEN] = "";
+        ASSERT_EQ(rt_timing_profile(name.c_str(), &want, msg, sizeof msg), RT_OK) << msg;
+        /* Loaded over values no key has, so a key the file leaves out shows. */
+        rt_timing_defaults(&got);
+        for (size_t i = 0; i < rt_timing_key_count(); i++)
+            ASSERT_EQ(rt_timing_set(&got, rt_timing_key_name(i), 12345.0, msg, sizeof msg), RT_OK) << msg;
+        ASSERT_EQ(rt_timing_load(path.c_str(), &got, msg, sizeof msg), RT_OK) << msg;
+        for (size_t i = 0; i < rt_timing_key_count(); i++)
+            EXPECT_EQ(rt_timing_get(&got, i), rt_timing_get(&want, i)) << path << ": " << rt_timing_key_name(i);
+    }
 }
 
 TEST(Timing, LinkAndBusTimes)
