@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Benchmark (not a test): the simulator's cost per packet hop. paper-image1 at 144x144 on 24^3
+# Benchmark (not a test): the simulator's cost per packet hop. Image 1 in its planar layout
+# (paper-image1-planar: a fixed workload, so figures of different builds compare) at 144x144 on 24^3
 # cells with 16, 64, 512 and 4096 IPs (the same work at every size), and the 512-IP run on 64^3 cells at
 # 1024x1024; cyclic mapping. Per row: simulated image time, wall time of the simulation (sc_start,
 # after elaboration), that of the elaboration before it (building and binding the modules: a cost
@@ -18,7 +19,7 @@
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$here/build}
-scene=$here/scenes/paper-image1.nff
+scene=$here/scenes/paper-image1-planar.nff
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 trap 'echo "bench/sim.sh: line $LINENO failed (status $?)" >&2' ERR
 printf '%-10s %5s %6s %10s %9s %9s %7s %7s %8s %10s %11s %11s %10s %8s\n' \

@@ -21,10 +21,10 @@ set_build() {
 abspath() { local d; d=$(cd "$(dirname "$1")" && pwd) || return 1; echo "$d/$(basename "$1")"; }
 
 # The readings of the paper's unknowns a sweep runs under (docs/fidelity.md), each from the
-# environment, today's reading when unset:
+# environment, the reading's (use_reading, below) when unset:
 #   TORUSRT_SHAPE16        the arrangement of 16 nodes, flat and clustered (default 4x2x2)
-#   TORUSRT_LB_MAP         what the load-balancing ("cyclic") points run (default cyclic)
-#   TORUSRT_SCENE_IMAGE1/2 the scene files of image 1 and image 2 (default scenes/paper-imageN.nff)
+#   TORUSRT_LB_MAP         what the load-balancing ("cyclic") points run
+#   TORUSRT_SCENE_IMAGE1/2 the scene files of image 1 and image 2
 #   TORUSRT_POINT_ARGS     more torusrt-sim arguments for every point, split at spaces
 #   TORUSRT_MAPS           the full mode's mappings (default "block cyclic bc2 bc3")
 SHAPE16=${TORUSRT_SHAPE16:-4x2x2}
@@ -33,13 +33,30 @@ read -r -a POINT_ARGS <<<"${TORUSRT_POINT_ARGS:-}"
 declare -A SHAPE=([1]=1x1x1 [2]=2x1x1 [4]=2x2x1 [8]=2x2x2 [16]=$SHAPE16 [32]=4x4x2 [64]=4x4x4
                   [128]=8x4x4 [256]=8x8x4 [512]=8x8x8)
 # Mapping short names (used in point names and CSVs) and torusrt-sim arguments.
-declare -A MAPARG=([block]=block [cyclic]=${TORUSRT_LB_MAP:-cyclic} [bc2]=block-cyclic:2 [bc3]=block-cyclic:3)
+declare -A MAPARG=([block]=block [cyclic]=cyclic [bc2]=block-cyclic:2 [bc3]=block-cyclic:3)
 # The cluster study: 16 clusters on a 4x2x2 torus, load-balancing mapping at the cluster level.
 CLUSTER_SHAPE=$SHAPE16
 CLUSTER_NODES=16
-# The timing profiles swept (torusrt-sim --timing-profile), the default first: each has its own
-# results folder RESULTS/PROFILE with the same points, CSVs and plots.
-PROFILES=(calibrated literal)
+# The readings swept, the default first: each has its own results folder RESULTS/READING with the
+# same points, CSVs and plots (docs/readings.md).
+#   fitted      --timing-profile fitted, image 1 scenes/paper-image1.nff, the load-balancing
+#               mapping block-cyclic:3: the machine files' reading (docs/fidelity.md)
+#   calibrated  --timing-profile calibrated, image 1 scenes/paper-image1-planar.nff, cyclic: the
+#               reading before the fit
+#   literal     --timing-profile literal, the planar image 1, cyclic
+READINGS=(fitted calibrated literal)
+
+# use_reading NAME: PROFILE, IMAGE1 (a file in scenes/) and the load-balancing mapping of reading
+# NAME; TORUSRT_SCENE_IMAGE1 and TORUSRT_LB_MAP still win.
+use_reading() {
+    case $1 in
+        fitted) PROFILE=fitted IMAGE1=paper-image1.nff MAPARG[cyclic]=block-cyclic:3 ;;
+        calibrated|literal) PROFILE=$1 IMAGE1=paper-image1-planar.nff MAPARG[cyclic]=cyclic ;;
+        *) die "the reading must be one of: ${READINGS[*]}, not '$1'" ;;
+    esac
+    MAPARG[cyclic]=${TORUSRT_LB_MAP:-${MAPARG[cyclic]}}
+    READING=$1
+}
 
 # Sweep definition per mode: image size, scenes, IP counts, mappings, processors per cluster.
 # define_mode full|quick
@@ -70,7 +87,7 @@ define_mode() {
 
 scene_file() {
     case $1 in
-        image1) echo "${TORUSRT_SCENE_IMAGE1:-$REPO/scenes/paper-image1.nff}" ;;
+        image1) echo "${TORUSRT_SCENE_IMAGE1:-$REPO/scenes/${IMAGE1:-paper-image1.nff}}" ;;
         image2) echo "${TORUSRT_SCENE_IMAGE2:-$REPO/scenes/paper-image2.nff}" ;;
         *) echo "$REPO/scenes/paper-$1.nff" ;;
     esac

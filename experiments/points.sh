@@ -2,10 +2,12 @@
 # points.sh - print the reproduction's points, one command line per point.
 #
 #   experiments/points.sh [--build DIR] [--phase 1|2|all] [--tsv] [--no-clusters]
-#                         [--profile calibrated|literal] full|quick RESULTS_DIR
+#                         [--reading fitted|calibrated|literal] full|quick RESULTS_DIR
 #
-# Every point runs under the timing profile given (--timing-profile; default calibrated): the
-# sweep lists each profile into its own RESULTS_DIR (experiments/results/PROFILE).
+# Every point runs under the reading given (experiments/lib.sh use_reading: a timing profile, the
+# image 1 scene and the load-balancing mapping; default fitted): the sweep lists each reading into
+# its own RESULTS_DIR (experiments/results/READING). A mapping that runs what the load-balancing
+# points run (block-cyclic:3 under fitted) is left out.
 # Phase 1 is the one-processor run of each scene (RESULTS/t1/<scene>.json); every phase-2
 # point reads its T(1) from there (--t1-from), so phase 1 must finish first. Each command runs
 # experiments/run_point.sh, which writes RESULTS/<fig>/<point>.json (and .png) through a temporary
@@ -18,22 +20,22 @@
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
 
-phase=all tsv=0 build=$BUILD clusters=1 profile=calibrated
+phase=all tsv=0 build=$BUILD clusters=1 reading=${READINGS[0]}
 while [ $# -gt 0 ]; do
     case $1 in
         --build) build=$2; shift 2 ;;
         --phase) phase=$2; shift 2 ;;
         --tsv) tsv=1; shift ;;
         --no-clusters) clusters=0; shift ;;
-        --profile) profile=$2; shift 2 ;;
+        --reading) reading=$2; shift 2 ;;
         -h|--help) sed -n '2,/^set -e/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
         -*) die "unknown option '$1'" ;;
         *) break ;;
     esac
 done
-[ $# -eq 2 ] || die "usage: points.sh [--build DIR] [--phase 1|2|all] [--tsv] [--no-clusters] [--profile P] full|quick RESULTS_DIR"
+[ $# -eq 2 ] || die "usage: points.sh [--build DIR] [--phase 1|2|all] [--tsv] [--no-clusters] [--reading R] full|quick RESULTS_DIR"
 case $phase in 1|2|all) ;; *) die "--phase must be 1, 2 or all" ;; esac
-case " ${PROFILES[*]} " in *" $profile "*) ;; *) die "--profile must be one of: ${PROFILES[*]}" ;; esac
+use_reading "$reading"
 define_mode "$1"
 [ "$clusters" = 1 ] || CLUSTER_SCENES=()
 set_build "$build"
@@ -47,7 +49,7 @@ emit() {
     local json=$RES/$fig/$name.json cmd
     cmd=$(printf '%q ' "$EXP/run_point.sh" "$json")
     [ -n "$t1" ] && cmd+=$(printf '%q ' --t1-from "$t1")
-    cmd+=$(printf '%q ' -- "$SIM" "$(scene_file "$scene")" --size "$SIZE" --timing-profile "$profile" "${POINT_ARGS[@]}" "$@")
+    cmd+=$(printf '%q ' -- "$SIM" "$(scene_file "$scene")" --size "$SIZE" --timing-profile "$PROFILE" "${POINT_ARGS[@]}" "$@")
     cmd=${cmd% }
     if [ "$tsv" = 1 ]; then
         printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$fig" "$name" "$scene" "$map" "$n" "$shape" "$m" "$data" "$json" "$cmd"
@@ -77,6 +79,7 @@ if [ "$phase" != 1 ]; then
         n=${NLIST[i]}
         for s in "${SCENES[@]}"; do
             for map in "${MAPS[@]}"; do
+                [ "$map" != cyclic ] && [ "${MAPARG[$map]}" = "${MAPARG[cyclic]}" ] && continue
                 emit fig5_6 "$s-$map-n$n" "$s" "$map" "$n" "${SHAPE[$n]}" 1 replicated \
                     "$RES/t1/$s.json" --ips "${SHAPE[$n]}" --map "${MAPARG[$map]}"
             done

@@ -24,8 +24,8 @@
 #   --no-report          run the points only
 #   --no-clusters        leave out figures 10-12 (for builds without the cluster model)
 #
-# Every point runs under each timing profile (experiments/lib.sh PROFILES: calibrated, the
-# default, and literal); RES/PROFILE holds that profile's JSONs, CSVs and plots, RES the point
+# Every point runs under each reading (experiments/lib.sh READINGS: fitted, the default, and
+# calibrated and literal); RES/READING holds that reading's JSONs, CSVs and plots, RES the point
 # lists, joblogs and runs.tsv. The one-processor points (phase 1) run first, since every other point takes its T(1) from
 # them. Points already done are skipped, so an interrupted or partly failed sweep is resumed by
 # running the same command again. Failed points are listed with their command lines (from
@@ -58,21 +58,21 @@ if [ -z "$doc" ]; then
     if [ "$mode" = full ]; then doc=$REPO/docs/reproduction.md; else doc=$RES/reproduction.md; fi
 fi
 
-# One results folder per timing profile (RES/PROFILE), listed together so that one parallel
-# run per phase covers both.
+# One results folder per reading (RES/READING), listed together so that one parallel run per
+# phase covers them all.
 : >"$RES/points.phase1"
 : >"$RES/points.phase2"
-for p in "${PROFILES[@]}"; do
+for p in "${READINGS[@]}"; do
     mkdir -p "$RES/$p"
-    "$EXP/points.sh" "${popt[@]}" --build "$BUILD" --profile "$p" --tsv "$MODE" "$RES/$p" >"$RES/$p/points.tsv" || die "points.sh failed"
+    "$EXP/points.sh" "${popt[@]}" --build "$BUILD" --reading "$p" --tsv "$MODE" "$RES/$p" >"$RES/$p/points.tsv" || die "points.sh failed"
     echo "$MODE" >"$RES/$p/mode"
     for ph in 1 2; do  # the point lists of experiments/backend: JSON, tab, command
-        "$EXP/points.sh" "${popt[@]}" --build "$BUILD" --profile "$p" --tsv --phase $ph "$MODE" "$RES/$p" |
+        "$EXP/points.sh" "${popt[@]}" --build "$BUILD" --reading "$p" --tsv --phase $ph "$MODE" "$RES/$p" |
             cut -f9,10 >>"$RES/points.phase$ph"
     done
 done
 echo "$MODE" >"$RES/mode"
-for p in "${PROFILES[@]}"; do cat "$RES/$p/points.tsv"; done >"$RES/points.tsv"
+for p in "${READINGS[@]}"; do cat "$RES/$p/points.tsv"; done >"$RES/points.tsv"
 total=$(wc -l <"$RES/points.tsv")
 echo "sweep: $MODE mode, $total points, results in $RES"
 RUN_POINTS_OPTS=(--runs "$RES/runs.tsv" --label "$MODE")
@@ -82,7 +82,7 @@ status=$?
 merge_joblogs "$RES"
 
 if [ "$report" = 1 ]; then
-    for p in "${PROFILES[@]}"; do
+    for p in "${READINGS[@]}"; do
         python3 "$EXP/report" collect "$RES/$p" || status=1
     done
     python3 "$EXP/report" plots "$RES" || status=1

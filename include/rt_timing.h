@@ -39,9 +39,9 @@ typedef struct rt_timing {
     double packet_bytes;        /* packet size on the wire, bytes (28) */
     double host_inject_us;      /* host time to inject one primary packet (0) */
     double bus_width_bytes;     /* cluster bus data width, bytes per cycle (2) */
-    double bus_cycle_us;        /* cluster bus cycle (0.5) */
+    double bus_cycle_us;        /* cluster bus cycle (2) */
     double bus_arbitration_us;  /* arbitration before each bus transfer (0.25) */
-    double memory_access_us;    /* 2-port memory access latency from the bus side (0.5) */
+    double memory_access_us;    /* 2-port memory access latency from the bus side (2) */
     double handover_send_us;    /* sending IP: hand a packet on to the next cell's owner */
     double handover_receive_us; /* receiving IP: take up a packet another IP handed over */
     double preprocess_unit_us;  /* one half-space test of a moving scene's cell-list update (340) */
@@ -51,8 +51,8 @@ void rt_timing_defaults(rt_timing *timing);
 
 /* A named profile (the files in timing/): "literal" (a hand-over costs a packet
  * creation plus an analysis), "calibrated" (the hand-over cost the calibration
- * study supports; the defaults) or "fitted" (calibrated with the bus and memory timing
- * the fidelity study fitted). RT_ERR_INVALID naming an unknown profile. */
+ * study supports) or "fitted" (calibrated with the bus and memory timing the fidelity
+ * study fitted; the defaults). RT_ERR_INVALID naming an unknown profile. */
 rt_status rt_timing_profile(const char *name, rt_timing *timing, char *msg, size_t msg_len);
 
 /* Number of built-in profiles and the i-th one's name (NULL past the end). */

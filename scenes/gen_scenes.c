@@ -43,13 +43,13 @@ typedef struct {
 } scene_def;
 
 static const scene_def SCENES[] = {
-    {"paper-image1", "the paper's image 1: 369 recursively defined diffuse spheres, 144x144", build_paper_image1, 1},
+    {"paper-image1", "the paper's image 1: 369 recursively defined diffuse spheres (columns at z = -5, 0, +5), 144x144",
+     build_paper_image1, 1},
     {"paper-image2",
      "the paper's image 2: glass and mirror sphere before 121 small spheres, "
      "144x144",
      build_paper_image2, 1},
-    {"paper-image1-planar-z", "image 1's nine flakes with the grid's columns at z = -5, 0, +5",
-     build_paper_image1_planar_z, 1},
+    {"paper-image1-planar", "image 1's nine flakes in one plane, z = 0", build_paper_image1_planar, 1},
     {"paper-image1-cube", "image 1's nine flakes at the centre and corners of a cube", build_paper_image1_cube, 1},
     {"paper-image1-tree", "image 1 as one four-level tree of 1 + 8 + 72 + 288 spheres", build_paper_image1_tree, 1},
     {"paper-image2-wall", "image 2 with the 121 small spheres on a wall behind the big ones", build_paper_image2_wall,

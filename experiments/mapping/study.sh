@@ -32,7 +32,7 @@ point() { # SCENE PROFILE MAP SHAPE
 }
 study_script "$work" "t1 point" "build root work"
 printf 't1\t%s\n' "${scenes[@]}" | study_list "$work" "$work/phase1.list"
-for sc in "${scenes[@]}"; do for p in calibrated literal; do
+for sc in "${scenes[@]}"; do for p in fitted literal; do
   for m in block cyclic block-cyclic:2 block-cyclic:3 cost; do
     for s in 2 2x2 2x2x2 4x2x2 4x4x2 4x4x4 8x4x4 8x8x4 8x8x8; do printf 'point\t%s\t%s\t%s\t%s\n' "$sc" "$p" "$m" "$s"; done
   done

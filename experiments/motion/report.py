@@ -10,9 +10,10 @@ transfers against the render time, and migration bytes; a per-frame time plot pe
 """
 import csv
 import os
-import subprocess
 import sys
 import tempfile
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from report.plots import gnuplot_kind  # noqa: E402
 
 POLICIES = ["adaptive", "every-frame", "oracle", "static", "cyclic"]
 ORACLE_WITHIN = 0.10   # adaptive within this fraction of oracle's total
@@ -179,12 +180,6 @@ def update_table(frames, scene, n):
     return L
 
 
-def gnuplot(gp, kind, data, png, title, ncol=0):
-    subprocess.run(["gnuplot", "-e", f"kind='{kind}'; data='{data}'; out='{png}'; ttl='{title}'; ncol={ncol}", gp],
-                   check=True)
-    return os.path.basename(png)
-
-
 def frame_plot(frames, scene, n, plot_dir, gp):
     rows = {}
     for f in frames:
@@ -198,7 +193,7 @@ def frame_plot(frames, scene, n, plot_dir, gp):
         out.write("frame " + " ".join(series) + "\n")
         for k in sorted(rows):
             out.write(f"{k} " + " ".join(f"{rows[k][p]:.6g}" if p in rows[k] else "-" for p in series) + "\n")
-    return gnuplot(gp, "frames", data, os.path.join(plot_dir, f"frames-{scene}-{n}.png"),
+    return gnuplot_kind(gp, "frames", data, os.path.join(plot_dir, f"frames-{scene}-{n}.png"),
                    f"{scene}, {n} nodes: time per frame; update: the list update alone (adaptive)", len(series) + 1)
 
 
@@ -211,7 +206,7 @@ def strip(res, plot_dir, gp):
     with tempfile.NamedTemporaryFile("w", suffix=".list") as f:
         f.write("\n".join(files) + "\n")
         f.flush()
-        return gnuplot(gp, "strip", f.name, os.path.join(plot_dir, "strip.png"), "", len(files))
+        return gnuplot_kind(gp, "strip", f.name, os.path.join(plot_dir, "strip.png"), "", len(files))
 
 
 def main(argv):

@@ -6,6 +6,8 @@ import csv
 import os
 import subprocess
 import sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from report import before_fit  # noqa: E402
 
 POLICIES = ["cyclic", "cost", "every-frame", "adaptive", "preview", "oracle"]
 POLICY_TEXT = {
@@ -107,15 +109,15 @@ def verdict(rows):
 # Adaptive's totals with a back-test that re-made each guess of frame k-1 from the
 # table then in force instead of scoring the tables the guesses gave before frame k-1 ran.
 BEFORE = {("paper-image2", 512): 30.180, ("paper-image2", 64): 82.032,
-          ("paper-image1", 512): 10.580, ("paper-image1", 64): 45.356}
+          ("paper-image1-planar", 512): 10.580, ("paper-image1-planar", 64): 45.356}
 BEFORE_DENSE = {("paper-image2", 512, 128): 119.345, ("paper-image2", 512, 256): 239.856,
                 ("paper-image2", 64, 128): 298.770, ("paper-image2", 64, 256): 585.026,
-                ("paper-image1", 512, 128): 36.679, ("paper-image1", 512, 256): 71.371,
-                ("paper-image1", 64, 128): 171.669, ("paper-image1", 64, 256): 336.385}
+                ("paper-image1-planar", 512, 128): 36.679, ("paper-image1-planar", 512, 256): 71.371,
+                ("paper-image1-planar", 64, 128): 171.669, ("paper-image1-planar", 64, 256): 336.385}
 
 
 VARIANTS_TEXT = (
-    "- Variants tried (32 frames, separate runs, not regenerated here; paper-image1 at "
+    "- Variants tried (32 frames, separate runs, not regenerated here; paper-image1-planar at "
     "512 / 64 nodes, total s): the trend alone 11.771 / 45.420; the work field itself moved "
     "with the camera (trilinear splat), its weight against the unmoved field in {0, 0.5, 1} "
     "back-tested, 11.483 / 46.863; the rays moved instead (work per ray stays) 11.223 / 46.776 - the "
@@ -134,18 +136,18 @@ VARIANTS_TEXT = (
 MARGIN_TEXT = (
     "- A margin for the plain guess (`--remap-margin`; the whole study run again at 0.03, not "
     "regenerated here; the default is 0). On the finer orbits the back-test often takes another guess "
-    "than frame k-1's load on slight evidence (64 nodes in 256 frames: paper-image1 in 80 of the 254 "
+    "than frame k-1's load on slight evidence (64 nodes in 256 frames: paper-image1-planar in 80 of the 254 "
     "frames scored, frame k-1's load within 3 % of the guess taken in 73 of them; paper-image2 in 17, all "
     "within 3 %); at 32 frames the guess taken beats frame k-1's load by a median 3 to 11 % per case "
     "(measured at margin 0.01). Adaptive's total s at margins 0 / 0.03 (every-frame): 32 frames "
-    "paper-image2 at 512 nodes 30.098 / 30.260 (31.614), at 64 81.795 / 82.206 (88.600), paper-image1 at "
+    "paper-image2 at 512 nodes 30.098 / 30.260 (31.614), at 64 81.795 / 82.206 (88.600), paper-image1-planar at "
     "512 10.498 / 10.794 (11.238), at 64 44.892 / 44.895 (47.448); 128 frames 119.896 / 119.706 "
     "(120.267), 295.870 / 297.036 (297.323), 36.630 / 37.088 (36.947), 167.232 / 167.813 (168.742); 256 "
     "frames 239.307 / 239.328 (239.276), 588.398 / 582.228 (582.417), 70.635 / 71.204 (71.069), 336.899 / "
     "326.322 (326.683). With the margin adaptive's worst excess over every-frame falls from 3.1 % to 0.2 % "
     "at 256 frames, but it is no longer than every-frame in 2 of 4 cases there either (the 512-node "
     "cases instead of the 64-node ones), in 3 of 4 at 128 frames instead of 4, and its gap to oracle at 32 "
-    "frames grows by up to 3.5 points (+29.0 % instead of +25.5 % on paper-image1 at 512 nodes); margin "
+    "frames grows by up to 3.5 points (+29.0 % instead of +25.5 % on paper-image1-planar at 512 nodes); margin "
     "0.01 was between (64 nodes, 256 frames: 585.895 and 331.360). Neither setting meets every verdict at "
     "every frame count, so the default stays 0 and the margin is a choice for long animations.")
 
@@ -153,15 +155,15 @@ MARGIN_TEXT = (
 WINDOW_TEXT = (
     "- A longer window (`--remap-window`; separate runs, not regenerated here; total s at "
     "windows 1 / 4 / 8): at 32 frames paper-image2 at 512 nodes 30.098 / 30.407 / 30.407, at 64 nodes "
-    "81.795 / 81.748 / 82.059, paper-image1 at 512 nodes 10.498 / 10.656 / 10.628, at 64 nodes "
+    "81.795 / 81.748 / 82.059, paper-image1-planar at 512 nodes 10.498 / 10.656 / 10.628, at 64 nodes "
     "44.892 / 45.469 / 45.552; at 128 frames on 64 nodes (windows 1 / 4 / 16) paper-image2 295.870 / "
-    "297.712 / 297.359, paper-image1 167.232 / 168.452 / 166.960. The load changes from frame to frame "
+    "297.712 / 297.359, paper-image1-planar 167.232 / 168.452 / 166.960. The load changes from frame to frame "
     "faster than a longer record of which guess did well helps, so the default judges on the last frame.")
 
 
 TWO_PASS_TEXT = (
     "- The machine's own preview instead of the host's (separate runs, not regenerated here; "
-    "paper-image1 at 512 nodes, 64x64, 32 frames): each frame in two passes, first the pixels on every "
+    "paper-image1-planar at 512 nodes, 64x64, 32 frames): each frame in two passes, first the pixels on every "
     "second (fourth) row and column under the table adaptive picks, then the rest under a remap fitted "
     "to the first pass's measured per-cell work scaled to the remaining pixels, taken when its predicted "
     "gain exceeds its migration, which is charged. Images stayed byte-identical and packets conserved, "
@@ -176,7 +178,7 @@ TWO_PASS_TEXT = (
 
 ROBUST_TEXT = (
     "- Tables made robust to the guess's error (32 frames, separate runs, not regenerated "
-    "here; total s, paper-image1 at 512 nodes / paper-image2 at 64 / paper-image1 at 64, against the "
+    "here; total s, paper-image1-planar at 512 nodes / paper-image2 at 64 / paper-image1-planar at 64, against the "
     "default's 10.580 / 82.032 / 45.356): a hedge guess (cell-wise max of frame k-1 and the trend, "
     "sharp and blurred) added to the back-tested guesses 10.607 / 82.843; every guess remapped and the "
     "table taken by its worst ratio to the best table over the guesses (minimax) 10.390 / 81.592 / "
@@ -187,11 +189,11 @@ ROBUST_TEXT = (
     "helps every case and no gain reaches 5 %; one different table early sends a run onto other "
     "tables later, which alone moves a total by about 5 %. The bound of this approach, measured by "
     "choosing each frame the best of the guesses' tables (keep included) in frame k's own load - "
-    "knowledge adaptive does not have: 10.337 s on paper-image1 at 512 nodes (+23.5 % against "
+    "knowledge adaptive does not have: 10.337 s on paper-image1-planar at 512 nodes (+23.5 % against "
     "oracle), 78.425 s on paper-image2 at 64 (+9.2 %). The guesses' mean per-cell error against frame "
-    "k's own load, as a share of the load, over paper-image1 at 512 nodes: frame 0.51, hedge 0.57, "
+    "k's own load, as a share of the load, over paper-image1-planar at 512 nodes: frame 0.51, hedge 0.57, "
     "trend 0.67, blurred guesses 0.60 to 0.63, moved 0.92: half of the load changes cells every "
-    "frame. paper-image1's spheres lie in one plane and the orbit turns that plane from face-on to "
+    "frame. paper-image1-planar's spheres lie in one plane and the orbit turns that plane from face-on to "
     "edge-on and back, so which spheres hide which changes every frame; earlier frames do not carry "
     "that, so closing the rest of the gap needs frame k's own view (a preview, which costs the host "
     "more than it gains at these sizes, below).")
@@ -201,11 +203,11 @@ RESOLUTION_TEXT = (
     "- Four times the pixels (separate runs, not regenerated here; 128x128, 32 frames, "
     "total s, adaptive / every-frame / oracle): paper-image2 at 512 nodes 105.738 / 113.176 / 101.239 "
     "(adaptive +4.4 % against oracle), at 64 nodes 300.103 / 339.805 / 269.723 (+11.3 %); "
-    "paper-image1 at 512 nodes 37.478 / 40.192 / 28.731 (+30.4 %), at 64 nodes 171.019 / 178.061 / "
+    "paper-image1-planar at 512 nodes 37.478 / 40.192 / 28.731 (+30.4 %), at 64 nodes 171.019 / 178.061 / "
     "156.890 (+9.0 %); packets conserved in every run. At 64x64 a frame has 4096 primary rays for "
     "13,824 cells, so a cell's measured work is a sparse sample; with 16,384 rays adaptive still "
     "beats every-frame in 4 of 4 cases, but its gap to oracle is no smaller (within 10 % in 2 of 4, "
-    "+30.4 % on paper-image1 at 512 nodes against +25.5 % at 64x64): the gap is the change of the "
+    "+30.4 % on paper-image1-planar at 512 nodes against +25.5 % at 64x64): the gap is the change of the "
     "load from one view to the next, not the sampling noise of the measured load.")
 
 
@@ -299,7 +301,7 @@ def findings(runs, frames, keys, dense=()):
             "did, while the orbit turns the view by 11.25 degrees a frame and the work moves to other cells; "
             "oracle alone maps each frame from its own load (and pays no migration, which the figures above "
             "show is not what it gains from). Remapping from frame k's own load (not a policy: it is the "
-            "oracle's privilege; separate runs, not regenerated here) gave paper-image1 at 512 "
+            "oracle's privilege; separate runs, not regenerated here) gave paper-image1-planar at 512 "
             "nodes 8.387 s against oracle's 8.368 s: the remapping is not what is missing, the prediction is.",
             "- Adaptive's prediction: six guesses of frame k's load from what earlier frames measured and "
             "the camera path - frame k-1's (`frame`), the trend max(0, 2 x frame k-1 - frame k-2) (`trend`), "
@@ -331,7 +333,7 @@ def findings(runs, frames, keys, dense=()):
             "nodes' work in so sparse a sample is mostly sampling noise, and a larger preview costs the host "
             "more than a better table gains. Fitting the tables to the preview itself was worse still "
             "(separate runs, not regenerated here): judged on the load they were "
-            "fitted to, those tables always looked best and ran slow - paper-image1 at 512 nodes took "
+            "fitted to, those tables always looked best and ran slow - paper-image1-planar at 512 nodes took "
             "110.1 s at 1/16 of the pixels (51.7 s of it host time charged) and 146.8 s at 1/64 with the "
             "preview's own remap and fresh map among the candidates, 13.9 s at 1/256 fitted to the mean of "
             "the preview and frame k-1; paper-image2 at 64 nodes 101.0 s at 1/64 fitted to that mean. "
@@ -358,7 +360,7 @@ def frame_table(frames, scene, n):
 
 MEAN_GUESS_TEXT = (
     "- Less noise in the guess does not close the rest (separate runs, not regenerated here): "
-    "with the mean of frames k-1 and k-2, sharp and blurred, added to the back-tested guesses, paper-image1 "
+    "with the mean of frames k-1 and k-2, sharp and blurred, added to the back-tested guesses, paper-image1-planar "
     "at 512 nodes in 128 frames took 36.690 s against 36.679 s without them (the back-test took the mean in "
     "52 of the 127 frames), and 10.580 s in 32 frames, as without (never taken); both with a back-test that "
     "re-makes each guess from the table in force.")
@@ -366,7 +368,7 @@ MEAN_GUESS_TEXT = (
 NO_BACKTEST_TEXT = (
     "- Without the back-test (separate runs, not regenerated here): adaptive taking frame k-1's "
     "load as its only guess, and keeping its table when the predicted gain does not exceed the migration, "
-    "took (total s, 32 / 128 / 256 frames) paper-image1 at 64 nodes 47.853 / 169.236 / 329.596, at 512 nodes "
+    "took (total s, 32 / 128 / 256 frames) paper-image1-planar at 64 nodes 47.853 / 169.236 / 329.596, at 512 nodes "
     "11.431 / 36.692 / 71.021, paper-image2 at 64 nodes 85.622 / 296.595 / 582.275, at 512 nodes 33.680 / "
     "119.706 / 239.328. It remaps from the load every-frame remaps from, but kept its table once in each run "
     "(30, 126 and 254 mapping changes against every-frame's 31, 127 and 255), and its totals still differ from "
@@ -522,12 +524,12 @@ def main(argv):
     cpu = sum(float(r["wall_s"]) for r in runs)
     dense_cpu = sum(float(r["wall_s"]) for r in dense)
     short, discussion = findings(runs, frames, keys, dense)
-    md = ["# Animation: the mapping across the frames of an orbit", ""] + short + [
+    md = ["# Animation: the mapping across the frames of an orbit", ""] + short + before_fit.section(res) + [
           "## How it was made", "",
           "Generated by `bash experiments/animation/study.sh` (do not edit by hand).", "",
           f"A full orbit, 360 degrees over {nframes} frames (`--orbit 360 --frames {nframes}`), of `paper-image2` "
           "(the glass and mirror spheres cross the view) and `paper-image1`, 64x64 pixels, 24^3 cells, the "
-          "calibrated timing profile, on a 4x4x4 (64) and an 8x8x8 (512) torus. Six policies:", ""]
+          "fitted timing profile (the default), on a 4x4x4 (64) and an 8x8x8 (512) torus. Six policies:", ""]
     md += [f"- **{p}**: {POLICY_TEXT[p]}" for p in POLICIES]
     md += ["", "Every frame starts when the previous one is complete; a change of mapping first moves the cells "
            "and objects a node gains over the links (the busiest link's time, charged to the animation; free "

@@ -1,7 +1,7 @@
 """The fidelity study (experiments/fidelity/study.sh): the staged fit's choices, the fitted
 machine's files, and docs/fidelity.md. Each fit reads the stage's runs (RES/stageN.tsv: the
 candidate values and the run's JSON) and chooses by the protocol's score, the largest relative
-residual over the stage's targets; ties go to today's value, then to the order listed."""
+residual over the stage's targets; ties go to the unfitted reading's value, then to the order listed."""
 import csv
 import json
 import os
@@ -13,7 +13,7 @@ from .verdict import HOLDS, summary
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 STUDY = os.path.join(os.path.dirname(HERE), "fidelity")
-TODAY = {"layout": "planar", "rule": "sequential", "bus": "0.5", "memory": "0.5", "shape": "4x2x2",
+UNFITTED = {"layout": "planar", "rule": "sequential", "bus": "0.5", "memory": "0.5", "shape": "4x2x2",
          "map": "cyclic", "handover": "0", "image2": "floor"}
 UNITS_N = (1, 16, 32)
 PENALTY = dict(zip(("image1", "image2"), paper.sharing_penalty()))
@@ -37,10 +37,10 @@ def _rel(x, target):
 
 
 def _best(scored, keys):
-    """The candidate with the smallest score; ties to today's values, then the listed order."""
+    """The candidate with the smallest score; ties to the unfitted reading's values, then the listed order."""
     def rank(item):
         i, (cand, score) = item[0], item[1][:2]
-        return (round(score, 12), sum(cand[k] != TODAY[k] for k in keys if k in TODAY), i)
+        return (round(score, 12), sum(cand[k] != UNFITTED[k] for k in keys if k in UNFITTED), i)
     return min(enumerate(scored), key=rank)[1]
 
 
@@ -458,7 +458,7 @@ def _pass(ok):
 
 def _scene(name, image):
     if image == 1:
-        return "paper-image1.nff" if name == "planar" else "paper-image1-%s.nff" % name
+        return "paper-image1.nff" if name == "planar-z" else "paper-image1-%s.nff" % name
     return "paper-image2.nff" if name == "floor" else "paper-image2-%s.nff" % name
 
 

@@ -19,6 +19,14 @@ def series(table, columns, **match):
     return [[row[c] for c in columns] for row in table.where(**match)]
 
 
+def gnuplot_kind(gp, kind, data, png, title, ncol=0):
+    """Runs the study script GP for one plot KIND of the data file DATA into PNG; returns the
+    PNG's file name (the studies' pages link it beside themselves)."""
+    subprocess.run(["gnuplot", "-e", f"kind='{kind}'; data='{data}'; out='{png}'; ttl='{title}'; ncol={ncol}", gp],
+                   check=True)
+    return os.path.basename(png)
+
+
 def gnuplot(script, variables):
     """Runs experiments/plots/SCRIPT with the variables (strings, or numbers) set."""
     assigns = ["plotdir='%s'" % PLOT_DIR]
@@ -28,8 +36,8 @@ def gnuplot(script, variables):
 
 
 def flat_data(all_r, dat):
-    """fig5-8 data files (f56-*.dat of the default profile, f56literal-*.dat and so on of the
-    others; memory and preprocessing do not depend on the timing); returns the mappings present."""
+    """fig5-8 data files (f56-*.dat of the default reading, f56calibrated-*.dat and so on of the
+    others; memory and preprocessing are the default reading's); returns the mappings present."""
     r = all_r[0]
     maps = r.f56.distinct("mapping")
     for x in all_r:
@@ -53,12 +61,12 @@ def flat_data(all_r, dat):
 
 
 def tag(x, default):
-    """The data files' profile tag: '' for the default profile, else its name."""
+    """The data files' reading tag: '' for the default reading, else its name."""
     return "" if x is default else x.profile
 
 
 def cluster_data(all_r, dat):
-    """fig10-12 data files (f10literal-*.dat for the literal profile); returns the data modes present."""
+    """fig10-12 data files (f10calibrated-*.dat for the calibrated reading); returns the data modes present."""
     r = all_r[0]
     datas = r.f10.distinct("data")
     m, pm = paper.MEMORY_M, paper.CLUSTER_M
@@ -84,7 +92,7 @@ def cluster_data(all_r, dat):
 
 
 def reproduction(res):
-    """Draws RESULTS/plots/fig5.png ... fig12.png from the profile folders RESULTS/PROFILE (clusters only when the sweep has them);
+    """Draws RESULTS/plots/fig5.png ... fig12.png from the reading folders RESULTS/READING (clusters only when the sweep has them);
     returns the PNGs written."""
     all_r = profile_results(res)
     r = all_r[0]
@@ -98,7 +106,9 @@ def reproduction(res):
         if os.path.exists(os.path.join(out, "fig%d.png" % f)):
             os.remove(os.path.join(out, "fig%d.png" % f))
     lo, hi = paper.MEMORY_RATIO_AT_16
-    common = {"dat": dat, "scenes": " ".join(r.scenes)}
+    # Solid lines: the default reading; dashed: the next one (the reading before the fit).
+    common = {"dat": dat, "scenes": " ".join(r.scenes), "main": r.profile,
+              "other": all_r[1].profile if len(all_r) > 1 else r.profile}
     flat = dict(common, maps=" ".join(flat_data(all_r, dat)),
                 xmax=1.3 * max((int(row["n"]) for row in r.f56.rows), default=1))
     titles = {

@@ -115,9 +115,9 @@ def efficiency_note(r):
         for row in r.f56.where(scene=s, n=16):
             if best is None or num(row, "efficiency") > num(best, "efficiency"):
                 best = row
-        note += (" %s, %s: the cyclic mapping's 16 IPs do %.1f x T(1) of work, and reach %s; the best "
-                 "mapping at 16 IPs reaches %.1f %% (%s)." % (r.profile,
-                     claimlib.label(s), 16 * busy / t_one, claimlib.pct(t), 100 * num(best, "efficiency"),
+        note += (" %s, %s: the load-balancing mapping's (%s) 16 IPs do %.1f x T(1) of work, and reach %s; "
+                 "the best mapping at 16 IPs reaches %.1f %% (%s)." % (r.profile,
+                     claimlib.label(s), r.facts.lb_map, 16 * busy / t_one, claimlib.pct(t), 100 * num(best, "efficiency"),
                      best["mapping"]))
     return note
 
@@ -161,7 +161,7 @@ def embed(drawn, img_rel, f, title):
 
 
 def claims_table(by_profile):
-    """One row per claim: the default profile's figure and verdict, then each other profile's."""
+    """One row per claim: the default reading's figure and verdict, then each other reading's."""
     (first, claims), others = by_profile[0], by_profile[1:]
     head = "| # | claim (paper section) | paper | ours, %s | verdict, %s |" % (first, first)
     head += "".join(" ours, %s | verdict, %s |" % (p, p) for p, _ in others) + " notes (%s) |" % first
@@ -174,14 +174,14 @@ def claims_table(by_profile):
 
 
 def findings(by_profile, facts):
-    """The page's opening: the verdict count per profile, the headline claim, every claim that
-    does not hold under the default profile, and whether every image matched."""
+    """The page's opening: the verdict count per reading, the headline claim, every claim that
+    does not hold under the default reading, and whether every image matched."""
     (first, claims), others = by_profile[0], by_profile[1:]
     held = [i + 1 for i, c in enumerate(claims) if c.verdict == HOLDS]
     out = ["## Findings", "",
-           "- **%d of %d claims hold** under the %s profile (the default); %s" % (
+           "- **%d of %d claims hold** under the %s reading (the default); %s" % (
                len(held), len(claims), first, summary([c.verdict for c in claims]))]
-    out += ["- Under the %s profile %d of %d hold; %s" % (
+    out += ["- Under the %s reading %d of %d hold; %s" % (
         p, sum(1 for c in cl if c.verdict == HOLDS), len(cl), summary([c.verdict for c in cl]))
         for p, cl in others]
     if claims:
@@ -189,7 +189,7 @@ def findings(by_profile, facts):
         out.append("- The headline claim, 1 (%s), **%s**: paper %s; ours %s." % (
             head.text, head.verdict, head.paper, head.ours.rstrip(".")))
     out.append("- Claims that hold: %s." % (", ".join(str(i) for i in held) or "none"))
-    out += ["", "Claims that do not fully hold (%s profile):" % first, ""]
+    out += ["", "Claims that do not fully hold (%s reading):" % first, ""]
     out += ["- **%d**. %s: paper %s; ours %s (**%s**)" % (i + 1, c.text, c.paper, c.ours.rstrip("."), c.verdict)
             for i, c in enumerate(claims) if c.verdict != HOLDS] or ["None."]
     out += ["", "- Images: %d of the computed points differ from the one-processor image; %d points did not run."
@@ -209,9 +209,11 @@ def run_table(all_r, rel):
         "| | |",
         "| --- | --- |",
         "| mode | %s (image size %s) |" % (run.get("mode", r.mode), r.facts.image_size),
-        "| timing profiles | %s, each with every point |" % ", ".join(
-            "%s (hand-over %s us)" % (x.profile, x.facts.hop_us) for x in all_r),
-        "| points | %d in the figures (%d not ok) + %d one-processor runs per profile; %s computed by the timed run |" % (
+        "| readings | %s; each with every point |" % "; ".join(
+            "%s (timing profile %s, hand-over %s us; image 1 `%s`; load-balancing mapping %s)" % (
+                x.profile, x.facts.timing_profile, x.facts.hop_us, x.facts.image1_scene, x.facts.lb_map)
+            for x in all_r),
+        "| points | %d in the figures (%d not ok) + %d one-processor runs, in the default reading; %s computed by the timed run |" % (
             facts["points"], facts["bad"], r.facts.t1_runs, run.get("points_run", "?")),
         "| wall time of the points | **%s s** on %s with -j %s, %s cores (%s); CPU time %s s; load average at the end %s |" % (
             na(run.get("wall_s")), run.get("hosts", "?"), run.get("jobs", "?"), run.get("cores", "?"),
@@ -231,9 +233,10 @@ def figure_sections(all_r, img):
     r, out = all_r[0], []
     for x in all_r:
         for s in x.scenes:
-            out += ["", "**%s, %s profile**" % (claimlib.label(s), x.profile), "", fig56_table(x, s)]
+            out += ["", "**%s, %s reading**" % (claimlib.label(s), x.profile), "", fig56_table(x, s)]
     out += ["", "### Figure 6: efficiency against IP count", "", img(6, "Figure 6"), "",
-            "Efficiency T(1) / (n T(n)); solid lines: calibrated profile, dashed: literal. The black bar is",
+            "Efficiency T(1) / (n T(n)); solid lines: the %s reading, dashed: the %s reading. The black bar is"
+            % (r.profile, all_r[1].profile if len(all_r) > 1 else r.profile),
             "the paper's \"above 85 % with 16 IPs or fewer\" for the load-balancing mapping. Numbers, with",
             "the load balance: the tables above.",
             "", "### Figure 7: data memory against IP count", "", img(7, "Figure 7"), "",
@@ -248,14 +251,15 @@ def figure_sections(all_r, img):
             "", img(12, "Figure 12"), "",
             "Image time, efficiency / load balance, data memory of all processors, and for shared data the",
             "mean bus utilisation. m = 64 is the paper's 1024-processor system. In the plots of figures 10",
-            "and 11, solid lines are the calibrated profile and dashed the literal one."]
+            "and 11, solid lines are the %s reading and dashed the %s one." % (
+                r.profile, all_r[1].profile if len(all_r) > 1 else r.profile)]
     for x in all_r:
-        out += ["", "**%s profile**" % x.profile, "", fig10_table(x)]
+        out += ["", "**%s reading**" % x.profile, "", fig10_table(x)]
     return out
 
 
 def intro(run_cmd, r, all_r):
-    """How the page is made and the two timing profiles it is judged under."""
+    """How the page is made and the readings it is judged under."""
     return [
         "This page compares every number in the prose of Kubota et al. (sections 6-8 of",
         "[docs/paper.md](paper.md)) with torusrt's model, run over the paper's axes. It is generated:",
@@ -265,13 +269,18 @@ def intro(run_cmd, r, all_r):
         "`experiments/report` writes this page, judging each claim in `experiments/report/claims.py`.",
         "How to run it on one machine, over ssh or as a Slurm job array: `experiments/README.md`.",
         "",
-        "Every point runs under both timing profiles of `torusrt-sim --timing-profile`: **calibrated**,",
-        "the default (the hand-over of a packet to another IP costs %s us), and **literal**, the" % r.facts.hop_us,
+        "Every point runs under each reading of the paper's unknowns ([readings.md](readings.md)):",
+        "**%s**, the default: the values the fidelity study fitted ([fidelity.md](fidelity.md)): timing" % r.profile,
+        "profile `%s`, image 1 `scenes/%s` (its nine flakes in three columns at z = -5, 0, +5)," % (
+            r.facts.timing_profile, r.facts.image1_scene),
+        "and the load-balancing points run `--map %s`, as the machine files do;" % r.facts.lb_map,
+        "**calibrated**, the reading before the fit (timing profile `calibrated`, image 1 in the plane",
+        "z = 0, `scenes/paper-image1-planar.nff`, cyclic mapping); and **literal**, the same with the",
         "paper's operation table read literally (a hand-over is a packet creation and an analysis, %s us)."
         % (all_r[-1].facts.hop_us if len(all_r) > 1 else "?"),
-        "Claims are judged under the calibrated profile; the literal profile's figure and verdict stand",
-        "beside them. Efficiency is T(1) / (n T(n)) throughout; busy time / (n T(n)) is shown as",
-        "*load balance*.",
+        "Claims are judged under the %s reading; the others' figures and verdicts stand beside them." % r.profile,
+        "The load-balancing points are labelled *cyclic* in every table and plot. Efficiency is",
+        "T(1) / (n T(n)) throughout; busy time / (n T(n)) is shown as *load balance*.",
     ]
 
 
@@ -315,8 +324,8 @@ def document(res, all_r, doc_dir, drawn):
         "",
         WHAT_IS_COMPARED.format(creation=paper.TIMING_US["packet_creation"],
                                 analysis=paper.TIMING_US["packet_analysis"], handover=paper.HANDOVER_US),
-        "  missed intersection test, in the literal profile; nothing in the calibrated one. With the cyclic",
-        "  mapping nearly every cell crossing changes IP." + "".join(efficiency_note(x) for x in all_r),
+        "  missed intersection test, in the literal reading; nothing in the fitted and calibrated ones.",
+        "  With the cyclic mapping nearly every cell crossing changes IP." + "".join(efficiency_note(x) for x in all_r),
         "",
         "## Claims",
         "",
@@ -331,7 +340,8 @@ def document(res, all_r, doc_dir, drawn):
         "",
         img(5, "Figure 5"),
         "",
-        "The paper gives no times for the flat torus. Solid lines: calibrated profile; dashed: literal.",
+        "The paper gives no times for the flat torus. Solid lines: the %s reading; dashed: the %s one." % (
+            r.profile, all_r[1].profile if len(all_r) > 1 else r.profile),
         "Each cell: image time, efficiency / load balance.",
     ]
     out += figure_sections(all_r, img)
@@ -357,9 +367,9 @@ WHAT_IS_COMPARED = """## What is compared, and what differs from the paper
   369 recursively defined diffuse spheres, and a glass and a mirror sphere before 121 small
   spheres. Sizes, positions, camera, lights and material coefficients are ours. Every absolute
   figure (seconds, units, bytes) depends on them; ratios and directions much less.
-- **Mappings**: block, cyclic (the paper's load-balancing mapping, block size 1) and
-  block-cyclic with blocks of 2 and 3 cells, which lie in between.
-- **Clusters** (figures 10-12): 16 clusters on a 4x2x2 torus, the cyclic mapping between
+- **Mappings**: block, cyclic (the paper's load-balancing mapping: block size 1, or blocks of 3
+  cells in the fitted reading) and block-cyclic with blocks of 2 and 3 cells, which lie in between.
+- **Clusters** (figures 10-12): 16 clusters on a 4x2x2 torus, the load-balancing mapping between
   clusters, m processors per cluster on one bus. The paper's times are for m = 64, i.e.
   **16 x 64 = 1024 processors**; efficiencies are over all 16 m processors.
 - **Verdicts**: *holds* when our number satisfies the paper's statement; for the paper's
@@ -381,8 +391,8 @@ model reports two figures:
 
 
 def write(res, doc):
-    """Writes the page for the results folder `res` (one folder per profile inside) to `doc`
-    (atomically); returns (profile, claims) per profile."""
+    """Writes the page for the results folder `res` (one folder per reading inside) to `doc`
+    (atomically); returns (reading, claims) per reading."""
     from .results import profile_results
     all_r = profile_results(res)
     doc_dir = os.path.dirname(os.path.abspath(doc))

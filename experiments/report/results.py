@@ -8,9 +8,9 @@ from .csvdata import Table
 
 FIGURES = ("fig5_6", "fig7", "fig8", "fig10_12")
 FACTS_FILE = "run_facts.csv"
-# The timing profiles a sweep runs (experiments/lib.sh PROFILES), the default first: each has
-# its results folder RESULTS/PROFILE.
-PROFILES = ("calibrated", "literal")
+# The readings a sweep runs (experiments/lib.sh READINGS), the default first: each has its
+# results folder RESULTS/READING.
+PROFILES = ("fitted", "calibrated", "literal")
 
 
 def profile_results(res):
@@ -28,11 +28,12 @@ def _own_or_parent(res, name):
 
 
 class Facts:
-    """What the CSVs do not hold: image size, cells, hand-over cost, one-processor runs, the
-    joblog. Read from t1/*.json and joblog when the sweep's files are there (and then saved in
+    """What the CSVs do not hold: image size, cells, hand-over cost, the reading's timing profile,
+    image 1 scene file and load-balancing mapping, one-processor runs, the joblog. Read from t1/*.json and joblog when the sweep's files are there (and then saved in
     run_facts.csv), else from run_facts.csv."""
 
-    KEYS = ("image_size", "cells", "hop_us", "t1_runs", "joblog_points", "joblog_span_s")
+    KEYS = ("image_size", "cells", "hop_us", "t1_runs", "joblog_points", "joblog_span_s", "timing_profile",
+            "image1_scene", "lb_map")
 
     def __init__(self, res):
         path = os.path.join(res, FACTS_FILE)
@@ -54,6 +55,9 @@ class Facts:
         self.t1_runs = int(values["t1_runs"] or 0)
         self.joblog_points = values["joblog_points"]
         self.joblog_span_s = values["joblog_span_s"]
+        self.timing_profile = values["timing_profile"] or "?"
+        self.image1_scene = values["image1_scene"] or "?"
+        self.lb_map = values["lb_map"] or "?"
 
     @staticmethod
     def _from_sweep(res):
@@ -70,6 +74,15 @@ class Facts:
                 "packet_creation", "packet_analysis")
             found["hop_us"] = "%g" % sum(timing[k] for k in hand_over)
             found["t1_runs"] = str(len(t1))
+            found["timing_profile"] = report["config"]["timing_profile"]
+        for path in t1:
+            if os.path.basename(path) == "image1.json":
+                with open(path) as f:
+                    found["image1_scene"] = os.path.basename(json.load(f)["scene"])
+        lb = sorted(glob.glob(os.path.join(res, "fig5_6", "*-cyclic-n*.json")))
+        if lb:
+            with open(lb[0]) as f:
+                found["lb_map"] = json.load(f)["config"]["options"]["map"]
         joblog = _own_or_parent(res, "joblog")
         if os.path.exists(joblog) and os.path.getsize(joblog) > 0:
             with open(joblog, newline="") as f:

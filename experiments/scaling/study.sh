@@ -3,7 +3,7 @@
 # 64, 512, 4096) on both paper scenes, cones-and-patches and facing-mirrors, for flat tori
 # (cyclic, cost, cost with replicated hot cells at budgets 0.5 and 1.0) and clusters of m = 4,
 # 16 and 64 processors at the same total (wherever there are at least 4 nodes; replicated and
-# shared data; cyclic and cost mapping), calibrated profile; plus the busy time per node of
+# shared data; cyclic and cost mapping), the default (fitted) profile; plus the busy time per node of
 # paper-image2 at 512 IPs before and after replication. Writes docs/scaling.md and docs/scaling/.
 # Usage: bash experiments/scaling/study.sh [--build DIR] [--backend local|ssh:HOSTFILE|slurm]
 #          [-j JOBS] [--slurm-args "..."] [--per-task K] [BUILD_DIR] [JOBS]   (default build/, 2 jobs)

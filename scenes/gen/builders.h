@@ -15,7 +15,7 @@
 /* paper_scenes.c */
 void build_paper_image1(scene *sc);
 void build_paper_image2(scene *sc);
-void build_paper_image1_planar_z(scene *sc);
+void build_paper_image1_planar(scene *sc);
 void build_paper_image1_cube(scene *sc);
 void build_paper_image1_tree(scene *sc);
 void build_paper_image2_wall(scene *sc);

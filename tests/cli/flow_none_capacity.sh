@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The statement of docs/flow-control.md: with one class (--flow none), paper-image1 on 16 IPs
-# (4x2x2, calibrated default, 144x144) stalls with 16, 64, 256 and 1024 packets per queue and
+# (4x2x2, the default profile, 144x144) stalls with 16, 64, 256 and 1024 packets per queue and
 # finishes with 4096, under the block and the cyclic mapping; the class scheme finishes at each.
 source "$(dirname "$0")/common.bash" "$@"
 need_exe torusrt-sim

@@ -12,10 +12,10 @@ time_limit 120
 scene=$(source_scene paper-image1) || exit 1
 size=(--size 40x40)
 
-# The scene's own camera (paper-image1: from 4 5 30, at 0 0 0, up 0 1 0, angle 28.5).
+# The scene's own camera (paper-image1: from 4 5 30, at 0 0 0, up 0 1 0, angle 36.5).
 view=$(awk '$1 == "from" || $1 == "at" || $1 == "up" || $1 == "angle" { $1 = ""; printf "%s", $0 }' "$scene")
 check "the scene's view is the one this test computes by hand" \
-    [ "$(echo $view)" = "4 5 30 0 0 0 0 1 0 28.5" ]
+    [ "$(echo $view)" = "4 5 30 0 0 0 0 1 0 36.5" ]
 
 render_ok plain "$scene" "$TMP/plain.png" "${size[@]}" || exit 1
 
@@ -52,7 +52,7 @@ check "orbit 37.5: frame 1 differs" differs "$TMP/plain.png" "$TMP/o37/f_1.png"
 mkdir "$TMP/o360" "$TMP/path"
 anim_ok orbit360 "$scene" "$TMP/o360/f_%d.png" "$TMP/o360/f_0.png" "${size[@]}" --orbit 360 --frames 4 \
     --stats "$TMP/o360.json"
-printf '# the half turn, by hand\n\n-4 5 -30   0 0 0   0 1 0   28.5  # eye mirrored\n' >"$TMP/half.txt"
+printf '# the half turn, by hand\n\n-4 5 -30   0 0 0   0 1 0   36.5  # eye mirrored\n' >"$TMP/half.txt"
 anim_ok path "$scene" "$TMP/path/p_%d.png" "$TMP/path/p_0.png" "${size[@]}" --camera-path "$TMP/half.txt"
 check "orbit 360/4 frame 2 equals the camera-path half turn" cmp -s "$TMP/o360/f_2.png" "$TMP/path/p_0.png"
 check "a full orbit ends one step before the start (4 files, no frame 4)" \

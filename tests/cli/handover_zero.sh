@@ -26,11 +26,13 @@ done
 check "literal profile = timing/literal.timing" test "$(json "$TMP/l.json" .sim_time_s)" = "$(json "$TMP/lf.json" .sim_time_s)"
 check "profile reported" test "$(json "$TMP/l.json" .config.timing_profile)" = literal
 check "profile + file reported" test "$(json "$TMP/lf.json" .config.timing_profile)" = "literal + $SRC/timing/literal.timing"
-# timing/calibrated.timing holds the calibrated profile, which is the default.
-"$BUILD/torusrt-sim" "$f" -o "$TMP/c.png" --stats "$TMP/c.json" -q --size 48x48 --ips 4x2x2 || fail "default run"
+# timing/calibrated.timing holds the calibrated profile; the default is fitted.
+"$BUILD/torusrt-sim" "$f" -o "$TMP/d.png" --stats "$TMP/d.json" -q --size 8x8 || fail "default run"
+check "default profile is fitted" test "$(json "$TMP/d.json" .config.timing_profile)" = fitted
+"$BUILD/torusrt-sim" "$f" -o "$TMP/c.png" --stats "$TMP/c.json" -q --size 48x48 --ips 4x2x2 \
+  --timing-profile calibrated || fail "calibrated run"
 "$BUILD/torusrt-sim" "$f" -o "$TMP/cf.png" --stats "$TMP/cf.json" -q --size 48x48 --ips 4x2x2 \
   --timing-profile literal --timing "$SRC/timing/calibrated.timing" || fail "calibrated file run"
-check "default profile is calibrated" test "$(json "$TMP/c.json" .config.timing_profile)" = calibrated
 check "calibrated profile = timing/calibrated.timing" test "$(json "$TMP/c.json" .sim_time_s)" = "$(json "$TMP/cf.json" .sim_time_s)"
 check "calibrated is faster than literal" jq -e --slurpfile l "$TMP/l.json" '.sim_time_s < $l[0].sim_time_s' "$TMP/c.json"
 sum=$(jq '[.per_ip[].busy_s] | add' "$TMP/l.json"); t1=$(json "$TMP/l.json" .t1_s)

@@ -6,8 +6,9 @@
 # directions of the paper's claims hold: cyclic load_balance >= block at 16 IPs, memory at 16
 # IPs below pixel-partitioned, preprocessing units fall with P, replicated time falls with m,
 # shared memory below replicated at the largest m. Every image equals the one-processor image.
-# Both timing profiles are swept, each into RESULTS/PROFILE; their one-IP times are equal (one IP
-# hands nothing over).
+# The three readings are swept, each into RESULTS/READING (fitted, the default; calibrated and
+# literal, which share image 1's planar layout: their one-IP times are equal, one IP hands nothing
+# over). Under fitted the load-balancing points run block-cyclic:3.
 # Run: bash reproduction_quick.sh BUILD_DIR SOURCE_DIR
 source "$(dirname "$0")/common.bash" "$@"
 EXP=$SRC/experiments
@@ -38,20 +39,20 @@ TORUSRT_BUILD=$TMP/fakebuild bash "$EXP/sweep.sh" --quick "${clusters[@]}" --res
 rc=$?
 check "sweep with a failing point exits non-zero (got $rc)" test "$rc" -ne 0
 check "the failed point's command line is reported" grep -q 'exit 7 .*--map block-cyclic:2' "$TMP/sweep1.err"
-for P in calibrated literal; do
+for P in fitted calibrated literal; do
     check "$P: the failed point is a 'failed' row of fig5_6.csv" \
         test "$(awk -F, '$2 == "bc2" && $3 == 16 && $6 == "failed"' "$RES/$P/fig5_6.csv" | wc -l)" -eq 2
     check "$P: the failed point's messages are kept" grep -q 'injected failure' "$RES/$P/fig5_6/image1-bc2-n16.log"
 done
 check "the report lists the failed points" grep -q 'bc2 mapping, n = 16: \*\*failed\*\*' "$RES/reproduction.md"
 
-# 2. Re-run with the real simulator: only the two failed points are computed.
+# 2. Re-run with the real simulator: only the failed points (two per reading) are computed.
 start=$(date +%s)
 TORUSRT_BUILD=$BUILD bash "$EXP/sweep.sh" --quick "${clusters[@]}" --results "$RES" -j 2 >"$TMP/sweep2.out" 2>"$TMP/sweep2.err"
 rc=$?
 echo "quick sweep re-run: $(( $(date +%s) - start )) s"
 check "re-run exits 0 (got $rc; $(tail -n 3 "$TMP/sweep2.err" | tr '\n' ' '))" test "$rc" -eq 0
-check "re-run computes only the 4 missing points" test "$(tail -n 1 "$RES/runs.tsv" | cut -f7)" = 4
+check "re-run computes only the 6 missing points" test "$(tail -n 1 "$RES/runs.tsv" | cut -f7)" = 6
 check "no failed points left" test ! -s "$RES/failed.tsv"
 
 # 3. The CSVs: every expected row, all ok, identical images.
@@ -61,7 +62,7 @@ not() { awk -F, -v c="$2" -v want="$3" 'NR == 1 { for (i = 1; i <= NF; i++) ix[$
 gt() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a != "" && b != "" && a + 0 > b + 0) }'; }
 ge() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a != "" && b != "" && a + 0 >= b + 0) }'; }
 expect10=$((have_clusters ? 6 : 0))
-for P in calibrated literal; do
+for P in fitted calibrated literal; do
     check "$P: fig5_6.csv has 18 rows" test "$(rows "$RES/$P/fig5_6.csv")" -eq 18
     check "$P: fig7.csv has 18 rows" test "$(rows "$RES/$P/fig7.csv")" -eq 18
     check "$P: fig8.csv has 6 rows" test "$(rows "$RES/$P/fig8.csv")" -eq 6
@@ -77,7 +78,7 @@ for P in calibrated literal; do
 done
 for s in image1 image2; do
     a=$(jq -r .sim_time_s "$RES/calibrated/t1/$s.json") b=$(jq -r .sim_time_s "$RES/literal/t1/$s.json")
-    check "$s: one-IP time the same under both profiles ($a, $b)" test "$a" = "$b"
+    check "$s: one-IP time the same under calibrated and literal ($a, $b)" test "$a" = "$b"
 done
 a=$(awk -F, '$1 == "image1" && $2 == "cyclic" && $3 == 16 { print $7 }' "$RES/calibrated/fig5_6.csv")
 b=$(awk -F, '$1 == "image1" && $2 == "cyclic" && $3 == 16 { print $7 }' "$RES/literal/fig5_6.csv")
@@ -92,12 +93,16 @@ for f in "${figs[@]}"; do
     check "report embeds fig$f" grep -q "(img/reproduction-fig$f.png)" "$RES/reproduction.md"
     check "embedded fig$f exists" ispng "$RES/img/reproduction-fig$f.png"
 done
-check "report has the claims table" grep -q '^| # | claim (paper section) | paper | ours, calibrated | verdict, calibrated | ours, literal | verdict, literal | notes (calibrated) |' "$RES/reproduction.md"
+check "report has the claims table" grep -q '^| # | claim (paper section) | paper | ours, fitted | verdict, fitted | ours, calibrated | verdict, calibrated | ours, literal | verdict, literal | notes (fitted) |' "$RES/reproduction.md"
+check "the fitted reading ran image 1 from paper-image1.nff" grep -q '^image1_scene,paper-image1.nff$' "$RES/fitted/run_facts.csv"
+check "the calibrated reading ran image 1 from paper-image1-planar.nff" \
+    grep -q '^image1_scene,paper-image1-planar.nff$' "$RES/calibrated/run_facts.csv"
+check "the fitted reading's load-balancing points ran block-cyclic:3" grep -q '^lb_map,block-cyclic:3$' "$RES/fitted/run_facts.csv"
 check "report has a row per claim" test "$(grep -c '^| [0-9][0-9]* | ' "$RES/reproduction.md")" -ge 17
 check "report gives the wall time" grep -q 'wall time of the points | \*\*[0-9.]* s\*\*' "$RES/reproduction.md"
 
-# 5. Directions of the paper's claims on the quick data (default profile).
-RES=$RES/calibrated
+# 5. Directions of the paper's claims on the quick data (default reading).
+RES=$RES/fitted
 v() { awk -F, -v f="$2" -v c="$3" 'NR == 1 { for (i = 1; i <= NF; i++) ix[$i] = i; n = split(f, a, ","); next }
         { for (k = 1; k <= n; k++) { split(a[k], kv, "="); if ($ix[kv[1]] != kv[2]) next } print $ix[c]; exit }' "$1"; }
 for s in image1 image2; do
@@ -130,5 +135,7 @@ fi
 check "points.sh prints one command per point" \
     test "$(bash "$EXP/points.sh" --build "$BUILD" "${clusters[@]}" quick "$TMP/res2" | wc -l)" -eq $((20 + expect10))
 check "the phase lists are JSON<TAB>command" \
-    test "$(cat "$RES"/points.phase[12] | awk -F'\t' 'NF != 2 || $1 !~ /^\/.*\.json$/ || $2 !~ /run_point.sh/' | wc -l)" -eq 0
+    test "$(cat "$TMP"/res/points.phase[12] | awk -F'\t' 'NF != 2 || $1 !~ /^\/.*\.json$/ || $2 !~ /run_point.sh/' | wc -l)" -eq 0
+check "the phase lists hold every point of the three readings" \
+    test "$(cat "$TMP"/res/points.phase[12] | wc -l)" -eq "$(cat "$TMP"/res/*/points.tsv | wc -l)"
 finish

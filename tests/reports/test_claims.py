@@ -56,12 +56,13 @@ class VerdictRule(unittest.TestCase):
 
 
 class Profiles(unittest.TestCase):
-    def test_one_folder_per_profile_default_first(self):
+    def test_one_folder_per_reading_default_first(self):
         self.assertEqual([r.profile for r in profile_results(RESULTS)], list(PROFILES))
-        self.assertEqual(PROFILES[0], "calibrated")
+        self.assertEqual(PROFILES[0], "fitted")
 
-    def test_profiles_differ_only_in_the_hand_over(self):
-        cal, lit = profile_results(RESULTS)
+    def test_calibrated_and_literal_differ_only_in_the_hand_over(self):
+        by_name = {r.profile: r for r in profile_results(RESULTS)}
+        cal, lit = by_name["calibrated"], by_name["literal"]
         for row in cal.f56.where():
             self.assertEqual(row["timing_profile"], "calibrated")
             other = lit.f56.where(scene=row["scene"], mapping=row["mapping"], n=row["n"])[0]
