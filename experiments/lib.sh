@@ -55,7 +55,6 @@ use_reading() {
         *) die "the reading must be one of: ${READINGS[*]}, not '$1'" ;;
     esac
     MAPARG[cyclic]=${TORUSRT_LB_MAP:-${MAPARG[cyclic]}}
-    READING=$1
 }
 
 # Sweep definition per mode: image size, scenes, IP counts, mappings, processors per cluster.

@@ -29,7 +29,8 @@ def _own_or_parent(res, name):
 
 class Facts:
     """What the CSVs do not hold: image size, cells, hand-over cost, the reading's timing profile,
-    image 1 scene file and load-balancing mapping, one-processor runs, the joblog. Read from t1/*.json and joblog when the sweep's files are there (and then saved in
+    image 1 scene file and load-balancing mapping, one-processor runs, the joblog. Read from
+    t1/*.json, a load-balancing point and joblog when the sweep's files are there (and then saved in
     run_facts.csv), else from run_facts.csv."""
 
     KEYS = ("image_size", "cells", "hop_us", "t1_runs", "joblog_points", "joblog_span_s", "timing_profile",
