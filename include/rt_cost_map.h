@@ -121,6 +121,23 @@ rt_status rt_cost_replicate(const rt_cost_pilot *pilot, const rt_scene *scene, c
                             double fraction, const rt_memory_layout *layout, uint32_t *first, int32_t **extra,
                             size_t *extra_count, rt_cost_map_facts *facts, char *msg, size_t msg_len);
 
+/* The balanced scatter behind --map scatter (docs/cell-mappings.md#scatter): the cells, hottest
+ * first (equal work: in cell order), each dealt to the node with the least work so far (ties: the
+ * fewest cells, then the lowest node), neighbours not kept together. With fraction > 0 every
+ * cell whose work is above half the mean node work is first cut into ceil(work / (mean / 2))
+ * equal pieces (at most one per node), dealt the same way to as many different nodes (the first
+ * piece's node is the primary owner); then, round by round, each node whose copies take more
+ * than `fraction` times its data without them (rt_memory_per_owner_layout with `layout`, NULL:
+ * the default) drops its smallest copy and the pieces are dealt again, that cell cut once less,
+ * until no node is over. Fills owner[cells], first[0 .. cells] and *extra
+ * (malloc'd, *extra_count extra owners, rt_replicas.h's layout; free() it); facts (may be NULL):
+ * the predicted busiest node with each cell's work split evenly over its owners, and the pilot's
+ * packets the primary table cuts. RT_ERR_INVALID on bad arguments, RT_ERR_NOMEM. */
+rt_status rt_cost_map_scatter(const rt_cost_pilot *pilot, const rt_scene *scene, const rt_grid *grid,
+                              const int node_dims[3], int torus, double fraction, const rt_memory_layout *layout,
+                              int32_t *owner, uint32_t *first, int32_t **extra, size_t *extra_count,
+                              rt_cost_map_facts *facts, char *msg, size_t msg_len);
+
 #ifdef __cplusplus
 }
 #endif

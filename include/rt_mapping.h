@@ -28,7 +28,9 @@ typedef enum rt_map_kind {
     RT_MAP_CYCLIC = 1,       /* interleaved, load-balancing (paper Fig. 2b) */
     RT_MAP_BLOCK_CYCLIC = 2, /* blocks of B cells dealt cyclically */
     RT_MAP_FILE = 3,         /* an explicit table (rt_map_file.h); not made by rt_mapping_fill */
-    RT_MAP_COST = 4          /* from measured work and traffic (rt_cost_map.h); not made by rt_mapping_fill */
+    RT_MAP_COST = 4,         /* from measured work and traffic (rt_cost_map.h); not made by rt_mapping_fill */
+    RT_MAP_SCATTER =
+        5 /* measured work dealt to the least loaded node (rt_cost_map_scatter); not made by rt_mapping_fill */
 } rt_map_kind;
 
 /* Owner of cell index c along one axis of N cells over P processors. */

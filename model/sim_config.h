@@ -44,11 +44,9 @@ constexpr NamedValue<DataMode> kDataModeNames[] = {{DataMode::replicated, "repli
 constexpr NamedValue<FlowControl> kFlowNames[] = {{FlowControl::classes, "classes"}, {FlowControl::none, "none"}};
 constexpr NamedValue<ReplicaRule> kReplicaRuleNames[] = {{ReplicaRule::nearest, "nearest"},
                                                          {ReplicaRule::hash, "hash"}};
-constexpr NamedValue<rt_map_kind> kMappingNames[] = {{RT_MAP_BLOCK, "block"},
-                                                     {RT_MAP_CYCLIC, "cyclic"},
-                                                     {RT_MAP_BLOCK_CYCLIC, "block-cyclic"},
-                                                     {RT_MAP_FILE, "file"},
-                                                     {RT_MAP_COST, "cost"}};
+constexpr NamedValue<rt_map_kind> kMappingNames[] = {
+    {RT_MAP_BLOCK, "block"}, {RT_MAP_CYCLIC, "cyclic"}, {RT_MAP_BLOCK_CYCLIC, "block-cyclic"},
+    {RT_MAP_FILE, "file"},   {RT_MAP_COST, "cost"},     {RT_MAP_SCATTER, "scatter"}};
 
 // The machine: everything that decides the image time. machine_options.h writes it back as
 // the options that rebuild it (--dump-config, the JSON report's config.options).
@@ -79,6 +77,8 @@ struct MachineConfig {
     rt_memory_layout memory_layout = rt_memory_layout_default();  // what the memory report charges
 
     int node_count() const { return ips[0] * ips[1] * ips[2]; }
+    // A mapping made from a pilot run's measured work (--map cost, cost:K or scatter).
+    bool measured_mapping() const { return mapping == RT_MAP_COST || mapping == RT_MAP_SCATTER; }
     int processor_count() const { return node_count() * cluster; }
 };
 

@@ -186,8 +186,8 @@ int rt_cost_hops(const int n[3], int torus, int a, int b)
     return h;
 }
 
-static void map_facts(const rt_cost_pilot *p, const int nodes[3], int torus, const int32_t *owner,
-                      rt_cost_map_facts *facts)
+void rt_cost_map_facts_of(const rt_cost_pilot *p, const int nodes[3], int torus, const int32_t *owner,
+                          rt_cost_map_facts *facts)
 {
     int n = nodes[0] * nodes[1] * nodes[2];
     double *work = calloc((size_t)n, sizeof *work);
@@ -250,7 +250,7 @@ rt_status rt_cost_map_folded(const rt_cost_pilot *p, const int nodes[3], int tor
         free(part);
         graph_free(&g);
     }
-    if (st == RT_OK && facts) map_facts(p, nodes, torus, owner, facts);
+    if (st == RT_OK && facts) rt_cost_map_facts_of(p, nodes, torus, owner, facts);
     return st;
 }
 
@@ -297,6 +297,6 @@ rt_status rt_cost_remap(const rt_cost_pilot *p, const int nodes[3], int torus, d
     free(old_part);
     free(move);
     graph_free(&g);
-    if (st == RT_OK && facts) map_facts(p, nodes, torus, owner, facts);
+    if (st == RT_OK && facts) rt_cost_map_facts_of(p, nodes, torus, owner, facts);
     return st;
 }

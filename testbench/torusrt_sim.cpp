@@ -226,6 +226,10 @@ int run(CommandLine &cl, double wall_start)
     const SimConfig &config = request.config;
     if (config.replicate > 0 && request.remap != RemapPolicy::static_map)
         throw UserError("--replicate: not with --remap (a remapped table keeps one owner per cell)", 2);
+    if (config.mapping == RT_MAP_SCATTER && request.remap != RemapPolicy::static_map)
+        throw UserError("--map scatter: not with --remap (the frames after the first are remapped with Scotch; use "
+                        "--map cost)",
+                        2);
     if (config.replicate > 0 && request.motion)
         throw UserError("--replicate: not with --motion (a moved object's transfers are counted for one owner "
                         "per cell)",

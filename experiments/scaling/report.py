@@ -17,7 +17,7 @@ from report import before_fit  # noqa: E402
 from report.plots import gnuplot_kind  # noqa: E402
 
 BUDGET = 2.0  # memory budget: this many times the flat cyclic mapping's total data memory
-FLAT = ["flat-cyclic", "flat-cost", "flat-cost-r0.5", "flat-cost-r1.0"]
+FLAT = ["flat-cyclic", "flat-cost", "flat-cost-r0.5", "flat-cost-r1.0", "flat-scatter", "flat-scatter-r0.5"]
 
 
 def load(path):
@@ -100,6 +100,7 @@ def findings(runs, scenes, ns, ok):
     L.append(f"- Replicated hot cells (hash rule, budget 1.0) shorten the flat cost mapping's image by up to "
              f"{g:.2f}x ({sc}, n = {n}) for {extra} bytes of copies ({100 * extra / base_mem:.2f} % more data); "
              f"they gain more than 5 % at {sum(1 for x in gains if x[0] > 1.05)} of {len(gains)} points.")
+    L += scatter_findings(runs, scenes, ns)
     flat_wins = sum(1 for sc in scenes for n in ns
                     if best_within_budget(runs, sc, n)["machine"].startswith("flat"))
     L.append(f"- The fastest machine within the budget is a flat torus at {flat_wins} of {len(scenes) * len(ns)} "
@@ -107,6 +108,27 @@ def findings(runs, scenes, ns, ok):
     L.append(f"- {len(runs)} runs; every image equal to `torusrt-render`'s byte for byte: **{'yes' if ok[0] else 'NO'}**; "
              f"packets conserved in every run: **{'yes' if ok[1] else 'NO'}**.")
     return L + [""]
+
+
+def scatter_findings(runs, scenes, ns):
+    """The balanced scatter against the cost mapping, and its cut hot cells against the best static
+    mapping (flat cyclic) on paper-image2 at 512 IPs."""
+    pairs = [(t(runs[(sc, "flat-cost", n)]) / t(runs[(sc, "flat-scatter", n)]), sc, n)
+             for sc in scenes for n in ns if (sc, "flat-cost", n) in runs and (sc, "flat-scatter", n) in runs]
+    if not pairs:
+        return []
+    best = max(pairs)
+    L = [f"- The balanced scatter (`--map scatter`) is faster than the cost mapping at "
+         f"{sum(1 for p in pairs if p[0] > 1.0)} of {len(pairs)} (scene, n) points, by up to {best[0]:.2f}x "
+         f"({best[1]}, n = {best[2]}); per scene at n = {', '.join(str(n) for n in ns)}, cost / scatter image time: "
+         + "; ".join(f"{sc} " + ", ".join(f"{p[0]:.2f}" for p in pairs if p[1] == sc) for sc in scenes) + "."]
+    key = ("paper-image2", "flat-scatter-r0.5", 512)
+    if key in runs and ("paper-image2", "flat-cyclic", 512) in runs:
+        r, cyc = runs[key], runs[("paper-image2", "flat-cyclic", 512)]
+        L.append(f"- paper-image2 at 512 IPs with its hottest cells cut (`--map scatter --replicate 0.5 "
+                 f"--replica-choice hash`): {t(r):.3g} s, {t(cyc) / t(r):.2f}x flat cyclic, efficiency "
+                 f"{100 * float(r['efficiency']):.1f} %, for {r['copy_bytes']} bytes of copies.")
+    return L
 
 
 def scene_table(runs, sc, ns, names):
@@ -162,7 +184,7 @@ def busy_plot(res, plot_dir, gp):
         for i in range(max(len(c) for c in cols)):
             f.write(f"{i} " + " ".join(f"{c[i]:.6g}" for c in cols) + "\n")
     png = gnuplot_kind(gp, "busy", data, os.path.join(plot_dir, "busy-paper-image2-512.png"),
-                  "paper-image2, 512 IPs: busy time per node, before and after replication", len(names) + 1)
+                  "paper-image2, 512 IPs: busy time per node, cost and scatter, with and without copies", len(names) + 1)
     return png, {m: (max(series[m]), sum(series[m]) / len(series[m])) for m in names}
 
 
@@ -185,6 +207,9 @@ def main(argv):
           "- **flat-cost-r0.5**, **flat-cost-r1.0**: `--map cost --replicate 0.5` or `1.0` with `--replica-choice "
           "hash` (under `nearest` the rays into a hot cell mostly come from one node and reach one owner; "
           "[cell-mappings.md](cell-mappings.md#replicated-cells));",
+          "- **flat-scatter**, **flat-scatter-r0.5**: `--map scatter`, the measured cells dealt to the least "
+          "loaded node, hottest first; `-r0.5` with `--replicate 0.5 --replica-choice hash`, the hottest cells cut "
+          "into pieces on several nodes ([cell-mappings.md](cell-mappings.md#scatter));",
           "- **mM-DATA-MAP**: n / M nodes of M processors (`--cluster M`), `--data replicated` or `shared`, "
           "`--map cyclic` or `cost`, wherever n / M is at least 4.", "",
           "Memory is the data memory of the report (`memory.total_bytes`: object records, materials and cell "
@@ -200,7 +225,7 @@ def main(argv):
         L += ["", f"![image time against n, {sc}]({rel}/{time_png})", "",
               f"![image time against memory, {sc}]({rel}/{mem_png})", ""]
     png, busy = busy_plot(res, plot_dir, gp)
-    L += ["## Busy time per node before and after replication (paper-image2, 512 IPs)", "",
+    L += ["## Busy time per node with and without copies (paper-image2, 512 IPs)", "",
           "Per node, busiest first: " + "; ".join(f"{m} busiest {b[0]:.3f} s, mean {b[1]:.3f} s"
                                                   for m, b in busy.items()) + ".", "",
           f"![busy time per node]({rel}/{png})", ""]

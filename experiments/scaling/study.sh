@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Scaling study: image time, efficiency and data memory against the number of processors (16,
 # 64, 512, 4096) on both paper scenes, cones-and-patches and facing-mirrors, for flat tori
-# (cyclic, cost, cost with replicated hot cells at budgets 0.5 and 1.0) and clusters of m = 4,
+# (cyclic, cost, cost with replicated hot cells at budgets 0.5 and 1.0, scatter, scatter with its
+# hottest cells cut at budget 0.5) and clusters of m = 4,
 # 16 and 64 processors at the same total (wherever there are at least 4 nodes; replicated and
 # shared data; cyclic and cost mapping), the default (fitted) profile; plus the busy time per node of
 # paper-image2 at 512 IPs before and after replication. Writes docs/scaling.md and docs/scaling/.
@@ -45,7 +46,8 @@ declare -A NODES=([4]=2x2x1 [8]=2x2x2 [16]=4x2x2 [32]=4x4x2 [64]=4x4x4 [128]=8x4
 for sc in "${scenes[@]}"; do for n in 16 64 512 4096; do
   s=${NODES[$n]}
   printf 'point\t%s\t%s\t%s\t1\treplicated\t%s\t%s\n' "$sc" flat-cyclic "$s" cyclic 0 "$sc" flat-cost "$s" cost 0 \
-    "$sc" flat-cost-r0.5 "$s" cost 0.5 "$sc" flat-cost-r1.0 "$s" cost 1.0
+    "$sc" flat-cost-r0.5 "$s" cost 0.5 "$sc" flat-cost-r1.0 "$s" cost 1.0 \
+    "$sc" flat-scatter "$s" scatter 0 "$sc" flat-scatter-r0.5 "$s" scatter 0.5
   for m in 4 16 64; do
     [ $((n / m)) -ge 4 ] || continue
     for d in replicated shared; do for map in cyclic cost; do
@@ -61,9 +63,9 @@ run_points "$work/run" scaling "$work/phase1.list" "$work/phase2.list"
   printf '\tconserved\timage_identical\n'
   study_rows "$work/phase2.list" tsv | sort -t$'\t' -k1,1 -k3,3n -k2,2
 } > "$res/runs.tsv"
-# Busy time per node, paper-image2 at 512 IPs: cost, and cost with copies at both budgets.
-for mc in flat-cost flat-cost-r0.5 flat-cost-r1.0; do
-  r=${mc#flat-cost}; r=${r#-r}
-  sed 's/^/'"$mc"'\t/' "$work/point_paper-image2_${mc}_8x8x8_1_replicated_cost_${r:-0}.busy"
+# Busy time per node, paper-image2 at 512 IPs: cost and scatter, without and with copies.
+for mc in flat-cost flat-cost-r0.5 flat-cost-r1.0 flat-scatter flat-scatter-r0.5; do
+  map=${mc#flat-}; map=${map%%-*}; r=${mc#flat-"$map"}; r=${r#-r}
+  sed 's/^/'"$mc"'\t/' "$work/point_paper-image2_${mc}_8x8x8_1_replicated_${map}_${r:-0}.busy"
 done > "$res/busy-paper-image2-512.tsv"
 python3 "$here/report.py" "$res" "$root/docs/scaling.md" "$pics" "$here" "$JOBS" "$(study_elapsed "$work" "$start")"

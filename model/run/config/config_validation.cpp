@@ -66,10 +66,10 @@ void validate_mapping(const MachineConfig &m)
     if ((m.mapping == RT_MAP_FILE) != !m.map_file.empty())
         bad("--map-file: a table file goes with the file mapping, and only with it");
     if (m.pilot_size[0] > 0 || m.pilot_size[1] > 0) {
-        if (m.mapping != RT_MAP_COST) bad("--pilot-size: only with --map cost");
+        if (!m.measured_mapping()) bad("--pilot-size: only with --map cost or scatter");
         check_image_size("--pilot-size", m.pilot_size[0], m.pilot_size[1]);
     }
-    if (m.replicate > 0 && m.mapping != RT_MAP_COST) bad("--replicate: only with --map cost");
+    if (m.replicate > 0 && !m.measured_mapping()) bad("--replicate: only with --map cost or scatter");
 }
 
 void validate_timing(const MachineConfig &m)

@@ -36,7 +36,7 @@ void set_timing(const OptionSpec &spec, rt_timing &t, const char *key, double v)
     if (rt_timing_set(&t, key, v, msg, sizeof msg) != RT_OK) throw UserError(spec.long_name() + ": " + msg, 2);
 }
 
-// block, cyclic, block-cyclic:B, cost, cost:K.
+// block, cyclic, block-cyclic:B, cost, cost:K, scatter.
 rt_map_kind parse_mapping(const std::string &option, const std::string &text, int &block)
 {
     size_t colon = text.find(':');
@@ -306,8 +306,8 @@ std::vector<MachineOption> mapping_file_options()
              m.map_file = t;
          },
          [](const MachineConfig &m) { return m.map_file; }},
-        {{"--pilot-size", "WxH", K::text, "", 0, 0, "", "image size of the --map cost pilot run (default the image's)",
-          G::machine, "pilot-size"},
+        {{"--pilot-size", "WxH", K::text, "", 0, 0, "",
+          "image size of the --map cost or scatter pilot run (default the image's)", G::machine, "pilot-size"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
              if (!t.empty()) m.pilot_size = parse_size(s.long_name(), t);
          },
@@ -316,7 +316,8 @@ std::vector<MachineOption> mapping_file_options()
                                          : std::to_string(m.pilot_size[0]) + "x" + std::to_string(m.pilot_size[1]);
          }},
         {{"--replicate", "FRACTION", K::real, "0", 0, 64, "",
-          "--map cost: extra memory per node for copies of hot cells, as a fraction of its data without them",
+          "--map cost or scatter: extra memory per node for copies of hot cells, as a fraction of its data without "
+          "them",
           G::machine, "replicate"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
              m.replicate = parse_real(s.long_name(), t, 0, 64);
@@ -376,7 +377,7 @@ std::string toml_string(const std::string &key, const std::string &v)
 
 }  // namespace
 
-std::string mapping_forms() { return "block, cyclic, block-cyclic:B, cost or cost:K"; }
+std::string mapping_forms() { return "block, cyclic, block-cyclic:B, cost, cost:K or scatter"; }
 
 const std::vector<MachineOption> &machine_option_table()
 {

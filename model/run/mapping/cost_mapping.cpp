@@ -53,6 +53,34 @@ void replicate_cells(const MachineConfig &config, const rt_cost_pilot &pilot, co
     std::free(extra);
 }
 
+// The balanced scatter, with its pieces of the hottest cells within --replicate's budget; the
+// busiest node's predicted work without the pieces in unreplicated_max_us.
+rt_status scatter_cells(const MachineConfig &config, const rt_cost_pilot &pilot, const rt_scene *scene,
+                        const rt_grid *grid, std::vector<int32_t> &owner, ReplicaTable &replicas,
+                        rt_cost_map_facts &facts, double &unreplicated_max_us, char *msg, size_t msg_len)
+{
+    const int torus = config.topology == Topology::torus;
+    std::vector<uint32_t> first(pilot.cells + 1);
+    int32_t *extra = nullptr;
+    size_t count = 0;
+    rt_status st = rt_cost_map_scatter(&pilot, scene, grid, config.ips.data(), torus, 0, &config.memory_layout,
+                                       owner.data(), first.data(), &extra, &count, &facts, msg, msg_len);
+    std::free(extra);
+    extra = nullptr;
+    unreplicated_max_us = facts.max_node_work_us;
+    replicas.first.clear();
+    replicas.extra.clear();
+    if (st != RT_OK || !(config.replicate > 0)) return st;
+    st = rt_cost_map_scatter(&pilot, scene, grid, config.ips.data(), torus, config.replicate, &config.memory_layout,
+                             owner.data(), first.data(), &extra, &count, &facts, msg, msg_len);
+    if (st == RT_OK && count) {
+        replicas.first = std::move(first);
+        replicas.extra.assign(extra, extra + count);
+    }
+    std::free(extra);
+    return st;
+}
+
 }  // namespace
 
 nlohmann::json cost_mapping(const MachineConfig &config, rt_scene *scene, const rt_grid *grid,
@@ -64,21 +92,28 @@ nlohmann::json cost_mapping(const MachineConfig &config, rt_scene *scene, const 
     rt_cost_map_facts facts;
     char msg[RT_MSG_LEN] = "";
     double edge_us = rt_cost_edge_us(&config.timing);
-    rt_status st = rt_cost_map_folded(&pilot, config.ips.data(), config.topology == Topology::torus, edge_us,
-                                      config.block, owner.data(), &facts, msg, sizeof msg);
-    double unreplicated_max_us = facts.max_node_work_us;
-    try {
-        if (st == RT_OK) replicate_cells(config, pilot, scene, grid, owner, replicas, facts);
-    } catch (...) {
-        rt_cost_pilot_release(&pilot);
-        throw;
+    const bool scatter = config.mapping == RT_MAP_SCATTER;
+    double unreplicated_max_us = 0;
+    rt_status st = RT_OK;
+    if (scatter) {
+        st = scatter_cells(config, pilot, scene, grid, owner, replicas, facts, unreplicated_max_us, msg, sizeof msg);
+    } else {
+        st = rt_cost_map_folded(&pilot, config.ips.data(), config.topology == Topology::torus, edge_us, config.block,
+                                owner.data(), &facts, msg, sizeof msg);
+        unreplicated_max_us = facts.max_node_work_us;
+        try {
+            if (st == RT_OK) replicate_cells(config, pilot, scene, grid, owner, replicas, facts);
+        } catch (...) {
+            rt_cost_pilot_release(&pilot);
+            throw;
+        }
     }
     double t2 = wall_clock_s();
     double pilot_us = pilot.total_us, max_cell_us = 0;
     for (size_t c = 0; c < pilot.cells; c++) max_cell_us = std::max(max_cell_us, pilot.work_us[c]);
     uint64_t faces = pilot.ops.handovers_sent;
     rt_cost_pilot_release(&pilot);
-    if (st != RT_OK) throw UserError(std::string("--map cost: ") + msg);
+    if (st != RT_OK) throw UserError(std::string(scatter ? "--map scatter: " : "--map cost: ") + msg);
     const rt_camera *cam = rt_scene_camera(scene);
     unsigned pw = config.pilot_size[0] ? config.pilot_size[0] : cam->width;
     unsigned ph = config.pilot_size[0] ? config.pilot_size[1] : cam->height;
@@ -87,7 +122,7 @@ nlohmann::json cost_mapping(const MachineConfig &config, rt_scene *scene, const 
             {"pilot_face_crossings", faces},
             {"pilot_max_cell_work_s", max_cell_us * 1e-6},
             {"pilot_wall_s", t1 - t0},
-            {"mapper", "scotch"},
+            {"mapper", scatter ? "scatter" : "scotch"},
             {"fold", config.block},
             {"mapper_wall_s", t2 - t1},
             {"edge_us_per_packet", edge_us},

@@ -64,7 +64,7 @@ nlohmann::json prepare_mapping(SimConfig &config, rt_scene *scene, const rt_grid
         config.replica_first = std::move(replicas.first);
         config.replica_extra = std::move(replicas.extra);
         j["file"] = config.map_file;
-    } else if (config.mapping == RT_MAP_COST) {
+    } else if (config.measured_mapping()) {
         ReplicaTable replicas;
         j.update(cost_mapping(config, scene, grid, owner, replicas));
         config.replica_first = std::move(replicas.first);
