@@ -27,6 +27,7 @@ IntersectionProcessor::IntersectionProcessor(sc_core::sc_module_name name, const
     if (setup.order_after) m_queue.tell_reader_at_once(this);
     if (setup.pool) m_queue.use_pool(*setup.pool);
     if (setup.primaries) m_queue.attach(setup.primaries, owner_id);
+    m_queue.take_rays_first(config.queue_order == QueueOrder::rays_first);
     SC_HAS_PROCESS(IntersectionProcessor);
     if (m_threaded) {
         SC_THREAD(run_thread);

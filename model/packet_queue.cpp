@@ -29,6 +29,7 @@ void PacketQueue::append(uint32_t handle)
     p.reserved = false;
     p.from_host = false;  // it is in this queue now, holding a slot
     m_items.push_back(handle);
+    m_rays += p.packet.kind == RT_PACKET_RAY;
     m_depth = static_cast<int>(m_items.size());
     if (m_items.size() > m_high_water) m_high_water = m_items.size();
     if (!m_reader_waiting) return;
@@ -39,6 +40,7 @@ void PacketQueue::append(uint32_t handle)
 void PacketQueue::remove(size_t index, bool keep_slot)
 {
     BufferSpace &space = space_for(m_items.at(index));
+    m_rays -= m_items.at(index).packet.kind == RT_PACKET_RAY;
     uint32_t handle = m_items.take(index);
     m_depth = static_cast<int>(m_items.size());
     if (!keep_slot) pool().release(handle);
@@ -62,9 +64,28 @@ bool PacketQueue::try_take_first(TimedPacket &taken)
     return true;
 }
 
+size_t PacketQueue::rays_first_pick() const
+{
+    size_t ray = newest_before(m_items.size(), RT_PACKET_RAY);
+    if (ray != kNone) return ray;
+    size_t shadow = newest_before(m_items.size(), RT_PACKET_SHADOW);
+    return primary_before(shadow) ? kNone : shadow;
+}
+
 bool PacketQueue::try_take_first_pooled(uint32_t &handle)
 {
     m_reader_waiting = false;
+    if (m_rays_first) {
+        size_t i = rays_first_pick();
+        if (i != kNone) {
+            handle = m_items.handle(i);
+            remove(i, true);
+            return true;
+        }
+        if (!m_source || !m_source->pending(m_node)) return false;
+        handle = pool().add(m_source->take(m_node), -1);
+        return true;
+    }
     if (m_source && m_source->pending(m_node) && primary_first()) {
         handle = pool().add(m_source->take(m_node), -1);
         return true;

@@ -14,7 +14,12 @@
 //
 // try_take() offers the packets to the reader in that order (the primary first when due, then
 // the queued packets oldest first, then a primary not yet due) and removes the first it accepts;
-// a reader that accepts every packet sees a plain FIFO (try_take_first). Under the class scheme
+// a reader that accepts every packet sees a plain FIFO (try_take_first). That is the order
+// primaries-first (--queue-order); under rays-first (take_rays_first) the offer is: the queued
+// ray packets newest first, then the next primary when due (its injection time no later than
+// the newest shadow packet's stamp, or no shadow packet waits), then the shadow packets newest
+// first, then a primary not yet due. A ray packet leads to more work (a hit makes shadow
+// packets) and the newest finishes its walk soonest, so the work behind it starts sooner. Under the class scheme
 // the reader accepts a packet only once the buffers its outputs go to have room, so it never
 // waits while holding a packet (flow_control.h). The reader looks at each candidate in its pool
 // slot; only the packet taken is copied out. A process that must not wait (an SC_METHOD) calls
@@ -23,6 +28,7 @@
 // reader set with tell_reader_at_once() is called instead, in the pushing delta.
 #pragma once
 
+#include <cstdint>
 #include <deque>
 #include <string>
 #include <systemc>
@@ -88,6 +94,8 @@ class PacketQueue {
         ~Reader() = default;
     };
     void tell_reader_at_once(Reader *reader) { m_ready_reader = reader; }
+    // Offers ray packets first, newest first (the rays-first order above); false: primaries-first.
+    void take_rays_first(bool on) { m_rays_first = on; }
     // Feeds this queue with `source`'s primaries for entry node `node`.
     void attach(PrimarySource *source, int node)
     {
@@ -128,11 +136,30 @@ class PacketQueue {
     {
         return m_source->pending(m_node) && (m_items.empty() || m_source->next_time(m_node) <= m_items.at(0).stamp);
     }
+    static constexpr size_t kNone = SIZE_MAX;
+    // Rays-first: the position of the newest packet of `kind` older than position `before`, or kNone.
+    size_t newest_before(size_t before, uint8_t kind) const
+    {
+        if (kind == RT_PACKET_RAY && m_rays == 0) return kNone;
+        while (before-- > 0)
+            if (m_items.at(before).packet.kind == kind) return before;
+        return kNone;
+    }
+    // Rays-first: whether the next primary comes before the shadow packet at `shadow` (kNone: none).
+    bool primary_before(size_t shadow) const
+    {
+        return m_source && m_source->pending(m_node) &&
+               (shadow == kNone || m_source->next_time(m_node) <= m_items.at(shadow).stamp);
+    }
+    // Rays-first: the position try_take_first_pooled takes, kNone for the next primary.
+    size_t rays_first_pick() const;
 
     // What a push and a take touch first, then the buffers, then the rest (a reader told at
     // once never touches the event).
     PooledFifo m_items;  // the packets, oldest first
     size_t m_high_water = 0;
+    size_t m_rays = 0;  // ray packets among the queued (rays-first looks for them)
+    bool m_rays_first = false;
     int m_depth = 0;
     bool m_reader_waiting = false;
     Reader *m_ready_reader = nullptr;
@@ -147,6 +174,30 @@ class PacketQueue {
 template <class Accept> bool PacketQueue::try_take(Accept &&accept, TimedPacket *taken)
 {
     m_reader_waiting = false;
+    if (m_rays_first) {
+        auto offer = [&](size_t i) {
+            const TimedPacket &c = m_items.at(i);
+            if (!accept(c)) return false;
+            if (taken) *taken = c;
+            remove(i);
+            return true;
+        };
+        auto offer_primary = [&]() {
+            TimedPacket c = m_source->peek(m_node);
+            if (!accept(static_cast<const TimedPacket &>(c))) return false;
+            m_source->drop(m_node);
+            if (taken) *taken = c;
+            return true;
+        };
+        for (size_t i = newest_before(m_items.size(), RT_PACKET_RAY); i != kNone; i = newest_before(i, RT_PACKET_RAY))
+            if (offer(i)) return true;
+        size_t shadow = newest_before(m_items.size(), RT_PACKET_SHADOW);
+        bool due = primary_before(shadow);
+        if (due && offer_primary()) return true;
+        for (size_t i = shadow; i != kNone; i = newest_before(i, RT_PACKET_SHADOW))
+            if (offer(i)) return true;
+        return !due && m_source && m_source->pending(m_node) && offer_primary();
+    }
     bool primary = m_source && m_source->pending(m_node);
     bool first = primary && primary_first();
     if (first) {

@@ -33,8 +33,9 @@ constexpr unsigned kMaxRecordBytes = 4096;  // --cell-header-bytes, --list-entry
 enum class Topology { torus, mesh };
 enum class TimingStyle { at, lt };
 enum class DataMode { replicated, shared };
-enum class FlowControl { none, classes };  // see flow_control.h
-enum class ReplicaRule { nearest, hash };  // see replica_choice.h
+enum class FlowControl { none, classes };               // see flow_control.h
+enum class ReplicaRule { nearest, hash };               // see replica_choice.h
+enum class QueueOrder { primaries_first, rays_first };  // see packet_queue.h
 
 // The names the options take and the reports print (the arbiter and dispatch policies are
 // named by their registries, bus_arbiter.h and cluster_dispatch.h).
@@ -44,6 +45,8 @@ constexpr NamedValue<DataMode> kDataModeNames[] = {{DataMode::replicated, "repli
 constexpr NamedValue<FlowControl> kFlowNames[] = {{FlowControl::classes, "classes"}, {FlowControl::none, "none"}};
 constexpr NamedValue<ReplicaRule> kReplicaRuleNames[] = {{ReplicaRule::nearest, "nearest"},
                                                          {ReplicaRule::hash, "hash"}};
+constexpr NamedValue<QueueOrder> kQueueOrderNames[] = {{QueueOrder::primaries_first, "primaries-first"},
+                                                       {QueueOrder::rays_first, "rays-first"}};
 constexpr NamedValue<rt_map_kind> kMappingNames[] = {
     {RT_MAP_BLOCK, "block"}, {RT_MAP_CYCLIC, "cyclic"}, {RT_MAP_BLOCK_CYCLIC, "block-cyclic"},
     {RT_MAP_FILE, "file"},   {RT_MAP_COST, "cost"},     {RT_MAP_SCATTER, "scatter"}};
@@ -59,21 +62,22 @@ struct MachineConfig {
     int block = 1;                                               // block size of block-cyclic, K of cost:K
     std::string map_file;                                        // --map-file: explicit cell -> node table
     std::array<unsigned, 2> pilot_size{0, 0};                    // --pilot-size for --map cost (0 = the image's)
-    double replicate = 0;                               // --replicate: extra memory per node for replicas (fraction)
-    ReplicaRule replica_choice = ReplicaRule::nearest;  // which owner of a replicated cell a packet goes to
-    unsigned queue_capacity = 0;                        // packets per buffer (per class), 0 = unbounded
-    FlowControl flow = FlowControl::classes;            // deadlock-free class split, or one class (none)
-    rt_timing timing{};                                 // operation and transfer times
-    std::string timing_profile;                         // label: the profile, with " + FILE" for a timing file
-    std::string timing_base;                            // the built-in profile the table started from
-    std::string timing_file;                            // the timing file applied on top ("" = none)
-    rt_step_params step{};                              // shade-tree limits
-    TimingStyle style = TimingStyle::at;                // approximately- or loosely-timed
-    double quantum_us = 0;                              // loosely-timed global quantum
-    int cluster = 1;                                    // processors per node (1 = flat torus)
-    DataMode data = DataMode::replicated;               // object data in a cluster
-    std::string arbiter = "round-robin";                // cluster bus arbiter, by its registered name (bus_arbiter.h)
-    std::string dispatch = "round-robin";               // cluster packet dispatch, by name (cluster_dispatch.h)
+    double replicate = 0;                                  // --replicate: extra memory per node for replicas (fraction)
+    ReplicaRule replica_choice = ReplicaRule::nearest;     // which owner of a replicated cell a packet goes to
+    unsigned queue_capacity = 0;                           // packets per buffer (per class), 0 = unbounded
+    FlowControl flow = FlowControl::classes;               // deadlock-free class split, or one class (none)
+    QueueOrder queue_order = QueueOrder::primaries_first;  // which waiting packet an IP takes up next
+    rt_timing timing{};                                    // operation and transfer times
+    std::string timing_profile;                            // label: the profile, with " + FILE" for a timing file
+    std::string timing_base;                               // the built-in profile the table started from
+    std::string timing_file;                               // the timing file applied on top ("" = none)
+    rt_step_params step{};                                 // shade-tree limits
+    TimingStyle style = TimingStyle::at;                   // approximately- or loosely-timed
+    double quantum_us = 0;                                 // loosely-timed global quantum
+    int cluster = 1;                                       // processors per node (1 = flat torus)
+    DataMode data = DataMode::replicated;                  // object data in a cluster
+    std::string arbiter = "round-robin";   // cluster bus arbiter, by its registered name (bus_arbiter.h)
+    std::string dispatch = "round-robin";  // cluster packet dispatch, by name (cluster_dispatch.h)
     rt_memory_layout memory_layout = rt_memory_layout_default();  // what the memory report charges
 
     int node_count() const { return ips[0] * ips[1] * ips[2]; }
@@ -124,5 +128,6 @@ inline const char *style_name(TimingStyle s) { return name_in(kStyleNames, s); }
 inline const char *data_mode_name(DataMode d) { return name_in(kDataModeNames, d); }
 inline const char *flow_name(FlowControl f) { return name_in(kFlowNames, f); }
 inline const char *replica_rule_name(ReplicaRule r) { return name_in(kReplicaRuleNames, r); }
+inline const char *queue_order_name(QueueOrder o) { return name_in(kQueueOrderNames, o); }
 
 }  // namespace torusrt

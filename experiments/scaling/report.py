@@ -17,7 +17,9 @@ from report import before_fit  # noqa: E402
 from report.plots import gnuplot_kind  # noqa: E402
 
 BUDGET = 2.0  # memory budget: this many times the flat cyclic mapping's total data memory
-FLAT = ["flat-cyclic", "flat-cost", "flat-cost-r0.5", "flat-cost-r1.0", "flat-scatter", "flat-scatter-r0.5"]
+FLAT = ["flat-cyclic", "flat-cost", "flat-cost-r0.5", "flat-cost-r1.0", "flat-scatter", "flat-scatter-r0.5",
+        "flat-cyclic-rf", "flat-scatter-rf", "flat-scatter-r0.5-rf"]
+RAYS_FIRST = "-rf"  # suffix of a machine run with --queue-order rays-first
 
 
 def load(path):
@@ -101,6 +103,7 @@ def findings(runs, scenes, ns, ok):
              f"{g:.2f}x ({sc}, n = {n}) for {extra} bytes of copies ({100 * extra / base_mem:.2f} % more data); "
              f"they gain more than 5 % at {sum(1 for x in gains if x[0] > 1.05)} of {len(gains)} points.")
     L += scatter_findings(runs, scenes, ns)
+    L += order_findings(runs, scenes, ns)
     flat_wins = sum(1 for sc in scenes for n in ns
                     if best_within_budget(runs, sc, n)["machine"].startswith("flat"))
     L.append(f"- The fastest machine within the budget is a flat torus at {flat_wins} of {len(scenes) * len(ns)} "
@@ -128,6 +131,33 @@ def scatter_findings(runs, scenes, ns):
         L.append(f"- paper-image2 at 512 IPs with its hottest cells cut (`--map scatter --replicate 0.5 "
                  f"--replica-choice hash`): {t(r):.3g} s, {t(cyc) / t(r):.2f}x flat cyclic, efficiency "
                  f"{100 * float(r['efficiency']):.1f} %, for {r['copy_bytes']} bytes of copies.")
+    return L
+
+
+def order_findings(runs, scenes, ns):
+    """Each flat machine under --queue-order rays-first against the same machine under the default
+    order, and the factors of paper-image1's scatter at 512 IPs under both."""
+    pairs = [(t(runs[(sc, mc[:-len(RAYS_FIRST)], n)]) / t(r), sc, mc[:-len(RAYS_FIRST)], n)
+             for (sc, mc, n), r in sorted(runs.items())
+             if mc.endswith(RAYS_FIRST) and (sc, mc[:-len(RAYS_FIRST)], n) in runs]
+    if not pairs:
+        return []
+    best, worst = max(pairs), min(pairs)
+    L = [f"- The rays-first order (`--queue-order rays-first`: the newest ray packet, then the host's next "
+         f"primary, then the newest shadow packet) shortens the image at {sum(1 for p in pairs if p[0] > 1.0)} of "
+         f"{len(pairs)} (scene, machine, n) points, by up to {best[0]:.2f}x ({best[1]}, {best[2]}, n = {best[3]}); "
+         f"its worst point is {worst[0]:.2f}x ({worst[1]}, {worst[2]}, n = {worst[3]})."]
+    key = ("paper-image1", "flat-scatter", 512)
+    if key in runs and ("paper-image1", "flat-scatter-rf", 512) in runs:
+        a, b = runs[key], runs[("paper-image1", "flat-scatter-rf", 512)]
+        cyc = runs[("paper-image1", "flat-cyclic", 512)]
+        fa, fb = factors(a), factors(b)
+        L.append(f"- paper-image1 at 512 IPs under the scatter: {t(a):.3g} s (efficiency "
+                 f"{100 * float(a['efficiency']):.1f} %, tail {100 * fa['tail']:.0f} %) under primaries-first, "
+                 f"{t(b):.3g} s ({t(cyc) / t(b):.2f}x flat cyclic, efficiency {100 * float(b['efficiency']):.1f} %, "
+                 f"tail {100 * fb['tail']:.0f} %) under rays-first; balance {100 * fb['balance']:.0f} % and work "
+                 f"{100 * fb['work']:.0f} %, so what is left is the tail: the nodes wait for rays that depend on "
+                 "earlier ones ([cell-mappings.md](cell-mappings.md#scatter)).")
     return L
 
 
@@ -188,6 +218,31 @@ def busy_plot(res, plot_dir, gp):
     return png, {m: (max(series[m]), sum(series[m]) / len(series[m])) for m in names}
 
 
+def share_plot(res, plot_dir, gp):
+    """The share of busy IPs over time of each order in busy-share-paper-image1-512.tsv; returns the
+    PNG and, per order, the bins' (start s, share)."""
+    series = {}
+    with open(os.path.join(res, "busy-share-paper-image1-512.tsv")) as f:
+        for line in f:
+            order, start, share = line.split("\t")
+            series.setdefault(order, []).append((float(start), float(share)))
+    names = list(series)
+    data = os.path.join(plot_dir, "busy-share-paper-image1-512.dat")
+    # Each order has its own bins (its own image time): the series one after the other, the other
+    # columns '-', each closed by a 0 at its image time.
+    with open(data, "w") as f:
+        f.write("t " + " ".join(names) + "\n")
+        for j, name in enumerate(names):
+            for start, share in series[name]:
+                f.write(f"{start:.6g} " + " ".join(f"{share:.4f}" if k == j else "-" for k in range(len(names))) + "\n")
+            f.write(f"{series[name][-1][0] + series[name][-1][0] - series[name][-2][0]:.6g} "
+                    + " ".join("0" if k == j else "-" for k in range(len(names))) + "\n")
+    png = gnuplot_kind(gp, "share", data, os.path.join(plot_dir, "busy-share-paper-image1-512.png"),
+                       "paper-image1, 512 IPs, scatter: busy processors over the frame, both queue orders",
+                       len(names) + 1)
+    return png, series
+
+
 def main(argv):
     res, out_md, plot_dir, study_dir, jobs, wall = argv[1:7]
     gp = os.path.join(study_dir, "plots.gp")
@@ -210,6 +265,8 @@ def main(argv):
           "- **flat-scatter**, **flat-scatter-r0.5**: `--map scatter`, the measured cells dealt to the least "
           "loaded node, hottest first; `-r0.5` with `--replicate 0.5 --replica-choice hash`, the hottest cells cut "
           "into pieces on several nodes ([cell-mappings.md](cell-mappings.md#scatter));",
+          "- **flat-cyclic-rf**, **flat-scatter-rf**, **flat-scatter-r0.5-rf**: the same machines with "
+          "`--queue-order rays-first` ([model.md](model.md#intersectionprocessor-intersection_processorh));",
           "- **mM-DATA-MAP**: n / M nodes of M processors (`--cluster M`), `--data replicated` or `shared`, "
           "`--map cyclic` or `cost`, wherever n / M is at least 4.", "",
           "Memory is the data memory of the report (`memory.total_bytes`: object records, materials and cell "
@@ -229,6 +286,15 @@ def main(argv):
           "Per node, busiest first: " + "; ".join(f"{m} busiest {b[0]:.3f} s, mean {b[1]:.3f} s"
                                                   for m, b in busy.items()) + ".", "",
           f"![busy time per node]({rel}/{png})", ""]
+    png, share = share_plot(res, plot_dir, gp)
+    L += ["## Busy processors over the frame (paper-image1, 512 IPs, scatter)", "",
+          "The share of the 512 IPs busy in each fortieth of the image time, from a `--vcd` trace of each "
+          "order (`python3 -m report.busy_share`, run in `experiments/`): "
+          + "; ".join(f"{name}: image {v[-1][0] + v[-1][0] - v[-2][0]:.3f} s, above 80 % busy in "
+                      f"{sum(1 for _, x in v if x > 0.8)} of {len(v)} bins, below 50 % in the last "
+                      f"{len(v) - max(i for i, (_, x) in enumerate(v) if x >= 0.5) - 1}"
+                      for name, v in share.items()) + ".", "",
+          f"![busy processors over the frame]({rel}/{png})", ""]
     with open(out_md + ".tmp", "w") as f:
         f.write("\n".join(L))
     os.replace(out_md + ".tmp", out_md)

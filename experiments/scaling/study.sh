@@ -2,10 +2,12 @@
 # Scaling study: image time, efficiency and data memory against the number of processors (16,
 # 64, 512, 4096) on both paper scenes, cones-and-patches and facing-mirrors, for flat tori
 # (cyclic, cost, cost with replicated hot cells at budgets 0.5 and 1.0, scatter, scatter with its
-# hottest cells cut at budget 0.5) and clusters of m = 4,
+# hottest cells cut at budget 0.5; cyclic and both scatters again with --queue-order rays-first)
+# and clusters of m = 4,
 # 16 and 64 processors at the same total (wherever there are at least 4 nodes; replicated and
 # shared data; cyclic and cost mapping), the default (fitted) profile; plus the busy time per node of
-# paper-image2 at 512 IPs before and after replication. Writes docs/scaling.md and docs/scaling/.
+# paper-image2 at 512 IPs before and after replication, and the share of busy IPs over time of
+# paper-image1 at 512 IPs under both queue orders. Writes docs/scaling.md and docs/scaling/.
 # Usage: bash experiments/scaling/study.sh [--build DIR] [--backend local|ssh:HOSTFILE|slurm]
 #          [-j JOBS] [--slurm-args "..."] [--per-task K] [BUILD_DIR] [JOBS]   (default build/, 2 jobs)
 # The points are kept in experiments/scaling/results/points/ (a point is done when its JSON is
@@ -24,11 +26,12 @@ ref() { # SCENE: the renderer's image (the golden one) and T(1), the one-process
   jq -r .sim_time_s "$work/$TAG.part.json" > "$work/$1.t1"
   mv -f "$work/$TAG.part.json" "$work/$TAG.json"
 }
-point() { # SCENE MACHINE NODES_SHAPE M DATA MAP REPLICATE
+point() { # SCENE MACHINE NODES_SHAPE M DATA MAP REPLICATE [QUEUE_ORDER]
   local tag=$TAG extra=()
   [ "$7" = 0 ] || extra=(--replicate "$7" --replica-choice hash)
   "$build/torusrt-sim" "$root/scenes/$1.nff" -o "$work/$tag.png" --stats "$work/$tag.part.json" -q \
-    --ips "$3" --cluster "$4" --data "$5" --map "$6" "${extra[@]}" --t1 "$(cat "$work/$1.t1")"
+    --ips "$3" --cluster "$4" --data "$5" --map "$6" "${extra[@]}" --queue-order "${8:-primaries-first}" \
+    --t1 "$(cat "$work/$1.t1")"
   cmp -s "$work/$tag.png" "$work/$1.png" && same=1 || same=0
   jq -r --arg sc "$1" --arg mc "$2" --arg m "$4" --arg d "$5" --arg map "$6" --arg r "$7" --arg same "$same" \
     '[$sc, $mc, .config.processors, .config.nodes, $m, $d, $map, $r, .sim_time_s, .t1_s, .efficiency,
@@ -48,6 +51,8 @@ for sc in "${scenes[@]}"; do for n in 16 64 512 4096; do
   printf 'point\t%s\t%s\t%s\t1\treplicated\t%s\t%s\n' "$sc" flat-cyclic "$s" cyclic 0 "$sc" flat-cost "$s" cost 0 \
     "$sc" flat-cost-r0.5 "$s" cost 0.5 "$sc" flat-cost-r1.0 "$s" cost 1.0 \
     "$sc" flat-scatter "$s" scatter 0 "$sc" flat-scatter-r0.5 "$s" scatter 0.5
+  printf 'point\t%s\t%s\t%s\t1\treplicated\t%s\t%s\trays-first\n' "$sc" flat-cyclic-rf "$s" cyclic 0 \
+    "$sc" flat-scatter-rf "$s" scatter 0 "$sc" flat-scatter-r0.5-rf "$s" scatter 0.5
   for m in 4 16 64; do
     [ $((n / m)) -ge 4 ] || continue
     for d in replicated shared; do for map in cyclic cost; do
@@ -68,4 +73,12 @@ for mc in flat-cost flat-cost-r0.5 flat-cost-r1.0 flat-scatter flat-scatter-r0.5
   map=${mc#flat-}; map=${map%%-*}; r=${mc#flat-"$map"}; r=${r#-r}
   sed 's/^/'"$mc"'\t/' "$work/point_paper-image2_${mc}_8x8x8_1_replicated_${map}_${r:-0}.busy"
 done > "$res/busy-paper-image2-512.tsv"
+# The share of busy IPs over time, paper-image1 at 512 IPs under the scatter, both queue orders
+# (from a VCD trace of each; the traces are not kept).
+for order in primaries-first rays-first; do
+  "$build/torusrt-sim" "$root/scenes/paper-image1.nff" -o "$work/share.png" -q --ips 8x8x8 --map scatter \
+    --queue-order "$order" --t1 "$(cat "$work/paper-image1.t1")" --vcd "$work/share.vcd"
+  (cd "$root/experiments" && python3 -m report.busy_share "$work/share.vcd" 40 "$order")
+  rm -f "$work/share.vcd" "$work/share.gtkw" "$work/share.png"
+done > "$res/busy-share-paper-image1-512.tsv"
 python3 "$here/report.py" "$res" "$root/docs/scaling.md" "$pics" "$here" "$JOBS" "$(study_elapsed "$work" "$start")"

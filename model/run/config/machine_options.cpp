@@ -157,6 +157,15 @@ std::vector<MachineOption> network_options()
              m.flow = value_named(s.long_name(), t, kFlowNames);
          },
          [](const MachineConfig &m) { return std::string(flow_name(m.flow)); }},
+        {{"--queue-order", "ORDER", K::text, "primaries-first", 0, 0, "",
+          choice_help("which waiting packet an IP takes up next", kQueueOrderNames) +
+              " (primaries-first: the host's next primary, then the oldest packet; rays-first: the newest "
+              "ray packet, then the next primary, then the newest shadow packet)",
+          G::machine, "queue-order"},
+         [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
+             m.queue_order = value_named(s.long_name(), t, kQueueOrderNames);
+         },
+         [](const MachineConfig &m) { return std::string(queue_order_name(m.queue_order)); }},
     };
 }
 

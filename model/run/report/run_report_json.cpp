@@ -38,6 +38,7 @@ nlohmann::json config_json(const SimConfig &config)
             {"block", config.block},
             {"topology", topology_name(config.topology)},
             {"queue", config.queue_capacity},
+            {"queue_order", queue_order_name(config.queue_order)},
             {"style", style_name(config.style)},
             {"quantum_us", config.quantum_us},
             {"cluster", config.cluster},

@@ -42,7 +42,7 @@ std::string machine_text(const SimConfig &c)
                                          : std::string("unbounded buffers");
     std::string flow = c.flow == FlowControl::classes ? "flow control classes (deadlock-free)"
                                                       : "flow control none (finite buffers may deadlock)";
-    return style + ", " + queue + ", " + flow;
+    return style + ", " + queue + ", " + flow + ", queue order " + queue_order_name(c.queue_order);
 }
 
 void print_queues(const RunReport &r, std::FILE *out)
@@ -90,10 +90,11 @@ void print_mapping(const RunReport &r, std::FILE *out)
 {
     if (r.mapping.is_object() && r.mapping.contains("pilot_wall_s")) {
         const auto &m = r.mapping;
-        std::fprintf(
-            out,
-            "  mapping      cost: pilot %.3f s modelled (%.3f s wall), Scotch %.3f s wall; not in the image time\n",
-            m["pilot_modelled_s"].get<double>(), m["pilot_wall_s"].get<double>(), m["mapper_wall_s"].get<double>());
+        bool scatter = m.value("mapper", "") == "scatter";
+        std::fprintf(out,
+                     "  mapping      %s: pilot %.3f s modelled (%.3f s wall), %s %.3f s wall; not in the image time\n",
+                     scatter ? "scatter" : "cost", m["pilot_modelled_s"].get<double>(), m["pilot_wall_s"].get<double>(),
+                     scatter ? "deal" : "Scotch", m["mapper_wall_s"].get<double>());
     }
 }
 
