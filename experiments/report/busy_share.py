@@ -63,8 +63,14 @@ def busy_share(path, bins):
 
 
 def main(argv):
+    if len(argv) != 4 or not argv[2].isdigit() or int(argv[2]) < 1:
+        sys.exit("usage: python3 -m report.busy_share TRACE.vcd BINS LABEL (BINS a whole number, at least 1)")
     path, bins, label = argv[1], int(argv[2]), argv[3]
-    for start, share in busy_share(path, bins):
+    try:
+        shares = busy_share(path, bins)
+    except (OSError, ValueError, KeyError, IndexError) as e:
+        sys.exit(f"busy_share: {path}: {e}")
+    for start, share in shares:
         print(f"{label}\t{start:.6g}\t{share:.4f}")
 
 

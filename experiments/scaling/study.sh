@@ -43,7 +43,10 @@ point() { # SCENE MACHINE NODES_SHAPE M DATA MAP REPLICATE [QUEUE_ORDER]
   mv -f "$work/$tag.part.json" "$work/$tag.json"
 }
 study_script "$work" "ref point" "build root work"
-printf 'ref\t%s\n' "${scenes[@]}" | study_list "$work" "$work/phase1.list"
+# The reading before the fit's image 1 (its flakes in one plane; on a flat torus the calibrated
+# and fitted profiles give the same times) at 512 IPs: cyclic, cost and scatter under rays-first.
+planar=paper-image1-planar
+printf 'ref\t%s\n' "${scenes[@]}" "$planar" | study_list "$work" "$work/phase1.list"
 declare -A NODES=([4]=2x2x1 [8]=2x2x2 [16]=4x2x2 [32]=4x4x2 [64]=4x4x4 [128]=8x4x4 [256]=8x8x4
                   [512]=8x8x8 [1024]=16x8x8 [4096]=16x16x16)
 for sc in "${scenes[@]}"; do for n in 16 64 512 4096; do
@@ -59,15 +62,20 @@ for sc in "${scenes[@]}"; do for n in 16 64 512 4096; do
       printf 'point\t%s\tm%s-%s-%s\t%s\t%s\t%s\t%s\t0\n' "$sc" "$m" "$d" "$map" "${NODES[$((n / m))]}" "$m" "$d" "$map"
     done; done
   done
-done; done | study_list "$work" "$work/phase2.list"
+done; done > "$work/phase2.args"
+printf 'point\t%s\t%s\t8x8x8\t1\treplicated\t%s\t0\t%s\n' "$planar" flat-cyclic cyclic primaries-first \
+  "$planar" flat-cost cost primaries-first "$planar" flat-scatter-rf scatter rays-first >> "$work/phase2.args"
+study_list "$work" "$work/phase2.list" < "$work/phase2.args"
 echo "scaling study: $(cat "$work"/phase[12].list | wc -l) runs on the $BACKEND backend" >&2
 run_points "$work/run" scaling "$work/phase1.list" "$work/phase2.list"
-{
+header() {
   printf 'scene\tmachine\tn\tnodes\tm\tdata\tmapping\treplicate\tsim_time_s\tt1_s\tefficiency\tmemory_total_bytes'
   printf '\tmemory_max_per_ip_bytes\tbusy_max_s\tbusy_mean_s\tlink_util_max\tpacket_hops\tcopies\tcopy_bytes'
   printf '\tconserved\timage_identical\n'
-  study_rows "$work/phase2.list" tsv | sort -t$'\t' -k1,1 -k3,3n -k2,2
-} > "$res/runs.tsv"
+}
+study_rows "$work/phase2.list" tsv | sort -t$'\t' -k1,1 -k3,3n -k2,2 > "$work/rows.tsv"
+{ header; awk -F'\t' -v p="$planar" '$1 != p' "$work/rows.tsv"; } > "$res/runs.tsv"
+{ header; awk -F'\t' -v p="$planar" '$1 == p' "$work/rows.tsv"; } > "$res/planar-512.tsv"
 # Busy time per node, paper-image2 at 512 IPs: cost and scatter, without and with copies.
 for mc in flat-cost flat-cost-r0.5 flat-cost-r1.0 flat-scatter flat-scatter-r0.5; do
   map=${mc#flat-}; map=${map%%-*}; r=${mc#flat-"$map"}; r=${r#-r}
