@@ -128,9 +128,12 @@ def scatter_findings(runs, scenes, ns):
     key = ("paper-image2", "flat-scatter-r0.5", 512)
     if key in runs and ("paper-image2", "flat-cyclic", 512) in runs:
         r, cyc = runs[key], runs[("paper-image2", "flat-cyclic", 512)]
+        rf = runs.get(("paper-image2", "flat-scatter-r0.5-rf", 512))
+        also = (f"; under `--queue-order rays-first` {t(rf):.3g} s, {t(cyc) / t(rf):.2f}x, "
+                f"{100 * float(rf['efficiency']):.1f} %" if rf else "")
         L.append(f"- paper-image2 at 512 IPs with its hottest cells cut (`--map scatter --replicate 0.5 "
                  f"--replica-choice hash`): {t(r):.3g} s, {t(cyc) / t(r):.2f}x flat cyclic, efficiency "
-                 f"{100 * float(r['efficiency']):.1f} %, for {r['copy_bytes']} bytes of copies.")
+                 f"{100 * float(r['efficiency']):.1f} %, for {r['copy_bytes']} bytes of copies{also}.")
     return L
 
 
