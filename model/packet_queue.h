@@ -19,9 +19,9 @@
 // ray packets newest first, then the next primary when due (its injection time no later than
 // the newest shadow packet's stamp, or no shadow packet waits), then the shadow packets newest
 // first, then a primary not yet due. A ray packet leads to more work (a hit makes shadow
-// packets) and the newest finishes its walk soonest, so the work behind it starts sooner. Under the class scheme
-// the reader accepts a packet only once the buffers its outputs go to have room, so it never
-// waits while holding a packet (flow_control.h). The reader looks at each candidate in its pool
+// packets) and the newest finishes its walk soonest, so the work behind it starts sooner.
+// Under the class scheme the reader accepts a packet only once the buffers its outputs go to
+// have room, so it never waits while holding a packet (flow_control.h). The reader looks at each candidate in its pool
 // slot; only the packet taken is copied out. A process that must not wait (an SC_METHOD) calls
 // the try_ forms and, when nothing was taken, wait_reader() and then waits on not_empty_event()
 // (and, unless empty(), on its own retry event); a thread calls the blocking take_first(). A
