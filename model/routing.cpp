@@ -11,7 +11,8 @@ const char *direction_name(int dir)
     return dir >= 0 && dir < kDirections ? names[dir] : "none";
 }
 
-Routing::Routing(const std::array<int, 3> &dims, bool torus) : m_dims(dims), m_torus(torus)
+Routing::Routing(const std::array<int, 3> &dims, bool torus, RouteTies ties)
+    : m_dims(dims), m_torus(torus), m_ties(ties)
 {
     int nodes = dims[0] * dims[1] * dims[2];
     m_coords.reserve(static_cast<size_t>(nodes > 0 ? nodes : 0));
@@ -36,7 +37,7 @@ int Routing::neighbour(int n, int dir) const
     return node(c);
 }
 
-int Routing::next_direction(int from, int to) const
+int Routing::next_direction(int from, int to, uint32_t tie_key) const
 {
     const std::array<int, 3> &a = m_coords[static_cast<size_t>(from)], &b = m_coords[static_cast<size_t>(to)];
     for (int axis = 0; axis < 3; axis++) {
@@ -45,7 +46,8 @@ int Routing::next_direction(int from, int to) const
         int p = m_dims[axis];
         int forward = b[axis] - a[axis];
         if (forward < 0) forward += p;  // the hops going + round the ring
-        return direction(axis, forward <= p - forward);
+        if (forward != p - forward) return direction(axis, forward < p - forward);
+        return direction(axis, m_ties == RouteTies::plus || tie_key % 2 == 0);
     }
     return -1;
 }
@@ -62,7 +64,7 @@ int Routing::hops(int from, int to) const
 {
     int h = 0;
     while (from != to) {
-        from = neighbour(from, next_direction(from, to));
+        from = neighbour(from, next_direction(from, to, 0));
         h++;
     }
     return h;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "named_values.h"
+#include "routing.h"
 #include "preprocess_count.h"
 #include "rt_budget.h"
 #include "rt_mapping.h"
@@ -40,6 +41,7 @@ enum class QueueOrder { primaries_first, rays_first };  // see packet_queue.h
 // The names the options take and the reports print (the arbiter and dispatch policies are
 // named by their registries, bus_arbiter.h and cluster_dispatch.h).
 constexpr NamedValue<Topology> kTopologyNames[] = {{Topology::torus, "torus"}, {Topology::mesh, "mesh"}};
+constexpr NamedValue<RouteTies> kRouteTiesNames[] = {{RouteTies::split, "split"}, {RouteTies::plus, "plus"}};
 constexpr NamedValue<TimingStyle> kStyleNames[] = {{TimingStyle::at, "at"}, {TimingStyle::lt, "lt"}};
 constexpr NamedValue<DataMode> kDataModeNames[] = {{DataMode::replicated, "replicated"}, {DataMode::shared, "shared"}};
 constexpr NamedValue<FlowControl> kFlowNames[] = {{FlowControl::classes, "classes"}, {FlowControl::none, "none"}};
@@ -56,6 +58,7 @@ constexpr NamedValue<rt_map_kind> kMappingNames[] = {
 struct MachineConfig {
     std::array<int, 3> ips{1, 1, 1};                             // torus nodes per axis
     Topology topology = Topology::torus;                         // rings in every dimension, or a mesh
+    RouteTies route_ties = kDefaultRouteTies;                    // the way round an even ring on a tie
     std::array<int, 3> cells{24, 24, 24};                        // grid cells per axis (the object space's division)
     rt_preprocess_count preprocess_count = RT_COUNT_SEQUENTIAL;  // how preprocessing units are counted
     rt_map_kind mapping = RT_MAP_CYCLIC;                         // cell-to-node mapping
@@ -124,6 +127,7 @@ void validate(const SimConfig &config);
 
 inline const char *mapping_name(rt_map_kind kind) { return name_in(kMappingNames, kind); }
 inline const char *topology_name(Topology t) { return name_in(kTopologyNames, t); }
+inline const char *route_ties_name(RouteTies r) { return name_in(kRouteTiesNames, r); }
 inline const char *style_name(TimingStyle s) { return name_in(kStyleNames, s); }
 inline const char *data_mode_name(DataMode d) { return name_in(kDataModeNames, d); }
 inline const char *flow_name(FlowControl f) { return name_in(kFlowNames, f); }

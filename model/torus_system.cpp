@@ -11,7 +11,7 @@ namespace torusrt {
 TorusSystem::TorusSystem(sc_core::sc_module_name name, const MachineConfig &config, const rt_scene *scene,
                          const rt_grid *grid, const int32_t *cell_owner, PacketLedger &ledger, rt_framebuffer *fb,
                          HandOverTiming hand_over, const rt_replicas *replicas)
-    : sc_module(name), m_routing(config.ips, config.topology == Topology::torus)
+    : sc_module(name), m_routing(config.ips, config.topology == Topology::torus, config.route_ties)
 {
     if (replicas)
         m_replica_choice = std::make_unique<ReplicaChoice>(cell_owner, *replicas, m_routing, config.replica_choice);

@@ -1,10 +1,10 @@
 // comm_unit_test.cpp - a communication unit on node 0 of a 4-node ring routes each packet by the
 // owner of its cell: its own cells to the local side, others to the link of the first hop
-// (dimension order, the shorter way, + on a tie); packets from its links are delivered at their
-// annotated arrival time, simultaneous ones in source-port order and then in send order, and
-// each link slot (credit) is given back at delivery; host primaries go straight to the local
-// side; processor-side packets leave at their stamp. The unit has one link socket per neighbour,
-// handed out in order, and answers only blocking transport on them.
+// (dimension order, the shorter way; on a tie + for a pixel with x + y even, - for odd); packets from its links are
+// delivered at their annotated arrival time, simultaneous ones in source-port order and then in send order, and each
+// link slot (credit) is given back at delivery; host primaries go straight to the local side; processor-side packets
+// leave at their stamp. The unit has one link socket per neighbour, handed out in order, and answers only blocking
+// transport on them.
 #include <systemc>
 #include <tlm>
 #include <tlm_utils/simple_initiator_socket.h>
@@ -132,7 +132,7 @@ static Outcome simulate()
     rt_grid *grid = rt_grid_new(scene, 4, 1, 1, msg, sizeof msg);
     const int32_t owner[4] = {0, 1, 2, 3};  // cell i belongs to node i
 
-    Routing routing({4, 1, 1}, true);
+    Routing routing({4, 1, 1}, true, RouteTies::split);
     CommUnit cu("cu", 0, routing, grid, owner);
     RecordingSink local, plus, minus;
     cu.local.bind(local);
@@ -157,7 +157,8 @@ static Outcome simulate()
         {us(20), packet_in(0, 20, us(20))},        // own cell: local
         {us(20), packet_in(1, 21, us(20))},        // node 1: + link
         {us(20), packet_in(3, 23, us(20))},        // node 3: - link
-        {us(20), packet_in(2, 22, us(20))},        // node 2, two hops either way: + on the tie
+        {us(20), packet_in(2, 22, us(20))},        // node 2, two hops either way: x + y = 22 even, +
+        {us(20), packet_in(2, 25, us(20))},        // node 2 again: x + y = 25 odd, - on the tie
         {us(30), packet_in(0, 30, us(35), true)},  // host primary stamped later: no wait
         {us(40), packet_in(1, 40, us(47))},        // stamped ahead: leaves at its stamp
     };
@@ -193,14 +194,15 @@ TEST(CommUnit, RoutesOtherCellsToTheFirstHopLink)
     EXPECT_EQ(run().plus_tags, (std::vector<uint32_t>{21, 22, 40})) << "+x link gets the packets for nodes 1 and 2";
     EXPECT_EQ(run().plus_times, (std::vector<sc_time>{us(20), us(20), us(47)}))
         << "+x link times: 20, 20 and the stamp 47 us";
-    EXPECT_EQ(run().minus_tags, (std::vector<uint32_t>{23})) << "-x link gets the packet for node 3";
-    EXPECT_EQ(run().minus_times, (std::vector<sc_time>{us(20)})) << "at 20 us";
+    EXPECT_EQ(run().minus_tags, (std::vector<uint32_t>{23, 25}))
+        << "-x link gets the packet for node 3 and the odd pixel's packet for node 2";
+    EXPECT_EQ(run().minus_times, (std::vector<sc_time>{us(20), us(20)})) << "both at 20 us";
 }
 
 TEST(CommUnit, CountsLocalAndTransitPackets)
 {
     EXPECT_EQ(run().routed_local, 6u) << "13, 10, 11, 12, 20, 30";
-    EXPECT_EQ(run().routed_transit, 4u) << "21, 22, 23, 40";
+    EXPECT_EQ(run().routed_transit, 5u) << "21, 22, 23, 25, 40";
     EXPECT_EQ(run().held, 0u) << "nothing held";
 }
 

@@ -1,4 +1,5 @@
-// routing_test.cpp - dimension-order routing on tori and meshes: neighbours, first hops, hop counts.
+// routing_test.cpp - dimension-order routing on tori and meshes: neighbours, first hops (ties on even
+// rings split by the key, or all + under RouteTies::plus), hop counts.
 #include "model_test.h"
 #include "routing.h"
 
@@ -13,21 +14,40 @@ TEST(Routing, TorusWrapsAround)
     EXPECT_EQ(ring.neighbour(0, direction(1, true)), -1) << "no link along an axis with one node";
 }
 
-TEST(Routing, RingTakesTheShorterWayPlusOnATie)
+TEST(Routing, RingTakesTheShorterWaySplittingTiesByTheKey)
 {
-    Routing ring({8, 1, 1}, true);
-    EXPECT_EQ(ring.next_direction(0, 3), direction(0, true)) << "0 -> 3 goes +";
-    EXPECT_EQ(ring.next_direction(0, 5), direction(0, false)) << "0 -> 5 goes - (shorter)";
-    EXPECT_EQ(ring.next_direction(0, 4), direction(0, true)) << "a tie goes +";
+    Routing ring({8, 1, 1}, true, torusrt::RouteTies::split);
+    EXPECT_EQ(ring.next_direction(0, 3, 1), direction(0, true)) << "0 -> 3 goes + whatever the key";
+    EXPECT_EQ(ring.next_direction(0, 5, 0), direction(0, false)) << "0 -> 5 goes - (shorter) whatever the key";
+    EXPECT_EQ(ring.next_direction(0, 4, 6), direction(0, true)) << "a tie with an even key goes +";
+    EXPECT_EQ(ring.next_direction(0, 4, 7), direction(0, false)) << "a tie with an odd key goes -";
+    // After the first hop of a tie the rest of the way is shorter: no second tie, no turning back.
+    EXPECT_EQ(ring.next_direction(7, 4, 6), direction(0, false)) << "7 -> 4 (after 0 -> 7) keeps going -";
+    EXPECT_EQ(ring.next_direction(1, 4, 7), direction(0, true)) << "1 -> 4 (after 0 -> 1) keeps going +";
     EXPECT_EQ(ring.hops(0, 5), 3) << "0 -> 5 takes 3 hops";
-    EXPECT_EQ(ring.next_direction(2, 2), -1) << "no hop to itself";
+    EXPECT_EQ(ring.hops(0, 4), 4) << "0 -> 4 takes 4 hops either way";
+    EXPECT_EQ(ring.next_direction(2, 2, 0), -1) << "no hop to itself";
+}
+
+TEST(Routing, RingOfTwoUsesBothLinksUnderSplitAndOneUnderPlus)
+{
+    Routing split({2, 1, 1}, true, torusrt::RouteTies::split), plus({2, 1, 1}, true, torusrt::RouteTies::plus);
+    EXPECT_EQ(split.next_direction(0, 1, 0), direction(0, true)) << "even key: 0 -> 1 on 0's + link";
+    EXPECT_EQ(split.next_direction(0, 1, 1), direction(0, false)) << "odd key: 0 -> 1 on 0's - link";
+    EXPECT_EQ(split.next_direction(1, 0, 3), direction(0, false)) << "odd key: 1 -> 0 on 1's - link";
+    for (uint32_t key = 0; key < 4; key++) {
+        EXPECT_EQ(plus.next_direction(0, 1, key), direction(0, true)) << "plus: always + (key " << key << ")";
+        EXPECT_EQ(plus.next_direction(1, 0, key), direction(0, true)) << "plus: always + (key " << key << ")";
+    }
+    EXPECT_EQ(split.neighbour(0, direction(0, true)), 1);
+    EXPECT_EQ(split.neighbour(0, direction(0, false)), 1) << "both of a ring of two's links reach the other node";
 }
 
 TEST(Routing, MeshHasNoWrapAround)
 {
     Routing line({8, 1, 1}, false);
     EXPECT_EQ(line.neighbour(7, direction(0, true)), -1) << "no wrap-around link";
-    EXPECT_EQ(line.next_direction(0, 5), direction(0, true)) << "0 -> 5 goes +";
+    EXPECT_EQ(line.next_direction(0, 5, 1), direction(0, true)) << "0 -> 5 goes +";
     EXPECT_EQ(line.hops(0, 7), 7) << "0 -> 7 takes 7 hops";
 }
 
@@ -35,7 +55,7 @@ TEST(Routing, Torus3dRoutesXFirstTheShortWay)
 {
     Routing torus({4, 2, 2}, true);
     int from = torus.node({0, 0, 0}), to = torus.node({3, 1, 1});
-    EXPECT_EQ(torus.next_direction(from, to), direction(0, false)) << "x first, the short way";
+    EXPECT_EQ(torus.next_direction(from, to, 0), direction(0, false)) << "x first, the short way";
     EXPECT_EQ(torus.hops(from, to), 3) << "(0,0,0) -> (3,1,1) takes 3 hops";
 }
 

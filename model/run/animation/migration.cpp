@@ -28,11 +28,11 @@ LinkLoad::LinkLoad(const Routing &routing, int nodes)
 {
 }
 
-void LinkLoad::send(int from, int to, uint64_t bytes)
+void LinkLoad::send(int from, int to, uint64_t bytes, uint32_t tie_key)
 {
     int hops = 0;
     for (int at = from; at != to; hops++) {
-        int dir = m_routing.next_direction(at, to);
+        int dir = m_routing.next_direction(at, to, tie_key);
         m_link_bytes[static_cast<size_t>(at) * kDirections + static_cast<size_t>(dir)] += bytes;
         at = m_routing.neighbour(at, dir);
     }
@@ -95,7 +95,7 @@ MigrationCost migration_cost(const rt_scene *scene, const rt_grid *grid, const R
             bytes += ob;
         }
         m.cells++;
-        links.send(from, to, bytes);
+        links.send(from, to, bytes, static_cast<uint32_t>(c));
     }
     links.finish(timing, m);
     return m;

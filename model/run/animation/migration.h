@@ -38,8 +38,9 @@ double link_transfer_us(const rt_timing &timing, uint64_t bytes);
 class LinkLoad {
   public:
     LinkLoad(const Routing &routing, int nodes);
-    // One transfer of `bytes` from node `from` to node `to` (nothing when they are the same).
-    void send(int from, int to, uint64_t bytes);
+    // One transfer of `bytes` from node `from` to node `to` (nothing when they are the same);
+    // `tie_key` (the cell or object moved) picks the way round an even ring on a tie.
+    void send(int from, int to, uint64_t bytes, uint32_t tie_key);
     // Fills m's byte_hops, max_hops, busiest_link_bytes and time_s (the busiest link's time).
     void finish(const rt_timing &timing, MigrationCost &m) const;
 

@@ -104,7 +104,7 @@ MotionUpdate motion_update_cost(const rt_scene *scene, const rt_grid *grid, cons
                     u.transfer.object_bytes += record;
                     bytes += record;
                 }
-                links.send(handler, node, bytes);
+                links.send(handler, node, bytes, static_cast<uint32_t>(o));
             }
             c = NodeChange{};
         }

@@ -134,6 +134,15 @@ std::vector<MachineOption> network_options()
              m.topology = value_named(s.long_name(), t, kTopologyNames);
          },
          [](const MachineConfig &m) { return std::string(topology_name(m.topology)); }},
+        {{"--route-ties", "RULE", K::text, route_ties_name(kDefaultRouteTies), 0, 0, "",
+          choice_help("the way round an even ring when both are equally short", kRouteTiesNames) +
+              " (split: + for a packet whose pixel x + y is even, - for odd, so a ring of two uses both its "
+              "links; plus: always +, a ring of two then uses one link each way)",
+          G::machine, "route-ties"},
+         [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
+             m.route_ties = value_named(s.long_name(), t, kRouteTiesNames);
+         },
+         [](const MachineConfig &m) { return std::string(route_ties_name(m.route_ties)); }},
         {common_option_spec("--cells"),
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
              m.cells = parse_triple(s.long_name(), t, 1, static_cast<int>(s.max));

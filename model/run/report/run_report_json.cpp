@@ -37,6 +37,7 @@ nlohmann::json config_json(const SimConfig &config)
             {"mapping", mapping_name(config.mapping)},
             {"block", config.block},
             {"topology", topology_name(config.topology)},
+            {"route_ties", route_ties_name(config.route_ties)},
             {"queue", config.queue_capacity},
             {"queue_order", queue_order_name(config.queue_order)},
             {"style", style_name(config.style)},

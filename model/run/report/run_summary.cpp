@@ -32,6 +32,16 @@ template <typename T, typename F> Spread spread(const std::vector<T> &items, F v
     return s;
 }
 
+// The network as the summary's system line names it: a torus with an even ring says how it breaks ties.
+std::string network_text(const SimConfig &c)
+{
+    bool even_ring = false;
+    for (int p : c.ips) even_ring = even_ring || (p >= 2 && p % 2 == 0);
+    std::string name = topology_name(c.topology);
+    if (c.topology != Topology::torus || !even_ring) return name;
+    return name + " (ties " + route_ties_name(c.route_ties) + ")";
+}
+
 // The machine as the summary's system line gives it: timing style, buffers and flow control.
 std::string machine_text(const SimConfig &c)
 {
@@ -111,7 +121,7 @@ void print_summary(const RunReport &r, std::FILE *out)
     std::fprintf(out,
                  "  system       %dx%dx%d %s, %s mapping, %d processor(s) per node, %s data,\n"
                  "               %s\n",
-                 c.ips[0], c.ips[1], c.ips[2], topology_name(c.topology), mapping_name(c.mapping), c.cluster,
+                 c.ips[0], c.ips[1], c.ips[2], network_text(c).c_str(), mapping_name(c.mapping), c.cluster,
                  data_mode_name(c.data), machine_text(c).c_str());
     if (r.frames.empty())
         std::fprintf(out, "  image time   %s s simulated   (T(1) %s s, %s)\n", sig4(T).c_str(), sig4(f.t1_s).c_str(),
