@@ -28,6 +28,7 @@ typedef struct rt_op_counts {
     uint64_t fb_writes;          /* frame-buffer contributions */
     uint64_t handovers_sent;     /* packets handed on to the next cell's owner */
     uint64_t handovers_received; /* packets taken up after another IP handed them over */
+    uint64_t cell_steps;         /* moves of a packet into its next cell inside the object space */
 } rt_op_counts;
 
 static inline void rt_ops_add(rt_op_counts *sum, const rt_op_counts *add)
@@ -43,6 +44,7 @@ static inline void rt_ops_add(rt_op_counts *sum, const rt_op_counts *add)
     sum->fb_writes += add->fb_writes;
     sum->handovers_sent += add->handovers_sent;
     sum->handovers_received += add->handovers_received;
+    sum->cell_steps += add->cell_steps;
 }
 
 #ifdef __cplusplus

@@ -45,6 +45,7 @@ typedef struct rt_timing {
     double handover_send_us;    /* sending IP: hand a packet on to the next cell's owner */
     double handover_receive_us; /* receiving IP: take up a packet another IP handed over */
     double preprocess_unit_us;  /* one half-space test of a moving scene's cell-list update (340) */
+    double cell_step_packet_us; /* packet work on every move into the next cell, T(1) included (0) */
 } rt_timing;
 
 void rt_timing_defaults(rt_timing *timing);

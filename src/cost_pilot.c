@@ -48,11 +48,13 @@ static void on_test(void *vctx, uint32_t object)
     k->step_tests++;
 }
 
-/* The step's work beyond its next-cell determinations, shared by the objects it tested. */
+/* The step's work beyond its next-cell determinations and cell-step packet work, shared by the
+ * objects it tested. */
 static void share_among_objects(pilot_ctx *ctx, uint32_t cell, const rt_op_counts *work, double step_us)
 {
     object_counter *k = ctx->objects;
-    double share = step_us - (double)work->dda_steps * ctx->timing->dda_step_us;
+    double share = step_us - (double)work->dda_steps * ctx->timing->dda_step_us -
+                   (double)work->cell_steps * ctx->timing->cell_step_packet_us;
     size_t n = 0;
     const uint32_t *list = rt_grid_cell_objects(ctx->grid, cell, &n);
     for (size_t t = 0; t < k->touched_count; t++) {

@@ -345,6 +345,7 @@ rt_status rt_step(const rt_scene *scene, const rt_grid *grid, const int32_t *cel
             out->fate = RT_FATE_LEFT;
             return RT_OK;
         }
+        out->ops.cell_steps++; /* the packet now names its next cell (docs/timing.md, cell_step_packet) */
         cell = rt_grid_index(grid->dims, p->dda.cell);
         if (cell_owner && cell_owner[cell] != my_id && !rt_replicas_holds(params->replicas, cell_owner, cell, my_id)) {
             hand_over(p, cell, out);

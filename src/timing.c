@@ -44,6 +44,9 @@ static const timing_key keys[] = {
     /* The paper times no half-space test; a next-cell determination, the nearest operation it
      * measures (coordinates against cell planes), stands for one (docs/timing.md). */
     {"preprocess_unit", offsetof(rt_timing, preprocess_unit_us), 0, 340.0},
+    /* A reading where the packet is written or taken up again at every cell it enters (it
+     * carries the index of the next cell, docs/paper.md): 0 in every profile. */
+    {"cell_step_packet", offsetof(rt_timing, cell_step_packet_us), 0, 0.0},
 };
 #define KEY_COUNT (sizeof keys / sizeof keys[0])
 
@@ -270,7 +273,8 @@ double rt_timing_step_us(const rt_timing *t, const rt_op_counts *ops)
            (double)ops->reflection_vectors * t->reflection_us + (double)ops->refraction_vectors * t->refraction_us +
            (double)ops->packets_analysed * t->packet_analysis_us +
            (double)ops->packets_created * t->packet_creation_us + (double)ops->fb_writes * t->fb_write_us +
-           (double)ops->handovers_sent * t->handover_send_us + (double)ops->handovers_received * t->handover_receive_us;
+           (double)ops->handovers_sent * t->handover_send_us +
+           (double)ops->handovers_received * t->handover_receive_us + (double)ops->cell_steps * t->cell_step_packet_us;
 }
 
 double rt_timing_link_packet_us(const rt_timing *t)

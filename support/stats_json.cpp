@@ -17,7 +17,8 @@ nlohmann::json ops_json(const rt_op_counts &o)
             {"packets_created", o.packets_created},
             {"fb_writes", o.fb_writes},
             {"handovers_sent", o.handovers_sent},
-            {"handovers_received", o.handovers_received}};
+            {"handovers_received", o.handovers_received},
+            {"cell_steps", o.cell_steps}};
 }
 
 nlohmann::json packets_json(const rt_packet_totals &t)

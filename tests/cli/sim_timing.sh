@@ -5,14 +5,15 @@
 # conserved on every run;
 # the same run twice gives identical images, times and per-IP statistics.
 source "$(dirname "$0")/common.bash" "$@"
-printf 'test_miss 1000\ntest_hit 2000\ndda_step 300\nshading 4000\nreflection 700\nrefraction 1200\npacket_analysis 500\npacket_creation 1500\nfb_write 7\nhandover_send 900\nhandover_receive 300\n' >"$TMP/other.timing"
+printf 'test_miss 1000\ntest_hit 2000\ndda_step 300\nshading 4000\nreflection 700\nrefraction 1200\npacket_analysis 500\npacket_creation 1500\nfb_write 7\nhandover_send 900\nhandover_receive 300\ncell_step_packet 250\n' >"$TMP/other.timing"
 # expected_us RENDER.json SIM.json: the renderer's op counts times the simulator's config.timing.
 expected_us() {
   jq -n --slurpfile r "$1" --slurpfile s "$2" '$r[0].ops as $o | $s[0].config.timing as $t
       | $o.tests_missed * $t.test_miss + $o.tests_hit * $t.test_hit + $o.dda_steps * $t.dda_step
       + $o.shadings * $t.shading + $o.reflection_vectors * $t.reflection + $o.refraction_vectors * $t.refraction
       + $o.packets_analysed * $t.packet_analysis + $o.packets_created * $t.packet_creation + $o.fb_writes * $t.fb_write
-      + $o.handovers_sent * $t.handover_send + $o.handovers_received * $t.handover_receive'
+      + $o.handovers_sent * $t.handover_send + $o.handovers_received * $t.handover_receive
+      + $o.cell_steps * $t.cell_step_packet'
 }
 near() { awk -v a="$1" -v b="$2" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(a != "" && b != "" && d <= 1e-6 * b + 1e-6) }'; }
 for scene in paper-image2 scale-1 facing-mirrors tir light-inside; do

@@ -782,6 +782,7 @@ TEST(StepOps, HandCountedGridAndBruteForce)
     EXPECT_EQ(o.ops.tests_missed, 1u);
     EXPECT_EQ(o.ops.tests_hit, 1u);
     EXPECT_EQ(o.ops.dda_steps, 2u);
+    EXPECT_EQ(o.ops.cell_steps, 1u) << "cell 0 -> 1; the shadow's start cell is no move";
     EXPECT_EQ(o.ops.shadings, 1u);
     EXPECT_EQ(o.ops.reflection_vectors, 0u);
     EXPECT_EQ(o.ops.refraction_vectors, 0u);
@@ -796,6 +797,7 @@ TEST(StepOps, HandCountedGridAndBruteForce)
     EXPECT_EQ(so.ops.tests_missed, 1u);
     EXPECT_EQ(so.ops.tests_hit, 0u);
     EXPECT_EQ(so.ops.dda_steps, 1u);
+    EXPECT_EQ(so.ops.cell_steps, 0u) << "the step that leaves the space enters no cell";
     EXPECT_EQ(so.ops.shadings, 0u);
     EXPECT_EQ(so.ops.packets_analysed, 1u);
     EXPECT_EQ(so.ops.packets_created, 0u);
@@ -808,6 +810,7 @@ TEST(StepOps, HandCountedGridAndBruteForce)
     EXPECT_EQ(ob.ops.tests_missed, 1u);
     EXPECT_EQ(ob.ops.tests_hit, 1u);
     EXPECT_EQ(ob.ops.dda_steps, 0u);
+    EXPECT_EQ(ob.ops.cell_steps, 0u);
     EXPECT_EQ(ob.ops.shadings, 1u);
     EXPECT_EQ(ob.ops.packets_created, 1u);
     StepOut obs = run_step(s.get(), g.get(), prm, ob.created[0]);

@@ -74,7 +74,7 @@ TEST(Timing, KeysNameEveryField)
 {
     rt_timing t;
     rt_timing_defaults(&t);
-    ASSERT_EQ(rt_timing_key_count(), 20u);
+    ASSERT_EQ(rt_timing_key_count(), 21u);
     EXPECT_STREQ(rt_timing_key_name(0), "test_miss");
     EXPECT_EQ(rt_timing_get(&t, 0), 1300);
     bool seen_link = false, seen_width = false;
@@ -91,8 +91,8 @@ TEST(Timing, KeysNameEveryField)
     }
     EXPECT_TRUE(seen_link);
     EXPECT_TRUE(seen_width);
-    EXPECT_EQ(rt_timing_key_name(20), nullptr);
-    EXPECT_TRUE(std::isnan(rt_timing_get(&t, 20)));
+    EXPECT_EQ(rt_timing_key_name(21), nullptr);
+    EXPECT_TRUE(std::isnan(rt_timing_get(&t, 21)));
 }
 
 TEST(Timing, SetRejectsBadValues)
@@ -183,13 +183,13 @@ TEST(Timing, StepCostIsTheHandSum)
 {
     rt_timing t;
     rt_timing_defaults(&t);
-    rt_op_counts ops = {1, 2, 3, 4, 5, 6, 7, 8, 9, 0, 0};
+    rt_op_counts ops = {1, 2, 3, 4, 5, 6, 7, 8, 9, 0, 0, 0};
     // 1*1300 + 2*1750 + 3*340 + 4*4600 + 5*680 + 6*1100 + 7*580 + 8*1600 + 9*0
     // = 1300 + 3500 + 1020 + 18400 + 3400 + 6600 + 4060 + 12800 = 51080
     EXPECT_EQ(rt_timing_step_us(&t, &ops), 51080.0);
     t.fb_write_us = 10;
     EXPECT_EQ(rt_timing_step_us(&t, &ops), 51170.0);
-    rt_op_counts none = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+    rt_op_counts none = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
     EXPECT_EQ(rt_timing_step_us(&t, &none), 0.0);
 }
 
@@ -205,6 +205,24 @@ TEST(Timing, HandOversHaveTheirOwnKeys)
     EXPECT_EQ(rt_timing_step_us(&t, &ops), 3 * 100.0 + 2 * 7.0);
     ops.packets_created = 1;  // a new packet stays at packet_creation
     EXPECT_EQ(rt_timing_step_us(&t, &ops), 314.0 + t.packet_creation_us);
+}
+
+TEST(Timing, CellStepPacketCostIsItsOwnKeyAndZeroInEveryProfile)
+{
+    rt_timing t;
+    rt_timing_defaults(&t);
+    EXPECT_EQ(t.cell_step_packet_us, 0.0);
+    for (size_t i = 0; i < rt_timing_profile_count(); i++) {
+        rt_timing p;
+        ASSERT_EQ(rt_timing_profile(rt_timing_profile_name(i), &p, nullptr, 0), RT_OK);
+        EXPECT_EQ(p.cell_step_packet_us, 0.0) << rt_timing_profile_name(i);
+    }
+    ASSERT_EQ(rt_timing_set(&t, "cell_step_packet", 580, nullptr, 0), RT_OK);
+    rt_op_counts ops{};
+    ops.cell_steps = 4;
+    EXPECT_EQ(rt_timing_step_us(&t, &ops), 4 * 580.0);
+    ops.dda_steps = 4;  // the next-cell determination stays dda_step's
+    EXPECT_EQ(rt_timing_step_us(&t, &ops), 4 * 580.0 + 4 * t.dda_step_us);
 }
 
 TEST(Timing, ProfilesDifferOnlyInTheHandOver)

@@ -54,7 +54,7 @@ static double step_us(const rt_timing &t, const rt_op_counts &o)
            o.shadings * t.shading_us + o.reflection_vectors * t.reflection_us + o.refraction_vectors * t.refraction_us +
            o.packets_analysed * t.packet_analysis_us + o.packets_created * t.packet_creation_us +
            o.fb_writes * t.fb_write_us + o.handovers_sent * t.handover_send_us +
-           o.handovers_received * t.handover_receive_us;
+           o.handovers_received * t.handover_receive_us + o.cell_steps * t.cell_step_packet_us;
 }
 
 struct Expected {

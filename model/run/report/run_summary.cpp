@@ -134,9 +134,10 @@ void print_summary(const RunReport &r, std::FILE *out)
     std::fprintf(out, "  efficiency   %.1f %% = T(1)/(n T(n)), n = %d   (load balance %.1f %% = busy/(n T(n)))\n",
                  T > 0 ? 100 * (f.t1_s / (n * T)) : 0.0, n, T > 0 ? 100 * (r.totals.busy_s / (n * T)) : 0.0);
     std::fprintf(out,
-                 "  timing       profile %s (hand-over send %g us, receive %g us; bus cycle %g us, memory %g us)\n",
+                 "  timing       profile %s (hand-over send %g us, receive %g us; cell step %g us; bus cycle %g us, "
+                 "memory %g us)\n",
                  c.timing_profile.c_str(), c.timing.handover_send_us, c.timing.handover_receive_us,
-                 c.timing.bus_cycle_us, c.timing.memory_access_us);
+                 c.timing.cell_step_packet_us, c.timing.bus_cycle_us, c.timing.memory_access_us);
     Spread b = spread(r.ips, [](const IpStats &p) { return p.busy_s; });
     std::fprintf(out, "  busy per IP  min %s  mean %s  max %s s\n", sig4(b.min).c_str(), sig4(b.mean).c_str(),
                  sig4(b.max).c_str());
