@@ -4,6 +4,9 @@
  *   torusrt-genscenes OUTDIR            write every scene as OUTDIR/NAME.nff (and a moving
  *                                       scene's motion file as OUTDIR/NAME.motion)
  *   torusrt-genscenes OUTDIR NAME...    write only the named scenes
+ *   torusrt-genscenes --variant BASE KEY=VALUE,... OUTDIR NAME
+ *                                       write a variant of paper-image1 or paper-image2 as
+ *                                       OUTDIR/NAME.nff (docs/fidelity-protocol.md)
  *   torusrt-genscenes --list            print every name with a one-line description
  *   torusrt-genscenes --help            print this usage
  * Returns 0 on success, 1 when a file cannot be written, 2 on a usage error (unknown name,
@@ -187,13 +190,133 @@ static int write_one(const char *outdir, const scene_def *def)
     return rc;
 }
 
+/* One KEY=VALUE of a variant into *v; 0, or 2 after printing why not. */
+static int variant_setting(const char *setting, paper_variant *v)
+{
+    static const struct {
+        const char *name;
+        int image, layout;
+    } layouts[] = {{"planar-z", 1, PAPER_PLANAR_Z}, {"planar", 1, PAPER_PLANAR}, {"cube", 1, PAPER_CUBE},
+                   {"tree", 1, PAPER_TREE},         {"floor", 2, PAPER_FLOOR},   {"wall", 2, PAPER_WALL}};
+    const char *eq = strchr(setting, '=');
+    if (!eq) {
+        fprintf(stderr, "torusrt-genscenes: --variant setting '%s' is not KEY=VALUE\n", setting);
+        return 2;
+    }
+    size_t klen = (size_t)(eq - setting);
+    const char *value = eq + 1;
+    const char *key = v->image == 1 ? "layout" : "plane";
+    if (klen == strlen(key) && strncmp(setting, key, klen) == 0) {
+        for (size_t i = 0; i < sizeof layouts / sizeof layouts[0]; ++i)
+            if (layouts[i].image == v->image && strcmp(layouts[i].name, value) == 0) {
+                v->layout = layouts[i].layout;
+                return 0;
+            }
+        fprintf(stderr, "torusrt-genscenes: --variant %s '%s': expected %s\n", key, value,
+                v->image == 1 ? "planar-z, planar, cube or tree" : "floor or wall");
+        return 2;
+    }
+    /* The numbers: a plain decimal within the key's range. */
+    struct {
+        const char *name;
+        double lo, hi;
+        int image; /* 0: both */
+        int whole;
+    } numbers[] = {
+        {"scale", 0.25, 4, 1, 0}, {"radius", 0.5, 4, 2, 0}, {"lights", 1, 3, 0, 1}, {"margin", 0.5, 2, 0, 0}};
+    for (size_t i = 0; i < sizeof numbers / sizeof numbers[0]; ++i) {
+        if (klen != strlen(numbers[i].name) || strncmp(setting, numbers[i].name, klen) != 0) continue;
+        if (numbers[i].image && numbers[i].image != v->image) break;
+        char *end = NULL;
+        double x = strtod(value, &end);
+        int digits_only = value[0] >= '0' && value[0] <= '9';
+        if (!digits_only || end == value || *end || !(x >= numbers[i].lo && x <= numbers[i].hi) ||
+            (numbers[i].whole && x != (double)(int)x)) {
+            fprintf(stderr, "torusrt-genscenes: --variant %s '%s': expected a%s number from %g to %g\n",
+                    numbers[i].name, value, numbers[i].whole ? " whole" : "", numbers[i].lo, numbers[i].hi);
+            return 2;
+        }
+        switch (i) {
+        case 0: v->scale = x; break;
+        case 1: v->big_radius = x; break;
+        case 2: v->lights = (int)x; break;
+        default: v->margin = x; break;
+        }
+        return 0;
+    }
+    fprintf(stderr, "torusrt-genscenes: --variant of paper-image%d takes %s\n", v->image,
+            v->image == 1 ? "layout, scale, lights and margin" : "plane, radius, lights and margin");
+    return 2;
+}
+
+/* --variant BASE SETTINGS OUTDIR NAME: returns the exit status. */
+static int write_variant(const char *base, const char *settings, const char *outdir, const char *name)
+{
+    int image = strcmp(base, "paper-image1") == 0 ? 1 : strcmp(base, "paper-image2") == 0 ? 2 : 0;
+    if (!image) {
+        fprintf(stderr, "torusrt-genscenes: --variant '%s': expected paper-image1 or paper-image2\n", base);
+        return 2;
+    }
+    paper_variant v = paper_variant_default(image);
+    char *copy = malloc(strlen(settings) + 1);
+    if (!copy) {
+        fprintf(stderr, "torusrt-genscenes: out of memory\n");
+        return 1;
+    }
+    strcpy(copy, settings);
+    int rc = 0;
+    for (char *s = strtok(copy, ","); s && rc == 0; s = strtok(NULL, ",")) rc = variant_setting(s, &v);
+    free(copy);
+    if (rc) return rc;
+    scene *sc = calloc(1, sizeof *sc);
+    if (!sc) {
+        fprintf(stderr, "torusrt-genscenes: out of memory\n");
+        return 1;
+    }
+    sc->up = v3(0, 1, 0);
+    sc->factor = 1;
+    static const char *layout_names[] = {"planar-z", "planar", "cube", "tree", "floor", "wall"};
+    if (image == 1) {
+        note(sc, "A variant of the paper's image 1 (docs/fidelity-protocol.md, scene work): layout %s,",
+             layout_names[v.layout]);
+        note(sc, "every sphere's radius x %g with the centres kept, %d light(s) of the same total", v.scale, v.lights);
+        note(sc, "intensity, the view angle framing every sphere with margin %g.", v.margin);
+        build_image1_layout(sc, &v);
+    } else {
+        note(sc, "A variant of the paper's image 2 (docs/fidelity-protocol.md, scene work): plane %s,",
+             layout_names[v.layout]);
+        note(sc, "glass and mirror spheres of radius %g, %d light(s) of the same total intensity,", v.big_radius,
+             v.lights);
+        note(sc, "the view angle framing every sphere with margin %g.", v.margin);
+        build_image2_plane(sc, &v);
+    }
+    rc = 1;
+    if (sc->failed) {
+        fprintf(stderr, "torusrt-genscenes: %s: could not build the scene (out of memory)\n", name);
+    } else {
+        scene_def def = {name, image == 1 ? "a variant of the paper's image 1" : "a variant of the paper's image 2",
+                         NULL, 1};
+        nff_job job = {&def, sc};
+        rc = write_file(outdir, name, "nff", write_nff, &job);
+    }
+    scene_free(sc);
+    free(sc);
+    if (rc == 0) printf("torusrt-genscenes: wrote %s/%s.nff\n", outdir, name);
+    return rc;
+}
+
 static void usage(FILE *f)
 {
     fputs("usage: torusrt-genscenes OUTDIR [NAME...]\n"
+          "       torusrt-genscenes --variant paper-image1|paper-image2 KEY=VALUE,... OUTDIR NAME\n"
           "       torusrt-genscenes --list | --help\n"
           "Writes torusrt's scenes as OUTDIR/NAME.nff (all of them, or only the NAMEs given),\n"
           "and a moving scene's motion file as OUTDIR/NAME.motion.\n"
           "OUTDIR must exist. Output is deterministic and byte-reproducible.\n"
+          "  --variant  write a variant of a paper image as OUTDIR/NAME.nff: image 1 takes\n"
+          "           layout=planar-z|planar|cube|tree, scale=F (sphere radii, 0.25-4),\n"
+          "           lights=1|2|3, margin=F (framing, 0.5-2); image 2 takes plane=floor|wall,\n"
+          "           radius=F (glass and mirror spheres, 0.5-4), lights, margin\n"
           "  --list   print every scene name with a one-line description\n"
           "  --help   print this message\n",
           f);
@@ -212,6 +335,13 @@ int main(int argc, char **argv)
     if (strcmp(argv[1], "--list") == 0) {
         for (int i = 0; i < NSCENES; ++i) printf("%-18s %s\n", SCENES[i].name, SCENES[i].desc);
         return 0;
+    }
+    if (strcmp(argv[1], "--variant") == 0) {
+        if (argc != 6) {
+            usage(stderr);
+            return 2;
+        }
+        return write_variant(argv[2], argv[3], argv[4], argv[5]);
     }
     if (argv[1][0] == '-') {
         fprintf(stderr, "torusrt-genscenes: unknown option '%s'\n", argv[1]);

@@ -12,7 +12,23 @@
 
 #include "scene.h"
 
-/* paper_scenes.c */
+/* paper_scenes.c: the paper's images, and their variants for the refit's scene-work unknowns
+ * (docs/fidelity-protocol.md): image 1's layout, sphere scale, lights and framing; image 2's
+ * plane, big spheres' radius, lights and framing. */
+enum { PAPER_PLANAR_Z, PAPER_PLANAR, PAPER_CUBE, PAPER_TREE, PAPER_FLOOR, PAPER_WALL };
+typedef struct paper_variant {
+    int image;         /* 1 or 2 */
+    int layout;        /* image 1: PAPER_PLANAR_Z (paper-image1), _PLANAR, _CUBE, _TREE; image 2: _FLOOR, _WALL */
+    double scale;      /* image 1: factor on every sphere's radius, centres kept (1) */
+    double big_radius; /* image 2: radius of the glass and the mirror sphere (2) */
+    int lights;        /* 1 to 3 lights, their total intensity kept (2) */
+    double margin;     /* the view angle frames every sphere with this margin (1.03 / 1.02) */
+} paper_variant;
+/* The values of paper-image1 (image 1) or paper-image2 (image 2). */
+paper_variant paper_variant_default(int image);
+void build_image1_layout(scene *sc, const paper_variant *v);
+void build_image2_plane(scene *sc, const paper_variant *v);
+
 void build_paper_image1(scene *sc);
 void build_paper_image2(scene *sc);
 void build_paper_image1_planar(scene *sc);

@@ -1,0 +1,88 @@
+#!/usr/bin/env bash
+# torusrt-genscenes --variant: the paper images' scene-work variants (docs/fidelity-protocol.md).
+# - the default values write paper-image1's and paper-image2's objects, view and lights exactly;
+# - scale multiplies every radius of image 1 and keeps every centre; radius moves image 2's two
+#   big spheres to x = -+(r + 0.3), y = r + 0.5 and keeps the 121 small ones;
+# - lights=1 and 3 write that many lights, with the same total intensity per channel;
+# - a larger margin widens the view angle, a smaller one narrows it;
+# - a variant renders, and the model on 2x2x2 gives the renderer's image;
+# - bad settings exit 2 naming the setting, and write no file.
+source "$(dirname "$0")/common.bash" "$@"
+need_exe torusrt-genscenes torusrt-render torusrt-sim
+gen="$BUILD/torusrt-genscenes"
+out="$TMP/v"
+mkdir -p "$out"
+# body FILE: the scene without its comment lines.
+body() { grep -v '^#' "$1"; }
+# field FILE PREFIX: the lines starting with PREFIX.
+field() { grep "^$2" "$1"; }
+
+"$gen" --variant paper-image1 layout=planar-z,scale=1,lights=2,margin=1.03 "$out" d1 >/dev/null
+check "image 1 defaults: paper-image1's body" cmp -s <(body "$out/d1.nff") <(body "$SRC/scenes/paper-image1.nff")
+"$gen" --variant paper-image2 plane=floor,radius=2,lights=2,margin=1.02 "$out" d2 >/dev/null
+check "image 2 defaults: paper-image2's body" cmp -s <(body "$out/d2.nff") <(body "$SRC/scenes/paper-image2.nff")
+"$gen" --variant paper-image1 layout=cube "$out" cube >/dev/null
+check "layout=cube: paper-image1-cube's body" cmp -s <(body "$out/cube.nff") <(body "$SRC/scenes/paper-image1-cube.nff")
+
+"$gen" --variant paper-image1 scale=0.8 "$out" s08 >/dev/null
+check "scale=0.8: 369 spheres" test "$(field "$out/s08.nff" 's ' | wc -l)" = 369
+check "scale=0.8: the same centres" cmp -s <(field "$out/s08.nff" 's ' | cut -d' ' -f1-4) \
+    <(field "$SRC/scenes/paper-image1.nff" 's ' | cut -d' ' -f1-4)
+check "scale=0.8: every radius x 0.8" test "$(paste -d' ' <(field "$out/s08.nff" 's ' | cut -d' ' -f5) \
+    <(field "$SRC/scenes/paper-image1.nff" 's ' | cut -d' ' -f5) |
+    awk '{ d = $1 - 0.8 * $2; if (d < 0) d = -d; if (d > 1e-9) bad++ } END { print bad + 0 }')" = 0
+
+"$gen" --variant paper-image2 radius=2.5 "$out" r25 >/dev/null
+check "radius=2.5: the glass sphere at (-2.8, 3, -2)" grep -qx 's -2.8 3 -2 2.5' "$out/r25.nff"
+check "radius=2.5: the mirror sphere at (2.8, 3, -2)" grep -qx 's 2.8 3 -2 2.5' "$out/r25.nff"
+check "radius=2.5: the 121 small spheres kept" cmp -s <(field "$out/r25.nff" 's ' | tail -n 121) \
+    <(field "$SRC/scenes/paper-image2.nff" 's ' | tail -n 121)
+
+# sum_lights FILE: the lights' intensities added per channel.
+sum_lights() { field "$1" 'l ' | awk '{ r += $5; g += $6; b += $7 } END { printf "%.6f %.6f %.6f\n", r, g, b }'; }
+for image in 1 2; do
+    for n in 1 3; do
+        "$gen" --variant "paper-image$image" "lights=$n" "$out" "l$image$n" >/dev/null
+        check "image $image lights=$n: $n light lines" test "$(field "$out/l$image$n.nff" 'l ' | wc -l)" = "$n"
+        check "image $image lights=$n: the same total intensity" test \
+            "$(sum_lights "$out/l$image$n.nff")" = "$(sum_lights "$SRC/scenes/paper-image$image.nff")"
+    done
+done
+
+angle() { field "$1" 'angle ' | cut -d' ' -f2; }
+"$gen" --variant paper-image1 margin=1.25 "$out" wide >/dev/null
+"$gen" --variant paper-image1 margin=0.8 "$out" tight >/dev/null
+base=$(angle "$SRC/scenes/paper-image1.nff")
+check "margin=1.25 widens the view" awk -v a="$(angle "$out/wide.nff")" -v b="$base" 'BEGIN { exit !(a > b) }'
+check "margin=0.8 narrows the view" awk -v a="$(angle "$out/tight.nff")" -v b="$base" 'BEGIN { exit !(a < b) }'
+
+"$gen" --variant paper-image1 layout=tree,scale=1.25,lights=3,margin=0.8 "$out" mix >/dev/null
+if "$BUILD/torusrt-render" "$out/mix.nff" --size 24x24 -q -o "$TMP/mix-ref.png" &&
+    "$BUILD/torusrt-sim" "$out/mix.nff" --size 24x24 --ips 2x2x2 --t1 1 -q -o "$TMP/mix-sim.png"; then
+    check "a variant renders; the model's image is the renderer's" cmp -s "$TMP/mix-ref.png" "$TMP/mix-sim.png"
+else
+    fail "a variant did not render or simulate"
+fi
+
+# bad VARIANT SETTINGS WORD: exit 2, WORD in the message, no file.
+bad() {
+    rm -f "$out/bad.nff"
+    "$gen" --variant "$1" "$2" "$out" bad >/dev/null 2>"$TMP/bad.err"
+    local rc=$?
+    check "$1 $2: exit 2 (got $rc)" test "$rc" = 2
+    check "$1 $2: names $3 ($(head -c 160 "$TMP/bad.err"))" grep -q -- "$3" "$TMP/bad.err"
+    check "$1 $2: no file" test ! -e "$out/bad.nff"
+}
+bad paper-image1 scale=0 scale
+bad paper-image1 scale=.8 scale
+bad paper-image1 scale=0.8x scale
+bad paper-image1 lights=4 lights
+bad paper-image1 lights=1.5 lights
+bad paper-image1 layout=wall layout
+bad paper-image1 radius=2 "layout, scale"
+bad paper-image2 scale=2 "plane, radius"
+bad paper-image2 plane=cube plane
+bad paper-image2 margin=nan margin
+bad paper-image3 lights=1 paper-image3
+bad paper-image1 lights "KEY=VALUE"
+finish
