@@ -85,9 +85,12 @@ void report_out_of_memory(const char *program)
 // (a closed pipe with SIGPIPE ignored, a full disk): the summary is part of the result.
 int check_standard_output(const char *program, int status)
 {
-    if (std::fflush(stdout) == 0 && !std::ferror(stdout)) return status;
-    int err = errno ? errno : EIO;
-    std::fprintf(stderr, "%s: standard output: cannot write: %s\n", program, std::strerror(err));
+    errno = 0;
+    bool flushed = std::fflush(stdout) == 0;
+    if (flushed && !std::ferror(stdout)) return status;
+    // A failed flush here has its reason; an earlier one's errno is gone.
+    std::string why = !flushed && errno != 0 ? std::strerror(errno) : "some of the summary was lost";
+    std::fprintf(stderr, "%s: standard output: cannot write: %s\n", program, why.c_str());
     return status == 0 ? 1 : status;
 }
 
