@@ -6,6 +6,7 @@
 #include <cstring>
 #include <new>
 #include <string>
+#include <system_error>
 
 #include "machine_file_reader.h"
 #include "memory_reserve.h"
@@ -72,13 +73,13 @@ std::string with_suggestion(const CLI::App &app, const CLI::ParseError &e, const
 
 // The message for an allocation the system refused: what the run was doing, and what bounds the
 // memory a run takes. Built without allocating.
-void report_out_of_memory(const char *program)
+void report_out_of_memory(const char *program, const char *what)
 {
     const char *stage = run_stage();
     std::fprintf(stderr,
-                 "%s: out of memory%s%s: the system refused an allocation (--memory-budget bounds the cell "
-                 "lists, frame buffer and packets; a smaller machine, scene or --size needs less)\n",
-                 program, stage[0] ? " while " : "", stage);
+                 "%s: out of memory%s%s: %s (--memory-budget bounds the cell lists, frame buffer and packets; a "
+                 "smaller machine, scene or --size needs less)\n",
+                 program, stage[0] ? " while " : "", stage, what);
 }
 
 // Exit status 1 with a message if what was printed on standard output could not all be written
@@ -136,7 +137,12 @@ int run_cli(const char *program, CLI::App &app, int argc, char **argv, const std
         std::fprintf(stderr, "%s: %s\n", program, printable(e.what()).c_str());
         status = e.exit_code();
     } catch (const std::bad_alloc &) {
-        report_out_of_memory(program);
+        report_out_of_memory(program, "the system refused an allocation");
+    } catch (const std::system_error &e) {
+        // A thread's stack or a mapping the system could not give: memory too.
+        bool memory = e.code() == std::errc::not_enough_memory || e.code() == std::errc::resource_unavailable_try_again;
+        if (memory) report_out_of_memory(program, e.what());
+        else std::fprintf(stderr, "%s: %s\n", program, printable(e.what()).c_str());
     } catch (const std::exception &e) {
         std::fprintf(stderr, "%s: %s\n", program, printable(e.what()).c_str());
     }

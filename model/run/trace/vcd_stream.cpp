@@ -125,7 +125,12 @@ VcdStream::VcdStream(const std::string &out_path, const std::string &shown, uint
         throw UserError(shown + ": cannot write: " + std::strerror(err));
     }
     SignalsBlocked blocked;  // the copy thread inherits the mask: stopping signals go to the main thread
-    m_thread = std::thread([this] { copy_loop(); });
+    try {
+        m_thread = std::thread([this] { copy_loop(); });
+    } catch (...) {  // no stack for the thread: the destructor of a half-made stream does not run
+        stop();
+        throw;
+    }
 }
 
 void VcdStream::copy_loop()
