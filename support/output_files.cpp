@@ -1,5 +1,6 @@
 // output_files.cpp - result files go to temporaries that are renamed together once all are
-// written; non-regular targets are written in place (renaming would replace a device node).
+// written over the names their links resolve to; standard output and error and non-regular
+// targets are written in place (renaming would replace a device node or a link).
 #include "output_files.h"
 
 #include <cerrno>
@@ -32,32 +33,55 @@ std::string base_of(const std::string &path)
     return slash == std::string::npos ? path : path.substr(slash + 1);
 }
 
-// The path names this process's standard output (/dev/stdout, /dev/fd/1, or the file it is
-// redirected to): written through stdout, whose position the shell's redirection owns.
-bool names_stdout(const struct stat &sp)
+// 1 or 2 if the file `sp` describes is this process's standard output or error (a pipe, a tty,
+// or the file it is redirected to), else 0. A non-tty device (/dev/null) is no stream.
+int standard_stream(const struct stat &sp)
 {
-    struct stat so;
-    return fstat(STDOUT_FILENO, &so) == 0 && sp.st_dev == so.st_dev && sp.st_ino == so.st_ino;
+    for (int fd : {STDOUT_FILENO, STDERR_FILENO}) {
+        struct stat so;
+        if (fstat(fd, &so) == 0 && sp.st_dev == so.st_dev && sp.st_ino == so.st_ino &&
+            !(S_ISCHR(so.st_mode) && !isatty(fd)))
+            return fd;
+    }
+    return 0;
 }
 
-bool names_stdout(const std::string &path)
+const char *stream_name(int fd) { return fd == STDOUT_FILENO ? "standard output" : "standard error"; }
+
+// The name a chain of symbolic links starting at `path` ends at (`path` itself if it is none):
+// a relative link is read from the link's folder. Magic links (/proc/self/fd/N) give the name
+// the kernel has for the open file.
+std::string link_target(const std::string &option, const std::string &path)
 {
-    struct stat sp;
-    return stat(path.c_str(), &sp) == 0 && names_stdout(sp);
+    std::string cur = path;
+    for (int hops = 0; hops < 40; hops++) {  // Linux's own limit
+        struct stat ls;
+        if (lstat(cur.c_str(), &ls) != 0 || !S_ISLNK(ls.st_mode)) return cur;
+        char text[PATH_MAX];
+        ssize_t n = readlink(cur.c_str(), text, sizeof text - 1);
+        if (n <= 0) return cur;
+        std::string next(text, static_cast<size_t>(n));
+        cur = next[0] == '/' ? next : folder_of(cur) + "/" + next;
+    }
+    throw UserError(option + " '" + path + "': too many levels of symbolic links", 2);
 }
 
 FILE *open_for_writing(const std::string &path, const std::string &shown)
 {
-    if (names_stdout(path)) return stdout;
-    FILE *f = std::fopen(path.c_str(), "wb");
-    if (!f) throw UserError(shown + ": cannot write: " + std::strerror(errno));
+    int fd = open_output_fd(path);
+    FILE *f = fd < 0 ? nullptr : fdopen(fd, "wb");
+    if (!f) {
+        int err = errno;
+        if (fd >= 0) close(fd);
+        throw UserError(shown + ": cannot write: " + std::strerror(err));
+    }
     return f;
 }
 
 // Closes `f`; throws naming `shown` if the close (the last flush) fails or `failed` is set.
 void close_checked(FILE *f, const std::string &shown, bool failed, int err)
 {
-    if ((f == stdout ? std::fflush(f) : std::fclose(f)) != 0 && !failed) {
+    if (std::fclose(f) != 0 && !failed) {
         failed = true;
         err = errno;
     }
@@ -107,15 +131,32 @@ OutputSet::Id OutputSet::add(const std::string &option, const std::string &path)
     Entry e;
     e.option = option;
     e.path = path;
+    e.target = path;
     struct stat st;
     if (stat(path.c_str(), &st) == 0) {
         if (S_ISDIR(st.st_mode)) throw UserError(option + " '" + path + "': is a folder", 2);
         e.exists = true;
-        e.special = !S_ISREG(st.st_mode) || names_stdout(st);
         e.dev = st.st_dev;
         e.ino = st.st_ino;
+        e.stream = standard_stream(st);
+        e.special = e.stream != 0 || !S_ISREG(st.st_mode);
+        e.sink = e.stream == 0 && S_ISCHR(st.st_mode);
+        if (!e.special) {
+            e.target = link_target(option, path);
+            struct stat tt;  // a name the file no longer has ("(deleted)"): written in place
+            if (stat(e.target.c_str(), &tt) != 0 || tt.st_dev != st.st_dev || tt.st_ino != st.st_ino) {
+                e.target = path;
+                e.special = true;
+            }
+        }
     } else {
-        check_output_folder(option, path);
+        e.target = link_target(option, path);  // a link to a file not made yet: that file
+        std::string dir = folder_of(e.target);
+        struct stat ds;
+        if (stat(dir.c_str(), &ds) != 0 || !S_ISDIR(ds.st_mode))
+            throw UserError(option + " '" + path + "': folder '" + dir + "' does not exist" +
+                                (e.target == path ? "" : " (the link names '" + e.target + "')"),
+                            2);
     }
     m_entries.push_back(std::move(e));
     return m_entries.size() - 1;
@@ -134,27 +175,43 @@ void OutputSet::check() const
         if (stat(in.path.c_str(), &st) == 0 && S_ISREG(st.st_mode))
             inputs.emplace(FileKey{st.st_dev, st.st_ino}, in.option + " file " + in.path);
     }
+    // The summary and the messages go to standard output and error: neither may be an input.
+    for (int fd : {STDOUT_FILENO, STDERR_FILENO}) {
+        struct stat st;
+        if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) continue;
+        auto in = inputs.find({st.st_dev, st.st_ino});
+        if (in != inputs.end())
+            throw UserError(std::string(stream_name(fd)) + " is redirected to the " + in->second + ", an input", 2);
+    }
     std::map<std::string, FileKey> folders;  // one stat per folder, not per output
     std::map<NameKey, const Entry *> names;
     std::map<FileKey, const Entry *> files;
     for (const auto &e : m_entries) {
-        if (e.special) continue;
         const std::string what = e.option + " '" + e.path + "': ";
         if (e.exists) {
             auto in = inputs.find({e.dev, e.ino});
             if (in != inputs.end()) throw UserError(what + "is the " + in->second + ", an input", 2);
-            auto other = files.emplace(FileKey{e.dev, e.ino}, &e);
-            if (!other.second) throw UserError(what + "is also the file of " + other.first->second->option, 2);
+            if (!e.sink) {
+                auto other = files.emplace(FileKey{e.dev, e.ino}, &e);
+                const Entry *o = other.first->second;
+                if (!other.second && (e.stream != 0 || o->stream != 0))
+                    throw UserError(what + "is " + stream_name(e.stream ? e.stream : o->stream) + ", also written by " +
+                                        o->option + " '" + o->path + "'",
+                                    2);
+                if (!other.second) throw UserError(what + "is also the file of " + o->option + " '" + o->path + "'", 2);
+            }
         }
-        std::string dir = folder_of(e.path);
+        if (e.special) continue;
+        std::string dir = folder_of(e.target);
         auto f = folders.find(dir);
         if (f == folders.end()) {
             struct stat st;
             if (stat(dir.c_str(), &st) != 0) throw UserError(what + "folder '" + dir + "' does not exist", 2);
             f = folders.emplace(dir, FileKey{st.st_dev, st.st_ino}).first;
         }
-        auto other = names.emplace(NameKey{f->second.first, f->second.second, base_of(e.path)}, &e);
-        if (!other.second) throw UserError(what + "is also the file of " + other.first->second->option, 2);
+        auto other = names.emplace(NameKey{f->second.first, f->second.second, base_of(e.target)}, &e);
+        const Entry *o = other.first->second;
+        if (!other.second) throw UserError(what + "is also the file of " + o->option + " '" + o->path + "'", 2);
     }
 }
 
@@ -163,7 +220,7 @@ std::string OutputSet::staged(Id id)
     Entry &e = m_entries[id];
     if (e.special) return e.path;
     if (!e.tmp.empty()) return e.tmp;
-    std::string name = temporary_pattern(e.path);
+    std::string name = temporary_pattern(e.target);
     int fd;
     {
         // A stopping signal between making the file and registering it would leave it behind.
@@ -187,7 +244,7 @@ void OutputSet::commit(const std::string &option)
     for (auto &e : m_entries) {
         if (e.tmp.empty() || e.special || (!option.empty() && e.option != option)) continue;
         SignalsBlocked blocked;  // renamed and forgotten together
-        if (std::rename(e.tmp.c_str(), e.path.c_str()) != 0)
+        if (std::rename(e.tmp.c_str(), e.target.c_str()) != 0)
             throw UserError(e.path + ": cannot write: " + std::strerror(errno));
         forget_on_signal(e.slot);
         e.tmp.clear();
@@ -216,7 +273,7 @@ void write_stream_file(const std::string &write_path, const std::string &shown, 
     char msg[RT_MSG_LEN] = "";
     const std::string prefix = option.empty() ? "" : option + ": ";
     if (write(f, msg, sizeof msg) != RT_OK) {
-        if (f != stdout) std::fclose(f);
+        std::fclose(f);
         throw UserError(prefix + msg);
     }
     try {
@@ -224,6 +281,17 @@ void write_stream_file(const std::string &write_path, const std::string &shown, 
     } catch (const UserError &e) {
         throw UserError(prefix + e.what());
     }
+}
+
+int open_output_fd(const std::string &write_path)
+{
+    struct stat st;
+    int stream = stat(write_path.c_str(), &st) == 0 ? standard_stream(st) : 0;
+    if (stream != 0) {
+        std::fflush(stream == STDOUT_FILENO ? stdout : stderr);  // what was printed comes first
+        return fcntl(stream, F_DUPFD_CLOEXEC, 0);
+    }
+    return open(write_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
 }
 
 void check_output_folder(const std::string &option, const std::string &path)

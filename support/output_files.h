@@ -8,11 +8,14 @@
 //   outs.check();                                        // before anything runs (exit 2)
 //   write_png_file(outs.staged(png), path, w, h, rgb);   // throws UserError on any failure
 //   outs.commit();                                       // every temporary onto its name
-// A regular (or new) PATH is written to a temporary ".PATH.XXXXXX" (mkstemp) in its folder,
-// made when staged() is first called, and renamed at commit; a device, FIFO or other
-// non-regular PATH (/dev/null, /dev/stdout) is written directly and never replaced.
-// Temporaries are removed when the set is destroyed uncommitted, and by SIGINT, SIGTERM or
-// SIGHUP (signal_cleanup.h).
+// A name is resolved before it is judged: a symbolic link (however many) stands for the file it
+// names. A regular (or new) file is written to a temporary ".NAME.XXXXXX" (mkstemp) in its
+// folder, made when staged() is first called, and renamed over it at commit (over the link's
+// target, never over the link). The command's own standard output or error (/dev/stdout,
+// /dev/fd/2, /proc/self/fd/1, or the file either is redirected to) is written in place through
+// its descriptor; so is any other target that is not a regular file (/dev/null, a FIFO, a tty).
+// Temporaries are removed when the set is destroyed uncommitted, and by a stopping signal
+// (signal_cleanup.h).
 #pragma once
 
 #include <cstddef>
@@ -39,11 +42,13 @@ class OutputSet {
     Id add(const std::string &option, const std::string &path);
     // Registers a file the run reads for OPTION ("scene", "--timing", ...): no output may be it.
     void add_input(const std::string &option, const std::string &path);
-    // Throws UserError (exit 2) if an output is one of the inputs (also through another name or
-    // a hard link) or two outputs are one file. One stat per file: O(outputs).
+    // Throws UserError (exit 2) if an output, or standard output or error redirected to a file,
+    // is one of the inputs (also through another name, a link or a hard link), or if two outputs
+    // are one file or one stream (standard output and error included; a null device is no
+    // stream). One stat per file: O(outputs).
     void check() const;
-    // The file to write for `id` now: its temporary (made on the first call) or, for a device,
-    // the target itself.
+    // The file to write for `id` now: its temporary (made on the first call) or, for a target
+    // written in place, the name as given.
     std::string staged(Id id);
     const std::string &path(Id id) const { return m_entries[id].path; }
     bool special(Id id) const { return m_entries[id].special; }
@@ -56,8 +61,11 @@ class OutputSet {
   private:
     struct Entry {
         std::string option, path, tmp;  // tmp empty: not staged yet, or written directly
+        std::string target;             // the name renamed over: `path`, or what its links name
         bool special = false, exists = false;
-        dev_t dev = 0;  // the existing file's identity
+        bool sink = false;  // a device that is no stream (/dev/null): any number may share it
+        int stream = 0;     // 1 or 2: the command's standard output or error
+        dev_t dev = 0;      // the existing file's identity
         ino_t ino = 0;
         size_t slot = 0;  // its signal_cleanup registration, when tmp is set
     };
@@ -78,6 +86,10 @@ void write_png_file(const std::string &write_path, const std::string &shown, uns
 using StreamWriter = std::function<rt_status(FILE *fp, char *msg, size_t msg_len)>;
 void write_stream_file(const std::string &write_path, const std::string &shown, const std::string &option,
                        const StreamWriter &write);
+// A descriptor to write `write_path` through: a duplicate of standard output or error when it
+// names either (the shell's redirection keeps its position), else a new open of it (created
+// 0666 less the umask, truncated). -1 with errno set on failure.
+int open_output_fd(const std::string &write_path);
 // Throws UserError (exit 2) if the folder of `path` does not exist, naming `option`.
 void check_output_folder(const std::string &option, const std::string &path);
 

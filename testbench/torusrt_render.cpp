@@ -20,6 +20,7 @@
 #include "progress.h"
 #include "rt_render.h"
 #include "rt_timing.h"
+#include "run_stage.h"
 #include "motion_options.h"
 #include "scene_motion.h"
 #include "scene_setup.h"
@@ -149,6 +150,7 @@ int run_single(const RenderOptions &opt, RenderSetup &setup, RenderOutputs &outs
     OutputSet &outputs = outs.set;
     const rt_camera *cam = rt_scene_camera(setup.scene);
     CostImage cost(opt.cost_image, cam->width, cam->height, &setup.settings.timing);
+    set_run_stage("rendering the image");
     FrameResult fr = render_frame(setup, "torusrt-render", opt, &cost);
     double wall = seconds_since(t0);
     nlohmann::json js;
@@ -156,6 +158,7 @@ int run_single(const RenderOptions &opt, RenderSetup &setup, RenderOutputs &outs
         js = stats_json(opt, setup, fr.st, fr.t1_s, wall);
         js["cost_image"] = cost.json();
     }
+    set_run_stage("writing the outputs");
     write_png_file(outputs.staged(outs.png), opt.common.output, cam->width, cam->height, fr.rgb);
     if (outs.cost) cost.write(outputs.staged(*outs.cost));
     if (outs.stats) write_text_file(outputs.staged(*outs.stats), opt.common.stats, js.dump(2) + "\n");
@@ -229,6 +232,7 @@ int run_frames(const RenderOptions &opt, RenderSetup &setup, RenderOutputs &outs
             throw UserError("frame " + std::to_string(k) + ": " + msg);
         nlohmann::json motion = move_scene(setup, k, moved);
         std::string label = "torusrt-render frame " + std::to_string(k + 1) + "/" + std::to_string(n);
+        set_run_stage("rendering frame " + std::to_string(k));
         FrameResult fr = render_frame(setup, label, opt);
         const rt_camera *cam = rt_scene_camera(scene);
         const std::string &file = outputs.path(outs.png + k);
@@ -301,6 +305,7 @@ int run(RenderOptions &opt)
     RenderOutputs outs;
     stage_outputs(opt, opt.anim.animated() ? animation_frame_count(opt.anim, file.get()) : 0, outs);
 
+    set_run_stage("loading the scene and building its cell lists");
     setup.budget = rt_budget_make(setup.settings.memory_bytes);
     // With --motion the grid is built over every frame's object space at frame 0: the scene's own
     // is then one cell, so that it takes next to nothing of the memory budget.

@@ -3,12 +3,14 @@
 
 #include <algorithm>
 #include <memory>
+#include <string>
 
 #include "elaboration_mark.h"
 #include "kernel_handles.h"
 #include "model_run.h"
 #include "motion_update.h"
 #include "progress.h"
+#include "run_stage.h"
 #include "torus_system.h"
 #include "tracing.h"
 #include "user_error.h"
@@ -144,6 +146,8 @@ void elaborate(const SimConfig &config, const rt_scene *scene, const rt_grid *gr
     if (config.style == TimingStyle::lt)
         tlm::tlm_global_quantum::instance().set(sc_core::sc_time(config.quantum_us, sc_core::SC_US));
     m.elaboration_start_s = wall_clock_s();
+    std::string cluster = config.cluster > 1 ? " of " + std::to_string(config.cluster) + " processors" : "";
+    set_run_stage("building the machine (" + std::to_string(config.node_count()) + " nodes" + cluster + ")");
     rt_replicas replicas = config.replica_table();
     m.top = &keep_until_exit(std::make_unique<TorusSystem>("top", config, scene, grid, m.owner.data(), m.ledger,
                                                            m.fb.get(), HandOverTiming::at_once,
@@ -296,6 +300,7 @@ RunOutcome run_frames(const SimConfig &config, rt_scene *scene, const rt_grid *g
 
     RunOutcome out;
     for (size_t k = 0; k < n; k++) {
+        set_run_stage(n > 1 ? "simulating frame " + std::to_string(k) : "simulating the image");
         FrameRecord rec = loop.prepare(m, k, out.frames);
         uint64_t created_before = created(m.ledger);
         if (!run_frame(config, m, progress_label(plan, k, n))) {

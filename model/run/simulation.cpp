@@ -13,6 +13,7 @@
 #include "output_files.h"
 #include "packet_pool.h"
 #include "run_frames.h"
+#include "run_stage.h"
 #include "scene_setup.h"
 #include "user_error.h"
 
@@ -188,6 +189,7 @@ int simulate(SimRequest &r, double wall_start_s)
         ReplicaTable replicas;
         read_map_file(config, config.cells.data(), owner, replicas);
     }
+    set_run_stage("loading the scene and building its cell lists");
     LoadedScene loaded;
     FrameScene fs = load_frame_scene(r, loaded);
     rt_scene *scene = fs.scene;
@@ -219,6 +221,7 @@ int simulate(SimRequest &r, double wall_start_s)
         report_deadlock(config, out.sim_time_s, out.deadlock_details);
         return 3;
     }
+    set_run_stage("writing the outputs");
     if (!r.animated()) write_mapping_outputs(config, scene, fs.grid, outputs.set, outputs.write_map, outputs.load_map);
     write_outputs(r, scene, outputs, out);
     if (!config.quiet) {

@@ -1,12 +1,19 @@
 // cli_main.cpp - parsing and error reporting shared by the executables.
 #include "cli_main.h"
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
+#include <new>
 #include <string>
+#include <system_error>
 
 #include "machine_file_reader.h"
+#include "memory_reserve.h"
 #include "option_parsing.h"
 #include "option_registration.h"
+#include "run_stage.h"
+#include "signal_cleanup.h"
 #include "user_error.h"
 
 namespace torusrt {
@@ -64,17 +71,45 @@ std::string with_suggestion(const CLI::App &app, const CLI::ParseError &e, const
     return what + hints;
 }
 
+// The message for an allocation the system refused: what the run was doing, and what bounds the
+// memory a run takes. Built without allocating.
+void report_out_of_memory(const char *program, const char *what)
+{
+    const char *stage = run_stage();
+    std::fprintf(stderr,
+                 "%s: out of memory%s%s: %s (--memory-budget bounds the cell lists, frame buffer and packets; a "
+                 "smaller machine, scene or --size needs less)\n",
+                 program, stage[0] ? " while " : "", stage, what);
+}
+
+// Exit status 1 with a message if what was printed on standard output could not all be written
+// (a closed pipe with SIGPIPE ignored, a full disk): the summary is part of the result.
+int check_standard_output(const char *program, int status)
+{
+    errno = 0;
+    bool flushed = std::fflush(stdout) == 0;
+    if (flushed && !std::ferror(stdout)) return status;
+    // A failed flush here has its reason; an earlier one's errno is gone.
+    std::string why = !flushed && errno != 0 ? std::strerror(errno) : "some of the summary was lost";
+    std::fprintf(stderr, "%s: standard output: cannot write: %s\n", program, why.c_str());
+    return status == 0 ? 1 : status;
+}
+
 }  // namespace
 
 int run_cli(const char *program, CLI::App &app, int argc, char **argv, const std::function<int()> &body,
             const char *extra_exit_statuses)
 {
+    stop_on_signals(program);
+    keep_memory_reserve();
     app.set_version_flag("--version", std::string(program) + " " + TORUSRT_VERSION, "print the version and exit")
         ->group(group_title(OptionGroup::run));
     app.set_help_flag("-h,--help", "print this help and exit")->group(group_title(OptionGroup::run));  // listed last
-    app.footer(std::string("Exit status:\n  0 success\n  1 bad input file or failed run (a write error included)\n"
-                           "  2 bad command line\n") +
-               extra_exit_statuses);
+    app.footer(std::string("Exit status:\n  0 success\n  1 bad input file or failed run (a write error or memory "
+                           "running out included)\n  2 bad command line\n") +
+               extra_exit_statuses +
+               "  128+N stopped by signal N: INT 130, TERM 143, HUP 129, QUIT 131, USR1 138, USR2 140,\n"
+               "        ALRM 142, PIPE 141 (no output left behind)\n");
     std::string empty = empty_value_option(app, argc, argv);
     if (!empty.empty()) {
         std::fprintf(stderr, "%s: %s: an empty value\nRun with --help for more information.\n", program, empty.c_str());
@@ -95,15 +130,23 @@ int run_cli(const char *program, CLI::App &app, int argc, char **argv, const std
         std::fprintf(stderr, "%s: %s\nRun with --help for more information.\n", program, printable(what).c_str());
         return 2;
     }
+    int status = 1;
     try {
-        return body();
+        status = body();
     } catch (const UserError &e) {
         std::fprintf(stderr, "%s: %s\n", program, printable(e.what()).c_str());
-        return e.exit_code();
+        status = e.exit_code();
+    } catch (const std::bad_alloc &) {
+        report_out_of_memory(program, "the system refused an allocation");
+    } catch (const std::system_error &e) {
+        // A thread's stack or a mapping the system could not give: memory too.
+        bool memory = e.code() == std::errc::not_enough_memory || e.code() == std::errc::resource_unavailable_try_again;
+        if (memory) report_out_of_memory(program, e.what());
+        else std::fprintf(stderr, "%s: %s\n", program, printable(e.what()).c_str());
     } catch (const std::exception &e) {
         std::fprintf(stderr, "%s: %s\n", program, printable(e.what()).c_str());
-        return 1;
     }
+    return check_standard_output(program, status);
 }
 
 }  // namespace torusrt

@@ -2,6 +2,7 @@
 #include "vcd_stream.h"
 
 #include <cerrno>
+#include <csignal>
 #include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
@@ -9,6 +10,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "output_files.h"
 #include "signal_cleanup.h"
 #include "user_error.h"
 
@@ -116,14 +118,19 @@ VcdStream::VcdStream(const std::string &out_path, const std::string &shown, uint
         stop();
         throw UserError("--vcd: cannot create a FIFO in " + m_dir + ": " + std::strerror(err));
     }
-    m_out_fd = open(out_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0666);
+    m_out_fd = open_output_fd(out_path);  // standard output through its own descriptor
     if (m_out_fd < 0) {
         int err = errno;
         stop();
         throw UserError(shown + ": cannot write: " + std::strerror(err));
     }
     SignalsBlocked blocked;  // the copy thread inherits the mask: stopping signals go to the main thread
-    m_thread = std::thread([this] { copy_loop(); });
+    try {
+        m_thread = std::thread([this] { copy_loop(); });
+    } catch (...) {  // no stack for the thread: the destructor of a half-made stream does not run
+        stop();
+        throw;
+    }
 }
 
 void VcdStream::copy_loop()
@@ -167,6 +174,7 @@ void VcdStream::finish()
     m_out_fd = -1;
     int err = m_error;
     stop();
+    if (err == EPIPE) raise(SIGPIPE);  // the copy thread blocks it: a closed pipe ends the run here
     if (err) throw UserError(m_shown + ": cannot write: " + std::strerror(err));
 }
 

@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# out_of_memory.sh - the system refusing memory (ulimit -v) while a 4096-node machine is being
+# built: the run says what it was building and names --memory-budget, exits 1 (no abort), and
+# leaves no output and no temporary (its VCD's and save file's, and the trace's FIFO folder); and
+# the same when memory runs out later in the run.
+#
+# Usage (CTest runs it so): bash tests/hostile/out_of_memory.sh BUILD_DIR SOURCE_DIR
+set -u
+source "$(dirname "$0")/../cli/common.bash" "$@"
+need_exe torusrt-sim
+time_limit 60
+f=$(source_scene paper-image1) || exit 1
+cd "$TMP" || exit 1
+mkdir out tmpdir
+# 150 MB of address space: the scene loads, the machine's 4096 nodes do not fit.
+(TMPDIR="$TMP/tmpdir" "${run_limited[@]}" bash -c 'ulimit -v 150000 && exec "$@"' _ "$BUILD/torusrt-sim" "$f" -q --t1 1 --ips 16x16x16 \
+    --size 8x8 -o out/a.png --stats out/a.json --vcd out/a.vcd >/dev/null 2>err.txt </dev/null)
+rc=$?
+check "4096 nodes under ulimit -v: exit $rc, expected 1: $(head -c 300 err.txt)" [ "$rc" -eq 1 ]
+check "4096 nodes under ulimit -v: the message names the stage: $(head -c 300 err.txt)" \
+    grep -q "^torusrt-sim: out of memory while building the machine (4096 nodes)" err.txt
+check "4096 nodes under ulimit -v: the message names --memory-budget" grep -q -- "--memory-budget" err.txt
+check "4096 nodes under ulimit -v: no abort message" bash -c '! grep -q "terminate called" err.txt'
+check "4096 nodes under ulimit -v: nothing left: $(ls -A out; ls -A tmpdir)" \
+    [ -z "$(ls -A out)$(ls -A tmpdir)" ]
+# Memory running out later in the run (here: the trace's copy thread, then the simulation): exit 0
+# or 1, never an abort, and on failure nothing left, the FIFO folder included.
+aborts=0 left=0
+for limit in 200000 250000; do
+    rm -rf out tmpdir && mkdir out tmpdir
+    (TMPDIR="$TMP/tmpdir" "${run_limited[@]}" bash -c 'ulimit -v "$0" && exec "$@"' "$limit" "$BUILD/torusrt-sim" "$f" \
+        -q --t1 1 --ips 16x16x16 --size 32x32 -o out/a.png --stats out/a.json --vcd out/a.vcd >/dev/null 2>err.txt \
+        </dev/null)
+    rc=$?
+    { [ "$rc" -eq 0 ] || [ "$rc" -eq 1 ]; } && ! grep -q "terminate called" err.txt || aborts=$((aborts + 1))
+    [ -z "$(ls -A tmpdir)" ] && { [ "$rc" -eq 0 ] || [ -z "$(ls -A out)" ]; } || left=$((left + 1))
+done
+check "ulimit -v 200000 and 250000: runs that aborted: $aborts" [ "$aborts" -eq 0 ]
+check "ulimit -v 200000 and 250000: failed runs that left a file: $left" [ "$left" -eq 0 ]
+finish
