@@ -203,7 +203,9 @@ std::vector<MachineOption> timing_options()
           "KEY=VALUE,... for every key of the timing table, in place of a profile's and a file's "
           "(--dump-config --with-timing writes it)",
           G::machine, "timing-values"},
-         [](const OptionSpec &s, const std::string &t, MachineConfig &m) { read_timing_values(s, t, m); },
+         [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
+             if (!t.empty()) read_timing_values(s, t, m);  // a machine file's "": not given
+         },
          [](const MachineConfig &m) { return m.timing_values ? timing_values_text(m) : std::string(); }},
         {{"--link-us", "TIME", K::time, "50", 0, kMaxTimingUs, "us",
           "time per packet on a link; a bare number is microseconds", G::machine, "link-us"},
