@@ -10,7 +10,8 @@
  * A real is [-]DIGITS[.DIGITS][(e|E)[+-]DIGITS]; a whole number is DIGITS. The integer digits
  * have no leading zero ("0" itself and "0.5" are fine): "010" could be meant as octal 8. No "+",
  * no ".5" or "5.", no hexadecimal, inf or nan. A real whose value does not fit a double, too
- * large or so close to 0 that it underflows ("1e-400" would read as 0), is refused.
+ * large or so close to 0 that it would read as 0 ("1e-400"), is refused; a subnormal value
+ * ("4e-320") is not 0 and is read.
  */
 #ifndef RT_NUMBER_H
 #define RT_NUMBER_H
@@ -27,7 +28,7 @@ typedef enum rt_number_fault {
     RT_NUMBER_HEX,          /* 0x... */
     RT_NUMBER_LEADING_ZERO, /* 010 */
     RT_NUMBER_TOO_LARGE,    /* beyond a double, or above the whole number's maximum */
-    RT_NUMBER_UNDERFLOW     /* not 0, but below the smallest normal double */
+    RT_NUMBER_UNDERFLOW     /* not 0 as written, but 0 as a double */
 } rt_number_fault;
 
 /* Reads text[0..len) as a real into *out (untouched on a fault). */

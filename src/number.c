@@ -2,7 +2,6 @@
 #include "rt_number.h"
 
 #include <errno.h>
-#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -65,7 +64,7 @@ rt_number_fault rt_number_real(const char *text, size_t len, double *out)
     errno = 0;
     double v = strtod(buf, NULL);
     if (!isfinite(v) || (errno == ERANGE && fabs(v) > 1.0)) return RT_NUMBER_TOO_LARGE;
-    if (!zero_mantissa(text, len) && fabs(v) < DBL_MIN) return RT_NUMBER_UNDERFLOW;
+    if (v == 0 && !zero_mantissa(text, len)) return RT_NUMBER_UNDERFLOW;
     *out = v;
     return RT_NUMBER_OK;
 }
@@ -93,7 +92,7 @@ const char *rt_number_fault_text(rt_number_fault fault)
     case RT_NUMBER_SYNTAX: return "is not a number (decimal, such as 2, -0.5 or 1e-3)";
     case RT_NUMBER_HEX: return "is not decimal (hexadecimal is not accepted)";
     case RT_NUMBER_LEADING_ZERO: return "has a leading zero (decimal only: it could be read as octal)";
-    case RT_NUMBER_TOO_LARGE: return "is too large";
+    case RT_NUMBER_TOO_LARGE: return "is too large (not finite as a double)";
     case RT_NUMBER_UNDERFLOW: return "is too close to 0 for a double (it would read as 0)";
     }
     return "is not a number";

@@ -2,7 +2,6 @@
 // each refusal is, and the edges of the range.
 #include <gtest/gtest.h>
 
-#include <cfloat>
 #include <cstring>
 #include <string>
 
@@ -20,8 +19,9 @@ TEST(Number, ReadsPlainDecimalReals)
         const char *text;
         double value;
     };
-    const Case ok[] = {{"0", 0},        {"-0", -0.0},  {"0.5", 0.5},  {"-12.25", -12.25}, {"1e3", 1000},
-                       {"2E-3", 0.002}, {"7e+2", 700}, {"0e-999", 0}, {"1e-300", 1e-300}, {"1e308", 1e308}};
+    const Case ok[] = {{"0", 0},           {"-0", -0.0},       {"0.5", 0.5},    {"-12.25", -12.25},
+                       {"1e3", 1000},      {"2E-3", 0.002},    {"7e+2", 700},   {"0e-999", 0},
+                       {"1e-300", 1e-300}, {"4e-320", 4e-320}, {"1e308", 1e308}};
     for (const Case &c : ok) {
         double v = 99;
         EXPECT_EQ(real(c.text, &v), RT_NUMBER_OK) << c.text;
@@ -41,12 +41,12 @@ TEST(Number, RefusesEveryOtherFormAndNamesWhy)
         {"nan", RT_NUMBER_SYNTAX},       {"inf", RT_NUMBER_SYNTAX},         {"1 ", RT_NUMBER_SYNTAX},
         {"010", RT_NUMBER_LEADING_ZERO}, {"-00.5", RT_NUMBER_LEADING_ZERO}, {"0x10", RT_NUMBER_HEX},
         {"0x1p3", RT_NUMBER_HEX},        {"1e309", RT_NUMBER_TOO_LARGE},    {"-1e400", RT_NUMBER_TOO_LARGE},
-        {"1e-400", RT_NUMBER_UNDERFLOW}, {"-1e-310", RT_NUMBER_UNDERFLOW}};
+        {"1e-400", RT_NUMBER_UNDERFLOW}, {"-1e-330", RT_NUMBER_UNDERFLOW}};
     for (const Case &c : bad) {
         double v = 99;
         EXPECT_EQ(real(c.text, &v), c.fault) << c.text;
         EXPECT_EQ(v, 99) << c.text << ": the value is left alone";
-        EXPECT_NE(std::string(rt_number_fault_text(c.fault)).find("is "), std::string::npos);
+        EXPECT_NE(std::string(rt_number_fault_text(c.fault)), rt_number_fault_text(RT_NUMBER_OK)) << c.text;
     }
 }
 
@@ -73,5 +73,4 @@ TEST(Number, ReadsOnlyTheGivenLength)
     double v = 0;
     EXPECT_EQ(rt_number_real("12.5xyz", 4, &v), RT_NUMBER_OK);
     EXPECT_EQ(v, 12.5);
-    EXPECT_LT(DBL_MIN, 1e-300);
 }
