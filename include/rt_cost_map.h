@@ -74,6 +74,20 @@ rt_status rt_cost_pilot_run_by_object(const rt_scene *scene, const rt_grid *grid
                                       const rt_timing *timing, rt_cost_pilot *out, char *msg, size_t msg_len);
 void rt_cost_pilot_release(rt_cost_pilot *pilot);
 
+/* Bytes a pilot on `grid` (with `objects` objects) holds while it runs at the scene camera's
+ * WIDTH x HEIGHT: its per-cell tables, its frame buffer and, by object, its per-entry counts.
+ * A memory budget checks them before the pilot starts. */
+uint64_t rt_cost_pilot_bytes(const rt_grid *grid, size_t objects, uint32_t width, uint32_t height, int by_object);
+
+/* Bytes the Scotch mapping (rt_cost_map, rt_cost_map_folded, rt_cost_remap) of `cells` cells
+ * holds at most besides the pilot: the cell graph with its weights, the part tables, and as much
+ * again for Scotch's coarser graphs. */
+uint64_t rt_cost_map_bytes(size_t cells);
+
+/* Bytes rt_cost_map_scatter holds for `cells` cells, one piece a cell (a cut cell's further
+ * pieces are within --replicate's budget of the nodes' memory). */
+uint64_t rt_cost_scatter_bytes(size_t cells);
+
 /* Microseconds one packet handed across a face costs: send + receive + link. */
 double rt_cost_edge_us(const rt_timing *timing);
 

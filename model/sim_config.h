@@ -74,6 +74,7 @@ struct MachineConfig {
     std::string timing_profile;                            // label: the profile, with " + FILE" for a timing file
     std::string timing_base;                               // the built-in profile the table started from
     std::string timing_file;                               // the timing file applied on top ("" = none)
+    bool timing_values = false;                            // --timing-values set the whole table
     rt_step_params step{};                                 // shade-tree limits
     TimingStyle style = TimingStyle::at;                   // approximately- or loosely-timed
     double quantum_us = 0;                                 // loosely-timed global quantum

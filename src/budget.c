@@ -6,6 +6,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "rt_number.h"
+
 rt_budget rt_budget_make(uint64_t limit_bytes)
 {
     rt_budget b = {limit_bytes, 0};
@@ -41,9 +43,8 @@ rt_status rt_budget_parse(const char *text, uint64_t *bytes, char *msg, size_t m
         if (strcmp(q, units[i].unit) != 0) continue;
         memcpy(number, p, n);
         number[n] = '\0';
-        char *end = NULL;
-        double v = strtod(number, &end);
-        if (*end != '\0' || !isfinite(v)) break;
+        double v = 0;
+        if (rt_number_real(number, n, &v) != RT_NUMBER_OK) break;
         double b = floor(v * units[i].scale);
         if (!(b < 18446744073709551616.0)) break;
         *bytes = (uint64_t)b;

@@ -9,6 +9,7 @@
 #include "camera_path_internal.h"
 #include "rt_camera_path.h"
 #include "rt_file_read.h"
+#include "rt_number.h"
 
 #define FIELDS 10
 #define LAYOUT "from_x from_y from_z at_x at_y at_z up_x up_y up_z angle"
@@ -70,18 +71,16 @@ static int read_line(reader *r, char *buf, rt_status *error)
     return any;
 }
 
-/* A strict decimal number: digits, sign, point and exponent only (no nan, inf or hex). */
+/* A real of the one decimal syntax (rt_number.h), at most 1e30 in magnitude. */
 static rt_status parse_number(reader *r, const char *tok, int field, double *out)
 {
     static const char *names[FIELDS] = {"from_x", "from_y", "from_z", "at_x", "at_y",
                                         "at_z",   "up_x",   "up_y",   "up_z", "angle"};
-    char *end = NULL;
-    int digits = strspn(tok, "0123456789+-.eE") == strlen(tok) && strpbrk(tok, "0123456789");
-    errno = 0;
-    double v = digits ? strtod(tok, &end) : 0.0;
-    if (!digits || *end != '\0') return fail(r, RT_ERR_PARSE, "%s '%.40s' is not a number", names[field], tok);
-    if (!isfinite(v) || fabs(v) > MAX_MAGNITUDE)
-        return fail(r, RT_ERR_PARSE, "%s '%.40s' is not finite or above 1e30 in magnitude", names[field], tok);
+    double v = 0;
+    rt_number_fault f = rt_number_real(tok, strlen(tok), &v);
+    if (f != RT_NUMBER_OK) return fail(r, RT_ERR_PARSE, "%s '%.40s' %s", names[field], tok, rt_number_fault_text(f));
+    if (fabs(v) > MAX_MAGNITUDE)
+        return fail(r, RT_ERR_PARSE, "%s '%.40s' is above 1e30 in magnitude", names[field], tok);
     *out = v;
     return RT_OK;
 }

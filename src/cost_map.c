@@ -90,6 +90,14 @@ static rt_status build_graph(const rt_cost_pilot *p, double edge_us, cell_graph 
     return RT_OK;
 }
 
+uint64_t rt_cost_map_bytes(size_t cells)
+{
+    uint64_t n = cells;
+    /* verttab, velotab, edgetab and edlotab (at most six faces a cell), and the part tables */
+    uint64_t graph = (2 * (n + 1) + 2 * (RT_CELL_FACES * n + 1)) * sizeof(SCOTCH_Num);
+    return 2 * graph + 3 * n * sizeof(SCOTCH_Num);
+}
+
 static rt_status scotch_fail(char *msg, size_t msg_len, const char *call)
 {
     if (msg && msg_len) snprintf(msg, msg_len, "Scotch: %s failed (see its message above)", call);

@@ -199,6 +199,19 @@ void rt_cost_pilot_release(rt_cost_pilot *p)
     memset(p, 0, sizeof *p);
 }
 
+uint64_t rt_cost_pilot_bytes(const rt_grid *grid, size_t objects, uint32_t width, uint32_t height, int by_object)
+{
+    uint64_t cells = rt_grid_cell_count(grid);
+    /* work_us, traffic and the self-owner table, as pilot_run allocates them */
+    uint64_t bytes = cells * (sizeof(double) + RT_CELL_FACES * sizeof(uint64_t) + sizeof(int32_t));
+    bytes += rt_framebuffer_bytes(width, height);
+    if (by_object) /* counter_init's tables, and object_us at most one record per list entry */
+        bytes += (cells + 1) * sizeof(size_t) +
+                 (rt_grid_list_entries(grid) + 1) * (sizeof(double) + sizeof(rt_object_cell_us)) +
+                 (objects + 1) * 2 * sizeof(uint64_t);
+    return bytes;
+}
+
 double rt_cost_edge_us(const rt_timing *t)
 {
     return t->handover_send_us + t->handover_receive_us + rt_timing_link_packet_us(t);

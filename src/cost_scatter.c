@@ -16,6 +16,13 @@ typedef struct piece {
     uint32_t index; /* 0: the cell's primary piece */
 } piece;
 
+uint64_t rt_cost_scatter_bytes(size_t cells)
+{
+    /* want, pieces, their owners, start and count (rt_cost_map_scatter), and `first` */
+    return (uint64_t)(cells + 1) *
+           (sizeof(uint32_t) + sizeof(piece) + sizeof(int32_t) + sizeof(size_t) + sizeof(uint32_t) + sizeof(uint32_t));
+}
+
 /* The nodes as a binary min-heap by (load, pieces held, node number). */
 typedef struct node_heap {
     int32_t *at;  /* heap order */

@@ -7,6 +7,7 @@
 
 #include "rt_file_read.h"
 #include "rt_map_file.h"
+#include "rt_number.h"
 
 /* A word-at-a-time reader over the file's text that knows its line number and skips `#`
  * comments. */
@@ -46,14 +47,13 @@ static int next_word(words *w)
     return 1;
 }
 
-/* 1 and *v if the word is a whole decimal integer in [lo, hi]. */
+/* 1 and *v if the word is a whole decimal number (rt_number.h) in [lo, hi]. */
 static int word_int(const char *s, long lo, long hi, long *v)
 {
-    char *end;
-    errno = 0;
-    long x = strtol(s, &end, 10);
-    if (end == s || *end || errno == ERANGE || x < lo || x > hi) return 0;
-    *v = x;
+    unsigned long long x = 0;
+    if (rt_number_whole(s, strlen(s), (unsigned long long)hi, &x) != RT_NUMBER_OK || x < (unsigned long long)lo)
+        return 0;
+    *v = (long)x;
     return 1;
 }
 

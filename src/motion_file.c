@@ -9,6 +9,7 @@
 
 #include "motion_internal.h"
 #include "rt_file_read.h"
+#include "rt_number.h"
 #include "rt_text.h"
 
 #define MAX_MAGNITUDE 1e30 /* the NFF reader's limit on coordinates */
@@ -37,29 +38,27 @@ static rt_status fail(reader *r, rt_status status, const char *fmt, ...)
     return status;
 }
 
-/* A strict decimal number: digits, sign, point and exponent only (no nan, inf or hex). */
+/* A real of the one decimal syntax (rt_number.h), at most 1e30 in magnitude. */
 static rt_status parse_real(reader *r, const char *what, const char *tok, double *out)
 {
-    char *end = NULL;
-    int digits = strspn(tok, "0123456789+-.eE") == strlen(tok) && strpbrk(tok, "0123456789");
-    errno = 0;
-    double v = digits ? strtod(tok, &end) : 0.0;
-    if (!digits || *end != '\0') return fail(r, RT_ERR_PARSE, "%s '%.40s' is not a number", what, tok);
-    if (!isfinite(v) || fabs(v) > MAX_MAGNITUDE)
-        return fail(r, RT_ERR_PARSE, "%s '%.40s' is not finite or above 1e30 in magnitude", what, tok);
+    double v = 0;
+    rt_number_fault f = rt_number_real(tok, strlen(tok), &v);
+    if (f != RT_NUMBER_OK) return fail(r, RT_ERR_PARSE, "%s '%.40s' %s", what, tok, rt_number_fault_text(f));
+    if (fabs(v) > MAX_MAGNITUDE) return fail(r, RT_ERR_PARSE, "%s '%.40s' is above 1e30 in magnitude", what, tok);
     *out = v;
     return RT_OK;
 }
 
-/* A whole decimal number in [0, max]: digits only. */
+/* A whole decimal number in [0, max] (rt_number.h). */
 static rt_status parse_count(reader *r, const char *what, const char *tok, unsigned long max, uint32_t *out)
 {
-    size_t n = strlen(tok);
-    if (n == 0 || strspn(tok, "0123456789") != n)
+    unsigned long long v = 0;
+    *out = 0;
+    rt_number_fault f = rt_number_whole(tok, strlen(tok), max, &v);
+    if (f == RT_NUMBER_TOO_LARGE) return fail(r, RT_ERR_PARSE, "%s %.40s is above %lu", what, tok, max);
+    if (f == RT_NUMBER_SYNTAX)
         return fail(r, RT_ERR_PARSE, "%s '%.40s' is not a whole number (digits only)", what, tok);
-    errno = 0;
-    unsigned long long v = strtoull(tok, NULL, 10);
-    if (errno == ERANGE || v > max) return fail(r, RT_ERR_PARSE, "%s %.40s is above %lu", what, tok, max);
+    if (f != RT_NUMBER_OK) return fail(r, RT_ERR_PARSE, "%s '%.40s' %s", what, tok, rt_number_fault_text(f));
     *out = (uint32_t)v;
     return RT_OK;
 }

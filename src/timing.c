@@ -1,6 +1,5 @@
 /* timing.c - the timing table: defaults, `key value` files, and costs. */
 #include <ctype.h>
-#include <errno.h>
 #include <math.h>
 #include <stddef.h>
 #include <stdio.h>
@@ -8,6 +7,7 @@
 #include <string.h>
 
 #include "rt_file_read.h"
+#include "rt_number.h"
 #include "rt_timing.h"
 
 typedef struct timing_key {
@@ -137,30 +137,6 @@ static const char *skip_space(const char *p)
     return p;
 }
 
-/* Whether v[0..len) is a decimal number: [-]DIGITS[.DIGITS][(e|E)[+-]DIGITS] (no hex float,
- * no inf or nan, which strtod would take). */
-static int decimal_number(const char *v, size_t len)
-{
-    size_t i = 0, start;
-    if (i < len && v[i] == '-') i++;
-    start = i;
-    while (i < len && isdigit((unsigned char)v[i])) i++;
-    if (i == start || (i - start > 1 && v[start] == '0')) return 0;
-    if (i < len && v[i] == '.') {
-        size_t frac = ++i;
-        while (i < len && isdigit((unsigned char)v[i])) i++;
-        if (i == frac) return 0;
-    }
-    if (i < len && (v[i] == 'e' || v[i] == 'E')) {
-        size_t exp;
-        if (++i < len && (v[i] == '+' || v[i] == '-')) i++;
-        exp = i;
-        while (i < len && isdigit((unsigned char)v[i])) i++;
-        if (i == exp) return 0;
-    }
-    return i == len;
-}
-
 /* Applies one line to *t; 0 with a message (no prefix) if malformed. `seen` marks the keys
  * the file has set: a key given twice is an error. */
 static int parse_line(char *line, rt_timing *t, unsigned char seen[], char *msg, size_t msg_len)
@@ -200,16 +176,15 @@ static int parse_line(char *line, rt_timing *t, unsigned char seen[], char *msg,
         return 0;
     }
     seen[i] = 1;
-    if (!decimal_number(value, value_len)) {
-        if (msg && msg_len)
-            snprintf(msg, msg_len, "'%s' needs a decimal number (such as 12.5 or 1e-3; no hexadecimal)", keys[i].name);
+    double v = 0;
+    rt_number_fault f = rt_number_real(value, value_len, &v);
+    if (f == RT_NUMBER_TOO_LARGE || f == RT_NUMBER_UNDERFLOW) {
+        range_msg((size_t)i, msg, msg_len);
         return 0;
     }
-    char *end;
-    errno = 0;
-    double v = strtod(value, &end);
-    if (end != value + value_len || errno == ERANGE) {
-        range_msg((size_t)i, msg, msg_len);
+    if (f != RT_NUMBER_OK) {
+        if (msg && msg_len)
+            snprintf(msg, msg_len, "'%s' needs a decimal number (such as 12.5 or 1e-3; no hexadecimal)", keys[i].name);
         return 0;
     }
     return rt_timing_set(t, name, v, msg, msg_len) == RT_OK;

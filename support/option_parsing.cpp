@@ -2,12 +2,13 @@
 // option and quotes the value escaped.
 #include "option_parsing.h"
 
-#include <cerrno>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
 #include "rt_budget.h"
+#include "rt_number.h"
 #include "rt_text.h"
 #include "user_error.h"
 
@@ -31,43 +32,36 @@ std::string not_decimal(const std::string &text)
     size_t i = text[0] == '-' ? 1 : 0;
     if (text.size() > i + 1 && text[i] == '0' && (text[i + 1] == 'x' || text[i + 1] == 'X'))
         return "decimal only (hexadecimal is not accepted)";
-    if (text.size() > i + 1 && text[i] == '0' && is_digit(text[i + 1]))
-        return "decimal only (no leading zero: '010' could be read as octal 8)";
+    if (text.size() > i + 1 && text[i] == '0' && is_digit(text[i + 1])) {
+        size_t first = text.find_first_not_of('0', i);  // the value without its leading zeros
+        if (first == std::string::npos || !is_digit(text[first])) first--;
+        std::string plain = text.substr(0, i) + text.substr(first);
+        return "decimal only (a leading zero could be read as octal: write '" + shown_text(plain) + "')";
+    }
     return "";
 }
 
-// [-]DIGITS[.DIGITS][(e|E)[+-]DIGITS]
-bool real_syntax(const std::string &s)
-{
-    size_t i = 0, n = s.size();
-    if (i < n && s[i] == '-') i++;
-    size_t start = i;
-    while (i < n && is_digit(s[i])) i++;
-    if (i == start) return false;
-    if (i < n && s[i] == '.') {
-        size_t frac = ++i;
-        while (i < n && is_digit(s[i])) i++;
-        if (i == frac) return false;
-    }
-    if (i < n && (s[i] == 'e' || s[i] == 'E')) {
-        i++;
-        if (i < n && (s[i] == '+' || s[i] == '-')) i++;
-        size_t exp = i;
-        while (i < n && is_digit(s[i])) i++;
-        if (i == exp) return false;
-    }
-    return i == n;
-}
-
+// The kernel's one decimal syntax (rt_number.h) decides; the messages name the option.
 double read_real(const std::string &option, const std::string &text)
 {
-    std::string why = text.empty() ? "" : not_decimal(text);
-    if (!why.empty()) bad(option, text, why);
-    if (!real_syntax(text)) bad(option, text, "expected a decimal number such as 2, 0.5 or 1e-3");
-    errno = 0;
-    double v = std::strtod(text.c_str(), nullptr);
-    if (!std::isfinite(v)) bad(option, text, "too large");
-    return v;
+    double v = 0;
+    switch (rt_number_real(text.data(), text.size(), &v)) {
+    case RT_NUMBER_OK: return v;
+    case RT_NUMBER_HEX:
+    case RT_NUMBER_LEADING_ZERO: bad(option, text, not_decimal(text));
+    case RT_NUMBER_TOO_LARGE: bad(option, text, "too large");
+    case RT_NUMBER_UNDERFLOW: bad(option, text, "too close to 0 for a double (it would read as 0)");
+    case RT_NUMBER_SYNTAX: break;
+    }
+    bad(option, text, "expected a decimal number such as 2, 0.5 or 1e-3");
+}
+
+// Whether `text` has the syntax of a real (its value aside).
+bool real_syntax(const std::string &text)
+{
+    double v = 0;
+    rt_number_fault f = rt_number_real(text.data(), text.size(), &v);
+    return f != RT_NUMBER_SYNTAX && f != RT_NUMBER_HEX && f != RT_NUMBER_LEADING_ZERO;
 }
 
 std::vector<std::string> split(const std::string &text, char sep)
@@ -110,17 +104,20 @@ std::string number_text(double v)
 
 long long parse_integer(const std::string &option, const std::string &text, long long min_value, long long max_value)
 {
+    const std::string range = "must be " + std::to_string(min_value) + " to " + std::to_string(max_value);
     if (text.empty()) bad(option, text, "expected a whole number");
-    std::string why = not_decimal(text);
-    if (!why.empty()) bad(option, text, why);
-    for (char c : text)
-        if (!is_digit(c)) bad(option, text, "expected a whole decimal number (digits only)");
-    if (text.size() > 18)
-        bad(option, text, "must be " + std::to_string(min_value) + " to " + std::to_string(max_value));
-    long long v = std::strtoll(text.c_str(), nullptr, 10);
-    if (v < min_value || v > max_value)
-        bad(option, text, "must be " + std::to_string(min_value) + " to " + std::to_string(max_value));
-    return v;
+    unsigned long long v = 0;
+    switch (rt_number_whole(text.data(), text.size(), static_cast<unsigned long long>(std::max(max_value, 0LL)), &v)) {
+    case RT_NUMBER_OK: break;
+    case RT_NUMBER_HEX:
+    case RT_NUMBER_LEADING_ZERO: bad(option, text, not_decimal(text));
+    case RT_NUMBER_TOO_LARGE: bad(option, text, range);
+    default:
+        bad(option, text,
+            not_decimal(text).empty() ? "expected a whole decimal number (digits only)" : not_decimal(text));
+    }
+    if (static_cast<long long>(v) < min_value) bad(option, text, range);
+    return static_cast<long long>(v);
 }
 
 double parse_real(const std::string &option, const std::string &text, double min_value, double max_value)

@@ -13,7 +13,8 @@ std::string choose_timing(const std::string &profile, const std::string &file, r
     if (rt_timing_profile(name.c_str(), timing, msg, sizeof msg) != RT_OK)
         throw UserError(std::string("--timing-profile: ") + msg, 2);
     if (file.empty()) return name;
-    if (rt_timing_load(file.c_str(), timing, msg, sizeof msg) != RT_OK) throw UserError(msg);
+    if (rt_timing_load(file.c_str(), timing, msg, sizeof msg) != RT_OK)
+        throw UserError(std::string("--timing: ") + msg);
     return name + " + " + file;
 }
 

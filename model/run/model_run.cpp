@@ -59,7 +59,8 @@ void check_budget_before_start(const PacketLedger &ledger, rt_budget &memory)
 {
     if (!ledger.over_limit()) return;  // sc_stop was called in elaboration: sc_start would fail (E546)
     char msg[RT_MSG_LEN] = "";
-    rt_budget_packets_exceeded(&memory, ledger.outstanding_over_limit(), sizeof(rt_packet), msg, sizeof msg);
+    rt_budget_packets_exceeded(&memory, ledger.outstanding_over_limit(), PacketPool::bytes_per_packet(), msg,
+                               sizeof msg);
     throw UserError(std::string("before the simulation started: ") + msg);
 }
 

@@ -10,6 +10,8 @@
 #include "model_run.h"
 #include "motion_update.h"
 #include "progress.h"
+#include "rt_cost_map.h"
+#include "rt_framebuffer.h"
 #include "run_stage.h"
 #include "torus_system.h"
 #include "tracing.h"
@@ -35,6 +37,34 @@ FramebufferPtr new_frame_buffer(const rt_scene *scene)
     FramebufferPtr fb(rt_framebuffer_new(cam->width, cam->height));
     if (!fb) throw UserError("out of memory for the frame buffer");
     return fb;
+}
+
+// The 8-bit images the run holds at once (one when each frame is handed on as it completes),
+// checked against the budget before any frame runs.
+void reserve_images(rt_budget &memory, const rt_camera *cam, size_t images)
+{
+    uint64_t bytes = static_cast<uint64_t>(cam->width) * cam->height * 3 * images;
+    std::string what = images == 1 ? "the 8-bit image" : std::to_string(images) + " frames' 8-bit images";
+    what += " of " + std::to_string(cam->width) + "x" + std::to_string(cam->height) + " pixels";
+    char msg[RT_MSG_LEN] = "";
+    if (rt_budget_reserve(&memory, bytes, what.c_str(), msg, sizeof msg) != RT_OK) throw UserError(msg);
+}
+
+// An animation's pilots (the current frame's, the two before it and adaptive's preview, kept
+// from frame to frame) with one pilot's frame buffer and a remapping's Scotch tables, held from
+// the run's budget before the first pilot runs.
+void reserve_frame_pilots(rt_budget &memory, const rt_scene *scene, const rt_grid *grid, const FramePlan &plan)
+{
+    if (!plan.animated()) return;
+    const rt_camera *cam = rt_scene_camera(scene);
+    size_t cells = rt_grid_cell_count(grid), objects = rt_scene_object_count(scene);
+    bool by_object = plan.motion && plan.policy == RemapPolicy::adaptive;
+    uint64_t tables = rt_cost_pilot_bytes(grid, objects, 0, 0, by_object) - rt_framebuffer_bytes(0, 0);
+    uint64_t bytes = 4 * tables + rt_framebuffer_bytes(cam->width, cam->height) +
+                     (plan.policy == RemapPolicy::static_map ? 0 : rt_cost_map_bytes(cells));
+    std::string what = "the frames' pilots and remapping of " + std::to_string(cells) + " cells";
+    char msg[RT_MSG_LEN] = "";
+    if (rt_budget_reserve(&memory, bytes, what.c_str(), msg, sizeof msg) != RT_OK) throw UserError(msg);
 }
 
 uint64_t created(const PacketLedger &ledger) { return ledger.totals().created[0] + ledger.totals().created[1]; }
@@ -248,6 +278,7 @@ FrameRecord FrameLoop::prepare(Machine &m, size_t k, const std::vector<FrameReco
                                 by_object() ? &shifts : nullptr},
                      rec);
         if (plan.motion) m.top->place_objects(grid, m.owner.data());
+        m.fb.reset();  // the budget holds one frame buffer: the last frame's goes first
         m.fb = new_frame_buffer(scene);
         start = frame_start(config, end_s + rec.charged_migration_s() + rec.host_pilot_charged_s + rec.update.time_s());
         m.top->start_frame(m.fb.get(), m.owner.data(), start);
@@ -291,6 +322,10 @@ RunOutcome run_frames(const SimConfig &config, rt_scene *scene, const rt_grid *g
     size_t n = plan.animated() ? plan.frames : 1;
     Machine m;
     m.memory = config.memory;
+    const rt_camera *cam = rt_scene_camera(scene);
+    const size_t image_bytes = static_cast<size_t>(cam->width) * cam->height * 3;
+    reserve_images(m.memory, cam, plan.frame_done ? 1 : n);
+    reserve_frame_pilots(m.memory, scene, grid, plan);
     m.ledger.set_limit(rt_budget_packets_allowed(&m.memory, PacketPool::bytes_per_packet()));
     FrameLoop loop(config, scene, grid, plan);
     m.owner = loop.first_table();
@@ -299,10 +334,11 @@ RunOutcome run_frames(const SimConfig &config, rt_scene *scene, const rt_grid *g
     elaborate(config, scene, grid, m);
 
     RunOutcome out;
+    std::vector<uint8_t> rgb8;    // the frame just completed
+    uint64_t created_before = 0;  // the primaries are counted when a frame is set up: elaboration, start_frame
     for (size_t k = 0; k < n; k++) {
         set_run_stage(n > 1 ? "simulating frame " + std::to_string(k) : "simulating the image");
         FrameRecord rec = loop.prepare(m, k, out.frames);
-        uint64_t created_before = created(m.ledger);
         if (!run_frame(config, m, progress_label(plan, k, n))) {
             deadlocked(loop, m, k, wall_start_s, out);
             return out;  // the tracer's destructor removes the partial trace
@@ -311,9 +347,11 @@ RunOutcome run_frames(const SimConfig &config, rt_scene *scene, const rt_grid *g
         loop.end_s = m.ledger.image_time().to_seconds();
         rec.image_time_s = (m.ledger.image_time() - loop.start).to_seconds();
         rec.packets = created(m.ledger) - created_before;
-        const rt_camera *cam = rt_scene_camera(scene);
-        out.images.emplace_back(static_cast<size_t>(cam->width) * cam->height * 3);
-        rt_framebuffer_to_rgb8(m.fb.get(), out.images.back().data());
+        created_before = created(m.ledger);
+        rgb8.resize(image_bytes);
+        rt_framebuffer_to_rgb8(m.fb.get(), rgb8.data());
+        if (plan.frame_done) plan.frame_done(k, rgb8);
+        else out.images.push_back(std::move(rgb8));
         out.frames.push_back(rec);
     }
     out.sim_time_s = loop.end_s;

@@ -6,6 +6,8 @@
 // and the owner table's contents change only between frames, with the network empty.
 #pragma once
 
+#include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -35,6 +37,10 @@ struct FramePlan {
     SceneMotion *motion = nullptr;
     rt_grid *moving_grid = nullptr;
 
+    // Takes each frame's 8-bit RGB as the frame completes (an animation writes it to its staged
+    // file), so that no frame is kept; null: the images are kept in RunOutcome::images.
+    std::function<void(size_t frame, const std::vector<uint8_t> &rgb8)> frame_done;
+
     bool animated() const { return frames > 0; }
 };
 
@@ -42,7 +48,7 @@ struct RunOutcome {
     bool deadlock = false;                     // the network stalled with packets outstanding
     std::string deadlock_details;              // which queues were full (deadlock_text)
     double sim_time_s = 0;                     // the image time (a deadlock: the time of the stall)
-    std::vector<std::vector<uint8_t>> images;  // every completed frame's RGB
+    std::vector<std::vector<uint8_t>> images;  // every completed frame's RGB (none with frame_done)
     std::vector<FrameRecord> frames;           // an animation's frame records
     RunReport report;                          // the statistics, also after a deadlock
 };

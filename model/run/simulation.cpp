@@ -127,7 +127,7 @@ FrameScene load_frame_scene(SimRequest &r, LoadedScene &loaded)
 
 // The plan of the frames: a single image's T(1) (--t1, or a one-processor run in a child
 // process), or an animation's frames, path, files, remapping and motion.
-FramePlan frame_plan(SimRequest &r, const FrameScene &fs, const StagedOutputs &outputs, CameraPathPtr &path)
+FramePlan frame_plan(SimRequest &r, const FrameScene &fs, StagedOutputs &outputs, CameraPathPtr &path)
 {
     FramePlan plan;
     if (r.animated()) {
@@ -140,6 +140,13 @@ FramePlan frame_plan(SimRequest &r, const FrameScene &fs, const StagedOutputs &o
         plan.adaptive = r.adaptive;
         plan.motion = fs.motion.get();
         plan.moving_grid = fs.motion ? fs.grid : nullptr;
+        // Each frame goes to its temporary as it completes; commit() renames them all at the end.
+        const rt_camera *cam = rt_scene_camera(fs.scene);
+        unsigned w = cam->width, h = cam->height;
+        plan.frame_done = [&outputs, w, h](size_t k, const std::vector<uint8_t> &rgb8) {
+            write_png_file(outputs.set.staged(outputs.first_frame + k), outputs.set.path(outputs.first_frame + k), w, h,
+                           rgb8);
+        };
         return plan;
     }
     plan.t1_s = r.config.t1_s;
@@ -151,18 +158,13 @@ FramePlan frame_plan(SimRequest &r, const FrameScene &fs, const StagedOutputs &o
     return plan;
 }
 
-// Writes the image or every frame, the statistics and the frame table, and commits them with
-// the mapping outputs already staged.
+// Writes the image (an animation's frames are staged as they complete), the statistics and the
+// frame table, and commits them with the mapping outputs already staged.
 void write_outputs(const SimRequest &r, const rt_scene *scene, StagedOutputs &outputs, const RunOutcome &out)
 {
     const rt_camera *cam = rt_scene_camera(scene);
-    if (r.animated()) {
-        for (size_t k = 0; k < out.images.size(); k++)
-            write_png_file(outputs.set.staged(outputs.first_frame + k), outputs.set.path(outputs.first_frame + k),
-                           cam->width, cam->height, out.images[k]);
-    } else {
+    if (!r.animated())
         write_png_file(outputs.set.staged(*outputs.png), r.image, cam->width, cam->height, out.images.front());
-    }
     write_stats(outputs, r, out.report);
     if (outputs.frames_csv)
         write_text_file(outputs.set.staged(*outputs.frames_csv), r.frames_csv, frames_csv(out.frames));
@@ -226,7 +228,7 @@ int simulate(SimRequest &r, double wall_start_s)
     write_outputs(r, scene, outputs, out);
     if (!config.quiet) {
         print_summary_stdout(out.report);
-        print_written(r, r.animated() ? std::to_string(out.images.size()) + " frames " + r.image : r.image);
+        print_written(r, r.animated() ? std::to_string(out.frames.size()) + " frames " + r.image : r.image);
     }
     return 0;
 }

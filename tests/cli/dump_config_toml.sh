@@ -2,7 +2,8 @@
 # dump_config_toml.sh - --dump-config writes TOML that Python's tomllib reads for any path
 # (backslashes, both quotes, control bytes, '#'), which reads back to the same machine;
 # --with-timing makes a machine file that needs no timing file; and
-# `experiments/report machine` writes a report's machine exactly as --dump-config does.
+# `experiments/report machine` writes a report's machine exactly as --dump-config does; a run
+# with --timing-values and its dump are one machine, and a dump without it another.
 source "$(dirname "$0")/common.bash" "$@"
 need_exe torusrt-sim
 sim="$BUILD/torusrt-sim"
@@ -57,4 +58,18 @@ python3 "$SRC/experiments/report" machine "$TMP/r.json" > "$TMP/report.toml" 2> 
 check "report machine exits 0 ($(head -1 "$TMP/err"))" [ $? = 0 ]
 check "report machine = --dump-config ($(diff "$TMP/dump.toml" "$TMP/report.toml" | head -3 | tr '\n' ' '))" \
     cmp -s "$TMP/dump.toml" "$TMP/report.toml"
+
+# --timing-values is part of the machine: in the dump without --with-timing, and in the report,
+# so that a machine without it compares as another machine.
+"$sim" "$scene" -o "$TMP/v.png" --stats "$TMP/v.json" -q --t1 1 --ips 2 --timing-values host_inject=9 ||
+    fail "run with --timing-values"
+"$sim" --dump-config --ips 2 --timing-values host_inject=9 >"$TMP/v.toml"
+check "the dump holds --timing-values" grep -q '^timing-values=".*,host_inject=9,' "$TMP/v.toml"
+python3 "$SRC/experiments/report" machine "$TMP/v.json" --compare "$TMP/v.toml" >/dev/null 2>&1
+check "report machine --compare: the run and its dump are the same machine (exit $?)" [ $? = 0 ]
+"$sim" --dump-config --ips 2 >"$TMP/plain.toml"
+python3 "$SRC/experiments/report" machine "$TMP/v.json" --compare "$TMP/plain.toml" >/dev/null 2>"$TMP/cmp.err"
+rc=$?
+check "report machine --compare: without --timing-values another machine (exit $rc)" [ $rc = 1 ]
+check "report machine --compare names timing-values" grep -q "timing-values" "$TMP/cmp.err"
 finish

@@ -3,7 +3,9 @@
 # executables: a 16384 x 16384 frame buffer (default 4G budget), 2000 spheres at one point
 # (every one in every cell: 221 MB of cell lists, budget 16M), and a glass scene with
 # --min-weight 0 --max-depth 1000 (the packets multiply without end, budget 2M). Each must
-# exit 1 naming what exceeded the budget, and leave no output file; a bad size exits 2.
+# exit 1 naming what exceeded the budget, and leave no output file; a bad size exits 2. The
+# model's cost and scatter pilots and mapping tables, and the primaries made before the
+# simulation starts, are checked the same way.
 #
 # Usage (CTest runs it so): bash tests/cli/memory_budget.sh BUILD_DIR SOURCE_DIR
 set -u
@@ -53,4 +55,36 @@ for exe in torusrt-render torusrt-sim; do
     check "$exe: --memory-budget 4Q gave exit $rc, expected 2" [ "$rc" -eq 2 ]
     check "$exe: --memory-budget 4Q message does not name the option" grep -q -- "--memory-budget" "$TMP/$exe-bad.stderr"
 done
+
+# The model's pilot and mapping tables are checked before they are made (under a 2 GB address
+# space, so that a run that is not checked fails instead of taking the machine's memory): a pilot
+# of 8000x8000 pixels in 100M, and the pilot and Scotch graph of 256^3 cells in 300M.
+paper1=$(source_scene paper-image1) || exit 1
+expect_over_limited() {
+    (ulimit -v 2000000 && expect_over "$@" && echo "$PASSED $FAILED" >"$TMP/counts")
+    read -r PASSED FAILED <"$TMP/counts"
+}
+for map in cost scatter; do
+    expect_over_limited "pilot-$map" torusrt-sim "the pilot of 8000x8000 pixels" "$paper1" --size 8x8 --t1 1 \
+        --ips 4 --map $map --pilot-size 8000x8000 --memory-budget 100M
+    check "pilot-$map: the message names --map $map" grep -q -- "--map $map: memory budget" "$TMP/pilot-$map.stderr"
+done
+# Without a budget, a pilot the address space cannot hold fails with its mapping's name.
+for map in cost scatter; do
+    (ulimit -v 800000 && "$BUILD/torusrt-sim" "$paper1" --size 8x8 --t1 1 --ips 4 --map $map \
+        --pilot-size 8000x8000 --memory-budget 0 -q -o "$TMP/nomem.png" >/dev/null 2>"$TMP/nomem-$map.stderr")
+    rc=$?
+    check "pilot-$map without a budget: exit 1 (got $rc)" [ $rc = 1 ]
+    check "pilot-$map without a budget: names --map $map ($(head -c 200 "$TMP/nomem-$map.stderr"))" \
+        grep -q -- "^torusrt-sim: --map $map: pilot run: out of memory" "$TMP/nomem-$map.stderr"
+done
+expect_over_limited cells-cost torusrt-sim "cells" "$paper1" --size 4x4 --t1 1 --ips 4 --map cost --cells 256 \
+    --memory-budget 300M
+
+# The packets made before the simulation starts (the primaries) are counted at the size the
+# budget's limit uses: the message's figures agree with each other.
+expect_over early-packets torusrt-sim "outstanding packets" "$paper1" --size 512x512 --t1 1 --ips 2 \
+    --memory-budget 12M
+check "early-packets: the packets' bytes exceed what is left ($(head -c 300 "$TMP/early-packets.stderr"))" \
+    bash -c "! grep -q ', 0 bytes more than' '$TMP/early-packets.stderr'"
 finish

@@ -5,7 +5,8 @@
 # (--min-weight 0 --max-depth 1000), refused from the materials before rendering, naming both
 # options; paper-image2 rendered whole within a 64M budget; a run whose packets pass a small
 # budget; 100000 coincident spheres, refused before their cell lists are made; and a diffuse
-# scene, which is never refused at any depth.
+# scene, which is never refused at any depth; and an animation of 24 large frames, which keeps
+# none of them in memory.
 #
 # Usage (CTest runs it so): bash tests/cli/memory_peak.sh BUILD_DIR SOURCE_DIR
 set -u
@@ -59,4 +60,27 @@ for exe in torusrt-sim torusrt-render; do
     peak "$exe-diffuse" 1 0 $exe "$TMP/diffuse.nff" -o "$TMP/diffuse-$exe.png" --memory-budget 1M \
         --min-weight 0 --max-depth 1000
 done
+
+# An animation keeps no frame: each goes to its temporary as it completes. 24 frames of
+# 1024x1024 (3 MiB each as 8-bit RGB, 72 MiB together) peak within an 80M budget, and no higher
+# than 2 frames of the same do, give or take a frame and a half.
+printf 'v from 0 0 5 at 0 0 0 up 0 1 0 angle 45 hither 1 resolution 1024 1024
+l 1 1 5
+f 1 1 1 1 0 0 0 1
+s 0 0 0 0.01
+' \
+    >"$TMP/speck.nff"
+mkdir "$TMP/f24" "$TMP/f2"
+peak sim-frames-24 80 0 torusrt-sim "$TMP/speck.nff" -o "$TMP/f24/f_%02d.png" --orbit 90 --frames 24 \
+    --memory-budget 80M
+peak sim-frames-2 80 0 torusrt-sim "$TMP/speck.nff" -o "$TMP/f2/f_%02d.png" --orbit 90 --frames 2 \
+    --memory-budget 80M
+check "24 frames: 24 files" [ "$(ls "$TMP/f24" | wc -l)" -eq 24 ]
+kb24=$(awk -F: '/Maximum resident set size/ { gsub(/ /, "", $2); print $2 }' "$TMP/sim-frames-24.time")
+kb2=$(awk -F: '/Maximum resident set size/ { gsub(/ /, "", $2); print $2 }' "$TMP/sim-frames-2.time")
+check "24 frames peak at $kb24 KiB against 2 frames' $kb2 KiB" [ "${kb24:-0}" -le $((${kb2:-0} + 4608)) ]
+# A budget too small for the frame buffer and one frame's image refuses the animation at once.
+peak sim-frames-small 8 1 torusrt-sim "$TMP/speck.nff" -o "$TMP/f2/g_%02d.png" --orbit 90 --frames 40 \
+    --memory-budget 8M
+check "small budget: the message names the budget" grep -q "memory budget exceeded" "$TMP/sim-frames-small.stderr"
 finish

@@ -59,4 +59,15 @@ bad "frobnicate" --frobnicate
 bad "cannot open" --timing "$TMP/missing.timing"
 printf 'test_miss -3\n' > "$TMP/neg.timing"
 bad "neg.timing:1:" --timing "$TMP/neg.timing"
+# A timing file that is not a regular file is named with its option.
+mkfifo "$TMP/fifo.timing"
+bad "--timing: .*fifo.timing: is a FIFO" --timing "$TMP/fifo.timing"
+# A leading zero: the message shows the value as written without it.
+bad "--max-depth '012': decimal only .*write '12'" --max-depth 012
+bad "--min-weight '00.5': decimal only .*write '0.5'" --min-weight 00.5
+bad "--link-us '-007': decimal only .*write '-7'" --link-us -007
+# A timing key given twice in --timing-values.
+bad "--timing-values 'link=2': the key 'link' is given twice" --timing-values link=1,link=2
+# A value that underflows to 0 is refused, not read as 0.
+bad "--min-weight '1e-400': too close to 0" --min-weight 1e-400
 finish

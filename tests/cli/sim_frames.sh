@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # sim_frames.sh - animations in torusrt-sim: every frame's PNG equals the renderer's frame under
 # every --remap policy, a frame's image time equals a single run with its camera and mapping,
-# the frames[] / animation JSON and the CSV add up, migration is zero when the mapping stays,
+# the frames[] / animation JSON and the CSV add up (a frame's packets, its primaries included, are
+# a single run's), migration is zero when the mapping stays,
 # and bad input (--frames 0, a bad camera path, bad --remap) is exit 2 with no output.
 #
 # Usage (CTest runs it so): bash tests/cli/sim_frames.sh BUILD_DIR SOURCE_DIR
@@ -42,6 +43,8 @@ for policy in static every-frame adaptive oracle; do
         parts=$(jq '[.frames[].image_time_s] + [.frames[].migration_time_s] | add' "$j")
         check "$tag: total = sum of frame times + migration ($total vs $parts)" close "$total" "$parts"
         check "$tag: conserved" [ "$(jq .packets.conserved "$j")" = true ]
+        check "$tag: the frames' packets add up to the packets created ($(sum "$j" '.frames[].packets'))" \
+            [ "$(sum "$j" '.frames[].packets')" = "$(jq .packets.created.total "$j")" ]
         check "$tag: CSV has a header and 4 rows" [ "$(wc -l <"$TMP/$tag.csv")" = 5 ]
         csv_sum=$(awk -F, 'NR > 1 { s += $4 } END { printf "%.9g", s }' "$TMP/$tag.csv")
         check "$tag: CSV image times add up to the JSON's" close "$(sum "$j" '.frames[].image_time_s')" "$csv_sum"
@@ -73,6 +76,10 @@ check "frame 1's time equals the single run's" \
     [ "$(jq .frames[1].image_time_s "$TMP/two.json")" = "$(jq .sim_time_s "$TMP/half.json")" ]
 check "frame 0's time equals the plain run's" \
     [ "$(jq .frames[0].image_time_s "$TMP/two.json")" = "$(jq .sim_time_s "$TMP/plain.json")" ]
+check "frame 1's packets, primaries included, equal the single run's" \
+    [ "$(jq .frames[1].packets "$TMP/two.json")" = "$(jq .packets.created.total "$TMP/half.json")" ]
+check "frame 0's packets equal the plain run's" \
+    [ "$(jq .frames[0].packets "$TMP/two.json")" = "$(jq .packets.created.total "$TMP/plain.json")" ]
 check "frame 1 starts when frame 0 ends" \
     [ "$(jq .frames[1].start_s "$TMP/two.json")" = "$(jq .frames[0].image_time_s "$TMP/two.json")" ]
 check "a plain run has no frames" [ "$(jq 'has("frames")' "$TMP/plain.json")" = false ]

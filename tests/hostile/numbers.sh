@@ -3,7 +3,10 @@
 # commands refuses a word, a number glued to letters and a malformed number (exit 2, the option
 # named, nothing written), and accepts a plain decimal. Octal- and hex-looking values (010,
 # 0x10) and numbers in machine files are the option parser's to rule on (cli.sim_bad_options,
-# cli.machine_file_syntax): not tested here.
+# cli.machine_file_syntax). The file formats read their numbers with the same decimal syntax
+# (include/rt_number.h): a motion file, a camera path, a map file and a timing file each refuse
+# a leading zero, a plus sign, a bare point, hex and an underflow to 0 (1e-400), naming the file
+# and line, and write nothing.
 #
 # Usage (CTest runs it so): bash tests/hostile/numbers.sh BUILD_DIR SOURCE_DIR
 set -u
@@ -46,4 +49,45 @@ for entry in "${common[@]}"; do
     check "render $option $good is accepted" "$BUILD/torusrt-render" "$scene" "${sized[@]}" -q "$option" "$good" \
         -o "$TMP/good.png"
 done
+
+# file_refuses NAME FILE LINE COMMAND...: COMMAND (writing into $TMP/bad) exits non-zero, names
+# FILE:LINE and writes nothing.
+file_refuses() {
+    local name=$1 file=$2 line=$3
+    shift 3
+    rm -rf "$TMP/bad" && mkdir "$TMP/bad"
+    "${run_limited[@]}" "$@" >/dev/null 2>"$TMP/f.err" </dev/null
+    local rc=$?
+    check "$name: refused (exit $rc)" [ "$rc" -ne 0 ]
+    check "$name: names $(basename "$file"):$line ($(head -c 200 "$TMP/f.err"))" grep -qF -- "$file:$line:" "$TMP/f.err"
+    check "$name: no output" [ -z "$(ls -A "$TMP/bad")" ]
+}
+render="$BUILD/torusrt-render"
+reals=("010" "+5" ".5" "5." "0x10" "1e-400" "-1e-330")
+for bad in "${reals[@]}"; do
+    printf 'frames 2\nobjects 0\nkey 0 move 0 0 0\nkey 1 move %s 0 0\n' "$bad" >"$TMP/m.motion"
+    file_refuses "motion move $bad" "$TMP/m.motion" 4 "$render" "$scene" "${size[@]}" -q --motion "$TMP/m.motion" \
+        -o "$TMP/bad/f_%d.png"
+    printf '# a pose\n0 0 -5  0 0 0  0 1 0  %s\n' "$bad" >"$TMP/c.path"
+    file_refuses "camera path angle $bad" "$TMP/c.path" 2 "$render" "$scene" "${size[@]}" -q \
+        --camera-path "$TMP/c.path" -o "$TMP/bad/f_%d.png"
+    printf 'link %s\n' "$bad" >"$TMP/t.timing"
+    file_refuses "timing file link $bad" "$TMP/t.timing" 1 "$sim" "$scene" "${size[@]}" -q --timing "$TMP/t.timing" \
+        -o "$TMP/bad/a.png"
+done
+for bad in "01" "+1" "0x1" "1.0"; do
+    printf 'frames %s\n' "$bad" >"$TMP/m.motion"
+    file_refuses "motion frames $bad" "$TMP/m.motion" 1 "$render" "$scene" "${size[@]}" -q --motion "$TMP/m.motion" \
+        -o "$TMP/bad/f_%d.png"
+    { echo "torusrt-map 1 2 2 2 2"; for c in 0 1 2 3 4 5 6; do echo 0; done; echo "$bad"; } >"$TMP/m.map"
+    file_refuses "map file node $bad" "$TMP/m.map" 9 "$sim" "$scene" "${size[@]}" -q --cells 2 --ips 2 \
+        --map-file "$TMP/m.map" -o "$TMP/bad/a.png"
+done
+# The plain forms of the same numbers are accepted.
+printf 'frames 2\nobjects 0\nkey 0 move 0 0 0\nkey 1 move 0.5 5 -1e-3\n' >"$TMP/m.motion"
+check "motion file with plain numbers is accepted" "$render" "$scene" "${size[@]}" -q --motion "$TMP/m.motion" \
+    -o "$TMP/good_%d.png"
+{ echo "torusrt-map 1 2 2 2 2"; for c in 0 1 2 3 4 5 6 7; do echo $((c % 2)); done; } >"$TMP/m.map"
+check "map file with plain numbers is accepted" "$sim" "$scene" "${size[@]}" -q --cells 2 --ips 2 \
+    --map-file "$TMP/m.map" -o "$TMP/good.png"
 finish

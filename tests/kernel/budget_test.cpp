@@ -25,7 +25,8 @@ TEST(Budget, ParsesSizesWithBinaryUnits)
         EXPECT_EQ(rt_budget_parse(c.text, &b, nullptr, 0), RT_OK) << c.text;
         EXPECT_EQ(b, c.bytes) << c.text;
     }
-    for (const char *bad : {"", "G", "-1", "4Q", "4 G", "1e9", "nan", ".", "99999999999999999999T"}) {
+    for (const char *bad :
+         {"", "G", "-1", "4Q", "4 G", "1e9", "nan", ".", ".5G", "5.G", "010M", "99999999999999999999T"}) {
         uint64_t b = 7;
         char msg[RT_MSG_LEN] = "";
         EXPECT_EQ(rt_budget_parse(bad, &b, msg, sizeof msg), RT_ERR_INVALID) << bad;

@@ -1,5 +1,7 @@
 // config_validation_test.cpp - the validator names the option of every bad setting it is given,
 // and machine_options writes a machine as the options that rebuild it.
+#include <cstring>
+#include <map>
 #include <string>
 
 #include "machine_options.h"
@@ -122,4 +124,22 @@ TEST(MachineOptions, FileMappingHasMapFileAndNoMap)
     nlohmann::json j = machine_options_json(c);
     EXPECT_TRUE(!j.contains("map") && j["map-file"] == "m.map") << "a file mapping has map-file and no map";
     EXPECT_NE(machine_options_toml(c).find("map-file=\"m.map\"\n"), std::string::npos) << "TOML lines key=\"value\"";
+}
+
+TEST(MachineOptions, EveryOptionOfTheTableIsWrittenAndReadsBack)
+{
+    MachineConfig m = machine_from_texts({{"--ips", "2x2"}, {"--timing-values", "link=400,host_inject=9"}});
+    OptionList list = machine_options(m);
+    const std::vector<MachineOption> &table = machine_option_table();
+    ASSERT_EQ(list.size(), table.size()) << "one key per option of the table";
+    for (size_t i = 0; i < list.size(); i++) EXPECT_EQ(list[i].first, table[i].spec.key) << "in the table's order";
+    nlohmann::json j = machine_options_json(m);
+    std::string values = j["timing-values"];
+    EXPECT_NE(values.find(",link=400,"), std::string::npos) << "--timing-values is written: " << values;
+    std::map<std::string, std::string> given;
+    for (const auto &kv : list) given["--" + kv.first] = kv.second;
+    MachineConfig back = machine_from_texts(given);
+    EXPECT_EQ(machine_options(back), list) << "the written machine reads back to the same options";
+    EXPECT_EQ(std::memcmp(&back.timing, &m.timing, sizeof m.timing), 0) << "and the same timing table";
+    EXPECT_EQ(machine_options_json(machine_from_texts({}))["timing-values"], "") << "not given: empty";
 }

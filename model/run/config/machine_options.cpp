@@ -3,6 +3,7 @@
 // with their unit.
 #include "machine_options.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 
@@ -62,9 +63,10 @@ std::string map_text(const MachineConfig &m)
     return name;
 }
 
-// "KEY=VALUE,..." of every timing key.
+// "KEY=VALUE,..." of every timing key, each key once.
 void read_timing_values(const OptionSpec &spec, const std::string &text, MachineConfig &m)
 {
+    std::vector<std::string> seen;
     size_t pos = 0;
     while (pos < text.size()) {
         size_t comma = text.find(',', pos);
@@ -73,12 +75,17 @@ void read_timing_values(const OptionSpec &spec, const std::string &text, Machine
         if (eq == std::string::npos)
             throw UserError(spec.long_name() + " '" + shown_text(item) + "': expected KEY=VALUE", 2);
         std::string key = item.substr(0, eq);
+        if (std::find(seen.begin(), seen.end(), key) != seen.end())
+            throw UserError(
+                spec.long_name() + " '" + shown_text(item) + "': the key '" + shown_text(key) + "' is given twice", 2);
+        seen.push_back(key);
         set_timing(spec, m.timing, key.c_str(),
                    parse_real(spec.long_name() + " " + key, item.substr(eq + 1), 0, kMaxTimingUs));
         if (comma == std::string::npos) break;
         pos = comma + 1;
     }
     m.timing_file.clear();
+    m.timing_values = true;
     m.timing_profile = m.timing_base + " + values";
 }
 
@@ -198,15 +205,17 @@ std::vector<MachineOption> timing_options()
              m.timing_file = t;
              // The table as loaded is input: a value out of range is the file's fault.
              std::string problem = timing_limit_problem(m.timing);
-             if (!problem.empty()) throw UserError(shown_text(t) + ": " + problem);
+             if (!problem.empty()) throw UserError("--timing: " + shown_text(t) + ": " + problem);
          },
          [](const MachineConfig &m) { return m.timing_file; }},
         {{"--timing-values", "LIST", K::text, "", 0, 0, "",
           "KEY=VALUE,... for every key of the timing table, in place of a profile's and a file's "
           "(--dump-config --with-timing writes it)",
           G::machine, "timing-values"},
-         [](const OptionSpec &s, const std::string &t, MachineConfig &m) { read_timing_values(s, t, m); },
-         nullptr},
+         [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
+             if (!t.empty()) read_timing_values(s, t, m);  // a machine file's "": not given
+         },
+         [](const MachineConfig &m) { return m.timing_values ? timing_values_text(m) : std::string(); }},
         {{"--link-us", "TIME", K::time, "50", 0, kMaxTimingUs, "us",
           "time per packet on a link; a bare number is microseconds", G::machine, "link-us"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
@@ -423,12 +432,10 @@ OptionList machine_options(const MachineConfig &m, bool with_timing)
     OptionList list;
     for (const MachineOption &o : machine_option_table()) {
         const std::string &key = o.spec.key;
-        if (key == "map" && m.mapping == RT_MAP_FILE) continue;
-        if (key == "timing-values") {
-            if (with_timing) list.emplace_back(key, timing_values_text(m));
-            continue;
-        }
-        list.emplace_back(key, key == "timing" && with_timing ? std::string() : o.write(m));
+        if (key == "map" && m.mapping == RT_MAP_FILE) continue;  // the map file holds the mapping
+        if (with_timing && key == "timing-values") list.emplace_back(key, timing_values_text(m));
+        else if (with_timing && key == "timing") list.emplace_back(key, std::string());
+        else list.emplace_back(key, o.write(m));
     }
     return list;
 }

@@ -36,9 +36,10 @@ MachineConfig machine_from_texts(const std::map<std::string, std::string> &given
 
 using OptionList = std::vector<std::pair<std::string, std::string>>;
 
-// Every machine option as key and text; with --map-file there is no "map" key. With
-// `with_timing`, "timing-values" holds every value of the timing table and "timing" is empty, so
-// that the machine needs no timing file.
+// Every machine option of the table as key and text, each written by its entry; with --map-file
+// there is no "map" key. "timing-values" holds the timing table when --timing-values set it ("" =
+// not given). With `with_timing`, "timing-values" holds every value of the timing table and
+// "timing" is empty, so that the machine needs no timing file.
 OptionList machine_options(const MachineConfig &machine, bool with_timing = false);
 
 // key = "value" lines, TOML basic strings with every byte a path may hold escaped.

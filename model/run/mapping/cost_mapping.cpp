@@ -24,7 +24,8 @@ rt_cost_pilot run_pilot(const MachineConfig &config, rt_scene *scene, const rt_g
     char msg[RT_MSG_LEN] = "";
     rt_status st = rt_cost_pilot_run(scene, grid, &config.step, &config.timing, &pilot, msg, sizeof msg);
     if (resize) rt_scene_set_resolution(scene, w, h);
-    if (st != RT_OK) throw UserError(std::string("--map cost: pilot run: ") + msg);
+    const char *map = config.mapping == RT_MAP_SCATTER ? "--map scatter" : "--map cost";
+    if (st != RT_OK) throw UserError(std::string(map) + ": pilot run: " + msg);
     return pilot;
 }
 

@@ -25,6 +25,31 @@ nlohmann::json cells_per_node(const std::vector<int32_t> &owner, int nodes)
     return {{"min", *mm.first}, {"max", *mm.second}};
 }
 
+// Throws the memory budget's UserError, naming `option`, unless `bytes` for `what` fit in what
+// the run has left; they are freed again before the run reserves its own.
+void check_passing(const rt_budget &budget, uint64_t bytes, const std::string &option, const std::string &what)
+{
+    rt_budget trial = budget;
+    char msg[RT_MSG_LEN] = "";
+    if (rt_budget_reserve(&trial, bytes, what.c_str(), msg, sizeof msg) != RT_OK) throw UserError(option + ": " + msg);
+}
+
+std::string size_text(unsigned w, unsigned h) { return std::to_string(w) + "x" + std::to_string(h); }
+
+// The pilot of --map cost or scatter at its size, with the mapper's tables, against the budget.
+void check_cost_mapping_budget(const SimConfig &config, const rt_scene *scene, const rt_grid *grid)
+{
+    const rt_camera *cam = rt_scene_camera(scene);
+    unsigned w = config.pilot_size[0] ? config.pilot_size[0] : cam->width;
+    unsigned h = config.pilot_size[0] ? config.pilot_size[1] : cam->height;
+    size_t cells = rt_grid_cell_count(grid);
+    bool scatter = config.mapping == RT_MAP_SCATTER;
+    uint64_t bytes = rt_cost_pilot_bytes(grid, rt_scene_object_count(scene), w, h, 0) +
+                     (scatter ? rt_cost_scatter_bytes(cells) : rt_cost_map_bytes(cells));
+    check_passing(config.memory, bytes, scatter ? "--map scatter" : "--map cost",
+                  "the pilot of " + size_text(w, h) + " pixels and the mapping of " + std::to_string(cells) + " cells");
+}
+
 }  // namespace
 
 void read_map_file(const SimConfig &config, const int dims[3], std::vector<int32_t> &owner)
@@ -55,8 +80,14 @@ nlohmann::json prepare_mapping(SimConfig &config, rt_scene *scene, const rt_grid
     int dims[3];
     rt_grid_dims(grid, dims);
     int nodes = config.node_count();
-    std::vector<int32_t> owner(rt_grid_cell_count(grid));
     char msg[RT_MSG_LEN] = "";
+    // The owner table and the machine's copy of it (run_frames) stay for the whole run.
+    size_t cells = rt_grid_cell_count(grid);
+    if (rt_budget_reserve(&config.memory, 2 * uint64_t(cells) * sizeof(int32_t),
+                          ("the cell -> node tables of " + std::to_string(cells) + " cells").c_str(), msg,
+                          sizeof msg) != RT_OK)
+        throw UserError(msg);
+    std::vector<int32_t> owner(cells);
     nlohmann::json j = {{"kind", mapping_name(config.mapping)}};
     if (config.mapping == RT_MAP_FILE) {
         ReplicaTable replicas;
@@ -65,6 +96,7 @@ nlohmann::json prepare_mapping(SimConfig &config, rt_scene *scene, const rt_grid
         config.replica_extra = std::move(replicas.extra);
         j["file"] = config.map_file;
     } else if (config.measured_mapping()) {
+        check_cost_mapping_budget(config, scene, grid);
         ReplicaTable replicas;
         j.update(cost_mapping(config, scene, grid, owner, replicas));
         config.replica_first = std::move(replicas.first);
@@ -96,6 +128,9 @@ void write_load_map(const SimConfig &config, rt_scene *scene, const rt_grid *gri
                     const std::string &shown)
 {
     if (path.empty()) return;
+    const rt_camera *cam = rt_scene_camera(scene);
+    check_passing(config.memory, rt_cost_pilot_bytes(grid, rt_scene_object_count(scene), cam->width, cam->height, 0),
+                  "--load-map", "its pilot of " + size_text(cam->width, cam->height) + " pixels");
     rt_cost_pilot pilot;
     char msg[RT_MSG_LEN] = "";
     if (rt_cost_pilot_run(scene, grid, &config.step, &config.timing, &pilot, msg, sizeof msg) != RT_OK)
