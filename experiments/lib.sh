@@ -109,10 +109,16 @@ backend_option() {
         --backend) BACKEND=$2 ;;
         --slurm-args) SLURM_ARGS=$2 ;;
         --per-task) PER_TASK=$2 ;;
-        -j) JOBS=$2 ;;
-        -j[0-9]*) JOBS=${1#-j}; SHIFT=1 ;;
+        -j) check_jobs -j "$2"; JOBS=$2 ;;
+        -j[0-9]*) check_jobs -j "${1#-j}"; JOBS=${1#-j}; SHIFT=1 ;;
         *) return 1 ;;
     esac
+}
+
+# check_jobs OPTION VALUE: a number of points in flight is a whole number from 1 up (the backend
+# caps it at the number of points to run); anything else ends the command (exit 2) naming OPTION.
+check_jobs() {
+    [[ $2 =~ ^[1-9][0-9]{0,8}$ ]] || die "$1 must be a whole number of points in flight, 1 or more, not '$2'"
 }
 
 # run_points STATE_DIR NAME LIST...: runs the point lists (DONE-FILE<TAB>COMMAND per line, one
@@ -188,7 +194,7 @@ study_args() {
     done
     [ ${#positional[@]} -le 2 ] || die "too many arguments: ${positional[*]} (see --help)"
     [ ${#positional[@]} -lt 1 ] || BUILD=${positional[0]}
-    [ ${#positional[@]} -lt 2 ] || JOBS=${positional[1]}
+    [ ${#positional[@]} -lt 2 ] || { check_jobs JOBS "${positional[1]}"; JOBS=${positional[1]}; }
     set_build "$BUILD"
 }
 

@@ -4,6 +4,8 @@ import os
 import subprocess
 import sys
 
+from output_files import OutputError
+
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
 
@@ -56,7 +58,9 @@ def sweep_plan(args):
     if len({n for n, _ in axes}) != len(axes):
         raise ValueError("each --axis option may be given once")
     fixed = args.fixed[1:] if args.fixed[:1] == ["--"] else args.fixed
-    sweep.plan(os.path.abspath(args.out), args.sim, args.scene, axes, fixed)
+    out = os.path.abspath(args.out)
+    total, done = sweep.plan(out, args.sim, args.scene, axes, fixed, os.path.join(out, "points.list"))
+    print("sweep: %d points (%d done before), results in %s" % (total, done, out))
     return 0
 
 
@@ -124,7 +128,8 @@ def main(argv):
     p.add_argument("--command", default="experiments/error_vs_runtime/study.sh",
                    help="the command line the page says produced it")
     p.set_defaults(run=error_vs_runtime)
-    p = sub.add_parser("sweep-plan", help="(experiments/sweep) write OUT/points.tsv, print the point list (JSON, tab, command)")
+    p = sub.add_parser("sweep-plan", help="(experiments/sweep) write OUT/points.tsv and the point list "
+                                          "OUT/points.list (JSON, tab, command)")
     p.add_argument("--out", required=True)
     p.add_argument("--sim", required=True)
     p.add_argument("--scene", required=True)
@@ -149,8 +154,12 @@ def main(argv):
     from . import fidelity
     fidelity.add_commands(sub)
     args = parser.parse_args(argv)
+    prog = "sweep" if args.command.startswith("sweep-") else "experiments/report"  # the command the user ran
     try:
         return args.run(args)
+    except OutputError as e:  # an output refused before anything was written: the command line's fault
+        print("%s: %s" % (prog, e), file=sys.stderr)
+        return 2
     except (OSError, ValueError, KeyError, subprocess.CalledProcessError) as e:
-        print("experiments/report: %s" % e, file=sys.stderr)
+        print("%s: %s" % (prog, e), file=sys.stderr)
         return 1
