@@ -1,12 +1,29 @@
 """The command line of the report package."""
 import argparse
+import glob
 import os
 import subprocess
 import sys
 
-from output_files import OutputError
+from output_files import OutputError, OutputSet
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+def check_outputs(inputs, outputs):
+    """A command's (option, path) outputs against its (option, path) inputs and each other, before
+    anything is written (output_files.OutputSet); OutputError names the option and the file."""
+    outs = OutputSet()
+    for option, path in inputs:
+        outs.add_input(option, path)
+    for option, path in outputs:
+        outs.add(option, path)
+    outs.check()
+
+
+def pictures(option, folder, names):
+    """The pictures a command writes into FOLDER, as outputs (none to check while it is not made)."""
+    return [(option, os.path.join(folder, n)) for n in names] if os.path.isdir(folder) else []
 
 
 def reproduction(args):
@@ -18,6 +35,11 @@ def reproduction(args):
         mode_file = os.path.join(res, "mode")
         full = os.path.exists(mode_file) and open(mode_file).read().strip() == "full"
         doc = os.path.join(REPO, "docs", "reproduction.md") if full else os.path.join(res, "reproduction.md")
+    read = [p for pattern in ("*.csv", "*.tsv", "*/*.csv", "*/*.tsv", "plots/*.png", "*/plots/*.png")
+            for p in glob.glob(os.path.join(res, pattern))]
+    img = os.path.join(os.path.dirname(os.path.abspath(doc)), "img")
+    check_outputs([("results", p) for p in read],
+                  [("--doc", doc)] + pictures("--doc", img, ["reproduction-fig%d.png" % f for f in rep.FIGURE_NUMBERS]))
     by_profile = rep.write(res, doc)
     print("report: %s (%s)" % (doc, "; ".join(
         "%s: %d of %d claims hold" % (p, sum(1 for c in cl if c.verdict == HOLDS), len(cl)) for p, cl in by_profile)))
@@ -47,6 +69,9 @@ def error_vs_runtime(args):
     pruning_csv = args.pruning or os.path.join(results, "pruning.csv")
     doc = args.doc or os.path.join(REPO, "docs", "error-vs-runtime.md")
     img = args.img_dir or os.path.join(REPO, "docs", "img")
+    drawn = ["error-quantum.png", "error-quantum-q.png", "error-pruning.png"]
+    check_outputs([("--quantum", quantum_csv), ("--pruning", pruning_csv)],
+                  [("--doc", doc)] + pictures("--img-dir", img, drawn))
     evr.write(quantum_csv, pruning_csv, doc, img, args.command)
     print("report: %s, plots in %s" % (doc, img))
     return 0

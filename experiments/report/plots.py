@@ -1,4 +1,5 @@
 """Data files for the checked-in gnuplot scripts (experiments/plots/*.gp), and running them."""
+import contextlib
 import os
 import subprocess
 
@@ -29,12 +30,11 @@ def gnuplot_kind(gp, kind, data, png, title, ncol=0):
 
 
 def gnuplot(script, variables):
-    """Runs experiments/plots/SCRIPT with the variables (strings, or numbers) set; the picture
-    `out` names is written through a temporary beside it (output_files)."""
-    if "out" not in variables:
-        return run_gnuplot(script, variables)
-    with staged(variables["out"]) as tmp:
-        run_gnuplot(script, dict(variables, out=tmp))
+    """Runs experiments/plots/SCRIPT with the variables (strings, or numbers) set; the pictures
+    `out` and `out_*` name are written through temporaries beside them (output_files)."""
+    with contextlib.ExitStack() as stack:
+        run_gnuplot(script, {k: stack.enter_context(staged(v)) if k == "out" or k.startswith("out_") else v
+                             for k, v in variables.items()})
 
 
 def run_gnuplot(script, variables):
