@@ -7,7 +7,7 @@ import signal
 import sys
 import time
 
-from output_files import append_text, write_lines
+from output_files import OutputError, append_text, target, write_lines
 
 from . import local, points, slurm, task
 
@@ -78,6 +78,8 @@ def report_failures(state, pending, status):
 
 def run(args):
     kind, hostfile = parse_backend(args.backend)
+    if args.runs:  # refused before any point runs, not after
+        target("--runs", args.runs)
     state = os.path.abspath(args.state)
     os.makedirs(os.path.join(state, "logs"), exist_ok=True)
     phases = [points.read(os.path.abspath(f)) for f in args.lists]
@@ -145,6 +147,9 @@ def main(argv):
     except KeyboardInterrupt:
         print("experiments/backend: interrupted", file=sys.stderr)
         return 130
+    except OutputError as e:
+        print("experiments/backend: %s" % e, file=sys.stderr)
+        return 2
     except (OSError, ValueError, RuntimeError) as e:
         print("experiments/backend: %s" % e, file=sys.stderr)
         return 2
