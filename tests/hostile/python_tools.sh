@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # python_tools.sh - the Python tools of experiments/ under the executables' output rules
-# (experiments/output_files.py): compare-mappings, sweep, the backend, report and a study's
-# command line. An output naming an input (also by another spelling), two outputs on one file,
+# (experiments/output_files.py): compare-mappings, sweep, run_point.sh, the backend, report and
+# the studies' job counts. An output naming an input (also by another spelling), two outputs on one file,
 # a FIFO or a folder as an output: refused (exit 2, the option named), the input unchanged. An
 # output that is a link: its target written, the link kept. A point JSON that is not a report
 # (garbage, an array, {}): named and run again. A sweep into the same --out with another scene
@@ -150,6 +150,19 @@ check "backend: refused, nothing ran" [ ! -e be/a.json ]
 check "backend -j 99999: exit $?, both points run" [ -s be/a.json ] && [ -s be/b.json ]
 check "backend -j 99999: capped at 2" grep -q "(-j 2)" be.out
 
+# ---- run_point.sh (the reproduction's points) ------------------------------------------------
+mkdir rp
+mkfifo rp/a.json
+refused "run_point: the JSON a FIFO" "rp/a.json: not a regular file" \
+    "$EXP/run_point.sh" rp/a.json -- "$BUILD/torusrt-sim" s1.nff "${small[@]}" --t1 1
+mkdir rp/b.png
+refused "run_point: the PNG a folder" "rp/b.png: not a regular file" \
+    "$EXP/run_point.sh" rp/b.json -- "$BUILD/torusrt-sim" s1.nff "${small[@]}" --t1 1
+ln -s c-real.json rp/c.json
+"${run_limited[@]}" "$EXP/run_point.sh" rp/c.json -- "$BUILD/torusrt-sim" s1.nff "${small[@]}" --t1 1 \
+    >rp.out 2>rp.err </dev/null
+check "run_point: the JSON a link: exit $?, the link kept, its file written" [ -L rp/c.json ] && [ -s rp/c-real.json ]
+
 # ---- report --------------------------------------------------------------------------------
 report=(python3 "$EXP/report")
 printf 'a,b\n' >q.csv && cp q.csv p.csv && cp q.csv keep.csv
@@ -176,8 +189,11 @@ check "report sweep-collect: an array point JSON is named: $(head -c 300 collect
     grep -q "points/ips_1.json: not a JSON report (a list" collect.err
 check "report sweep-collect: no traceback" bash -c '! grep -q Traceback "$1"' _ collect.err
 
-# ---- a study's job count ---------------------------------------------------------------------
+# ---- the studies' job counts -----------------------------------------------------------------
 refused "study JOBS 0" "JOBS must be a whole number" bash "$EXP/mapping/study.sh" "$BUILD" 0
 refused "study -j abc" "-j must be a whole number" bash "$EXP/mapping/study.sh" --build "$BUILD" -j abc
+
+refused "all_scenes -j 0" "-j must be a whole number" bash "$EXP/buffers/all_scenes.sh" -j 0 "$BUILD"
+refused "all_scenes -j abc" "-j must be a whole number" bash "$EXP/buffers/all_scenes.sh" -j abc "$BUILD"
 
 finish
