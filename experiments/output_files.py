@@ -227,3 +227,31 @@ def named_files(words):
             before = words[i - 1] if i > 0 else ""
             found.append((before if before.startswith("-") else "argument", word))
     return found
+
+
+def main(argv):
+    """`python3 output_files.py FILE [OPTION]`: standard input into FILE under these rules, for
+    the shell scripts (exit 2 when FILE is refused, naming OPTION; 1 when the write fails)."""
+    import sys
+    if len(argv) not in (1, 2):
+        print("usage: output_files.py FILE [OPTION] < TEXT", file=sys.stderr)
+        return 2
+    try:
+        with atomic(argv[0], argv[1] if len(argv) == 2 else "output", mode="wb") as f:
+            while True:
+                chunk = sys.stdin.buffer.read(1 << 20)
+                if not chunk:
+                    break
+                f.write(chunk)
+    except OutputError as e:
+        print(e, file=sys.stderr)
+        return 2
+    except OSError as e:
+        print(e, file=sys.stderr)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    import sys
+    sys.exit(main(sys.argv[1:]))

@@ -134,12 +134,13 @@ def plan(out, sim, scene, axes, fixed, listing):
     for name in (PLAN, "points.list", "sweep.csv", "sweep.png"):
         outs.add("--out", os.path.join(out, name))
     points = os.path.join(out, "points")
-    os.makedirs(points, exist_ok=True)
-    for f in files:
-        for ext in ("json", "png", "log", "id"):
-            f[ext] = outs.add("--out", f[ext])
+    if os.path.isdir(points):  # a new folder holds nothing to check
+        for f in files:
+            for ext in ("json", "png", "log", "id"):
+                f[ext] = outs.add("--out", f[ext])
     outs.check()
     dry_run(sim, scene, names, combos[0], fixed)
+    os.makedirs(points, exist_ok=True)
     cache, rows, lines, done = {}, [["name"] + names], [], 0
     for k, (values, f) in enumerate(zip(combos, files), 1):
         name = point_name(names, values)
