@@ -190,10 +190,11 @@ check "report sweep-collect: an array point JSON is named: $(head -c 300 collect
 check "report sweep-collect: no traceback" bash -c '! grep -q Traceback "$1"' _ collect.err
 
 # ---- the studies' job counts -----------------------------------------------------------------
-refused "study JOBS 0" "JOBS must be a whole number" bash "$EXP/mapping/study.sh" "$BUILD" 0
-refused "study -j abc" "-j must be a whole number" bash "$EXP/mapping/study.sh" --build "$BUILD" -j abc
-
-refused "all_scenes -j 0" "-j must be a whole number" bash "$EXP/buffers/all_scenes.sh" -j 0 "$BUILD"
-refused "all_scenes -j abc" "-j must be a whole number" bash "$EXP/buffers/all_scenes.sh" -j abc "$BUILD"
+# A copy of experiments/, so that a study that wrongly started writes into $TMP, not the tree.
+cp -r "$EXP" copy
+refused "study JOBS 0" "JOBS must be a whole number" bash copy/mapping/study.sh "$BUILD" 0
+refused "study -j abc" "-j must be a whole number" bash copy/mapping/study.sh --build "$BUILD" -j abc
+refused "all_scenes -j 0" "-j must be a whole number" bash copy/buffers/all_scenes.sh -j 0 "$BUILD"
+refused "all_scenes -j abc" "-j must be a whole number" bash copy/buffers/all_scenes.sh -j abc "$BUILD"
 
 finish
