@@ -3,8 +3,8 @@ backend, compare-mappings, report) goes through here, under the rules of the exe
 outputs (support/output_files.cpp; docs/cli.md, "Input and output files"):
 
 - a file is written to a temporary `.NAME.XXXXXX` in its own folder and renamed onto its name
-  only when it is complete; on any error, or an interrupt, the temporary is removed and the old
-  file stays as it was;
+  only when it is complete; on any error, or an interrupt (Ctrl-C; SIGTERM and SIGHUP after
+  exit_on_signals()), the temporary is removed and the old file stays as it was;
 - a name that is a symbolic link is followed to the file it names (the temporary goes beside
   that file and is renamed onto it), so the link itself is never replaced;
 - a folder, a FIFO, a device or a socket is refused as an output, before anything is written,
@@ -229,6 +229,19 @@ def named_files(words):
     return found
 
 
+def exit_on_signals():
+    """SIGTERM and SIGHUP end the program as SystemExit(128 + the signal), so that an unfinished
+    file's temporary is removed on the way out as on Ctrl-C; a signal the program was started
+    ignoring (nohup) stays ignored."""
+    import signal
+
+    def leave(signum, frame):
+        raise SystemExit(128 + signum)
+    for sig in (signal.SIGTERM, signal.SIGHUP):
+        if signal.getsignal(sig) != signal.SIG_IGN:
+            signal.signal(sig, leave)
+
+
 def main(argv):
     """`python3 output_files.py FILE [OPTION]`: standard input into FILE under these rules, for
     the shell scripts (exit 2 when FILE is refused, naming OPTION; 1 when the write fails)."""
@@ -254,4 +267,5 @@ def main(argv):
 
 if __name__ == "__main__":
     import sys
+    exit_on_signals()
     sys.exit(main(sys.argv[1:]))

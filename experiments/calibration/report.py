@@ -12,7 +12,7 @@ import os
 import subprocess
 import sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-from output_files import atomic, staged  # noqa: E402
+from output_files import atomic, exit_on_signals, staged  # noqa: E402
 from report import before_fit  # noqa: E402
 
 SCENES = ["paper-image1", "paper-image2"]
@@ -123,6 +123,7 @@ def findings(flat, cluster, sc, best, costs):
 
 
 def main():
+    exit_on_signals()  # a stopped run leaves no temporary
     runs, out_md, plot_dir, gp_dir = sys.argv[1:5]
     flat, cluster, t1 = load(runs)
     costs = sorted({k[1] for k in flat})

@@ -11,7 +11,7 @@ import os
 import subprocess
 import sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-from output_files import atomic, staged  # noqa: E402
+from output_files import atomic, exit_on_signals, staged  # noqa: E402
 from report import before_fit  # noqa: E402
 
 MAPS = ["block", "cyclic", "block-cyclic:2", "block-cyclic:3", "cost"]
@@ -71,6 +71,7 @@ def findings(runs, scenes, ns):
 
 
 def main():
+    exit_on_signals()  # a stopped run leaves no temporary
     runs_tsv, out_md, plot_dir, study_dir = sys.argv[1:5]
     gp = os.path.join(study_dir, "..", "calibration", "efficiency.gp")
     runs = load(runs_tsv)

@@ -13,7 +13,7 @@ import os
 import sys
 import tempfile
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-from output_files import atomic  # noqa: E402
+from output_files import atomic, exit_on_signals  # noqa: E402
 from report.plots import gnuplot_kind  # noqa: E402
 
 POLICIES = ["adaptive", "every-frame", "oracle", "static", "cyclic"]
@@ -211,6 +211,7 @@ def strip(res, plot_dir, gp):
 
 
 def main(argv):
+    exit_on_signals()  # a stopped run leaves no temporary
     res, out_md, plot_dir, study_dir, jobs, wall = argv[1:7]
     gp = os.path.join(study_dir, "plots.gp")
     runs, frames = load(os.path.join(res, "runs.tsv")), load(os.path.join(res, "frames.tsv"))

@@ -7,7 +7,7 @@ import os
 import subprocess
 import sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-from output_files import atomic, staged  # noqa: E402
+from output_files import atomic, exit_on_signals, staged  # noqa: E402
 from report import before_fit  # noqa: E402
 
 POLICIES = ["cyclic", "cost", "every-frame", "adaptive", "preview", "oracle"]
@@ -513,6 +513,7 @@ def density_section(runs, dense, keys, nframes):
 
 
 def main(argv):
+    exit_on_signals()  # a stopped run leaves no temporary
     res, out_md, pics, gp, jobs, elapsed = argv[1:7]
     runs = read_tsv(os.path.join(res, "runs.tsv"))
     frames = read_tsv(os.path.join(res, "frames.tsv"))

@@ -10,7 +10,7 @@ import os
 import subprocess
 import sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-from output_files import atomic, staged  # noqa: E402
+from output_files import atomic, exit_on_signals, staged  # noqa: E402
 from report import before_fit  # noqa: E402
 
 UNBOUNDED = 0
@@ -162,6 +162,7 @@ def findings(data, bad, over):
 
 
 def main(argv):
+    exit_on_signals()  # a stopped run leaves no temporary
     ap = argparse.ArgumentParser()
     ap.add_argument("runs")
     ap.add_argument("doc")

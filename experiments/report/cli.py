@@ -5,7 +5,7 @@ import os
 import subprocess
 import sys
 
-from output_files import OutputError, OutputSet
+from output_files import OutputError, OutputSet, exit_on_signals
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
@@ -131,6 +131,7 @@ def machine(args):
 
 
 def main(argv):
+    exit_on_signals()  # a stopped run leaves no temporary
     parser = argparse.ArgumentParser(prog="experiments/report", description=__doc__)
     sub = parser.add_subparsers(dest="command", required=True)
     p = sub.add_parser("reproduction", help="write the comparison with the paper from a sweep's CSVs")

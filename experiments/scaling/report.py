@@ -13,7 +13,7 @@ import csv
 import os
 import sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-from output_files import atomic  # noqa: E402
+from output_files import atomic, exit_on_signals  # noqa: E402
 from report import before_fit  # noqa: E402
 from report.plots import gnuplot_kind  # noqa: E402
 
@@ -268,6 +268,7 @@ def share_plot(res, plot_dir, gp):
 
 
 def main(argv):
+    exit_on_signals()  # a stopped run leaves no temporary
     res, out_md, plot_dir, study_dir, jobs, wall = argv[1:7]
     gp = os.path.join(study_dir, "plots.gp")
     runs = load(os.path.join(res, "runs.tsv"))

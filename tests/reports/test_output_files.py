@@ -7,6 +7,8 @@ import io
 import json
 import os
 import shutil
+import signal
+import subprocess
 import sys
 import tempfile
 import unittest
@@ -67,6 +69,14 @@ class Writing(Base):
             with of.atomic(self.path("a.csv")) as f:
                 f.write("half")
                 raise KeyboardInterrupt
+        self.assertEqual(self.listing(), [])
+
+    def test_sigterm_removes_the_temporary(self):
+        code = ("import os, signal, sys; sys.path.insert(0, %r); import output_files as of; of.exit_on_signals()\n"
+                "with of.atomic(%r) as f:\n    f.write('half'); f.flush(); os.kill(os.getpid(), signal.SIGTERM)\n"
+                % (os.path.join(REPO, "experiments"), self.path("a.csv")))
+        done = subprocess.run([sys.executable, "-c", code])
+        self.assertEqual(done.returncode, 128 + signal.SIGTERM)
         self.assertEqual(self.listing(), [])
 
     def test_a_link_is_followed_and_kept(self):
