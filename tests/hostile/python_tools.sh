@@ -41,7 +41,7 @@ same() { check "$1: $2 changed" cmp -s "$2" "$3"; }
 rows() { nowall "$1"; }
 
 # ---- compare-mappings ----------------------------------------------------------------------
-cm=("$EXP/compare-mappings" --build "$BUILD" --map block,cyclic)
+cm=("$EXP/compare-mappings" --build "$BUILD" --map "block,cyclic")
 cmopt=(-- --ips 2 "${small[@]}")
 cp s1.nff keep.nff && cp t.timing keep.timing
 refused "cm --out the scene" "--out 's1.nff': is the scene file" "${cm[@]}" s1.nff --out s1.nff "${cmopt[@]}"
@@ -62,7 +62,8 @@ ln -s sub/plot.png link.png
 check "cm --out a link: exit $?: $(head -c 300 cm-link.err)" [ -s sub/plot.png ]
 check "cm --out a link: a PNG" grep -q PNG <(head -c 8 sub/plot.png)
 check "cm --out a link: the link is kept" [ -L link.png ]
-check "cm: no temporary left" [ -z "$(ls -A sub | grep -v '^plot.png$')" ]
+left=(sub/.[!.]* sub/*)
+check "cm: no temporary left: ${left[*]}" [ "${left[*]}" = "sub/.[!.]* sub/plot.png" ]
 
 # ---- sweep ---------------------------------------------------------------------------------
 sweep=("$EXP/sweep" --build "$BUILD")
@@ -187,7 +188,7 @@ rc=$?
 check "report sweep-collect: an array point JSON fails the point: exit $rc" [ "$rc" -eq 1 ]
 check "report sweep-collect: an array point JSON is named: $(head -c 300 collect.err)" \
     grep -q "points/ips_1.json: not a JSON report (a list" collect.err
-check "report sweep-collect: no traceback" bash -c '! grep -q Traceback "$1"' _ collect.err
+check "report sweep-collect: no traceback" test "$(grep -c Traceback collect.err)" -eq 0
 
 # ---- the studies' job counts -----------------------------------------------------------------
 # A copy of experiments/, so that a study that wrongly started writes into $TMP, not the tree.
