@@ -66,7 +66,8 @@ def target(option, path):
         if not stat.S_ISREG(st.st_mode):
             raise OutputError("%s: is a %s, not a regular file" % (what, _kind(st.st_mode)))
     elif not os.path.isdir(os.path.dirname(real)):
-        raise OutputError("%s: folder '%s' does not exist" % (what, os.path.dirname(path) or "."))
+        shown = os.path.dirname(real) if os.path.islink(path) else os.path.dirname(path) or "."
+        raise OutputError("%s: folder '%s' does not exist" % (what, shown))
     return real
 
 

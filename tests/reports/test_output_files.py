@@ -161,8 +161,35 @@ class Refused(Base):
         with self.assertRaises(of.OutputError):
             of.write_text(self.path("a"), "x", "--out")
 
+    def test_dangling_link_into_no_folder_names_that_folder(self):
+        os.symlink(os.path.join("gone", "t.csv"), self.path("l.csv"))
+        self.assert_refused(self.path("l.csv"), "folder '.*gone' does not exist")
+
     def test_refused_is_a_value_error(self):
         self.assertTrue(issubclass(of.OutputError, ValueError))
+
+
+class ShellCommand(Base):
+    """`python3 output_files.py FILE [OPTION]`, the shell scripts' write_file."""
+
+    def write_file(self, *args):
+        return subprocess.run([sys.executable, os.path.join(REPO, "experiments", "output_files.py")] + list(args),
+                              input=b"rows\n", stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+
+    def test_writes_standard_input(self):
+        done = self.write_file(self.path("list"), "--results")
+        self.assertEqual(done.returncode, 0, done.stderr)
+        self.assertEqual(read(self.path("list")), "rows\n")
+        self.assertEqual(self.listing(), ["list"])
+
+    def test_refuses_a_fifo_naming_the_option(self):
+        os.mkfifo(self.path("list"))
+        done = self.write_file(self.path("list"), "--results")
+        self.assertEqual(done.returncode, 2)
+        self.assertRegex(done.stderr.decode(), "^--results '.*list': is a FIFO")
+
+    def test_usage(self):
+        self.assertEqual(self.write_file().returncode, 2)
 
 
 class Sets(Base):
