@@ -38,6 +38,7 @@ def reproduction(args):
     read = [p for pattern in ("*.csv", "*.tsv", "*/*.csv", "*/*.tsv", "plots/*.png", "*/plots/*.png")
             for p in glob.glob(os.path.join(res, pattern))]
     img = os.path.join(os.path.dirname(os.path.abspath(doc)), "img")
+    os.makedirs(img, exist_ok=True)  # the page's folder and its pictures' (the command makes them)
     check_outputs([("results", p) for p in read],
                   [("--doc", doc)] + pictures("--doc", img, ["reproduction-fig%d.png" % f for f in rep.FIGURE_NUMBERS]))
     by_profile = rep.write(res, doc)
@@ -70,6 +71,8 @@ def error_vs_runtime(args):
     doc = args.doc or os.path.join(REPO, "docs", "error-vs-runtime.md")
     img = args.img_dir or os.path.join(REPO, "docs", "img")
     drawn = ["error-quantum.png", "error-quantum-q.png", "error-pruning.png"]
+    for folder in (os.path.dirname(os.path.abspath(doc)), img):  # the command makes them
+        os.makedirs(folder, exist_ok=True)
     check_outputs([("--quantum", quantum_csv), ("--pruning", pruning_csv)],
                   [("--doc", doc)] + pictures("--img-dir", img, drawn))
     evr.write(quantum_csv, pruning_csv, doc, img, args.command)
