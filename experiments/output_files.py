@@ -86,11 +86,38 @@ def _temporary(real):
     return fd, tmp
 
 
+def _cannot_write(shown, e):
+    """`SHOWN: cannot write: REASON`, the executables' form (no errno number in front)."""
+    return OSError("%s: cannot write: %s" % (shown, e.strerror or e))
+
+
 def _replace(tmp, real, shown):
     try:
         os.replace(tmp, real)
     except OSError as e:
-        raise OSError(e.errno, "%s: cannot write: %s" % (shown, e.strerror)) from None
+        raise _cannot_write(shown, e) from None
+
+
+class _Named:
+    """A file whose failed writes and flushes name the file the user asked for."""
+
+    def __init__(self, f, shown):
+        self._f, self._shown = f, shown
+
+    def write(self, data):
+        try:
+            return self._f.write(data)
+        except OSError as e:
+            raise _cannot_write(self._shown, e) from None
+
+    def flush(self):
+        try:
+            self._f.flush()
+        except OSError as e:
+            raise _cannot_write(self._shown, e) from None
+
+    def __getattr__(self, name):
+        return getattr(self._f, name)
 
 
 @contextlib.contextmanager
@@ -101,10 +128,12 @@ def atomic(path, option="output", mode="w", newline=None):
     try:
         fd, tmp = _temporary(real)
     except OSError as e:
-        raise OSError(e.errno, "%s: cannot write: %s" % (path, e.strerror)) from None
+        raise _cannot_write(path, e) from None
     try:
         with os.fdopen(fd, mode, newline=newline) as f:
-            yield f
+            named = _Named(f, path)
+            yield named
+            named.flush()
         _replace(tmp, real, path)
     except BaseException:
         with contextlib.suppress(OSError):
@@ -125,7 +154,7 @@ def staged(path, option="output"):
         os.fchmod(fd, _new_file_mode())
         os.close(fd)
     except OSError as e:
-        raise OSError(e.errno, "%s: cannot write: %s" % (path, e.strerror)) from None
+        raise _cannot_write(path, e) from None
     try:
         yield tmp
         if os.path.getsize(tmp) == 0:

@@ -12,6 +12,7 @@ import subprocess
 import sys
 import tempfile
 import unittest
+from unittest import mock
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.join(REPO, "experiments"))
@@ -69,6 +70,28 @@ class Writing(Base):
             with of.atomic(self.path("a.csv")) as f:
                 f.write("half")
                 raise KeyboardInterrupt
+        self.assertEqual(self.listing(), [])
+
+    def test_a_failed_write_names_the_file_and_leaves_nothing(self):
+        class Full:
+            def __init__(self, f):
+                self.f = f
+
+            def write(self, data):
+                raise OSError(28, "No space left on device")
+
+            def __getattr__(self, name):
+                return getattr(self.f, name)
+
+            def __enter__(self):
+                return self
+
+            def __exit__(self, *exc):
+                self.f.close()
+        real_fdopen = os.fdopen
+        with mock.patch.object(of.os, "fdopen", lambda *a, **k: Full(real_fdopen(*a, **k))):
+            with self.assertRaisesRegex(OSError, "^%s: cannot write: No space left on device$" % self.path("a.csv")):
+                of.write_text(self.path("a.csv"), "x")
         self.assertEqual(self.listing(), [])
 
     def test_sigterm_removes_the_temporary(self):
