@@ -10,6 +10,11 @@ BUILD=${TORUSRT_BUILD:-$REPO/build}
 
 die() { echo "$(basename "$0"): $*" >&2; exit 2; }
 
+# write_file FILE [OPTION]: standard input into FILE under the output rules of the Python tools
+# (output_files.py: through a temporary renamed into place, a link followed, a folder, FIFO or
+# device refused naming OPTION, exit 2).
+write_file() { python3 "$EXP/output_files.py" "$@"; }
+
 # set_build DIR: make BUILD absolute and check the simulator is there.
 set_build() {
     [ -d "$1" ] || die "build folder '$1' does not exist (configure and build first, or pass --build / TORUSRT_BUILD)"
@@ -109,10 +114,16 @@ backend_option() {
         --backend) BACKEND=$2 ;;
         --slurm-args) SLURM_ARGS=$2 ;;
         --per-task) PER_TASK=$2 ;;
-        -j) JOBS=$2 ;;
-        -j[0-9]*) JOBS=${1#-j}; SHIFT=1 ;;
+        -j) check_jobs -j "$2"; JOBS=$2 ;;
+        -j[0-9]*) check_jobs -j "${1#-j}"; JOBS=${1#-j}; SHIFT=1 ;;
         *) return 1 ;;
     esac
+}
+
+# check_jobs OPTION VALUE: a number of points in flight is a whole number from 1 up (the backend
+# caps it at the number of points to run); anything else ends the command (exit 2) naming OPTION.
+check_jobs() {
+    [[ $2 =~ ^[1-9][0-9]{0,8}$ ]] || die "$1 must be a whole number of points in flight, 1 or more, not '$2'"
 }
 
 # run_points STATE_DIR NAME LIST...: runs the point lists (DONE-FILE<TAB>COMMAND per line, one
@@ -132,12 +143,10 @@ RUN_POINTS_OPTS=()
 # merge_joblogs STATE_DIR: STATE_DIR/joblog.phase1 and joblog.phase2 (GNU parallel backends) as
 # one STATE_DIR/joblog with one header, for a report's run facts.
 merge_joblogs() {
-    local f
-    rm -f "$1/joblog"
-    for f in "$1"/joblog.phase[12]; do
-        [ -f "$f" ] || continue
-        if [ -s "$1/joblog" ]; then tail -n +2 "$f"; else cat "$f"; fi >>"$1/joblog"
-    done
+    local f logs=()
+    for f in "$1"/joblog.phase[12]; do [ ! -s "$f" ] || logs+=("$f"); done
+    if [ ${#logs[@]} -eq 0 ]; then rm -f "$1/joblog"; return 0; fi
+    { cat "${logs[0]}"; for f in "${logs[@]:1}"; do tail -n +2 "$f"; done; } | write_file "$1/joblog"
 }
 
 # A study's points as scripts any machine can run. study_script WORK "FUNCTIONS" "VARIABLES"
@@ -155,7 +164,7 @@ study_script() {
         for v in $3; do declare -p "$v"; done
         for f in $2; do declare -f "$f"; done
         echo '"$@"'
-    } >"$1/point.sh"
+    } | write_file "$1/point.sh"
 }
 study_list() {
     local line tag words
@@ -164,7 +173,7 @@ study_list() {
         tag=${line//[^A-Za-z0-9.-]/_}
         IFS=$'\t' read -r -a words <<<"$line"
         printf '%s\t%s\n' "$1/$tag.json" "$(printf '%q ' "TAG=$tag" bash "$1/point.sh" "${words[@]}")"
-    done >"$2"
+    done | write_file "$2"
 }
 # study_rows LIST EXT: the files WORK/TAG.EXT of the points of LIST that have one, one after
 # the other (the rows a study's points wrote beside their JSON).
@@ -188,7 +197,7 @@ study_args() {
     done
     [ ${#positional[@]} -le 2 ] || die "too many arguments: ${positional[*]} (see --help)"
     [ ${#positional[@]} -lt 1 ] || BUILD=${positional[0]}
-    [ ${#positional[@]} -lt 2 ] || JOBS=${positional[1]}
+    [ ${#positional[@]} -lt 2 ] || { check_jobs JOBS "${positional[1]}"; JOBS=${positional[1]}; }
     set_build "$BUILD"
 }
 

@@ -7,7 +7,9 @@
 # sim_time_s of T1.json), writing both files under temporary names in the same folder and
 # renaming them into place only when the run succeeded and the JSON parses: a point is done
 # exactly when OUT.json exists. If OUT.json already exists the point is skipped. On failure the
-# simulator's messages are kept in OUT.log and the exit status is non-zero.
+# simulator's messages are kept in OUT.log and the exit status is non-zero. A name that is a
+# link is followed to its file (the link kept); a folder, a FIFO or a device as OUT.json,
+# OUT.png or OUT.log is refused (exit 2).
 set -uo pipefail
 out=${1:?usage: run_point.sh OUT.json [--t1-from T1.json] -- COMMAND...}
 shift
@@ -23,16 +25,25 @@ if [ "${1:-}" = --t1-from ]; then
 fi
 [ "${1:-}" = -- ] || { echo "run_point: expected -- before the command" >&2; exit 2; }
 shift
-if [ -s "$out" ] && jq -e '.sim_time_s' "$out" >/dev/null 2>&1; then
-    echo "skip $out (done)"
-    exit 0
-fi
 dir=$(dirname "$out")
 base=$(basename "$out" .json)
 mkdir -p "$dir"
+# The files the point writes, each a link followed to the file it names (the link is kept); a
+# folder, a FIFO or a device is refused (experiments/output_files.py's rules).
+json=$(realpath -m -- "$out") png=$(realpath -m -- "$dir/$base.png") log=$(realpath -m -- "$dir/$base.log")
+for f in "$json" "$png" "$log"; do
+    if [ -e "$f" ] && [ ! -f "$f" ]; then
+        echo "run_point: $f: not a regular file (a folder, a FIFO or a device)" >&2
+        exit 2
+    fi
+done
+if [ -s "$json" ] && jq -e '.sim_time_s' "$json" >/dev/null 2>&1; then
+    echo "skip $out (done)"
+    exit 0
+fi
 tag=.$base.tmp.$(hostname -s 2>/dev/null || echo host).$$
-tmpjson=$dir/$tag.json tmppng=$dir/$tag.png tmplog=$dir/$tag.log
-trap 'rm -f "$tmpjson" "$tmppng" "$tmplog"' EXIT
+tmpjson=$(dirname "$json")/$tag.json tmppng=$(dirname "$png")/$tag.png tmplog=$(dirname "$log")/$tag.log
+trap 'rm -f "$tmpjson" "$tmppng" "$tmplog" "$tmplog.full"' EXIT
 "$@" "${t1args[@]}" -q -o "$tmppng" --stats "$tmpjson" >"$tmplog" 2>&1
 rc=$?
 if [ $rc -eq 0 ] && ! jq -e '.sim_time_s' "$tmpjson" >/dev/null 2>&1; then
@@ -40,11 +51,12 @@ if [ $rc -eq 0 ] && ! jq -e '.sim_time_s' "$tmpjson" >/dev/null 2>&1; then
     rc=4
 fi
 if [ $rc -ne 0 ]; then
-    { echo "# $(date -u +%FT%TZ) on $(hostname): exit $rc"; printf '%q ' "$@" "${t1args[@]}"; echo; cat "$tmplog"; } >"$dir/$base.log"
+    { echo "# $(date -u +%FT%TZ) on $(hostname): exit $rc"; printf '%q ' "$@" "${t1args[@]}"; echo; cat "$tmplog"; } >"$tmplog.full"
+    mv -f "$tmplog.full" "$log"
     echo "run_point: $out failed (exit $rc):" >&2
     sed 's/^/  /' "$tmplog" | tail -n 20 >&2
     exit $rc
 fi
-rm -f "$dir/$base.log"
-mv -f "$tmppng" "$dir/$base.png"
-mv -f "$tmpjson" "$out"
+rm -f "$log"
+mv -f "$tmppng" "$png"
+mv -f "$tmpjson" "$json"

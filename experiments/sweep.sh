@@ -59,20 +59,20 @@ if [ -z "$doc" ]; then
 fi
 
 # One results folder per reading (RES/READING), listed together so that one parallel run per
-# phase covers them all.
-: >"$RES/points.phase1"
-: >"$RES/points.phase2"
+# phase covers them all. Every list is written through experiments/output_files.py (write_file).
 for p in "${READINGS[@]}"; do
     mkdir -p "$RES/$p"
-    "$EXP/points.sh" "${popt[@]}" --build "$BUILD" --reading "$p" --tsv "$MODE" "$RES/$p" >"$RES/$p/points.tsv" || die "points.sh failed"
-    echo "$MODE" >"$RES/$p/mode"
-    for ph in 1 2; do  # the point lists of experiments/backend: JSON, tab, command
-        "$EXP/points.sh" "${popt[@]}" --build "$BUILD" --reading "$p" --tsv --phase $ph "$MODE" "$RES/$p" |
-            cut -f9,10 >>"$RES/points.phase$ph"
-    done
+    "$EXP/points.sh" "${popt[@]}" --build "$BUILD" --reading "$p" --tsv "$MODE" "$RES/$p" |
+        write_file "$RES/$p/points.tsv" --results || die "points.sh failed"
+    echo "$MODE" | write_file "$RES/$p/mode" --results || exit 2
 done
-echo "$MODE" >"$RES/mode"
-for p in "${READINGS[@]}"; do cat "$RES/$p/points.tsv"; done >"$RES/points.tsv"
+for ph in 1 2; do  # the point lists of experiments/backend: JSON, tab, command
+    for p in "${READINGS[@]}"; do
+        "$EXP/points.sh" "${popt[@]}" --build "$BUILD" --reading "$p" --tsv --phase $ph "$MODE" "$RES/$p" | cut -f9,10
+    done | write_file "$RES/points.phase$ph" --results || die "points.sh failed"
+done
+echo "$MODE" | write_file "$RES/mode" --results || exit 2
+for p in "${READINGS[@]}"; do cat "$RES/$p/points.tsv"; done | write_file "$RES/points.tsv" --results || exit 2
 total=$(wc -l <"$RES/points.tsv")
 echo "sweep: $MODE mode, $total points, results in $RES"
 RUN_POINTS_OPTS=(--runs "$RES/runs.tsv" --label "$MODE")

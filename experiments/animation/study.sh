@@ -85,15 +85,15 @@ run_points "$work/run" animation "$work/phase1.list" "$work/phase2.list"
 {
   printf 'scene\tn\tpolicy\ttotal_s\timage_time_s\tmigration_time_s\tmigration_share\tmigration_bytes\tmapping_changes\tefficiency\tconserved\timages_identical\twall_s\thost_pilot_time_s\thost_pilot_charged_s\n'
   study_rows "$work/phase2.list" run | sort -t$'\t' -k1,1 -k2,2n -k3,3
-} > "$res/runs.tsv"
+} | write_file "$res/runs.tsv"
 {
   printf 'scene\tn\tpolicy\tframe\timage_time_s\tmigration_time_s\tmigration_bytes\tefficiency\tdecision\tguess\n'
   study_rows "$work/phase2.list" frames | sort -t$'\t' -k1,1 -k2,2n -k3,3 -k4,4n
-} > "$res/frames.tsv"
+} | write_file "$res/frames.tsv"
 {
   printf 'scene\tn\tpolicy\tframes\ttotal_s\timage_time_s\tmigration_time_s\tmapping_changes\tconserved\timages_identical\twall_s\n'
   study_rows "$work/phase2.list" dense | sort -t$'\t' -k1,1 -k2,2n -k4,4n -k3,3
-} > "$res/density.tsv"
+} | write_file "$res/density.tsv"
 elapsed=$(study_elapsed "$work" "$start")
 python3 "$root/experiments/report/animation.py" "$res" "$root/docs/animation.md" "$pics" \
   "$root/experiments/plots/animation.gp" "${JOBS:-$BACKEND}" "$elapsed"

@@ -7,7 +7,11 @@ import signal
 import sys
 import time
 
+from output_files import OutputError, append_text, target, write_lines
+
 from . import local, points, slurm, task
+
+MAX_JOBS = 1000  # points in flight at most, whatever -j says: GNU parallel and Slurm take no more usefully
 
 RUNS_HEADER = ["started_utc", "mode", "jobs", "hosts", "cores", "points", "points_run", "failed", "wall_s",
                "cpu_s", "load1"]
@@ -25,6 +29,25 @@ def parse_backend(text):
     raise ValueError("--backend must be local, ssh:HOSTFILE or slurm, not '%s'" % text)
 
 
+def in_flight(asked, kind, most):
+    """The points in flight: -j (default one per core; unlimited on Slurm), never more than the
+    largest phase's points to run (MOST) nor MAX_JOBS."""
+    if asked is None:
+        return None if kind == "slurm" else min(os.cpu_count() or 1, most)
+    return min(asked, most, MAX_JOBS)
+
+
+def positive(text):
+    """-j and --per-task: a whole number from 1 up."""
+    try:
+        value = int(text)
+    except ValueError:
+        value = 0
+    if value < 1 or not text.strip().isdigit():
+        raise argparse.ArgumentTypeError("must be a whole number, 1 or more, not '%s'" % text)
+    return value
+
+
 def say(text):
     print(text, flush=True)
 
@@ -38,26 +61,25 @@ def record_run(path, label, jobs, hosts, total, ran, failed, wall, cpu):
     started = datetime.datetime.fromtimestamp(time.time() - wall, datetime.timezone.utc)
     row = [started.strftime("%Y-%m-%dT%H:%M:%SZ"), label, str(jobs), hosts, str(os.cpu_count()), str(total),
            str(ran), str(failed), "%.1f" % wall, "" if cpu is None else "%.1f" % cpu, load1]
-    with open(path, "a") as f:
-        if new:
-            f.write("\t".join(RUNS_HEADER) + "\n")
-        f.write("\t".join(row) + "\n")
+    append_text(path, ("\t".join(RUNS_HEADER) + "\n" if new else "") + "\t".join(row) + "\n", "--runs")
 
 
 def report_failures(state, pending, status):
     """Lists every point that was to run and has no result, writes STATE/failed.tsv; returns their number."""
     failed = [p for p in pending if not p.is_done()]
-    with open(os.path.join(state, "failed.tsv"), "w") as f:
-        for p in failed:
-            why = status.get(p, "no result")
-            f.write("%s\t%s\t%s\t%s\n" % (why, p.done, p.log, p.command))
-            print("backend: FAILED (%s): %s\n    log %s: %s" % (why, p.command, p.log, points.log_tail(p.log)),
-                  file=sys.stderr)
+    write_lines(os.path.join(state, "failed.tsv"),
+                ["%s\t%s\t%s\t%s" % (status.get(p, "no result"), p.done, p.log, p.command) for p in failed], "--state")
+    for p in failed:
+        why = status.get(p, "no result")
+        print("backend: FAILED (%s): %s\n    log %s: %s" % (why, p.command, p.log, points.log_tail(p.log)),
+              file=sys.stderr)
     return len(failed)
 
 
 def run(args):
     kind, hostfile = parse_backend(args.backend)
+    if args.runs:  # refused before any point runs, not after
+        target("--runs", args.runs)
     state = os.path.abspath(args.state)
     os.makedirs(os.path.join(state, "logs"), exist_ok=True)
     phases = [points.read(os.path.abspath(f)) for f in args.lists]
@@ -70,7 +92,7 @@ def run(args):
         todo.append((path, pending))
     total = sum(len(p) for p in phases)
     to_run = sum(len(p) for _, p in todo)
-    jobs = args.jobs or (None if kind == "slurm" else os.cpu_count())
+    jobs = in_flight(args.jobs, kind, max([len(p) for _, p in todo] + [1]))
     where = {"local": "this machine", "ssh": "the machines of %s" % hostfile, "slurm": "Slurm"}[kind]
     say("backend: %d points in %d phase(s), %d already done, %d to run on %s%s"
         % (total, len(phases), total - to_run, to_run, where, " (-j %d)" % jobs if jobs else ""))
@@ -103,10 +125,11 @@ def main(argv):
     p.add_argument("lists", nargs="+", metavar="LIST")
     p.add_argument("--state", required=True, help="folder for the run's todo lists, joblogs, logs, Slurm output")
     p.add_argument("--backend", default="local", help="local (default), ssh:HOSTFILE or slurm")
-    p.add_argument("-j", "--jobs", type=int, default=0, help="points in flight (default: local one per core, "
-                   "ssh per machine as the sshlogin file says, slurm unlimited)")
+    p.add_argument("-j", "--jobs", type=positive, default=None, help="points in flight (default: local one per "
+                   "core, ssh per machine as the sshlogin file says, slurm unlimited); at most the points of the "
+                   "largest phase and %d" % MAX_JOBS)
     p.add_argument("--slurm-args", default="", help="more sbatch options, e.g. \"--partition=short --time=0:20:00\"")
-    p.add_argument("--per-task", type=int, default=4, help="points per Slurm array task (default 4)")
+    p.add_argument("--per-task", type=positive, default=4, help="points per Slurm array task (default 4)")
     p.add_argument("--name", default="torusrt", help="the Slurm job name's prefix")
     p.add_argument("--runs", help="append one line about this run to this TSV file")
     p.add_argument("--label", default="", help="the mode column of that line")
@@ -117,8 +140,6 @@ def main(argv):
     p.add_argument("rcdir")
     p.set_defaults(run=lambda a: task.run(a.todo, a.per_task, a.rcdir))
     args = parser.parse_args(argv)
-    if args.command == "run" and (args.per_task < 1 or args.jobs < 0):
-        parser.error("--per-task must be at least 1 and -j positive")
     signal.signal(signal.SIGTERM, interrupted)
     signal.signal(signal.SIGINT, signal.default_int_handler)  # even where the shell started us ignoring it
     try:
@@ -126,6 +147,9 @@ def main(argv):
     except KeyboardInterrupt:
         print("experiments/backend: interrupted", file=sys.stderr)
         return 130
+    except OutputError as e:
+        print("experiments/backend: %s" % e, file=sys.stderr)
+        return 2
     except (OSError, ValueError, RuntimeError) as e:
         print("experiments/backend: %s" % e, file=sys.stderr)
         return 2

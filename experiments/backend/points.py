@@ -3,6 +3,8 @@ are to run, where each one's output goes, and what the last run left failed."""
 import os
 import shlex
 
+from output_files import write_lines
+
 
 class Point:
     """One point: DONE is the file whose existence means it is done, COMMAND its shell command."""
@@ -60,10 +62,7 @@ def assign_logs(phases, logdir):
 
 def write_todo(path, points):
     """The command lines a backend runs, one per line (GNU parallel's input, a Slurm task's list)."""
-    with open(path + ".tmp", "w") as f:
-        for p in points:
-            f.write(p.wrapped() + "\n")
-    os.replace(path + ".tmp", path)
+    write_lines(path, [p.wrapped() for p in points], "--state")
 
 
 def log_tail(path, lines=3):

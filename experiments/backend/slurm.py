@@ -10,6 +10,8 @@ import subprocess
 import sys
 import time
 
+from output_files import append_text
+
 BACKEND = os.path.dirname(os.path.abspath(__file__))
 MAX_TASKS = 1000  # below Slurm's default MaxArraySize (1001)
 
@@ -35,27 +37,26 @@ def submit(phases, state, per_task, jobs, slurm_args, name, say):
     outdir = os.path.join(state, "slurm")
     os.makedirs(outdir, exist_ok=True)
     submitted, after = [], None
-    with open(os.path.join(state, "submitted"), "a") as record:
-        for number, (todo, points) in enumerate(phases, 1):
-            if not points:
-                continue
-            k = max(per_task, tasks_for(len(points), MAX_TASKS))
-            rcdir = todo + ".rc"
-            os.makedirs(rcdir, exist_ok=True)
-            for old in os.listdir(rcdir):
-                os.remove(os.path.join(rcdir, old))
-            tasks = tasks_for(len(points), k)
-            cmd = sbatch_command(todo, tasks, k, jobs, slurm_args, "%s-phase%d" % (name, number), after, outdir)
-            line = shlex.join(cmd)
-            say("backend: phase %d, %d points in %d tasks of %d: %s" % (number, len(points), tasks, k, line))
-            record.write(line + "\n")
-            out = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-            if out.returncode != 0:
-                raise RuntimeError("sbatch failed (exit %d): %s" % (out.returncode, out.stderr.strip()))
-            job = out.stdout.strip().split(";")[0]
-            submitted.append((job, tasks, len(points), k))
-            SUBMITTED.append(job)
-            after = job
+    for number, (todo, points) in enumerate(phases, 1):
+        if not points:
+            continue
+        k = max(per_task, tasks_for(len(points), MAX_TASKS))
+        rcdir = todo + ".rc"
+        os.makedirs(rcdir, exist_ok=True)
+        for old in os.listdir(rcdir):
+            os.remove(os.path.join(rcdir, old))
+        tasks = tasks_for(len(points), k)
+        cmd = sbatch_command(todo, tasks, k, jobs, slurm_args, "%s-phase%d" % (name, number), after, outdir)
+        line = shlex.join(cmd)
+        say("backend: phase %d, %d points in %d tasks of %d: %s" % (number, len(points), tasks, k, line))
+        append_text(os.path.join(state, "submitted"), line + "\n", "--state")
+        out = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        if out.returncode != 0:
+            raise RuntimeError("sbatch failed (exit %d): %s" % (out.returncode, out.stderr.strip()))
+        job = out.stdout.strip().split(";")[0]
+        submitted.append((job, tasks, len(points), k))
+        SUBMITTED.append(job)
+        after = job
     return submitted
 
 

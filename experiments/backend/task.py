@@ -8,6 +8,8 @@ import socket
 import subprocess
 import sys
 
+from output_files import write_text
+
 
 def run(todo, per_task, rcdir):
     index = int(os.environ.get("SLURM_ARRAY_TASK_ID", "0"))
@@ -18,17 +20,17 @@ def run(todo, per_task, rcdir):
         lines = f.read().splitlines()
     first = (index - 1) * per_task
     status = 0
-    with open(os.path.join(rcdir, str(index)), "w") as record:
-        for number, line in enumerate(lines[first:first + per_task], first + 1):
-            stamp = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ")
-            print("[%s %s] point %d: %s" % (stamp, socket.gethostname(), number, line), flush=True)
-            before = resource.getrusage(resource.RUSAGE_CHILDREN)
-            rc = subprocess.call(["bash", "-c", line])
-            after = resource.getrusage(resource.RUSAGE_CHILDREN)
-            cpu = after.ru_utime - before.ru_utime + after.ru_stime - before.ru_stime
-            print("point %d: exit %d, %.2f s CPU" % (number, rc, cpu), flush=True)
-            record.write("%d\t%d\t%.3f\n" % (number, rc, cpu))
-            record.flush()
-            if rc:
-                status = 1
+    record, rows = os.path.join(rcdir, str(index)), []
+    for number, line in enumerate(lines[first:first + per_task], first + 1):
+        stamp = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ")
+        print("[%s %s] point %d: %s" % (stamp, socket.gethostname(), number, line), flush=True)
+        before = resource.getrusage(resource.RUSAGE_CHILDREN)
+        rc = subprocess.call(["bash", "-c", line])
+        after = resource.getrusage(resource.RUSAGE_CHILDREN)
+        cpu = after.ru_utime - before.ru_utime + after.ru_stime - before.ru_stime
+        print("point %d: exit %d, %.2f s CPU" % (number, rc, cpu), flush=True)
+        rows.append("%d\t%d\t%.3f\n" % (number, rc, cpu))
+        write_text(record, "".join(rows))  # after each point, for a task that is cut short
+        if rc:
+            status = 1
     return status

@@ -7,7 +7,10 @@
 # Usage: experiments/buffers/all_scenes.sh [-j JOBS] [BUILD_DIR]
 set -euo pipefail
 jobs=$(nproc)
-if [ "${1:-}" = -j ]; then jobs=$2; shift 2; fi
+if [ "${1:-}" = -j ]; then
+  [[ ${2:-} =~ ^[1-9][0-9]{0,8}$ ]] || { echo "all_scenes: -j must be a whole number of runs in flight, 1 or more, not '${2:-}'" >&2; exit 2; }
+  jobs=$2; shift 2
+fi
 REPO=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=$(cd "${1:-$REPO/build}" && pwd)
 for exe in torusrt-sim torusrt-render; do
@@ -49,6 +52,8 @@ for f in "$REPO"/scenes/*.nff; do
   done
 done > "$work/points"
 start=$(date +%s)
+points=$(wc -l <"$work/points")
+[ "$jobs" -le "$points" ] || jobs=$points  # no more runs in flight than there are runs
 parallel -j "$jobs" --colsep '\t' point {1} {2} {3} {4} {5} :::: "$work/points" > "$work/results"
 grep -v '^ok ' "$work/results" || true
 total=$(wc -l < "$work/results"); ok=$(grep -c '^ok ' "$work/results" || true)

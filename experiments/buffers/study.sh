@@ -72,7 +72,7 @@ wall=$(( $(date +%s) - start ))
 {
   printf 'scene\tmachine\tcluster\tflow\tcapacity\tstatus\timage_identical\tsim_time_s\tprocessors\tclasses_used\tbuffers_per_ip_per_class\tbytes_per_ip_per_class\tbytes_per_ip_used\tbytes_per_ip_bound\thigh_water\tconserved\n'
   study_rows "$work/phase2.list" tsv | sort -t$'\t' -k1,1 -k2,2 -k4,4 -k5,5n
-} > "$res/runs.tsv"
+} | write_file "$res/runs.tsv"
 python3 "$EXP/report/buffers.py" "$res/runs.tsv" "$doc" "$pics" "$EXP/plots/buffers.gp" \
   --size "$size" --wall "$wall" --jobs "${JOBS:-$BACKEND}"
 echo "wrote $doc ($wall s)" >&2

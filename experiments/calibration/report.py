@@ -12,6 +12,7 @@ import os
 import subprocess
 import sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from output_files import atomic, exit_on_signals, staged  # noqa: E402
 from report import before_fit  # noqa: E402
 
 SCENES = ["paper-image1", "paper-image2"]
@@ -59,14 +60,15 @@ def claims(flat, scene, h, m):
 
 def plot(plot_dir, gp_dir, name, title, header, rows):
     data = os.path.join(plot_dir, name + ".dat")
-    with open(data, "w") as f:
+    with atomic(data) as f:
         f.write(" ".join(header) + "\n")
         for row in rows:
             f.write(" ".join(str(x) for x in row) + "\n")
     png = os.path.join(plot_dir, name + ".png")
-    cmd = ["gnuplot", "-e", f"data='{data}'; out='{png}'; ttl='{title}'; ncol={len(header)}",
-           os.path.join(gp_dir, "efficiency.gp")]
-    subprocess.run(cmd, check=True)
+    with staged(png) as tmp:
+        cmd = ["gnuplot", "-e", f"data='{data}'; out='{tmp}'; ttl='{title}'; ncol={len(header)}",
+               os.path.join(gp_dir, "efficiency.gp")]
+        subprocess.run(cmd, check=True)
     return os.path.basename(png)
 
 
@@ -121,6 +123,7 @@ def findings(flat, cluster, sc, best, costs):
 
 
 def main():
+    exit_on_signals()  # a stopped run leaves no temporary
     runs, out_md, plot_dir, gp_dir = sys.argv[1:5]
     flat, cluster, t1 = load(runs)
     costs = sorted({k[1] for k in flat})
@@ -171,9 +174,8 @@ def main():
             png = plot(plot_dir, gp_dir, f"{s}-{m.replace(':', '')}", f"{s}, {m} mapping",
                        ["n"] + [str(h) for h in costs], rows)
             L += [f"![efficiency against n, {s}, {m}]({rel}/{png})", ""]
-    with open(out_md + ".tmp", "w") as f:
+    with atomic(out_md) as f:
         f.write("\n".join(L))
-    os.replace(out_md + ".tmp", out_md)
     print(f"calibration: best hand-over {best[0]} us with {best[1]} ({sc[best][0]}/8 claims); wrote {out_md}")
 
 

@@ -62,5 +62,5 @@ run_points "$work/run" calibration "$work/phase1.list" "$work/phase2.list"
     printf '%s\t%s\t%s\t1\t1\t1\t%s\t%s\t1\t1\t0\ttrue\t1\n' "$sc" 0 any "$(cat "$work/$sc.t1")" "$(cat "$work/$sc.t1")"
   done
   study_rows "$work/phase2.list" tsv | sort -t$'\t' -k1,1 -k2,2n -k3,3 -k6,6n -k4,4n
-} > "$res/runs.tsv"
+} | write_file "$res/runs.tsv"
 python3 "$here/report.py" "$res/runs.tsv" "$root/docs/calibration.md" "$root/docs/calibration" "$here"

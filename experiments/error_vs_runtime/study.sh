@@ -73,27 +73,27 @@ RESULTS=$(cd "$RESULTS" && pwd)
 work=$RESULTS/points
 # point_line STEP CSV ARGS...: one line of a point list: done when CSV exists.
 point_line() { printf '%s\t%s\n' "$2" "$(printf '%q ' "$EVR_DIR/$1.sh" --build "$BUILD" --out "$2" "${@:3}")"; }
-: >"$work/quantum.list"
-: >"$work/pruning.list"
+# The lists and CSVs are written through experiments/output_files.py (write_file).
 for s in $SCENES; do
   if [ -z "$ONLY" ] || [ "$ONLY" = quantum ]; then
-    for ips in $IPS; do point_line quantum "$work/quantum-$s-$ips.csv" "${qargs[@]}" --scenes "$s" --ips "$ips"; done >>"$work/quantum.list"
+    for ips in $IPS; do point_line quantum "$work/quantum-$s-$ips.csv" "${qargs[@]}" --scenes "$s" --ips "$ips"; done
   fi
+done | write_file "$work/quantum.list"
+for s in $SCENES; do
   if [ -z "$ONLY" ] || [ "$ONLY" = pruning ]; then
-    point_line pruning "$work/pruning-$s.csv" "${pargs[@]}" --scenes "$s" --ips "$IPS" >>"$work/pruning.list"
+    point_line pruning "$work/pruning-$s.csv" "${pargs[@]}" --scenes "$s" --ips "$IPS"
   fi
-done
+done | write_file "$work/pruning.list"
 # merge_csv LIST OUT: the CSVs of LIST's points, in its order, under one header.
 merge_csv() {
   local csv _ first=1
   [ -s "$1" ] || return 0
   while IFS=$'\t' read -r csv _; do
     if [ $first = 1 ]; then cat "$csv"; first=0; else tail -n +2 "$csv"; fi
-  done <"$1" >"$2.tmp"
-  mv -f "$2.tmp" "$2"
+  done <"$1" | write_file "$2" --results
 }
 if [ -z "$ONLY" ] || [ "$ONLY" != report ]; then
-  cat "$work/quantum.list" "$work/pruning.list" >"$work/points.list"
+  cat "$work/quantum.list" "$work/pruning.list" | write_file "$work/points.list"
   run_points "$work/run" error-vs-runtime "$work/points.list"
   merge_csv "$work/quantum.list" "$RESULTS/quantum.csv"
   merge_csv "$work/pruning.list" "$RESULTS/pruning.csv"

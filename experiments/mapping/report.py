@@ -11,6 +11,7 @@ import os
 import subprocess
 import sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from output_files import atomic, exit_on_signals, staged  # noqa: E402
 from report import before_fit  # noqa: E402
 
 MAPS = ["block", "cyclic", "block-cyclic:2", "block-cyclic:3", "cost"]
@@ -29,13 +30,14 @@ def load(path):
 
 def plot(plot_dir, gp, name, title, rows):
     data = os.path.join(plot_dir, name + ".dat")
-    with open(data, "w") as f:
+    with atomic(data) as f:
         f.write("n " + " ".join(MAPS) + "\n")
         for row in rows:
             f.write(" ".join(str(x) for x in row) + "\n")
     png = os.path.join(plot_dir, name + ".png")
-    subprocess.run(["gnuplot", "-e", f"data='{data}'; out='{png}'; ttl='{title}'; ncol={len(MAPS) + 1}; "
-                    "keyt='mapping'", gp], check=True)
+    with staged(png) as tmp:
+        subprocess.run(["gnuplot", "-e", f"data='{data}'; out='{tmp}'; ttl='{title}'; ncol={len(MAPS) + 1}; "
+                        "keyt='mapping'", gp], check=True)
     return os.path.basename(png)
 
 
@@ -69,6 +71,7 @@ def findings(runs, scenes, ns):
 
 
 def main():
+    exit_on_signals()  # a stopped run leaves no temporary
     runs_tsv, out_md, plot_dir, study_dir = sys.argv[1:5]
     gp = os.path.join(study_dir, "..", "calibration", "efficiency.gp")
     runs = load(runs_tsv)
@@ -107,9 +110,8 @@ def main():
           "the busy time per node, busiest first, with the mean and the busiest marked.", ""]
     for sc in ("paper-image1", "paper-image2"):
         L += [f"{sc}:", "", f"![cyclic]({rel}/load-{sc}-cyclic.png) ![cost]({rel}/load-{sc}-cost.png)", ""]
-    with open(out_md + ".tmp", "w") as f:
+    with atomic(out_md) as f:
         f.write("\n".join(L))
-    os.replace(out_md + ".tmp", out_md)
     print(f"mapping study: wrote {out_md}")
 
 

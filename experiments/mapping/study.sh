@@ -42,7 +42,7 @@ run_points "$work/run" mapping "$work/phase1.list" "$work/phase2.list"
 {
   printf 'scene\tprofile\tmapping\tn\tsim_time_s\tt1_s\tefficiency\tload_balance\tpilot_wall_s\tmapper_wall_s\tmax_cell_work_s\tconserved\timage_identical\n'
   study_rows "$work/phase2.list" tsv | sort -t$'\t' -k1,1 -k2,2 -k3,3 -k4,4n
-} > "$res/runs.tsv"
+} | write_file "$res/runs.tsv"
 for sc in paper-image1 paper-image2; do
   for m in cyclic cost; do
     "$build/torusrt-sim" "$root/scenes/$sc.nff" -o "$work/lm.png" -q --ips 4x4x4 --map "$m" \

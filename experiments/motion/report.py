@@ -13,6 +13,7 @@ import os
 import sys
 import tempfile
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from output_files import atomic, exit_on_signals  # noqa: E402
 from report.plots import gnuplot_kind  # noqa: E402
 
 POLICIES = ["adaptive", "every-frame", "oracle", "static", "cyclic"]
@@ -188,7 +189,7 @@ def frame_plot(frames, scene, n, plot_dir, gp):
             if f["policy"] == "adaptive":
                 rows[int(f["frame"])]["update"] = float(f["update_time_s"]) + float(f["update_link_time_s"])
     data = os.path.join(plot_dir, f"frames-{scene}-{n}.dat")
-    with open(data, "w") as out:
+    with atomic(data) as out:
         series = POLICIES + ["update"]
         out.write("frame " + " ".join(series) + "\n")
         for k in sorted(rows):
@@ -210,6 +211,7 @@ def strip(res, plot_dir, gp):
 
 
 def main(argv):
+    exit_on_signals()  # a stopped run leaves no temporary
     res, out_md, plot_dir, study_dir, jobs, wall = argv[1:7]
     gp = os.path.join(study_dir, "plots.gp")
     runs, frames = load(os.path.join(res, "runs.tsv")), load(os.path.join(res, "frames.tsv"))
@@ -250,9 +252,8 @@ def main(argv):
             L += ["", f"Adaptive's cell-list updates (frame 1 and every eighth frame; busiest processor's units):", ""]
             L += update_table(frames, sc, n)
             L += ["", f"![time per frame, {sc}, {n} nodes]({rel}/{png})", ""]
-    with open(out_md + ".tmp", "w") as f:
+    with atomic(out_md) as f:
         f.write("\n".join(L))
-    os.replace(out_md + ".tmp", out_md)
     print(f"motion study: wrote {out_md}")
 
 

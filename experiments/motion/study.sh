@@ -60,16 +60,16 @@ run_points "$work/run" motion "$work/phase1.list" "$work/phase2.list"
   printf '\tupdate_time_s\tupdate_link_time_s\tupdate_bytes\tupdate_units\trebuild_units\tmapping_changes'
   printf '\tconserved\timages_identical\twall_s\n'
   study_rows "$work/phase2.list" run | sort -t$'\t' -k1,1 -k2,2n -k3,3
-} > "$res/runs.tsv"
+} | write_file "$res/runs.tsv"
 {
   printf 'scene\tn\tpolicy\tframe\timage_time_s\tmigration_time_s\tmigration_bytes\tupdate_time_s'
   printf '\tupdate_link_time_s\tupdate_bytes\tobjects_moved\tupdate_units\tupdate_units_slowest'
   printf '\trebuild_units\trebuild_units_slowest\tdecision\tguess\n'
   study_rows "$work/phase2.list" frames | sort -t$'\t' -k1,1 -k2,2n -k3,3 -k4,4n
-} > "$res/frames.tsv"
+} | write_file "$res/frames.tsv"
 # The strip: frames 0, 8, ..., 56 of each scene, as the renderer drew them (paths from $res).
 for sc in "${scenes[@]}"; do
   for k in 0 8 16 24 32 40 48 56; do printf 'points/ref-%s/f_%03d.png\n' "$sc" "$k"; done
-done > "$res/strip.list"
+done | write_file "$res/strip.list"
 python3 "$here/report.py" "$res" "$root/docs/motion.md" "$pics" "$here" \
   "${JOBS:-$BACKEND}" "$(study_elapsed "$work" "$start")"

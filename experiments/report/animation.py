@@ -7,6 +7,7 @@ import os
 import subprocess
 import sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from output_files import atomic, exit_on_signals, staged  # noqa: E402
 from report import before_fit  # noqa: E402
 
 POLICIES = ["cyclic", "cost", "every-frame", "adaptive", "preview", "oracle"]
@@ -46,7 +47,7 @@ def write_dat(frames, scene, n, path):
     for r in frames:
         if r["scene"] == scene and int(r["n"]) == n:
             times.setdefault(int(r["frame"]), {})[r["policy"]] = r["image_time_s"]
-    with open(path, "w") as f:
+    with atomic(path) as f:
         f.write("# frame " + " ".join(POLICIES) + "\n")
         for k in sorted(times):
             f.write(" ".join([str(k)] + [times[k].get(p, "") for p in POLICIES]) + "\n")
@@ -61,8 +62,9 @@ def plot(frames, keys, pics, gp):
         write_dat(frames, scene, n, os.path.join(dat, f"frames-{panel}.dat"))
         panels.append(panel)
     png = os.path.join(pics, "image-time-per-frame.png")
-    subprocess.run(["gnuplot", "-e", f"dat='{dat}'; out='{png}'; panels='{' '.join(panels)}'; "
-                    f"policies='{' '.join(POLICIES)}'", gp], check=True)
+    with staged(png) as tmp:
+        subprocess.run(["gnuplot", "-e", f"dat='{dat}'; out='{tmp}'; panels='{' '.join(panels)}'; "
+                        f"policies='{' '.join(POLICIES)}'", gp], check=True)
     return os.path.basename(png)
 
 
@@ -511,6 +513,7 @@ def density_section(runs, dense, keys, nframes):
 
 
 def main(argv):
+    exit_on_signals()  # a stopped run leaves no temporary
     res, out_md, pics, gp, jobs, elapsed = argv[1:7]
     runs = read_tsv(os.path.join(res, "runs.tsv"))
     frames = read_tsv(os.path.join(res, "frames.tsv"))
@@ -550,9 +553,8 @@ def main(argv):
     md += density_section(runs, dense, keys, nframes)
     md += ["## Image time per frame", "", f"![image time per frame per policy](animation/{png})", "",
            f"### paper-image2, {keys[0][1]} nodes, per frame (s)", ""] + frame_table(frames, *keys[0]) + [""]
-    with open(out_md + ".tmp", "w") as f:
+    with atomic(out_md) as f:
         f.write("\n".join(md))
-    os.replace(out_md + ".tmp", out_md)
 
 
 if __name__ == "__main__":

@@ -10,6 +10,7 @@ import os
 import subprocess
 import sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from output_files import atomic, exit_on_signals, staged  # noqa: E402
 from report import before_fit  # noqa: E402
 
 UNBOUNDED = 0
@@ -69,7 +70,7 @@ def write_plot_data(data, dat_dir):
             continue
         base = float(classes[UNBOUNDED]["sim_time_s"])
         name = "%s-%s" % (scene, machine.replace(" ", "_"))
-        with open(os.path.join(dat_dir, name + ".dat"), "w") as f:
+        with atomic(os.path.join(dat_dir, name + ".dat")) as f:
             f.write("# capacity (unbounded plotted at 128) time/unbounded\n")
             for c in ordered_caps(classes):
                 if classes[c]["status"] == "ok":
@@ -79,8 +80,9 @@ def write_plot_data(data, dat_dir):
 
 
 def run_gnuplot(gp, dat_dir, names, png):
-    cmd = ["gnuplot", "-e", "dat='%s'; out='%s'; series='%s'" % (dat_dir, png, " ".join(names)), gp]
-    subprocess.run(cmd, check=True)
+    with staged(png) as tmp:
+        cmd = ["gnuplot", "-e", "dat='%s'; out='%s'; series='%s'" % (dat_dir, tmp, " ".join(names)), gp]
+        subprocess.run(cmd, check=True)
 
 
 def detail_table(scene, machine, flows):
@@ -160,6 +162,7 @@ def findings(data, bad, over):
 
 
 def main(argv):
+    exit_on_signals()  # a stopped run leaves no temporary
     ap = argparse.ArgumentParser()
     ap.add_argument("runs")
     ap.add_argument("doc")
@@ -201,9 +204,8 @@ def main(argv):
     for (scene, machine), flows in data.items():
         out += detail_table(scene, machine, flows)
     os.makedirs(os.path.dirname(os.path.abspath(a.doc)), exist_ok=True)
-    with open(a.doc + ".tmp", "w") as f:
+    with atomic(a.doc) as f:
         f.write("\n".join(out) + "\n")
-    os.replace(a.doc + ".tmp", a.doc)
     return 0
 
 

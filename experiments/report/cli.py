@@ -1,10 +1,29 @@
 """The command line of the report package."""
 import argparse
+import glob
 import os
 import subprocess
 import sys
 
+from output_files import OutputError, OutputSet, exit_on_signals
+
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+def check_outputs(inputs, outputs):
+    """A command's (option, path) outputs against its (option, path) inputs and each other, before
+    anything is written (output_files.OutputSet); OutputError names the option and the file."""
+    outs = OutputSet()
+    for option, path in inputs:
+        outs.add_input(option, path)
+    for option, path in outputs:
+        outs.add(option, path)
+    outs.check()
+
+
+def pictures(option, folder, names):
+    """The pictures a command writes into FOLDER, as outputs (none to check while it is not made)."""
+    return [(option, os.path.join(folder, n)) for n in names] if os.path.isdir(folder) else []
 
 
 def reproduction(args):
@@ -16,6 +35,12 @@ def reproduction(args):
         mode_file = os.path.join(res, "mode")
         full = os.path.exists(mode_file) and open(mode_file).read().strip() == "full"
         doc = os.path.join(REPO, "docs", "reproduction.md") if full else os.path.join(res, "reproduction.md")
+    read = [p for pattern in ("*.csv", "*.tsv", "*/*.csv", "*/*.tsv", "plots/*.png", "*/plots/*.png")
+            for p in glob.glob(os.path.join(res, pattern))]
+    img = os.path.join(os.path.dirname(os.path.abspath(doc)), "img")
+    os.makedirs(img, exist_ok=True)  # the page's folder and its pictures' (the command makes them)
+    check_outputs([("results", p) for p in read],
+                  [("--doc", doc)] + pictures("--doc", img, ["reproduction-fig%d.png" % f for f in rep.FIGURE_NUMBERS]))
     by_profile = rep.write(res, doc)
     print("report: %s (%s)" % (doc, "; ".join(
         "%s: %d of %d claims hold" % (p, sum(1 for c in cl if c.verdict == HOLDS), len(cl)) for p, cl in by_profile)))
@@ -45,6 +70,11 @@ def error_vs_runtime(args):
     pruning_csv = args.pruning or os.path.join(results, "pruning.csv")
     doc = args.doc or os.path.join(REPO, "docs", "error-vs-runtime.md")
     img = args.img_dir or os.path.join(REPO, "docs", "img")
+    drawn = ["error-quantum.png", "error-quantum-q.png", "error-pruning.png"]
+    for folder in (os.path.dirname(os.path.abspath(doc)), img):  # the command makes them
+        os.makedirs(folder, exist_ok=True)
+    check_outputs([("--quantum", quantum_csv), ("--pruning", pruning_csv)],
+                  [("--doc", doc)] + pictures("--img-dir", img, drawn))
     evr.write(quantum_csv, pruning_csv, doc, img, args.command)
     print("report: %s, plots in %s" % (doc, img))
     return 0
@@ -56,7 +86,9 @@ def sweep_plan(args):
     if len({n for n, _ in axes}) != len(axes):
         raise ValueError("each --axis option may be given once")
     fixed = args.fixed[1:] if args.fixed[:1] == ["--"] else args.fixed
-    sweep.plan(os.path.abspath(args.out), args.sim, args.scene, axes, fixed)
+    out = os.path.abspath(args.out)
+    total, done = sweep.plan(out, args.sim, args.scene, axes, fixed, os.path.join(out, "points.list"))
+    print("sweep: %d points (%d done before), results in %s" % (total, done, out))
     return 0
 
 
@@ -102,6 +134,7 @@ def machine(args):
 
 
 def main(argv):
+    exit_on_signals()  # a stopped run leaves no temporary
     parser = argparse.ArgumentParser(prog="experiments/report", description=__doc__)
     sub = parser.add_subparsers(dest="command", required=True)
     p = sub.add_parser("reproduction", help="write the comparison with the paper from a sweep's CSVs")
@@ -124,7 +157,8 @@ def main(argv):
     p.add_argument("--command", default="experiments/error_vs_runtime/study.sh",
                    help="the command line the page says produced it")
     p.set_defaults(run=error_vs_runtime)
-    p = sub.add_parser("sweep-plan", help="(experiments/sweep) write OUT/points.tsv, print the point list (JSON, tab, command)")
+    p = sub.add_parser("sweep-plan", help="(experiments/sweep) write OUT/points.tsv and the point list "
+                                          "OUT/points.list (JSON, tab, command)")
     p.add_argument("--out", required=True)
     p.add_argument("--sim", required=True)
     p.add_argument("--scene", required=True)
@@ -149,8 +183,12 @@ def main(argv):
     from . import fidelity
     fidelity.add_commands(sub)
     args = parser.parse_args(argv)
+    prog = "sweep" if args.command.startswith("sweep-") else "experiments/report"  # the command the user ran
     try:
         return args.run(args)
+    except OutputError as e:  # an output refused before anything was written: the command line's fault
+        print("%s: %s" % (prog, e), file=sys.stderr)
+        return 2
     except (OSError, ValueError, KeyError, subprocess.CalledProcessError) as e:
-        print("experiments/report: %s" % e, file=sys.stderr)
+        print("%s: %s" % (prog, e), file=sys.stderr)
         return 1

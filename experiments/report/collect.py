@@ -8,6 +8,8 @@ import csv
 import json
 import os
 
+from output_files import atomic
+
 from . import paper
 
 POINT_COLUMNS = ["fig", "name", "scene", "mapping", "n", "torus", "m", "data", "json"]
@@ -125,12 +127,11 @@ def preprocess_row(row):
 
 
 def write_csv(path, columns, rows, key):
-    with open(path + ".tmp", "w", newline="") as f:
+    with atomic(path, newline="") as f:
         out = csv.writer(f, lineterminator="\n")
         out.writerow(columns)
         for row in sorted(rows, key=key):
             out.writerow([row[c] for c in columns])
-    os.replace(path + ".tmp", path)
 
 
 def collect(res):

@@ -2,6 +2,8 @@
 with their plots (experiments/plots/error-quantum.gp, error-pruning.gp)."""
 import os
 
+from output_files import atomic
+
 from . import before_fit, pruning, quantum
 from .csvdata import Table
 from .plots import gnuplot
@@ -163,6 +165,5 @@ def write(quantum_csv, pruning_csv, doc, img_dir, command):
     lines = head + findings(qt, pt) + before_fit.section(os.path.dirname(os.path.abspath(quantum_csv))) + \
         ["## How it was made", ""] + quantum_section(qt, rel_img, command) \
         + pruning_section(pt, rel_img)
-    with open(doc + ".tmp", "w") as out:
+    with atomic(doc) as out:
         out.write("\n".join(lines) + "\n")
-    os.replace(doc + ".tmp", doc)

@@ -7,6 +7,8 @@ import json
 import os
 import subprocess
 
+from output_files import atomic, staged
+
 from . import claims, paper
 from .results import Results
 from .verdict import HOLDS, summary
@@ -168,7 +170,7 @@ def machines(args):
                 continue
             value = fitted.get(words[0], words[1])
             lines.append("%s %s" % (words[0], value))
-    with open(os.path.join(out, "timing", "fitted.timing"), "w") as f:
+    with atomic(os.path.join(out, "timing", "fitted.timing")) as f:
         f.write("\n".join(lines) + "\n")
     common = [("map", args.map), ("preprocess-count", args.rule), ("timing-profile", "calibrated"),
               ("timing", "timing/fitted.timing")]
@@ -189,7 +191,7 @@ def machines(args):
                 "# Run: torusrt-sim SCENE -o OUT.png --config machines/%s.toml" % name]
         pairs = [("ips", shape)] + common + [("cluster", str(m)), ("data", data)]
         text += ['%s="%s"' % kv for kv in pairs]
-        with open(os.path.join(out, name + ".toml"), "w") as f:
+        with atomic(os.path.join(out, name + ".toml")) as f:
             f.write("\n".join(text) + "\n")
     return 0
 
@@ -197,12 +199,14 @@ def machines(args):
 # ---- the page ----------------------------------------------------------------------------
 
 def _gnuplot(script, variables):
-    assigns = ["%s='%s'" % kv for kv in variables.items()]
-    subprocess.run(["gnuplot", "-e", "; ".join(assigns), os.path.join(STUDY, script)], check=True)
+    """Runs the study's gnuplot SCRIPT; its picture `out` is written through a temporary."""
+    with staged(variables["out"]) as tmp:
+        assigns = ["%s='%s'" % kv for kv in dict(variables, out=tmp).items()]
+        subprocess.run(["gnuplot", "-e", "; ".join(assigns), os.path.join(STUDY, script)], check=True)
 
 
 def _write(path, rows):
-    with open(path, "w") as f:
+    with atomic(path) as f:
         for row in rows:
             f.write(" ".join(str(v) for v in row) + "\n")
 
@@ -391,7 +395,7 @@ def page(args):
     wall = _rows(res, "wall.tsv")[0] if os.path.exists(wall_file) else ["?", "?", "?", "?", "?"]
 
     # The figures behind the page, kept with the study (the runs' JSONs are not).
-    with open(os.path.join(res, "stages.tsv"), "w") as f:
+    with atomic(os.path.join(res, "stages.tsv")) as f:
         f.write("stage\tcandidate\tscore\tfigures\n")
         for stage, rows in (("1", s1), ("2", s2), ("3", s3)):
             for c, sc, v in rows:
@@ -422,9 +426,8 @@ def page(args):
     with open(os.path.join(STUDY, "protocol.md")) as f:
         protocol = f.read().split("\n", 1)[1].lstrip("\n")
     L.append(protocol)
-    with open(doc + ".tmp", "w") as f:
+    with atomic(doc) as f:
         f.write("\n".join(L) + "\n")
-    os.replace(doc + ".tmp", doc)
     return 0
 
 

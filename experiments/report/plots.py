@@ -1,6 +1,9 @@
 """Data files for the checked-in gnuplot scripts (experiments/plots/*.gp), and running them."""
+import contextlib
 import os
 import subprocess
+
+from output_files import staged, write_text
 
 from . import paper
 from .results import profile_results
@@ -9,9 +12,7 @@ PLOT_DIR = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__
 
 
 def write_dat(path, rows):
-    with open(path, "w") as f:
-        for row in rows:
-            f.write(" ".join(str(v) for v in row) + "\n")
+    write_text(path, "".join(" ".join(str(v) for v in row) + "\n" for row in rows))
 
 
 def series(table, columns, **match):
@@ -22,13 +23,21 @@ def series(table, columns, **match):
 def gnuplot_kind(gp, kind, data, png, title, ncol=0):
     """Runs the study script GP for one plot KIND of the data file DATA into PNG; returns the
     PNG's file name (the studies' pages link it beside themselves)."""
-    subprocess.run(["gnuplot", "-e", f"kind='{kind}'; data='{data}'; out='{png}'; ttl='{title}'; ncol={ncol}", gp],
-                   check=True)
+    with staged(png) as tmp:
+        subprocess.run(["gnuplot", "-e", f"kind='{kind}'; data='{data}'; out='{tmp}'; ttl='{title}'; ncol={ncol}", gp],
+                       check=True)
     return os.path.basename(png)
 
 
 def gnuplot(script, variables):
-    """Runs experiments/plots/SCRIPT with the variables (strings, or numbers) set."""
+    """Runs experiments/plots/SCRIPT with the variables (strings, or numbers) set; the pictures
+    `out` and `out_*` name are written through temporaries beside them (output_files)."""
+    with contextlib.ExitStack() as stack:
+        run_gnuplot(script, {k: stack.enter_context(staged(v)) if k == "out" or k.startswith("out_") else v
+                             for k, v in variables.items()})
+
+
+def run_gnuplot(script, variables):
     assigns = ["plotdir='%s'" % PLOT_DIR]
     for name, value in variables.items():
         assigns.append("%s=%s" % (name, value if isinstance(value, (int, float)) else "'%s'" % value))

@@ -1,6 +1,7 @@
 """docs/reproduction.md: the paper's claims beside the sweep's numbers, tables and plots."""
 import os
-import shutil
+
+from output_files import atomic, copy_file
 
 from . import claims as claimlib
 from . import paper
@@ -149,7 +150,7 @@ def copy_plots(res, img_dir):
             os.remove(target)
         source = os.path.join(res, "plots", "fig%d.png" % f)
         if os.path.exists(source) and os.path.getsize(source) > 0:
-            shutil.copyfile(source, target)
+            copy_file(source, target, "--doc")
             drawn.add(f)
     return drawn
 
@@ -403,7 +404,6 @@ def write(res, doc):
     doc_dir = os.path.dirname(os.path.abspath(doc))
     drawn = copy_plots(res, os.path.join(doc_dir, "img"))
     text, claim_list = document(res, all_r, doc_dir, drawn)
-    with open(doc + ".tmp", "w") as f:
+    with atomic(doc) as f:
         f.write(text)
-    os.replace(doc + ".tmp", doc)
     return claim_list

@@ -4,6 +4,8 @@ import glob
 import json
 import os
 
+from output_files import atomic
+
 from .csvdata import Table
 
 FIGURES = ("fig5_6", "fig7", "fig8", "fig10_12")
@@ -45,11 +47,10 @@ class Facts:
         found = self._from_sweep(res)
         values = {k: found.get(k, saved.get(k, "")) for k in self.KEYS}
         if found:
-            with open(path + ".tmp", "w", newline="") as f:
+            with atomic(path, newline="") as f:
                 out = csv.writer(f, lineterminator="\n")
                 out.writerow(["key", "value"])
                 out.writerows((k, values[k]) for k in self.KEYS)
-            os.replace(path + ".tmp", path)
         self.image_size = values["image_size"] or "?"
         self.cells = int(values["cells"] or 13824)
         self.hop_us = values["hop_us"] or "2180"

@@ -1,6 +1,8 @@
 """The generic sweep (experiments/sweep): the points of a cartesian product over torusrt-sim
 options, and after the runs one CSV row per point and a plot (experiments/plots/sweep.gp)."""
 import csv
+import hashlib
+import io
 import itertools
 import json
 import os
@@ -8,6 +10,8 @@ import re
 import shlex
 import subprocess
 import sys
+
+from output_files import OutputSet, atomic, named_files, write_lines, write_text
 
 from .plots import gnuplot, write_dat
 
@@ -42,34 +46,126 @@ def dry_run(sim, scene, names, values, fixed):
                          % done.stderr.strip())
 
 
-def plan(out, sim, scene, axes, fixed):
-    """Writes OUT/points.tsv (name and axis values per point) and prints the point list
-    (experiments/backend): the point's JSON, a tab and its shell command line; a point whose JSON
-    exists is skipped, so a re-run resumes. A deadlocked point (exit 3) keeps its JSON (status
-    deadlock); a failed one leaves none."""
+def file_hash(path, cache):
+    """The SHA-256 of a file's content (once per file and sweep)."""
+    if path not in cache:
+        digest = hashlib.sha256()
+        with open(path, "rb") as f:
+            for chunk in iter(lambda: f.read(1 << 20), b""):
+                digest.update(chunk)
+        cache[path] = digest.hexdigest()
+    return cache[path]
+
+
+def identity(sim, args, cache):
+    """What makes a point: the executable's and every input file's content (the scene, and any
+    argument naming a file) and the whole command line but its output files. Two points with
+    the same identity report the same figures."""
+    made = {"executable": file_hash(sim, cache), "command": args,
+            "inputs": [[option, file_hash(path, cache)] for option, path in named_files(args)]}
+    return hashlib.sha256(json.dumps(made, sort_keys=True).encode()).hexdigest()
+
+
+REPORT_KEYS = {"status": str, "sim_time_s": (int, float), "config": dict}
+
+
+def read_report(path):
+    """A point's JSON report; ValueError naming PATH when it is not one (not JSON, not an
+    object, or without the keys every report has)."""
+    try:
+        with open(path, errors="replace") as f:
+            report = json.load(f)
+    except ValueError as e:
+        raise ValueError("%s: not a JSON report (%s)" % (path, e))
+    if not isinstance(report, dict):
+        raise ValueError("%s: not a JSON report (a %s, not an object)" % (path, type(report).__name__))
+    missing = [k for k, kind in REPORT_KEYS.items()
+               if not isinstance(report.get(k), kind) or isinstance(report.get(k), bool)]
+    if missing:
+        raise ValueError("%s: not a JSON report (no %s)" % (path, ", ".join(missing)))
+    return report
+
+
+def point_files(out, name):
+    """The files of one point: its JSON report, image, log and identity."""
+    base = os.path.join(out, "points", name)
+    return {ext: base + "." + ext for ext in ("json", "png", "log", "id")}
+
+
+def is_done(files, ident):
+    """True when the point's JSON is a report made by this identity; a JSON that is not a report,
+    or was made by another executable, scene, input or command line, is removed (with a message)
+    so that the point runs again."""
+    if not os.path.exists(files["json"]):
+        return False
+    why = None
+    try:
+        read_report(files["json"])
+        with open(files["id"]) as f:
+            if f.read().strip() != ident:
+                why = "%s: made by another executable, scene, input file or command line" % files["json"]
+    except FileNotFoundError:
+        why = "%s: made by another command (no identity file %s)" % (files["json"], files["id"])
+    except ValueError as e:
+        why = str(e)
+    if why is None:
+        return True
+    print("sweep: %s; running the point again" % why, file=sys.stderr)
+    for ext in ("json", "png", "id"):
+        if os.path.lexists(files[ext]):
+            os.remove(files[ext])
+    return False
+
+
+def plan(out, sim, scene, axes, fixed, listing):
+    """Writes OUT/points.tsv (name and axis values per point) and the point list LISTING
+    (experiments/backend): the point's JSON, a tab and its shell command line. A point is done
+    when its JSON is a report and its identity file (NAME.id) holds this command's identity()
+    for it; any other point is listed and runs. A deadlocked point (exit 3) keeps its JSON
+    (status deadlock); a failed one leaves none. Every output is checked first (output_files)."""
     names = [n for n, _ in axes]
     combos = list(itertools.product(*(v for _, v in axes)))
-    dry_run(sim, scene, names, combos[0], fixed)
+    outs = OutputSet()
+    outs.add_input("scene", scene)
+    words = list(fixed) + [w for n, vs in axes for v in vs for w in ("--" + n, v)]
+    for option, path in named_files(words):
+        outs.add_input(option, path)
+    files = [point_files(out, point_name(names, values)) for values in combos]
+    for name in (PLAN, "points.list", "sweep.csv", "sweep.png"):
+        outs.add("--out", os.path.join(out, name))
     points = os.path.join(out, "points")
+    if os.path.isdir(points):  # a new folder holds nothing to check
+        for f in files:
+            for ext in ("json", "png", "log", "id"):
+                f[ext] = outs.add("--out", f[ext])
+    outs.check()
+    dry_run(sim, scene, names, combos[0], fixed)
     os.makedirs(points, exist_ok=True)
-    with open(os.path.join(out, PLAN), "w", newline="") as f:
-        table = csv.writer(f, delimiter="\t", lineterminator="\n")
-        table.writerow(["name"] + names)
-        for k, values in enumerate(combos, 1):
-            name = point_name(names, values)
-            table.writerow([name] + list(values))
-            base = os.path.join(points, name)
-            args = [sim, scene, "-o", base + ".png", "--stats", base + ".json.tmp", "-q"] + list(fixed)
-            for n, v in zip(names, values):
-                args += ["--" + n, v]
-            run = " ".join(shlex.quote(a) for a in args)
-            j, t = shlex.quote(base + ".json"), shlex.quote(base + ".json.tmp")
-            progress = "echo >&3 %s" % shlex.quote("sweep: [%d/%d] %s" % (k, len(combos), name))
-            print(base + ".json\t" +
-                  "[ -s {j} ] && {p}: done before || {{ {run} >{log} 2>&1; rc=$?; "
-                  "if [ $rc -eq 0 ] || {{ [ $rc -eq 3 ] && [ -s {t} ]; }}; then mv {t} {j}; {p}: "
-                  "$([ $rc -eq 0 ] && echo ok || echo deadlock); else rm -f {t}; {p}: failed; exit $rc; fi; }}".format(
-                      j=j, t=t, run=run, log=shlex.quote(base + ".log"), p=progress))
+    cache, rows, lines, done = {}, [["name"] + names], [], 0
+    for k, (values, f) in enumerate(zip(combos, files), 1):
+        name = point_name(names, values)
+        rows.append([name] + list(values))
+        args = [scene] + list(fixed)
+        for n, v in zip(names, values):
+            args += ["--" + n, v]
+        ident = identity(sim, args, cache)
+        if is_done(f, ident):
+            done += 1
+        tmp = f["json"] + ".tmp"
+        run = shlex.join([sim] + args + ["-o", f["png"], "--stats", tmp, "-q"])
+        j, t, i = shlex.quote(f["json"]), shlex.quote(tmp), shlex.quote(f["id"])
+        progress = "echo >&3 %s" % shlex.quote("sweep: [%d/%d] %s" % (k, len(combos), name))
+        lines.append(f["json"] + "\t" +
+                     "{run} >{log} 2>&1; rc=$?; "
+                     "if [ $rc -eq 0 ] || {{ [ $rc -eq 3 ] && [ -s {t} ]; }}; then "
+                     "echo {ident} >{i}.tmp && mv {i}.tmp {i} && mv {t} {j}; {p}: "
+                     "$([ $rc -eq 0 ] && echo ok || echo deadlock); else rm -f {t}; {p}: failed; exit $rc; fi".format(
+                         j=j, t=t, i=i, ident=ident, run=run, log=shlex.quote(f["log"]), p=progress))
+    table = io.StringIO()
+    csv.writer(table, delimiter="\t", lineterminator="\n").writerows(rows)
+    write_text(os.path.join(out, PLAN), table.getvalue(), "--out")
+    write_lines(listing, lines, "--out")
+    return len(combos), done
 
 
 def flatten(report, prefix=""):
@@ -105,11 +201,12 @@ def collect(out, columns, y):
     flat, failed = [], []
     for row in points:
         path = os.path.join(out, "points", row[0] + ".json")
-        if os.path.exists(path) and os.path.getsize(path) > 0:
-            with open(path) as f:
-                flat.append(flatten(json.load(f)))
-        else:
+        try:
+            flat.append(flatten(read_report(path)) if os.path.exists(path) else None)
+        except ValueError as e:  # a report gone bad after its run: the point failed
+            print("sweep: %s" % e, file=sys.stderr)
             flat.append(None)
+        if flat[-1] is None:
             failed.append(row[0])
     if columns == ["all"]:
         columns = sorted({k for f in flat if f for k in f} - {"status"})  # the CSV has its own
@@ -120,13 +217,12 @@ def collect(out, columns, y):
     if unknown:
         raise ValueError("no such JSON field in the reports: %s (scalars by dotted name, e.g. links.utilisation.mean)"
                          % ", ".join(unknown))
-    with open(os.path.join(out, "sweep.csv.tmp"), "w", newline="") as f:
+    with atomic(os.path.join(out, "sweep.csv"), "--out", newline="") as f:
         table = csv.writer(f, lineterminator="\n")
         table.writerow(names + ["status"] + columns)
         for row, report in zip(points, flat):
             status = report.get("status", "ok") if report else "failed"
             table.writerow(row[1:] + [status] + [text((report or {}).get(c)) for c in columns])
-    os.replace(os.path.join(out, "sweep.csv.tmp"), os.path.join(out, "sweep.csv"))
     if any(flat):
         plot(out, names, points, flat, y)
     return failed
@@ -166,12 +262,13 @@ def report_deadlocked(out):
     names, points = read_points(out)
     for row in points:
         path = os.path.join(out, "points", row[0] + ".json")
-        if os.path.exists(path) and os.path.getsize(path) > 0:
-            with open(path) as f:
-                report = json.load(f)
-            if report.get("status") == "deadlock":
-                print("sweep: point %s deadlocked at %.6g s simulated (status deadlock in the CSV)"
-                      % (row[0], report["deadlock"]["time_s"]), file=sys.stderr)
+        try:
+            report = read_report(path)
+        except (OSError, ValueError):  # missing or not a report: listed as failed
+            continue
+        if report.get("status") == "deadlock":
+            print("sweep: point %s deadlocked at %.6g s simulated (status deadlock in the CSV)"
+                  % (row[0], report["sim_time_s"]), file=sys.stderr)
 
 
 def report_failed(out, failed):

@@ -13,6 +13,7 @@ import csv
 import os
 import sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from output_files import atomic, exit_on_signals  # noqa: E402
 from report import before_fit  # noqa: E402
 from report.plots import gnuplot_kind  # noqa: E402
 
@@ -205,7 +206,7 @@ def scene_table(runs, sc, ns, names):
 
 def scene_plots(runs, sc, ns, names, plot_dir, gp):
     data = os.path.join(plot_dir, f"time-{sc}.dat")
-    with open(data, "w") as f:
+    with atomic(data) as f:
         f.write("n " + " ".join(names) + "\n")
         for n in ns:
             f.write(f"{n} " + " ".join(f"{t(runs[(sc, m, n)]):.6g}" if (sc, m, n) in runs else "-" for m in names)
@@ -213,7 +214,7 @@ def scene_plots(runs, sc, ns, names, plot_dir, gp):
     time_png = gnuplot_kind(gp, "time", data, os.path.join(plot_dir, f"time-{sc}.png"), f"{sc}: image time",
                        len(names) + 1)
     data = os.path.join(plot_dir, f"memory-{sc}.dat")
-    with open(data, "w") as f:
+    with atomic(data) as f:
         for (s, m, n), r in sorted(runs.items()):
             if s == sc:
                 f.write(f"{m} {n} {memory(r):.0f} {t(r):.6g}\n")
@@ -232,7 +233,7 @@ def busy_plot(res, plot_dir, gp):
     names = [m for m in FLAT if m in series]
     cols = [sorted(series[m], reverse=True) for m in names]
     data = os.path.join(plot_dir, "busy-paper-image2-512.dat")
-    with open(data, "w") as f:
+    with atomic(data) as f:
         f.write("rank " + " ".join(names) + "\n")
         for i in range(max(len(c) for c in cols)):
             f.write(f"{i} " + " ".join(f"{c[i]:.6g}" for c in cols) + "\n")
@@ -253,7 +254,7 @@ def share_plot(res, plot_dir, gp):
     data = os.path.join(plot_dir, "busy-share-paper-image1-512.dat")
     # Each order has its own bins (its own image time): the series one after the other, the other
     # columns '-', each closed by a 0 at its image time.
-    with open(data, "w") as f:
+    with atomic(data) as f:
         f.write("t " + " ".join(names) + "\n")
         for j, name in enumerate(names):
             for start, share in series[name]:
@@ -267,6 +268,7 @@ def share_plot(res, plot_dir, gp):
 
 
 def main(argv):
+    exit_on_signals()  # a stopped run leaves no temporary
     res, out_md, plot_dir, study_dir, jobs, wall = argv[1:7]
     gp = os.path.join(study_dir, "plots.gp")
     runs = load(os.path.join(res, "runs.tsv"))
@@ -321,9 +323,8 @@ def main(argv):
                       f"{len(v) - max(i for i, (_, x) in enumerate(v) if x >= 0.5) - 1}"
                       for name, v in share.items()) + ".", "",
           f"![busy processors over the frame]({rel}/{png})", ""]
-    with open(out_md + ".tmp", "w") as f:
+    with atomic(out_md) as f:
         f.write("\n".join(L))
-    os.replace(out_md + ".tmp", out_md)
     print(f"scaling study: wrote {out_md}")
 
 

@@ -74,13 +74,13 @@ header() {
   printf '\tconserved\timage_identical\n'
 }
 study_rows "$work/phase2.list" tsv | sort -t$'\t' -k1,1 -k3,3n -k2,2 > "$work/rows.tsv"
-{ header; awk -F'\t' -v p="$planar" '$1 != p' "$work/rows.tsv"; } > "$res/runs.tsv"
-{ header; awk -F'\t' -v p="$planar" '$1 == p' "$work/rows.tsv"; } > "$res/planar-512.tsv"
+{ header; awk -F'\t' -v p="$planar" '$1 != p' "$work/rows.tsv"; } | write_file "$res/runs.tsv"
+{ header; awk -F'\t' -v p="$planar" '$1 == p' "$work/rows.tsv"; } | write_file "$res/planar-512.tsv"
 # Busy time per node, paper-image2 at 512 IPs: cost and scatter, without and with copies.
 for mc in flat-cost flat-cost-r0.5 flat-cost-r1.0 flat-scatter flat-scatter-r0.5; do
   map=${mc#flat-}; map=${map%%-*}; r=${mc#flat-"$map"}; r=${r#-r}
   sed 's/^/'"$mc"'\t/' "$work/point_paper-image2_${mc}_8x8x8_1_replicated_${map}_${r:-0}.busy"
-done > "$res/busy-paper-image2-512.tsv"
+done | write_file "$res/busy-paper-image2-512.tsv"
 # The share of busy IPs over time, paper-image1 at 512 IPs under the scatter, both queue orders
 # (from a VCD trace of each; the traces are not kept).
 for order in primaries-first rays-first; do
@@ -88,5 +88,5 @@ for order in primaries-first rays-first; do
     --queue-order "$order" --t1 "$(cat "$work/paper-image1.t1")" --vcd "$work/share.vcd"
   (cd "$root/experiments" && python3 -m report.busy_share "$work/share.vcd" 40 "$order")
   rm -f "$work/share.vcd" "$work/share.gtkw" "$work/share.png"
-done > "$res/busy-share-paper-image1-512.tsv"
+done | write_file "$res/busy-share-paper-image1-512.tsv"
 python3 "$here/report.py" "$res" "$root/docs/scaling.md" "$pics" "$here" "$JOBS" "$(study_elapsed "$work" "$start")"
