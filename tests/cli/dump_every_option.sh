@@ -18,6 +18,7 @@ declare -A sample=(
     [--ips]="--ips 2x2"
     [--map]="--ips 4 --map block"
     [--topology]="--ips 4 --topology mesh"
+    [--route-ties]="--ips 4x2 --route-ties split"
     [--cells]="--ips 2 --cells 6"
     [--preprocess-count]="--preprocess-count per-plane"
     [--queue]="--ips 2 --queue 4"

@@ -34,12 +34,15 @@ SWEEP=$SRC/experiments/sweep
 scene=$SRC/scenes/paper-image2.nff
 axes=(--axis ips=1,2,2x2,2x2x2 --axis map=block,cyclic)
 fixed=(-- --size 16x16 --t1 1)
-# A stand-in simulator: the first point, ips=1, map=block, waits (two minutes) before running.
+# A stand-in simulator: the first point, ips=1, map=block, waits (two minutes) before running
+# while $TMP/slow.on exists. The resumed sweep runs the same stand-in with the file gone: a
+# sweep point is known by its executable too, so another executable would run every point again.
 mkdir -p "$TMP/slowbuild"
+touch "$TMP/slow.on"
 cat >"$TMP/slowbuild/torusrt-sim" <<SIM
 #!/usr/bin/env bash
 # Slow for the point's run only: the sweep's dry run of its first point (--dump-config) is not.
-case " \$* " in *" --dump-config "*) ;; *" --ips 1 --map block "*) touch "$TMP/slow.started"; sleep 120 ;; esac
+case " \$* " in *" --dump-config "*) ;; *" --ips 1 --map block "*) [ -e "$TMP/slow.on" ] && { touch "$TMP/slow.started"; sleep 120; } ;; esac
 exec "$BUILD/torusrt-sim" "\$@"
 SIM
 chmod +x "$TMP/slowbuild/torusrt-sim"
@@ -78,8 +81,9 @@ check "their CSV rows say failed" test "$(awk -F, '$1 == "1" { print $3 }' "$TMP
 check "the other 6 points are done" test "$(ls "$TMP/slurm/points/"*.json | wc -l)" -eq 6
 
 at "the cancelled sweep done"
-# 3. The same command again (the real simulator) computes the two missing points only.
-TORUSRT_BUILD=$BUILD "$SWEEP" "$scene" "${axes[@]}" --out "$TMP/slurm" --backend slurm --per-task 2 \
+# 3. The same command again (the stand-in, no longer slow) computes the two missing points only.
+rm -f "$TMP/slow.on"
+TORUSRT_BUILD=$TMP/slowbuild "$SWEEP" "$scene" "${axes[@]}" --out "$TMP/slurm" --backend slurm --per-task 2 \
     "${fixed[@]}" >"$TMP/slurm2.out" 2>&1
 rc=$?
 check "the resumed sweep exits 0 (got $rc: $(tail -n 3 "$TMP/slurm2.out" | tr '\n' ' '))" test $rc -eq 0
@@ -91,6 +95,7 @@ check "every point ok" test "$(awk -F, 'NR > 1 && $3 != "ok"' "$TMP/slurm/sweep.
 at "the resumed sweep done"
 # 4. An interrupt while the arrays are queued or running cancels them.
 rm -f "$TMP/slow.started"
+touch "$TMP/slow.on"
 TORUSRT_BUILD=$TMP/slowbuild "$SWEEP" "$scene" "${axes[@]}" --out "$TMP/slurm-int" --backend slurm --per-task 1 \
     "${fixed[@]}" >"$TMP/int.out" 2>&1 &
 sweep_pid=$!
