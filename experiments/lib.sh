@@ -150,7 +150,8 @@ merge_joblogs() {
 }
 
 # A study's points as scripts any machine can run. study_script WORK "FUNCTIONS" "VARIABLES"
-# writes WORK/point.sh: the study's FUNCTIONS with the VARIABLES they read, running "FUNCTION
+# writes WORK/point.sh: the study's FUNCTIONS with the VARIABLES they read (and write_file, with
+# which a point writes its rows through experiments/output_files.py), running "FUNCTION
 # ARG..." given on its command line. study_list WORK LIST < ARGS turns ARGS (one point per line:
 # FUNCTION and its arguments, tab-separated) into the point list LIST: the point is done when
 # WORK/TAG.json exists, TAG being its line with every character but letters, digits, '.' and
@@ -161,8 +162,8 @@ study_script() {
     {
         echo '#!/usr/bin/env bash'
         echo 'set -euo pipefail'
-        for v in $3; do declare -p "$v"; done
-        for f in $2; do declare -f "$f"; done
+        for v in EXP $3; do declare -p "$v"; done
+        for f in write_file $2; do declare -f "$f"; done
         echo '"$@"'
     } | write_file "$1/point.sh"
 }

@@ -41,7 +41,7 @@ point() { # SCENE SHAPE POLICY-NAME MAP REMAP PILOT-FRACTION (- for none) FRAMES
     jq -r --arg sc "$1" --arg pol "$3" --arg same "$same" --arg fr "$7" \
       '[$sc, .config.nodes, $pol, $fr, .animation.total_s, .animation.image_time_s, .animation.migration_time_s,
         .animation.mapping_changes, (.packets.conserved | tostring), $same, .wall_s] | @tsv' \
-      "$work/$tag.part.json" > "$work/$tag.dense"
+      "$work/$tag.part.json" | write_file "$work/$tag.dense"
     rm -rf "$dir"
     mv -f "$work/$tag.part.json" "$work/$tag.json"
     return
@@ -50,11 +50,11 @@ point() { # SCENE SHAPE POLICY-NAME MAP REMAP PILOT-FRACTION (- for none) FRAMES
     '[$sc, .config.nodes, $pol, .animation.total_s, .animation.image_time_s, .animation.migration_time_s,
       .animation.migration_share, .animation.migration_bytes, .animation.mapping_changes, .animation.efficiency,
       (.packets.conserved | tostring), $same, .wall_s, .animation.host_pilot_time_s,
-      .animation.host_pilot_charged_s] | @tsv' "$work/$tag.part.json" > "$work/$tag.run"
+      .animation.host_pilot_charged_s] | @tsv' "$work/$tag.part.json" | write_file "$work/$tag.run"
   jq -r --arg sc "$1" --arg pol "$3" \
     '.config.nodes as $n | .frames[] | [$sc, $n, $pol, .index, .image_time_s, .migration_time_s,
       .migration_bytes, .efficiency, .remap.decision,
-      ((.remap.reason | match("guess ([a-z-]+)").captures[0].string) // "-")] | @tsv' "$work/$tag.part.json" > "$work/$tag.frames"
+      ((.remap.reason | match("guess ([a-z-]+)").captures[0].string) // "-")] | @tsv' "$work/$tag.part.json" | write_file "$work/$tag.frames"
   rm -rf "$dir"
   mv -f "$work/$tag.part.json" "$work/$tag.json"
 }

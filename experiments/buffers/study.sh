@@ -47,8 +47,8 @@ point() { # SCENE LABEL IPS CLUSTER FLOW CAPACITY
     --ips "$3" --cluster "$4" --flow "$5" --queue "$6" 2>/dev/null || rc=$?
   if [ "$rc" -ne 0 ]; then # a deadlock (exit 3) under --flow none leaves no report
     printf '%s\t%s\t%s\t%s\t%s\t%s\t0\t\t\t\t\t\t\t\t\t\n' "$1" "$2" "$4" "$5" "$6" \
-      "$([ "$rc" = 3 ] && echo deadlock || echo "failed:$rc")" > "$work/$tag.tsv"
-    printf '{"exit": %d}\n' "$rc" > "$work/$tag.json"
+      "$([ "$rc" = 3 ] && echo deadlock || echo "failed:$rc")" | write_file "$work/$tag.tsv"
+    printf '{"exit": %d}\n' "$rc" | write_file "$work/$tag.json"
     return 0
   fi
   cmp -s "$work/$tag.png" "$work/$1.png" && same=1
@@ -56,7 +56,7 @@ point() { # SCENE LABEL IPS CLUSTER FLOW CAPACITY
     '[$sc, $m, $cl, $f, $q, "ok", $same, .sim_time_s, .config.processors, .flow.classes_used,
       .flow.buffers_per_ip_per_class, .flow.bytes_per_ip_per_class, .flow.bytes_per_ip_used,
       .flow.bytes_per_ip_bound, .flow.high_water, (.packets.conserved | tostring)] | @tsv' \
-    "$work/$tag.part.json" > "$work/$tag.tsv"
+    "$work/$tag.part.json" | write_file "$work/$tag.tsv"
   rm -f "$work/$tag.png"
   mv -f "$work/$tag.part.json" "$work/$tag.json"
 }

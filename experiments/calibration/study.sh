@@ -21,14 +21,14 @@ scenes=(paper-image1 paper-image2)
 # reading (creation 1600 at the sender, analysis 580 at the receiver).
 for h in "${costs[@]}"; do
   if [ "$h" = 2180 ]; then s=1600 r=580; else s=$((h / 2)) r=$((h - h / 2)); fi
-  printf 'handover_send %s\nhandover_receive %s\n' "$s" "$r" > "$work/h$h.timing"
+  printf 'handover_send %s\nhandover_receive %s\n' "$s" "$r" | write_file "$work/h$h.timing"
 done
 
 # T(1) does not depend on the hand-over cost or the mapping: one run per scene (phase 1).
 t1() { # SCENE
   "$build/torusrt-sim" "$root/scenes/$1.nff" -o "$work/$1-t1.png" --stats "$work/$TAG.part.json" -q \
     --timing-profile literal
-  jq -r .sim_time_s "$work/$TAG.part.json" > "$work/$1.t1"
+  jq -r .sim_time_s "$work/$TAG.part.json" | write_file "$work/$1.t1"
   mv -f "$work/$TAG.part.json" "$work/$TAG.json"
 }
 
@@ -41,7 +41,7 @@ point() { # SCENE COST MAP SHAPE CLUSTER
   jq -r --arg sc "$sc" --arg h "$h" --arg m "$m" --arg same "$same" \
     '[$sc, $h, $m, .config.processors, .config.nodes, .config.cluster, .sim_time_s, .t1_s, .efficiency_t1,
       .efficiency_busy, .packets.forwarded, (.packets.conserved | tostring), $same] | @tsv' "$work/$tag.part.json" \
-    > "$work/$tag.tsv"
+    | write_file "$work/$tag.tsv"
   rm -f "$work/$tag.png"
   mv -f "$work/$tag.part.json" "$work/$tag.json"
 }

@@ -5,6 +5,8 @@
 
 EVR_DIR=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 REPO=$(cd "$EVR_DIR/../.." && pwd)
+# write_file FILE [OPTION] < TEXT: FILE written through experiments/output_files.py (atomic, never over an input).
+write_file() { python3 "$REPO/experiments/output_files.py" "$@"; }
 BUILD=${TORUSRT_BUILD:-$REPO/build}
 
 die() { echo "${0##*/}: $*" >&2; exit 2; }
@@ -69,7 +71,7 @@ csv_start() {
   echo "$1" > "$CSV"
 }
 csv_finish() {
-  mv -f "$CSV" "$OUT"
+  write_file "$OUT" "--out" <"$CSV"
   echo "$(basename "$0" .sh): wrote $OUT" >&2
 }
 

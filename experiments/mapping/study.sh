@@ -15,7 +15,7 @@ study_dirs mapping
 scenes=(paper-image1 paper-image2 cones-and-patches facing-mirrors)
 t1() { # SCENE; T(1): no hand-overs, so the same under both profiles
   "$build/torusrt-sim" "$root/scenes/$1.nff" -o "$work/$1.png" --stats "$work/$TAG.part.json" -q
-  jq -r .sim_time_s "$work/$TAG.part.json" > "$work/$1.t1"
+  jq -r .sim_time_s "$work/$TAG.part.json" | write_file "$work/$1.t1"
   mv -f "$work/$TAG.part.json" "$work/$TAG.json"
 }
 point() { # SCENE PROFILE MAP SHAPE
@@ -26,7 +26,7 @@ point() { # SCENE PROFILE MAP SHAPE
   jq -r --arg sc "$1" --arg p "$2" --arg m "$3" --arg same "$same" \
     '[$sc, $p, $m, .config.nodes, .sim_time_s, .t1_s, .efficiency, .load_balance,
       (.mapping.pilot_wall_s // 0), (.mapping.mapper_wall_s // 0), (.mapping.pilot_max_cell_work_s // 0),
-      (.packets.conserved | tostring), $same] | @tsv' "$work/$tag.part.json" > "$work/$tag.tsv"
+      (.packets.conserved | tostring), $same] | @tsv' "$work/$tag.part.json" | write_file "$work/$tag.tsv"
   rm -f "$work/$tag.png"
   mv -f "$work/$tag.part.json" "$work/$tag.json"
 }

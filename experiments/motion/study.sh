@@ -37,13 +37,13 @@ point() { # SCENE SHAPE POLICY-NAME MAP REMAP
     '[$sc, .config.nodes, $pol, .animation.total_s, .animation.image_time_s, .animation.migration_time_s,
       .animation.migration_bytes, .animation.motion_time_s, .motion.update_time_s, .motion.link_time_s,
       .motion.bytes, .motion.update_units, .motion.rebuild_units, .animation.mapping_changes,
-      (.packets.conserved | tostring), $same, .wall_s] | @tsv' "$work/$tag.part.json" > "$work/$tag.run"
+      (.packets.conserved | tostring), $same, .wall_s] | @tsv' "$work/$tag.part.json" | write_file "$work/$tag.run"
   jq -r --arg sc "$1" --arg pol "$3" \
     '.config.nodes as $n | .frames[] | [$sc, $n, $pol, .index, .image_time_s, .migration_time_s,
       .migration_bytes, .motion.update_time_s, .motion.link_time_s, .motion.bytes, .motion.objects_moved,
       .motion.update_units, .motion.update_units_slowest, .motion.rebuild_units, .motion.rebuild_units_slowest,
       .remap.decision, ((.remap.reason | match("guess ([a-z-]+)").captures[0].string) // "-")] | @tsv' \
-    "$work/$tag.part.json" > "$work/$tag.frames"
+    "$work/$tag.part.json" | write_file "$work/$tag.frames"
   rm -rf "$dir"
   mv -f "$work/$tag.part.json" "$work/$tag.json"
 }

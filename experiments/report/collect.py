@@ -30,12 +30,13 @@ FIELDS = {
     "wall_s": ["wall_s"], "cell_list_bytes_per_processor": ["memory.shared_cell_list_bytes"],
     "bus_object_bytes": ["bus.object_bytes"], "bus_packet_transfers": ["bus.packet_transfers"],
     "bus_cycle_us": ["config.timing.bus_cycle"], "bus_width_bytes": ["config.timing.bus_width_bytes"],
+    "cell_steps": ["ops.cell_steps"],
 }
 
 CSVS = {
     "fig5_6": ["scene", "mapping", "n", "torus", "timing_profile", "status", "sim_time_s", "t1_s", "speedup", "efficiency",
                "load_balance", "busy_max_s", "busy_mean_s", "packets_created", "packets_forwarded",
-               "packets_conserved", "link_packets", "link_util_mean", "image_identical", "wall_s"],
+               "packets_conserved", "link_packets", "link_util_mean", "image_identical", "wall_s", "cell_steps"],
     "fig7": ["scene", "mapping", "n", "status", "max_per_ip_bytes", "total_bytes", "pixel_partitioned_bytes",
              "whole_scene_bytes", "ratio_to_pixel_partitioned", "pixel_partitioned_over_total"],
     "fig8": ["scene", "n", "status", "units_serial", "units_parallel", "speedup", "paper_units", "paper_speedup"],
@@ -44,7 +45,7 @@ CSVS = {
                  "pixel_partitioned_bytes", "ratio_to_pixel_partitioned", "bus_util_mean", "bus_util_max",
                  "bus_wait_mean_us", "bus_object_reads", "image_identical", "wall_s", "paper_time_s",
                  "cell_list_bytes_per_processor", "bus_object_bytes", "bus_packet_transfers", "bus_cycle_us",
-                 "bus_width_bytes"],
+                 "bus_width_bytes", "packets_forwarded", "cell_steps"],
 }
 
 

@@ -36,7 +36,7 @@ class Facts:
     run_facts.csv), else from run_facts.csv."""
 
     KEYS = ("image_size", "cells", "hop_us", "t1_runs", "joblog_points", "joblog_span_s", "timing_profile",
-            "image1_scene", "lb_map")
+            "image1_scene", "lb_map", "cell_step_us")
 
     def __init__(self, res):
         path = os.path.join(res, FACTS_FILE)
@@ -60,6 +60,7 @@ class Facts:
         self.timing_profile = values["timing_profile"] or "?"
         self.image1_scene = values["image1_scene"] or "?"
         self.lb_map = values["lb_map"] or "?"
+        self.cell_step_us = values["cell_step_us"] or "0"  # a table without the key charged nothing
 
     @staticmethod
     def _from_sweep(res):
@@ -75,6 +76,7 @@ class Facts:
             hand_over = ("handover_send", "handover_receive") if "handover_send" in timing else (
                 "packet_creation", "packet_analysis")
             found["hop_us"] = "%g" % sum(timing[k] for k in hand_over)
+            found["cell_step_us"] = "%g" % timing.get("cell_step_packet", 0)
             found["t1_runs"] = str(len(t1))
             found["timing_profile"] = report["config"]["timing_profile"]
         for path in t1:

@@ -23,7 +23,7 @@ ref() { # SCENE: the renderer's image (the golden one) and T(1), the one-process
   "$build/torusrt-render" "$root/scenes/$1.nff" -o "$work/$1.png" -q
   "$build/torusrt-sim" "$root/scenes/$1.nff" -o "$work/$1.t1.png" --stats "$work/$TAG.part.json" -q
   cmp -s "$work/$1.png" "$work/$1.t1.png" || { echo "scaling: $1: the one-processor image differs" >&2; exit 1; }
-  jq -r .sim_time_s "$work/$TAG.part.json" > "$work/$1.t1"
+  jq -r .sim_time_s "$work/$TAG.part.json" | write_file "$work/$1.t1"
   mv -f "$work/$TAG.part.json" "$work/$TAG.json"
 }
 point() { # SCENE MACHINE NODES_SHAPE M DATA MAP REPLICATE [QUEUE_ORDER]
@@ -37,8 +37,8 @@ point() { # SCENE MACHINE NODES_SHAPE M DATA MAP REPLICATE [QUEUE_ORDER]
     '[$sc, $mc, .config.processors, .config.nodes, $m, $d, $map, $r, .sim_time_s, .t1_s, .efficiency,
       .memory.total_bytes, .memory.max_per_ip_bytes, .load.busy_s.max, .load.busy_s.mean,
       .links.utilisation.max, .packet_hops, .replication.copies, .replication.bytes,
-      (.packets.conserved | tostring), $same] | @tsv' "$work/$tag.part.json" > "$work/$tag.tsv"
-  jq -r '.per_ip[] | [.node, .busy_s] | @tsv' "$work/$tag.part.json" > "$work/$tag.busy"
+      (.packets.conserved | tostring), $same] | @tsv' "$work/$tag.part.json" | write_file "$work/$tag.tsv"
+  jq -r '.per_ip[] | [.node, .busy_s] | @tsv' "$work/$tag.part.json" | write_file "$work/$tag.busy"
   rm -f "$work/$tag.png"
   mv -f "$work/$tag.part.json" "$work/$tag.json"
 }
@@ -49,7 +49,7 @@ planar=paper-image1-planar
 printf 'ref\t%s\n' "${scenes[@]}" "$planar" | study_list "$work" "$work/phase1.list"
 declare -A NODES=([4]=2x2x1 [8]=2x2x2 [16]=4x2x2 [32]=4x4x2 [64]=4x4x4 [128]=8x4x4 [256]=8x8x4
                   [512]=8x8x8 [1024]=16x8x8 [4096]=16x16x16)
-for sc in "${scenes[@]}"; do for n in 16 64 512 4096; do
+{ for sc in "${scenes[@]}"; do for n in 16 64 512 4096; do
   s=${NODES[$n]}
   printf 'point\t%s\t%s\t%s\t1\treplicated\t%s\t%s\n' "$sc" flat-cyclic "$s" cyclic 0 "$sc" flat-cost "$s" cost 0 \
     "$sc" flat-cost-r0.5 "$s" cost 0.5 "$sc" flat-cost-r1.0 "$s" cost 1.0 \
@@ -62,9 +62,9 @@ for sc in "${scenes[@]}"; do for n in 16 64 512 4096; do
       printf 'point\t%s\tm%s-%s-%s\t%s\t%s\t%s\t%s\t0\n' "$sc" "$m" "$d" "$map" "${NODES[$((n / m))]}" "$m" "$d" "$map"
     done; done
   done
-done; done > "$work/phase2.args"
+done; done
 printf 'point\t%s\t%s\t8x8x8\t1\treplicated\t%s\t0\t%s\n' "$planar" flat-cyclic cyclic primaries-first \
-  "$planar" flat-cost cost primaries-first "$planar" flat-scatter-rf scatter rays-first >> "$work/phase2.args"
+  "$planar" flat-cost cost primaries-first "$planar" flat-scatter-rf scatter rays-first; } | write_file "$work/phase2.args"
 study_list "$work" "$work/phase2.list" < "$work/phase2.args"
 echo "scaling study: $(cat "$work"/phase[12].list | wc -l) runs on the $BACKEND backend" >&2
 run_points "$work/run" scaling "$work/phase1.list" "$work/phase2.list"
@@ -73,7 +73,7 @@ header() {
   printf '\tmemory_max_per_ip_bytes\tbusy_max_s\tbusy_mean_s\tlink_util_max\tpacket_hops\tcopies\tcopy_bytes'
   printf '\tconserved\timage_identical\n'
 }
-study_rows "$work/phase2.list" tsv | sort -t$'\t' -k1,1 -k3,3n -k2,2 > "$work/rows.tsv"
+study_rows "$work/phase2.list" tsv | sort -t$'\t' -k1,1 -k3,3n -k2,2 | write_file "$work/rows.tsv"
 { header; awk -F'\t' -v p="$planar" '$1 != p' "$work/rows.tsv"; } | write_file "$res/runs.tsv"
 { header; awk -F'\t' -v p="$planar" '$1 == p' "$work/rows.tsv"; } | write_file "$res/planar-512.tsv"
 # Busy time per node, paper-image2 at 512 IPs: cost and scatter, without and with copies.

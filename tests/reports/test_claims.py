@@ -247,6 +247,36 @@ class ClaimsOnFrozenSweep(unittest.TestCase):
             r = edited(r, "f10", "ratio_to_pixel_partitioned", 1 / 12, scene=s, data="replicated", m=12)
         self.assertEqual(claims.replicated_memory_ratio(r).verdict, v.FAILS)
 
+    def test_notes_follow_the_run(self):
+        # The costs come from the run's timing table, the crossing share from its counts.
+        c = claims.load_balancing_floor(self.r)
+        self.assertIn("charges %s us a hand-over" % self.r.facts.hop_us, c.notes)
+        self.assertIn("share of crossings not counted", c.notes)
+        r = copy.deepcopy(self.r)
+        r.facts.hop_us, r.facts.cell_step_us = "2180", "580"
+        r = edited(r, "f56", "packets_forwarded", 300, scene="image1", mapping="cyclic", n=16)
+        r = edited(r, "f56", "cell_steps", 1200, scene="image1", mapping="cyclic", n=16)
+        c = claims.load_balancing_floor(r)
+        self.assertIn("charges 2180 us a hand-over and 580 us a cell step", c.notes)
+        self.assertIn("Image 1: 25 % of its cell steps crossed to another IP (300 of 1200)", c.notes)
+        # Efficiency below load balance: the parallel run's extra work, from the two figures.
+        r = edited(r, "f56", "efficiency", 0.6, scene="image1", mapping="cyclic", n=16)
+        r = edited(r, "f56", "load_balance", 0.8, scene="image1", mapping="cyclic", n=16)
+        self.assertIn("work beyond T(1) 25.0 % of the busy time, balance 80.0 %", claims.load_balancing_floor(r).notes)
+        self.assertIn("Image 1 cyclic: 25 % of its cell steps", claims.mapping_gain(r).notes)
+
+    def test_cluster_notes_place_t1_against_the_work_window(self):
+        # Claims 9 and 12 bound the paper's T(1) to [0.8 n t, n t] at its replicated time t.
+        r = edited(self.r, "f10", "t1_s", 100, scene="image1", data="replicated", m=64)
+        self.assertIn("T(1) lies below the [508, 635] s", claims.replicated_times(r).notes)
+        r = edited(r, "f10", "t1_s", 600, scene="image1", data="replicated", m=64)
+        self.assertIn("T(1) lies within the [508, 635] s", claims.replicated_times(r).notes)
+        r = edited(r, "f10", "t1_s", 700, scene="image1", data="replicated", m=64)
+        self.assertIn("T(1) lies above the [508, 635] s", claims.replicated_times(r).notes)
+        self.assertNotIn("T(1) lies", claims.shared_times(r).notes)
+        r = edited(r, "f10", "bus_wait_mean_us", 31.5, scene="image1", data="replicated", m=64)
+        self.assertIn("mean grant wait 31.5 us", claims.replicated_efficiency(r).notes)
+
     def test_failed_points_are_not_counted(self):
         r = edited(self.r, "f56", "status", "failed", mapping="cyclic")
         self.assertEqual(claims.load_balancing_floor(r).verdict, v.NOT_RUN)

@@ -20,6 +20,27 @@ def write_json(path, data):
         json.dump(data, f)
 
 
+class ClaimRoles(unittest.TestCase):
+    def test_three_counts_split_fit_targets_from_validation(self):
+        from report.verdict import FAILS, HOLDS
+        verdicts = [FAILS] * 17
+        for i in (4, 7, 8, 9, 16):
+            verdicts[i - 1] = HOLDS
+        (a, n), (f, nf), (v, nv) = fidelity.counts(verdicts)
+        self.assertEqual((a, n), (5, 17))
+        self.assertEqual((f, nf), (3, 5), "7, 8, 9 of the fit targets 7, 8, 9, 10, 11")
+        self.assertEqual((v, nv), (2, 12), "4 and 16 of the twelve validation claims")
+        text = fidelity.counts_text(verdicts)
+        self.assertIn("5 of 17 claims hold: 3 of the 5 fit targets", text)
+        self.assertIn("2 of the 12 validation claims", text)
+
+    def test_roles(self):
+        self.assertEqual(fidelity.role(9), "fit target")
+        self.assertIn("derived", fidelity.role(10))
+        self.assertEqual(fidelity.role(1), "validation")
+        self.assertIn("any space partition", fidelity.role(16))
+
+
 class Fits(unittest.TestCase):
     def setUp(self):
         self.tmp = tempfile.TemporaryDirectory()
