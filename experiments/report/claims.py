@@ -1,5 +1,6 @@
 """One function per claim of the paper's prose: each takes the sweep's results and returns a
 Claim with the paper's figure, ours, the verdict (verdict.verdict) and the reason."""
+import os
 from collections import namedtuple
 
 from . import paper
@@ -53,9 +54,14 @@ def majority_verdict(passed, total):
 # ---- notes computed from the run -----------------------------------------------------------
 
 def costs_text(r):
-    """The profile's hand-over and cell-step costs, as the run's timing table gave them."""
+    """The profile's hand-over and cell-step costs, as the run's timing table gave them (a timing
+    file named by its file name: where the sweep ran it from is no business of the page)."""
+    profile = r.facts.timing_profile
+    if " + " in profile:
+        base, extra = profile.split(" + ", 1)
+        profile = "%s + %s" % (base, extra if extra == "values" else os.path.basename(extra))
     return "the profile (%s) charges %s us a hand-over and %s us a cell step (the cell steps in T(1) too)" % (
-        r.facts.timing_profile, r.facts.hop_us, r.facts.cell_step_us)
+        profile, r.facts.hop_us, r.facts.cell_step_us)
 
 
 def crossing_text(table, **match):

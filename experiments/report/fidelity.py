@@ -253,7 +253,7 @@ def _findings(L, res, s1, s2, s3, b1, b2, b3, fitted, pen, rep, readings, verdic
         rep["image1"], rep["image2"], _pass(all(_rel(rep[i], TIMES[i]) <= TIMES_TOL for i in TIMES))))
     L.append("- **Penalty** (F3) on the fitted machine: %.2f / %.2f against 1.21 / 1.25 (%s)." % (
         pen["image1"], pen["image2"], _pass(all(PENALTY_RANGE[0] <= pen[i] <= PENALTY_RANGE[1] for i in PENALTY))))
-    L.append("- **Claims on the fitted machine**: %s; %s (the aim: at least 12)." % (
+    L.append("- **Claims on the fitted machine**: %s (the aim: at least 12); %s" % (
         counts_text([c.verdict for c in fit_claims]), summary([c.verdict for c in fit_claims])))
     t1 = {i: _json(os.path.join(res, "runs", "t1-%s.json" % sc))["sim_time_s"]
           for i, sc in (("image1", fitted["layout"]), ("image2", fitted["image2"]))}
