@@ -185,6 +185,12 @@ std::vector<MachineOption> network_options()
     };
 }
 
+// --link-us acts only while no bandwidth sets the link time.
+const char *needs_no_bandwidth(const MachineConfig &m)
+{
+    return timing_value(m.timing, "link_bytes_per_us") > 0 ? "--link-bytes-per-us 0 (it sets the link time)" : nullptr;
+}
+
 // Machine options of the timing (profile, file, link, step limits, style), in dump order.
 std::vector<MachineOption> timing_options()
 {
@@ -227,10 +233,7 @@ std::vector<MachineOption> timing_options()
              set_timing(s, m.timing, "link", us);
          },
          [](const MachineConfig &m) { return number_text(timing_value(m.timing, "link")); },
-         [](const MachineConfig &m) {
-             return timing_value(m.timing, "link_bytes_per_us") > 0 ? "--link-bytes-per-us 0 (it sets the link time)"
-                                                                    : nullptr;
-         }},
+         needs_no_bandwidth},
         {{"--packet-bytes", "BYTES", K::real, "28", 0, kMaxTimingUs, "bytes", "packet size on the wire", G::machine,
           "packet-bytes"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
