@@ -105,6 +105,8 @@ BACKEND_HELP='--backend local|ssh:HOSTFILE|slurm, -j N, --slurm-args "SBATCH OPT
 
 # backend_option ARGS...: takes one backend option off the front of ARGS, setting SHIFT to the
 # words it used; returns 1 (and leaves everything alone) if ARGS does not start with one.
+# Each takes its value as the next word or after '=' (--slurm-args=--account=foo); the value of
+# --slurm-args is any number of sbatch options, quoted as one word when there are several.
 backend_option() {
     case $1 in
         --backend|--slurm-args|--per-task|-j) [ $# -ge 2 ] || die "$1 needs a value" ;;
@@ -112,8 +114,11 @@ backend_option() {
     SHIFT=2
     case $1 in
         --backend) BACKEND=$2 ;;
+        --backend=*) BACKEND=${1#*=}; SHIFT=1 ;;
         --slurm-args) SLURM_ARGS=$2 ;;
+        --slurm-args=*) SLURM_ARGS=${1#*=}; SHIFT=1 ;;
         --per-task) PER_TASK=$2 ;;
+        --per-task=*) PER_TASK=${1#*=}; SHIFT=1 ;;
         -j) check_jobs -j "$2"; JOBS=$2 ;;
         -j[0-9]*) check_jobs -j "${1#-j}"; JOBS=${1#-j}; SHIFT=1 ;;
         *) return 1 ;;
@@ -134,7 +139,8 @@ run_points() {
     shift 2
     local opts=(--state "$state" --backend "$BACKEND" --name "$name")
     [ -z "$JOBS" ] || opts+=(-j "$JOBS")
-    [ -z "$SLURM_ARGS" ] || opts+=(--slurm-args "$SLURM_ARGS")
+    # one word with "=": a value that starts with a dash is still the value
+    [ -z "$SLURM_ARGS" ] || opts+=("--slurm-args=$SLURM_ARGS")
     [ -z "$PER_TASK" ] || opts+=(--per-task "$PER_TASK")
     python3 "$EXP/backend" run "${opts[@]}" "${RUN_POINTS_OPTS[@]}" "$@"
 }

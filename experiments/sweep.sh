@@ -16,7 +16,8 @@
 #                        array per phase); the repository, build and results folder must be at
 #                        the same paths on every machine (docs/cluster-runs.md)
 #   --sshloginfile FILE  the same as --backend ssh:FILE
-#   --slurm-args "..."   more sbatch options (partition, account, time)
+#   --slurm-args "..."   more sbatch options (partition, account, time): one, several in one
+#                        quoted word, or after '=' (--slurm-args=--account=foo)
 #   --per-task K         points per Slurm array task (default 4)
 #   --build DIR          build folder holding torusrt-sim (default $TORUSRT_BUILD, else build/)
 #   --doc FILE           the report to write (default docs/reproduction.md for the full sweep,

@@ -29,10 +29,11 @@ rt_status rt_cost_image_write(FILE *fp, const char *name, uint32_t width, uint32
 
 rt_status rt_load_map_write(FILE *fp, const char *name, const int dims[3], const double *work_us, const int32_t *owner,
                             int nodes, char *msg, size_t msg_len);
-/* The same with replicated cells marked (rt_load_map_draw_replicas; replicas NULL: none). */
+/* The same with replicated cells marked and a caption across the top (rt_load_map_draw_replicas;
+ * replicas NULL: none; caption NULL: none). */
 rt_status rt_load_map_write_replicas(FILE *fp, const char *name, const int dims[3], const double *work_us,
-                                     const int32_t *owner, const rt_replicas *replicas, int nodes, char *msg,
-                                     size_t msg_len);
+                                     const int32_t *owner, const rt_replicas *replicas, int nodes, const char *caption,
+                                     char *msg, size_t msg_len);
 
 #ifdef __cplusplus
 }

@@ -87,6 +87,7 @@ static const char *glyph(char ch)
     case ')': return "42224";
     case '>': return "42124";
     case '/': return "11244";
+    case '_': return "00007";
     case ' ': return "00000";
     }
     return "77777";

@@ -51,8 +51,8 @@ rt_status rt_load_map_write(FILE *fp, const char *name, const int d[3], const do
 }
 
 rt_status rt_load_map_write_replicas(FILE *fp, const char *name, const int d[3], const double *work,
-                                     const int32_t *owner, const rt_replicas *replicas, int nodes, char *msg,
-                                     size_t msg_len)
+                                     const int32_t *owner, const rt_replicas *replicas, int nodes, const char *caption,
+                                     char *msg, size_t msg_len)
 {
-    return finish(rt_load_map_draw_replicas(d, work, owner, replicas, nodes), fp, name, msg, msg_len);
+    return finish(rt_load_map_draw_replicas(d, work, owner, replicas, nodes, caption), fp, name, msg, msg_len);
 }

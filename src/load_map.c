@@ -2,6 +2,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "rt_load_map.h"
 
@@ -154,29 +155,36 @@ static void draw_nodes(rt_canvas *c, const node_load *load, int nodes, int x0, i
     rt_time_label(mean, t1, sizeof t1);
     snprintf(label, sizeof label, "mean %s", t1);
     rt_canvas_text(c, x0 + w + 6, my - 4, 2, label, red);
+    for (int q = 1; q <= 3 && hi > 0; q++) { /* the quarters of the busiest, marked and labelled */
+        int qy = y0 + h - (int)lround(hi * q / 4 * scale);
+        rt_canvas_rect(c, x0 - 4, qy, 3, 1, black);
+        rt_time_label(hi * q / 4, t1, sizeof t1);
+        rt_canvas_text(c, x0 - 4 * (int)strlen(t1) - 6, qy - 2, 1, t1, black);
+    }
     rt_time_label(hi, t1, sizeof t1);
     snprintf(t2, sizeof t2, "%.3f", mean > 0 ? hi / mean : 0);
     snprintf(label, sizeof label, "busiest: node %d, %s = %s x mean", nodes > 0 ? load[0].node : 0, t1, t2);
     rt_canvas_text(c, x0 + 4, ty - 13, 2, label, black);
-    rt_canvas_text(c, x0 - 4 * (int)snprintf(NULL, 0, "%s", t1) - 4, ty - 2, 1, t1, black);
+    rt_canvas_rect(c, x0 - 4, ty, 3, 1, black);
+    rt_canvas_text(c, x0 - 4 * (int)strlen(t1) - 6, ty - 2, 1, t1, black);
     rt_canvas_text(c, x0 - 8, y0 + h - 5, 1, "0", black);
     rt_canvas_text(c, x0, y0 + h + 4, 1, "nodes, busiest first ->", black);
 }
 
 rt_canvas *rt_load_map_draw(const int d[3], const double *work, const int32_t *owner, int nodes)
 {
-    return rt_load_map_draw_replicas(d, work, owner, NULL, nodes);
+    return rt_load_map_draw_replicas(d, work, owner, NULL, nodes, NULL);
 }
 
 rt_canvas *rt_load_map_draw_replicas(const int d[3], const double *work, const int32_t *owner,
-                                     const rt_replicas *replicas, int nodes)
+                                     const rt_replicas *replicas, int nodes, const char *caption)
 {
     size_t cells = (size_t)d[0] * d[1] * d[2];
     int big = d[0] > d[1] ? d[0] : d[1];
     if (cells == 0 || nodes < 1) return NULL;
     int s = 240 / big;
     s = s < 2 ? 2 : s > 16 ? 16 : s;
-    int left = 56, top = 24, bar_w = 110, chart_h = 160;
+    int left = 56, top = caption ? 44 : 24, bar_w = 110, chart_h = 160;
     int x2 = left + d[0] * s + bar_w;
     uint32_t width = (uint32_t)(x2 + d[0] * s + 24), chart_y = (uint32_t)(top + d[1] * s + 44);
     double *plane = malloc(sizeof(double) * (size_t)d[0] * d[1]);
@@ -187,6 +195,7 @@ rt_canvas *rt_load_map_draw_replicas(const int d[3], const double *work, const i
         rt_node_work_replicas(d, work, owner, replicas, nodes, node_us);
         for (int n = 0; n < nodes; n++) load[n] = (node_load){node_us[n], n};
         qsort(load, (size_t)nodes, sizeof *load, busiest_first);
+        if (caption) rt_canvas_text(c, 4, 4, 2, caption, black);
         draw_cells(c, d, work, replicas, left, top, s, plane);
         draw_axes(c, d, left, top, s);
         draw_owners(c, d, owner, replicas, d[2] / 2, x2, top, s);

@@ -12,7 +12,7 @@ namespace torusrt {
 const char *group_title(OptionGroup group)
 {
     switch (group) {
-    case OptionGroup::machine: return "Machine (a --config file may hold these)";
+    case OptionGroup::machine: return "Machine";
     case OptionGroup::workload: return "Workload";
     case OptionGroup::outputs: return "Outputs";
     case OptionGroup::tracing: return "Tracing";

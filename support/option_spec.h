@@ -10,7 +10,7 @@
 namespace torusrt {
 
 enum class OptionGroup { machine, workload, outputs, tracing, animation, run };
-// "Machine (a --config file may hold these)", "Workload", ...
+// "Machine", "Workload", ... (torusrt-sim heads its machine group with machine_file_group_title)
 const char *group_title(OptionGroup group);
 
 enum class ValueKind {

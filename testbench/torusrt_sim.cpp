@@ -15,6 +15,7 @@
 #include "common_options.h"
 #include "frame_pattern.h"
 #include "huge_pages.h"
+#include "idle_options.h"
 #include "input_file_check.h"
 #include "machine_file_reader.h"
 #include "machine_options.h"
@@ -115,6 +116,8 @@ void declare_options(CLI::App &app, std::shared_ptr<MachineFileReader> reader)
     for (const RunOption &o : run_option_table())
         if (o.spec.group == OptionGroup::animation || o.spec.group == OptionGroup::run) add_spec_option(app, o.spec);
     add_common_options(app, output_help, {"--memory-budget", "--quiet"});
+    // The machine options are what a --config file holds (torusrt-render shares some, without files).
+    retitle_group(app, group_title(OptionGroup::machine), "Machine (a --config file may hold these)");
     set_help_layout(app, kUsage, kRules, kExamples);
 }
 
@@ -216,7 +219,21 @@ void fill_request(CommandLine &cl, SimRequest &r)
         {"--map-file", r.config.map_file}, {"--camera-path", cl.anim.camera_path}, {"--motion", cl.anim.motion}};
 }
 
-int run(CommandLine &cl, double wall_start)
+// --ips N (one number, 3 or more) builds a ring (a line on a mesh), which is easy to take for a
+// square machine: a note on standard error says so.
+void note_ring(const CommandLine &cl, const SimConfig &config)
+{
+    const std::string ips = cl.text("--ips");
+    if (config.quiet || ips.empty() || ips.find('x') != std::string::npos || config.node_count() < 3) return;
+    bool torus = config.topology == Topology::torus;
+    std::fprintf(stderr,
+                 "torusrt-sim: note: --ips %s builds a %dx1x1 %s: a %s of %d (PXxPY or PXxPYxPZ, e.g. 4x4, spreads "
+                 "the nodes over two or three dimensions)\n",
+                 ips.c_str(), config.node_count(), topology_name(config.topology), torus ? "ring" : "line",
+                 config.node_count());
+}
+
+int run(CommandLine &cl, double wall_start, int argc, char **argv)
 {
     require_scene_and_output(cl.common);
     route_systemc_messages(cl.common.quiet);
@@ -235,6 +252,11 @@ int run(CommandLine &cl, double wall_start)
                         "per cell)",
                         2);
     warn_about_settings("torusrt-sim", config.step, config.quiet);
+    note_ring(cl, config);
+    if (!config.quiet)
+        for (const std::string &line :
+             idle_option_warnings(config, [&](const std::string &name) { return on_command_line(argc, argv, name); }))
+            std::fprintf(stderr, "torusrt-sim: warning: %s\n", line.c_str());
     if (config.style == TimingStyle::lt && config.quantum_us == 0 && !config.quiet)
         std::fprintf(stderr, "torusrt-sim: warning: --style lt without --quantum: a quantum of 0 synchronises at "
                              "every transfer, as --style at does (give --quantum, e.g. 1ms)\n");
@@ -267,7 +289,7 @@ int sc_main(int argc, char **argv)
             cl.with_timing = cl.has("--with-timing");
             try {
                 if (cl.with_timing && !cl.dump_config) throw UserError("--with-timing: only with --dump-config", 2);
-                return cl.dump_config ? dump_config(cl) : run(cl, wall_start);
+                return cl.dump_config ? dump_config(cl) : run(cl, wall_start, argc, argv);
             } catch (const UserError &e) {
                 throw naming_config_file(cl, *reader, e, argc, argv);
             }

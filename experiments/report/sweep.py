@@ -18,6 +18,24 @@ from .plots import gnuplot, write_dat
 DEFAULT_COLUMNS = ["sim_time_s", "efficiency_t1", "efficiency_busy", "packets.created.total",
                    "packets.forwarded", "links.utilisation.mean", "wall_s"]
 PLAN = "points.tsv"
+FACTS = "sweep-facts.json"  # the scene and fixed options, for the plot's title
+
+# An option's value that means "no bound" (torusrt-sim --help): drawn apart, never at x = 0.
+UNBOUNDED = {"queue": ("0", "unbounded"), "memory-budget": ("0", "no limit")}
+# The unit of an option's bare number (torusrt-sim --help), for the plot's x label.
+OPTION_UNITS = {"queue": "packets per buffer", "link-us": "us per packet", "link-bytes-per-us": "bytes/us",
+                "packet-bytes": "bytes", "cluster": "processors per node", "quantum": "s", "cells": "per axis",
+                "ips": "nodes", "replicate": "fraction of a node's data", "max-depth": "levels",
+                "memory-budget": "bytes"}
+# The words for a JSON field on the plot's y axis (docs/report.md); other fields by their name,
+# with the unit their name ends in.
+FIELD_LABELS = {"sim_time_s": "image time (s, simulated)", "wall_s": "wall time (s)",
+                "efficiency_t1": "efficiency T(1)/(n T(n))", "efficiency_busy": "load balance busy/(n T(n))",
+                "t1_s": "T(1) (s, simulated)", "packets.created.total": "packets created",
+                "packets.forwarded": "packets handed between nodes",
+                "links.utilisation.mean": "mean link utilisation (fraction of the time)",
+                "links.utilisation.max": "busiest link's utilisation (fraction of the time)"}
+UNIT_SUFFIXES = (("_us", "us"), ("_s", "s"), ("_bytes", "bytes"))
 
 
 def parse_axis(text):
@@ -138,9 +156,11 @@ def plan(out, sim, scene, axes, fixed, listing):
         for f in files:
             for ext in ("json", "png", "log", "id"):
                 f[ext] = outs.add("--out", f[ext])
+    outs.add("--out", os.path.join(out, FACTS))
     outs.check()
     dry_run(sim, scene, names, combos[0], fixed)
     os.makedirs(points, exist_ok=True)
+    write_text(os.path.join(out, FACTS), json.dumps({"scene": scene, "fixed": list(fixed)}) + "\n", "--out")
     cache, rows, lines, done = {}, [["name"] + names], [], 0
     for k, (values, f) in enumerate(zip(combos, files), 1):
         name = point_name(names, values)
@@ -224,8 +244,51 @@ def collect(out, columns, y):
             status = report.get("status", "ok") if report else "failed"
             table.writerow(row[1:] + [status] + [text((report or {}).get(c)) for c in columns])
     if any(flat):
-        plot(out, names, points, flat, y)
+        plot(out, names, points, flat, y, read_facts(out))
     return failed
+
+
+def read_facts(out):
+    """The scene and fixed options plan() kept ({} for a folder without them)."""
+    try:
+        with open(os.path.join(out, FACTS)) as f:
+            return json.load(f)
+    except (OSError, ValueError):
+        return {}
+
+
+def option_label(name):
+    """The x label: the option and the unit of its values."""
+    unit = OPTION_UNITS.get(name)
+    return "--%s (%s)" % (name, unit) if unit else "--" + name
+
+
+def field_label(field):
+    """The y label: the field in words, with its unit."""
+    if field in FIELD_LABELS:
+        return FIELD_LABELS[field]
+    for suffix, unit in UNIT_SUFFIXES:
+        if field.endswith(suffix):
+            return "%s (%s)" % (field, unit)
+    return field
+
+
+def plot_title(facts, y, x):
+    """The scene and the fixed options (those every point shares), then what is drawn."""
+    scene = os.path.basename(facts.get("scene", "")) or "?"
+    fixed = " ".join(facts.get("fixed", []))
+    return "%s%s: %s against --%s" % (scene, ", " + fixed if fixed else "", FIELD_LABELS.get(y, y), x)
+
+
+def tics(values, free, free_x, free_label):
+    """gnuplot's tick list: each value of the axis at itself, and the unbounded one at free_x."""
+    marks = ['"%s" %s' % (v, v) for v in values] + (['"%s" %r' % (free_label, free_x)] if free else [])
+    return "(%s)" % ", ".join(marks)
+
+
+def spans_decade(values):
+    """Positive values whose largest is more than 10 times the smallest: a log axis."""
+    return bool(values) and min(values) > 0 and max(values) > 10 * min(values)
 
 
 def numeric(values):
@@ -236,24 +299,48 @@ def numeric(values):
         return False
 
 
-def plot(out, names, points, flat, y):
-    """OUT/sweep.png: the first axis on x, one line per combination of the other axes."""
+def plot(out, names, points, flat, y, facts):
+    """OUT/sweep.png: the first axis on x, one line per combination of the other axes. A value
+    that means "no bound" (--queue 0) is drawn apart, right of the others and not joined to them;
+    an axis whose positive values span more than 10x is logarithmic."""
     dat = os.path.join(out, "plot-data")
     os.makedirs(dat, exist_ok=True)
     xs = list(dict.fromkeys(row[1] for row in points))
-    is_numeric = numeric(xs)
-    series = {}
+    free, free_label = UNBOUNDED.get(names[0], (None, None))
+    bounded = [x for x in xs if x != free]
+    is_numeric = numeric(bounded)
+    if not is_numeric:  # named values: one tick each, in order, the unbounded one among them
+        free, bounded = None, xs
+    logx = is_numeric and spans_decade([float(x) for x in bounded])
+    # where the unbounded value is drawn: a step beyond the largest value
+    if is_numeric and free in xs:
+        top = max([float(x) for x in bounded] or [1.0])
+        free_x = top * 4 if logx else top + max(1.0, (top - min([float(x) for x in bounded] or [0.0])) / 4)
+    else:
+        free_x = 0
+    series, apart = {}, {}
     for row, report in zip(points, flat):
         if report and report.get(y) is not None:
-            series.setdefault(tuple(row[2:]), []).append((xs.index(row[1]), row[1], report[y]))
-    ys = [v for rows in series.values() for _, _, v in rows]
-    titles = []
-    for i, (combo, rows) in enumerate(sorted(series.items()), 1):
-        write_dat(os.path.join(dat, "series-%d.dat" % i), rows)
+            combo, x = tuple(row[2:]), row[1]
+            if x == free:
+                apart[combo] = (xs.index(x), free_x, report[y])
+            else:
+                series.setdefault(combo, []).append((xs.index(x), x, report[y]))
+    ys = [v for rows in series.values() for _, _, v in rows] + [v for _, _, v in apart.values()]
+    titles, apart_rows = [], []
+    for i, combo in enumerate(sorted(set(series) | set(apart)), 1):
+        write_dat(os.path.join(dat, "series-%d.dat" % i), series.get(combo, []))
+        if combo in apart:
+            apart_rows.append((i,) + apart[combo][1:])
         titles.append(",".join("%s=%s" % (n, v) for n, v in zip(names[1:], combo)) or y)
+    write_dat(os.path.join(dat, "apart.dat"), apart_rows)  # series number, x, y
+    numbers = [v for v in ys if isinstance(v, (int, float)) and not isinstance(v, bool)]
     gnuplot("sweep.gp", {"dat": dat, "out": os.path.join(out, "sweep.png"), "nseries": len(titles),
                          "titles": " ".join(t.replace(" ", "_") for t in titles), "numeric": int(is_numeric),
-                         "xname": names[0], "yname": y,
+                         "xlabel": option_label(names[0]), "ylabel": field_label(y),
+                         "title": plot_title(facts, y, names[0]).replace("'", ""),
+                         "logx": int(logx), "logy": int(spans_decade(numbers) and len(numbers) == len(ys)),
+                         "free": int(free in xs), "xtics": tics(bounded, free in xs, free_x, free_label) if is_numeric else "",
                          "ymin0": int(all(isinstance(v, (int, float)) and v >= 0 for v in ys))})
 
 

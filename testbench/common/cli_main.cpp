@@ -39,6 +39,24 @@ std::string empty_value_option(const CLI::App &app, int argc, char **argv)
     return "";
 }
 
+// The first option on the command line followed by another option where its value should be
+// ("--ips --map cost"), which CLI11 would report as "cost" not expected; "" if none. Its value
+// is the next word unless given with "=".
+std::string missing_value_option(const CLI::App &app, int argc, char **argv)
+{
+    for (int i = 1; i + 1 < argc; i++) {
+        std::string arg = argv[i];
+        if (arg == "--") break;
+        if (arg.size() < 2 || arg[0] != '-' || arg.find('=') != std::string::npos) continue;
+        const CLI::Option *o = app.get_option_no_throw(arg);
+        if (o == nullptr || o->get_expected_max() == 0) continue;  // not an option, or a flag
+        std::string next = argv[i + 1];
+        if (next.size() < 2 || next[0] != '-') continue;
+        if (app.get_option_no_throw(next.substr(0, next.find('='))) != nullptr) return arg + " " + next;
+    }
+    return "";
+}
+
 // A message as printed: control bytes escaped as \xNN (the user's bytes in it are quoted with
 // shown_text already; this keeps any that were not from reaching the terminal raw); its line
 // breaks stay.
@@ -113,6 +131,15 @@ int run_cli(const char *program, CLI::App &app, int argc, char **argv, const std
     std::string empty = empty_value_option(app, argc, argv);
     if (!empty.empty()) {
         std::fprintf(stderr, "%s: %s: an empty value\nRun with --help for more information.\n", program, empty.c_str());
+        return 2;
+    }
+    std::string missing = missing_value_option(app, argc, argv);
+    if (!missing.empty()) {
+        size_t space = missing.find(' ');
+        std::fprintf(stderr,
+                     "%s: %s: missing its value (the next word, %s, is an option)\nRun with --help for more "
+                     "information.\n",
+                     program, missing.substr(0, space).c_str(), printable(missing.substr(space + 1)).c_str());
         return 2;
     }
     try {

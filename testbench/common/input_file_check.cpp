@@ -19,7 +19,7 @@ CLI::Validator input_file_check(size_t max_bytes)
             std::free(text);
             return "";
         },
-        "FILE");
+        "");  // no description: the help shows the option's own type name alone ("FILE", not "FILE:FILE")
 }
 
 }  // namespace torusrt

@@ -53,6 +53,12 @@ CLI::Option *add_spec_option(CLI::App &app, const OptionSpec &spec)
     return opt;
 }
 
+void retitle_group(CLI::App &app, const std::string &from, const std::string &to)
+{
+    for (CLI::Option *opt : app.get_options())
+        if (opt->get_group() == from) opt->group(to);
+}
+
 std::map<std::string, std::string> given_options(const CLI::App &app)
 {
     std::map<std::string, std::string> given;

@@ -19,6 +19,9 @@ constexpr size_t kHelpColumns = 100;
 // set it) exactly when it has a machine-file key.
 CLI::Option *add_spec_option(CLI::App &app, const OptionSpec &spec);
 
+// Every option of `app` in the help group `from` moved to the group `to` (a heading of its own).
+void retitle_group(CLI::App &app, const std::string &from, const std::string &to);
+
 // `text` wrapped at spaces into lines of at most `width` characters, joined by '\n'.
 std::string wrapped(const std::string &text, size_t width);
 

@@ -71,6 +71,56 @@ TEST(LoadMap, EveryPartOfThePictureIsUsed)
     rt_canvas_free(c);
 }
 
+// A 24^3 grid over 16 nodes with uneven work, drawn with `caption` (nullptr: none).
+static rt_canvas *uneven_map(const char *caption)
+{
+    const int d[3] = {24, 24, 24};
+    std::vector<double> work(24 * 24 * 24);
+    std::vector<int32_t> owner(work.size());
+    for (size_t i = 0; i < work.size(); i++) {
+        work[i] = static_cast<double>(i % 97) * 100;
+        owner[i] = static_cast<int32_t>(i % 16);
+    }
+    return rt_load_map_draw_replicas(d, work.data(), owner.data(), nullptr, 16, caption);
+}
+
+TEST(LoadMap, TheCaptionNamesTheRunAcrossTheTop)
+{
+    const char *caption = "paper-image1.nff, 4x4x4 torus, cost mapping";
+    rt_canvas *c = uneven_map(caption);
+    ASSERT_NE(c, nullptr);
+    rt_canvas *alone = rt_canvas_new(c->width, c->height);  // the caption's letters on white
+    ASSERT_NE(alone, nullptr);
+    const uint8_t black[3] = {0, 0, 0};
+    rt_canvas_text(alone, 4, 4, 2, caption, black);
+    size_t letters = 0, same = 0, strip = static_cast<size_t>(c->width) * 16;
+    for (size_t i = 0; i < strip * 3; i += 3) {
+        letters += alone->rgb[i] == 0;
+        same += c->rgb[i] == alone->rgb[i] && c->rgb[i + 1] == alone->rgb[i + 1] && c->rgb[i + 2] == alone->rgb[i + 2];
+    }
+    EXPECT_GT(letters, 100u);
+    EXPECT_EQ(same, strip) << "the top 16 rows hold the caption and nothing else";
+    rt_canvas_free(alone);
+    rt_canvas_free(c);
+}
+
+TEST(LoadMap, TheNodeChartIsLabelledAtEachQuarter)
+{
+    rt_canvas *c = uneven_map(nullptr);
+    ASSERT_NE(c, nullptr);
+    // The chart takes the 160 rows above the last 20; its value labels sit left of its axis (x
+    // 55). Runs of rows with ink there: 0, a quarter, a half, three quarters and the busiest.
+    int runs = 0;
+    bool inked_before = false;
+    for (uint32_t y = c->height - 190; y < c->height - 14; y++) {
+        bool inked = drawn(c, 0, y, 50, y + 1) > 0;
+        runs += inked && !inked_before;
+        inked_before = inked;
+    }
+    EXPECT_EQ(runs, 5);
+    rt_canvas_free(c);
+}
+
 TEST(LoadMap, AnEmptyGridDrawsNothing)
 {
     const int d[3] = {0, 4, 4};

@@ -185,6 +185,12 @@ std::vector<MachineOption> network_options()
     };
 }
 
+// --link-us acts only while no bandwidth sets the link time.
+const char *needs_no_bandwidth(const MachineConfig &m)
+{
+    return timing_value(m.timing, "link_bytes_per_us") > 0 ? "--link-bytes-per-us 0 (it sets the link time)" : nullptr;
+}
+
 // Machine options of the timing (profile, file, link, step limits, style), in dump order.
 std::vector<MachineOption> timing_options()
 {
@@ -226,7 +232,8 @@ std::vector<MachineOption> timing_options()
                                  2);
              set_timing(s, m.timing, "link", us);
          },
-         [](const MachineConfig &m) { return number_text(timing_value(m.timing, "link")); }},
+         [](const MachineConfig &m) { return number_text(timing_value(m.timing, "link")); },
+         needs_no_bandwidth},
         {{"--packet-bytes", "BYTES", K::real, "28", 0, kMaxTimingUs, "bytes", "packet size on the wire", G::machine,
           "packet-bytes"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
@@ -280,6 +287,9 @@ MachineOption layout_option(const char *name, const char *fallback, int min, con
             [](const MachineConfig &m) { return std::to_string(m.memory_layout.*Field); }};
 }
 
+// An option of the cluster bus and its memory: it acts only with processors sharing a node.
+const char *clustered_only(const MachineConfig &m) { return m.cluster > 1 ? nullptr : "--cluster above 1"; }
+
 // Machine options of clusters and the memory accounting, in dump order.
 std::vector<MachineOption> cluster_options()
 {
@@ -297,19 +307,22 @@ std::vector<MachineOption> cluster_options()
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
              m.data = value_named(s.long_name(), t, kDataModeNames);
          },
-         [](const MachineConfig &m) { return std::string(data_mode_name(m.data)); }},
+         [](const MachineConfig &m) { return std::string(data_mode_name(m.data)); },
+         clustered_only},
         {{"--arbiter", "KIND", K::text, "round-robin", 0, 0, "",
           "cluster bus arbiter: " + listed(arbiter_policy_names()), G::machine, "arbiter"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
              m.arbiter = registered_name(s.long_name(), t, arbiter_policy_names());
          },
-         [](const MachineConfig &m) { return m.arbiter; }},
+         [](const MachineConfig &m) { return m.arbiter; },
+         clustered_only},
         {{"--dispatch", "KIND", K::text, "round-robin", 0, 0, "",
           "cluster packet dispatch: " + listed(dispatch_policy_names()), G::machine, "dispatch"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
              m.dispatch = registered_name(s.long_name(), t, dispatch_policy_names());
          },
-         [](const MachineConfig &m) { return m.dispatch; }},
+         [](const MachineConfig &m) { return m.dispatch; },
+         clustered_only},
         layout_option<&rt_memory_layout::cell_header_bytes>("--cell-header-bytes", "4", 0,
                                                             "memory accounting: bytes per cell list"),
         layout_option<&rt_memory_layout::list_entry_bytes>("--list-entry-bytes", "4", 1,
@@ -357,7 +370,8 @@ std::vector<MachineOption> mapping_file_options()
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
              m.replica_choice = value_named(s.long_name(), t, kReplicaRuleNames);
          },
-         [](const MachineConfig &m) { return std::string(replica_rule_name(m.replica_choice)); }},
+         [](const MachineConfig &m) { return std::string(replica_rule_name(m.replica_choice)); },
+         [](const MachineConfig &m) { return m.replicate > 0 ? nullptr : "--replicate above 0"; }},
     };
 }
 

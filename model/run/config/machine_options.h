@@ -23,6 +23,10 @@ struct MachineOption {
     void (*read)(const OptionSpec &spec, const std::string &text, MachineConfig &machine);
     // The text that reads back to the same setting.
     std::string (*write)(const MachineConfig &machine);
+    // When the option changes nothing in `machine`: what it would need ("--cluster > 1"), else
+    // nullptr; no function: it always acts. The validator warns of such an option given on the
+    // command line (idle_option_warnings).
+    const char *(*needs)(const MachineConfig &machine) = nullptr;
 };
 
 // Every machine option, in --dump-config's order.

@@ -50,7 +50,8 @@ std::vector<RunOption> make_table()
           "trace only these nodes, e.g. 0,1,5 (default all)", G::tracing, ""},
          [](const OptionSpec &s, const std::string &t, SimRequest &r) {
              r.config.trace_ips = parse_integer_list(s.long_name(), t, 0, kMaxNodes - 1);
-         }},
+         },
+         [](const SimConfig &c) { return c.vcd_path.empty() ? "--vcd" : nullptr; }},
         {{"--remap", "POLICY", K::text, "static", 0, 0, "",
           "mapping across the frames: static (the first frame's), every-frame, adaptive or oracle", G::animation, ""},
          [](const OptionSpec &, const std::string &t, SimRequest &r) { r.remap = parse_remap_policy(t); }},

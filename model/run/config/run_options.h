@@ -17,6 +17,9 @@ struct RunOption {
     OptionSpec spec;
     // Sets the request from the option's text (UserError naming the option, exit 2).
     void (*read)(const OptionSpec &spec, const std::string &text, SimRequest &request);
+    // When the option changes nothing in the run `config` asks for: what it would need ("--vcd"),
+    // else nullptr; no function: it always acts (see MachineOption::needs).
+    const char *(*needs)(const SimConfig &config) = nullptr;
 };
 
 // Every run option, in the help's order.

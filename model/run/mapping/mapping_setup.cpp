@@ -11,6 +11,7 @@
 #include "rt_load_image.h"
 #include "rt_map_file.h"
 #include "rt_mapping.h"
+#include "rt_text.h"
 #include "user_error.h"
 
 namespace torusrt {
@@ -124,6 +125,24 @@ void write_mapping(const SimConfig &config, const rt_grid *grid, const std::stri
     });
 }
 
+// The load map's caption: the scene's file name, the machine and its mapping, in the picture's
+// letters (printable ASCII; other bytes as \xNN).
+std::string load_map_caption(const SimConfig &config)
+{
+    const std::string &scene = config.scene_path;
+    std::string base = scene.substr(scene.find_last_of('/') == std::string::npos ? 0 : scene.find_last_of('/') + 1);
+    char shown[128];
+    rt_escape_bytes(base.data(), base.size(), 1, shown, sizeof shown);
+    std::string machine = std::to_string(config.ips[0]) + "x" + std::to_string(config.ips[1]) + "x" +
+                          std::to_string(config.ips[2]) + " " + topology_name(config.topology);
+    if (config.cluster > 1) machine += ", " + std::to_string(config.cluster) + " processors per node";
+    std::string mapping = mapping_name(config.mapping);
+    if (config.mapping == RT_MAP_BLOCK_CYCLIC || (config.mapping == RT_MAP_COST && config.block > 1))
+        mapping += ":" + std::to_string(config.block);
+    if (config.replicate > 0) mapping += ", replicated cells";
+    return std::string(shown) + ", " + machine + ", " + mapping + " mapping";
+}
+
 void write_load_map(const SimConfig &config, rt_scene *scene, const rt_grid *grid, const std::string &path,
                     const std::string &shown)
 {
@@ -139,8 +158,8 @@ void write_load_map(const SimConfig &config, rt_scene *scene, const rt_grid *gri
         write_stream_file(path, shown, "--load-map", [&](FILE *fp, char *why, size_t why_len) {
             rt_replicas replicas = config.replica_table();
             return rt_load_map_write_replicas(fp, shown.c_str(), pilot.dims, pilot.work_us, config.owner_table.data(),
-                                              config.replicated() ? &replicas : nullptr, config.node_count(), why,
-                                              why_len);
+                                              config.replicated() ? &replicas : nullptr, config.node_count(),
+                                              load_map_caption(config).c_str(), why, why_len);
         });
     } catch (...) {
         rt_cost_pilot_release(&pilot);

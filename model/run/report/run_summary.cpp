@@ -32,14 +32,30 @@ template <typename T, typename F> Spread spread(const std::vector<T> &items, F v
     return s;
 }
 
-// The network as the summary's system line names it: a torus with an even ring says how it breaks ties.
+// The network as the summary's system line names it: its shape, a ring or line when only one
+// dimension has more than one node ("16x1x1 torus: a ring of 16"), and for a torus with an even
+// ring how it breaks ties.
 std::string network_text(const SimConfig &c)
 {
     bool even_ring = false;
-    for (int p : c.ips) even_ring = even_ring || (p >= 2 && p % 2 == 0);
-    std::string name = topology_name(c.topology);
-    if (c.topology != Topology::torus || !even_ring) return name;
+    int long_dims = 0;
+    for (int p : c.ips) {
+        even_ring = even_ring || (p >= 2 && p % 2 == 0);
+        long_dims += p > 1;
+    }
+    bool torus = c.topology == Topology::torus;
+    std::string name = std::to_string(c.ips[0]) + "x" + std::to_string(c.ips[1]) + "x" + std::to_string(c.ips[2]) +
+                       " " + topology_name(c.topology);
+    if (long_dims == 1) name += (torus ? ": a ring of " : ": a line of ") + std::to_string(c.node_count());
+    if (!torus || !even_ring) return name;
     return name + " (ties " + route_ties_name(c.route_ties) + ")";
+}
+
+// The processors of a node as the system line gives them: one, or a cluster and its data.
+std::string node_text(const SimConfig &c)
+{
+    if (c.cluster == 1) return "1 processor per node";
+    return std::to_string(c.cluster) + " processors per node, " + data_mode_name(c.data) + " data";
 }
 
 // The machine as the summary's system line gives it: timing style, buffers and flow control.
@@ -119,10 +135,9 @@ void print_summary(const RunReport &r, std::FILE *out)
     std::fprintf(out, "torusrt-sim: %s (%ux%u, %llu objects, %llu lights)\n", c.scene_path.c_str(), r.width, r.height,
                  static_cast<unsigned long long>(r.objects), static_cast<unsigned long long>(r.lights));
     std::fprintf(out,
-                 "  system       %dx%dx%d %s, %s mapping, %d processor(s) per node, %s data,\n"
+                 "  system       %s, %s mapping, %s,\n"
                  "               %s\n",
-                 c.ips[0], c.ips[1], c.ips[2], network_text(c).c_str(), mapping_name(c.mapping), c.cluster,
-                 data_mode_name(c.data), machine_text(c).c_str());
+                 network_text(c).c_str(), mapping_name(c.mapping), node_text(c).c_str(), machine_text(c).c_str());
     if (r.frames.empty())
         std::fprintf(out, "  image time   %s s simulated   (T(1) %s s, %s)\n", sig4(T).c_str(), sig4(f.t1_s).c_str(),
                      f.t1_source.c_str());
