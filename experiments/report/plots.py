@@ -116,8 +116,10 @@ def reproduction(res):
             os.remove(os.path.join(out, "fig%d.png" % f))
     lo, hi = paper.MEMORY_RATIO_AT_16
     # Solid lines: the default reading; dashed: the next one (the reading before the fit).
+    # The load-balancing points run each reading's own interleave (run_facts.csv's lb_map).
     common = {"dat": dat, "scenes": " ".join(r.scenes), "main": r.profile,
-              "other": all_r[1].profile if len(all_r) > 1 else r.profile}
+              "other": all_r[1].profile if len(all_r) > 1 else r.profile,
+              "lb_main": r.facts.lb_map, "lb_other": all_r[1].facts.lb_map if len(all_r) > 1 else r.facts.lb_map}
     flat = dict(common, maps=" ".join(flat_data(all_r, dat)),
                 xmax=1.3 * max((int(row["n"]) for row in r.f56.rows), default=1))
     titles = {
