@@ -354,10 +354,30 @@ def exit_on_signals():
             signal.signal(sig, leave)
 
 
+def check_outputs(argv):
+    """`output_files.py --check-outputs OUT... -- COMMAND...`: exit 2, naming both, when an OUT is
+    a file COMMAND names (named_files) or the file of another OUT; 0 otherwise."""
+    import sys
+    split = argv.index("--") if "--" in argv else len(argv)
+    outs = OutputSet()
+    for option, path in named_files(argv[split + 1:]):
+        outs.add_input(option, path)
+    try:
+        for path in argv[:split]:
+            outs.add("output", path)
+        outs.check()
+    except OutputError as e:
+        print("run_point: %s" % e, file=sys.stderr)
+        return 2
+    return 0
+
+
 def main(argv):
     """`python3 output_files.py FILE [OPTION]`: standard input into FILE under these rules, for
     the shell scripts (exit 2 when FILE is refused, naming OPTION; 1 when the write fails)."""
     import sys
+    if argv[:1] == ["--check-outputs"]:
+        return check_outputs(argv[1:])
     if len(argv) not in (1, 2):
         print("usage: output_files.py FILE [OPTION] < TEXT", file=sys.stderr)
         return 2
