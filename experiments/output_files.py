@@ -8,7 +8,11 @@ outputs (support/output_files.cpp; docs/cli.md, "Input and output files"):
 - a name that is a symbolic link is followed to the file it names (the temporary goes beside
   that file and is renamed onto it), so the link itself is never replaced;
 - a folder, a FIFO, a device or a socket is refused as an output, before anything is written,
-  with a message naming the option and the file;
+  with a message naming the option and the file; so is a name that reaches its file through
+  /proc or /dev/fd (/dev/stdout, /dev/stderr: a stream the shell opened, which a rename would
+  replace instead of writing at the stream's position);
+- an input (read_text, read_bytes) must be a regular file: a FIFO or a device is refused before
+  anything is read, and a text that is not UTF-8 is refused, each naming the file;
 - OutputSet checks a command's outputs before it runs: none may be one of its inputs nor the
   file of another output, also through another spelling of the name or a hard link.
 
@@ -49,12 +53,30 @@ def _stat(path):
         return None
 
 
+def _through_stream(path, depth=0):
+    """True when PATH, its links followed one by one, passes through /proc or /dev/fd: a file a
+    process holds open (standard output, a pipe), not a name in a folder."""
+    parts = os.path.normpath(os.path.abspath(path)).split(os.sep)[1:]
+    here = os.sep
+    for i, part in enumerate(parts):
+        here = os.path.join(here, part)
+        if here in ("/proc", "/dev/fd") or here.startswith(("/proc/", "/dev/fd/")):
+            return True
+        if depth < 40 and os.path.islink(here):
+            rest = os.sep.join(parts[i + 1:])
+            return _through_stream(os.path.join(os.path.dirname(here), os.readlink(here), rest), depth + 1)
+    return False
+
+
 def target(option, path):
     """The file PATH writes, a link followed to what it names; OutputError (naming OPTION) when
     it is empty, a folder, a FIFO, a device or a socket, or its folder does not exist."""
     what = "%s '%s'" % (option, path)
     if not path:
         raise OutputError("%s: an empty file name" % option)
+    if _through_stream(path):
+        raise OutputError("%s: is a stream or a file another process holds open (through /proc or /dev/fd), "
+                          "not a file these tools can replace; name a file" % what)
     real = os.path.realpath(path)
     try:
         st = _stat(real)
@@ -244,10 +266,65 @@ class OutputSet:
                 files[key] = what
 
 
+def input_file(path, what):
+    """Refuses (OSError naming WHAT and PATH) an input that is missing, a folder, a FIFO or a
+    device, before anything is read: a device may never end, a FIFO may never open."""
+    try:
+        st = os.stat(path)
+    except OSError as e:
+        raise OSError("%s '%s': %s" % (what, path, e.strerror)) from None
+    if stat.S_ISDIR(st.st_mode):
+        raise OSError("%s '%s': is a folder, not a file" % (what, path))
+    if not stat.S_ISREG(st.st_mode):
+        raise OSError("%s '%s': is a %s, not a regular file" % (what, path, _kind(st.st_mode)))
+
+
+def read_text(path, what="input"):
+    """The UTF-8 text of the regular file PATH; OSError or ValueError naming WHAT and PATH."""
+    input_file(path, what)
+    with open(path, "rb") as f:
+        data = f.read()
+    try:
+        return data.decode("utf-8")
+    except UnicodeDecodeError as e:
+        raise ValueError("%s '%s': not UTF-8 text (byte %d)" % (what, path, e.start)) from None
+
+
+# The output options of torusrt-sim and torusrt-render: a tool that runs several commands with
+# the same fixed options would write each of them into one file from every command.
+OUTPUT_OPTIONS = ("-o", "--output", "--stats", "--vcd", "--write-map", "--load-map", "--frames-csv",
+                  "--cost-image")
+
+
+def output_options(words):
+    """The output options among WORDS (OPTION or OPTION=FILE), in order."""
+    return [w.partition("=")[0] for w in words
+            if w.partition("=")[0] in OUTPUT_OPTIONS and (w.startswith("--") or w == "-o")]
+
+
+def machine_file_inputs(path):
+    """(key, path) of every value of the machine file PATH (torusrt-sim --config) that names an
+    existing regular file (timing, map-file, ...), a relative one taken from the machine file's
+    folder as torusrt-sim takes it. A file that cannot be read gives none (torusrt-sim names it)."""
+    from report.machine_file import read_machine_file
+    try:
+        values = read_machine_file(read_text(path, "--config"), path)
+    except (OSError, ValueError):
+        return []
+    folder = os.path.dirname(os.path.abspath(path))
+    found = []
+    for key, value in values.items():
+        named = os.path.join(folder, value) if value else ""
+        if named and _identity(named) is not None:
+            found.append(("--config %s's %s" % (path, key), named))
+    return found
+
+
 def named_files(words):
     """(option, path) of each word of a command line that names an existing regular file, the
     option being the word before it (or OPTION of OPTION=PATH; "the argument" for a word after
-    no option): the inputs a command's outputs are checked against."""
+    no option), and of every file a --config machine file names: the inputs a command's outputs
+    are checked against, and what makes a sweep point besides its command line."""
     found = []
     for i, word in enumerate(words):
         option, eq, value = word.partition("=")
@@ -255,7 +332,12 @@ def named_files(words):
             found.append((option, value))
         elif _identity(word) is not None:
             before = words[i - 1] if i > 0 else ""
-            found.append((before if before.startswith("-") else "argument", word))
+            option, value = (before if before.startswith("-") else "argument"), word
+            found.append((option, value))
+        else:
+            continue
+        if option == "--config":
+            found += machine_file_inputs(value)
     return found
 
 
@@ -272,10 +354,30 @@ def exit_on_signals():
             signal.signal(sig, leave)
 
 
+def check_outputs(argv):
+    """`output_files.py --check-outputs OUT... -- COMMAND...`: exit 2, naming both, when an OUT is
+    a file COMMAND names (named_files) or the file of another OUT; 0 otherwise."""
+    import sys
+    split = argv.index("--") if "--" in argv else len(argv)
+    outs = OutputSet()
+    for option, path in named_files(argv[split + 1:]):
+        outs.add_input(option, path)
+    try:
+        for path in argv[:split]:
+            outs.add("output", path)
+        outs.check()
+    except OutputError as e:
+        print("run_point: %s" % e, file=sys.stderr)
+        return 2
+    return 0
+
+
 def main(argv):
     """`python3 output_files.py FILE [OPTION]`: standard input into FILE under these rules, for
     the shell scripts (exit 2 when FILE is refused, naming OPTION; 1 when the write fails)."""
     import sys
+    if argv[:1] == ["--check-outputs"]:
+        return check_outputs(argv[1:])
     if len(argv) not in (1, 2):
         print("usage: output_files.py FILE [OPTION] < TEXT", file=sys.stderr)
         return 2

@@ -9,7 +9,8 @@
 # exactly when OUT.json exists. If OUT.json already exists the point is skipped. On failure the
 # simulator's messages are kept in OUT.log and the exit status is non-zero. A name that is a
 # link is followed to its file (the link kept); a folder, a FIFO or a device as OUT.json,
-# OUT.png or OUT.log is refused (exit 2).
+# OUT.png or OUT.log, or any of them naming a file of the command (the scene, a --timing file, a
+# file a --config machine file names), is refused (exit 2) before the command runs.
 set -uo pipefail
 out=${1:?usage: run_point.sh OUT.json [--t1-from T1.json] -- COMMAND...}
 shift
@@ -37,6 +38,11 @@ for f in "$json" "$png" "$log"; do
         exit 2
     fi
 done
+# None of them may be a file the command reads (a word naming a file, or FILE of --option=FILE,
+# and the files a --config machine file names): the point would write over its own input.
+if ! python3 "$(dirname "${BASH_SOURCE[0]}")/output_files.py" --check-outputs "$json" "$png" "$log" -- "$@"; then
+    exit 2
+fi
 if [ -s "$json" ] && jq -e '.sim_time_s' "$json" >/dev/null 2>&1; then
     echo "skip $out (done)"
     exit 0

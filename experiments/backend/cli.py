@@ -7,7 +7,7 @@ import signal
 import sys
 import time
 
-from output_files import OutputError, append_text, target, write_lines
+from output_files import OutputError, OutputSet, append_text, input_file, write_lines
 
 from . import local, points, slurm, task
 
@@ -78,8 +78,14 @@ def report_failures(state, pending, status):
 
 def run(args):
     kind, hostfile = parse_backend(args.backend)
-    if args.runs:  # refused before any point runs, not after
-        target("--runs", args.runs)
+    for f in args.lists:  # a device may never end, a FIFO never open: refused before reading
+        input_file(f, "the point list")
+    if args.runs:  # refused before any point runs, not after: not a list, not a stream
+        outs = OutputSet()
+        for f in args.lists:
+            outs.add_input("point list", f)
+        outs.add("--runs", args.runs)
+        outs.check()
     state = os.path.abspath(args.state)
     os.makedirs(os.path.join(state, "logs"), exist_ok=True)
     phases = [points.read(os.path.abspath(f)) for f in args.lists]

@@ -3,7 +3,7 @@ are to run, where each one's output goes, and what the last run left failed."""
 import os
 import shlex
 
-from output_files import write_lines
+from output_files import read_text, write_lines
 
 
 class Point:
@@ -30,17 +30,15 @@ class Point:
 def read(path):
     """The points of a list file: 'DONE<TAB>COMMAND' per line; blank lines and '#' lines skipped."""
     points = []
-    with open(path) as f:
-        for number, line in enumerate(f, 1):
-            line = line.rstrip("\n")
-            if not line.strip() or line.startswith("#"):
-                continue
-            done, tab, command = line.partition("\t")
-            if not tab or not done or not command.strip():
-                raise ValueError("%s:%d: expected DONE-FILE<TAB>COMMAND" % (path, number))
-            if not os.path.isabs(done):
-                raise ValueError("%s:%d: the done file must be an absolute path, not '%s'" % (path, number, done))
-            points.append(Point(done, command, "%s:%d" % (path, number)))
+    for number, line in enumerate(read_text(path, "the point list").split("\n"), 1):
+        if not line.strip() or line.startswith("#"):
+            continue
+        done, tab, command = line.partition("\t")
+        if not tab or not done or not command.strip():
+            raise ValueError("%s:%d: expected DONE-FILE<TAB>COMMAND" % (path, number))
+        if not os.path.isabs(done):
+            raise ValueError("%s:%d: the done file must be an absolute path, not '%s'" % (path, number, done))
+        points.append(Point(done, command, "%s:%d" % (path, number)))
     return points
 
 

@@ -16,6 +16,9 @@ JOBS=1 quick=0 build=$BUILD out=
 while [ $# -gt 0 ]; do
   if backend_option "$@"; then shift "$SHIFT"; continue; fi
   case $1 in
+    --build|--results) [ $# -ge 2 ] && [ -n "$2" ] || die "$1 needs a folder, not an empty name" ;;
+  esac
+  case $1 in
     --quick) quick=1 ;;
     --build) build=$2; shift ;;
     --results) out=$2; shift ;;

@@ -25,7 +25,7 @@ build=$BUILD JOBS=2 only="" res=$here/results
 while [ $# -gt 0 ]; do
     if backend_option "$@"; then shift "$SHIFT"; continue; fi
     case $1 in
-        --build|--stage|--results) [ $# -ge 2 ] || die "$1 needs a value" ;;
+        --build|--stage|--results) [ $# -ge 2 ] && [ -n "$2" ] || die "$1 needs a value (not an empty one)" ;;
     esac
     case $1 in
         --build) build=$2; shift 2 ;;

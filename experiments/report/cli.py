@@ -5,7 +5,7 @@ import os
 import subprocess
 import sys
 
-from output_files import OutputError, OutputSet, exit_on_signals
+from output_files import OutputError, OutputSet, exit_on_signals, read_text
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
@@ -116,16 +116,18 @@ def compare(args):
 def machine(args):
     import json
     from . import machine_file as mf
-    with open(args.report) as f:
-        try:
-            pairs = mf.from_report(json.load(f))
-        except ValueError as e:  # not JSON, or no machine in it: name the report
-            raise ValueError("%s: %s" % (args.report, e))
+    text = read_text(args.report, "report")  # a device or a FIFO refused before reading, naming it
+    try:
+        report = json.loads(text)
+        if not isinstance(report, dict):
+            raise ValueError("not a JSON report (a %s, not an object)" % type(report).__name__)
+        pairs = mf.from_report(report)
+    except ValueError as e:  # not JSON, or no machine in it: name the report
+        raise ValueError("%s: %s" % (args.report, e))
     if not args.compare:
         sys.stdout.write(mf.toml_text(pairs))
         return 0
-    with open(args.compare) as f:
-        diff = mf.differences(pairs, mf.read_machine_file(f.read(), args.compare))
+    diff = mf.differences(pairs, mf.read_machine_file(read_text(args.compare, "--compare"), args.compare))
     for line in diff:
         print("machine: %s" % line, file=sys.stderr)
     print("machine: %s and %s: %s" % (args.report, args.compare,

@@ -5,10 +5,11 @@ A point without a JSON is still a row, with status "failed" (its .log exists) or
 empty figures: nothing is dropped silently. Every image is compared byte for byte with the
 one-processor image of its scene (image_identical)."""
 import csv
+import io
 import json
 import os
 
-from output_files import atomic
+from output_files import atomic, read_text
 
 from . import paper
 
@@ -81,8 +82,12 @@ def point_row(res, point):
     row = dict(point, processors=point["n"])  # n: every processor of the run (16 m for clusters)
     path, base = point["json"], os.path.splitext(point["json"])[0]
     if os.path.exists(path) and os.path.getsize(path) > 0:
-        with open(path) as f:
-            report = json.load(f)
+        try:
+            report = json.loads(read_text(path, "point JSON"))
+        except ValueError as e:
+            raise ValueError("%s: not a JSON report (%s)" % (path, e)) from None
+        if not isinstance(report, dict):
+            raise ValueError("%s: not a JSON report (a %s, not an object)" % (path, type(report).__name__))
         row["status"] = "ok"
         for name, paths in FIELDS.items():
             row[name] = next((json_text(v) for v in (lookup(report, p) for p in paths) if v is not None), "")
@@ -138,8 +143,15 @@ def write_csv(path, columns, rows, key):
 def collect(res):
     """Writes RES/fig5_6.csv, fig7.csv, fig8.csv and fig10_12.csv; returns (points, not ok,
     images differing from the one-processor image)."""
-    with open(os.path.join(res, "points.tsv"), newline="") as f:
-        points = [dict(zip(POINT_COLUMNS, line)) for line in csv.reader(f, delimiter="\t")]
+    table = os.path.join(res, "points.tsv")
+    points = []
+    for number, line in enumerate(csv.reader(io.StringIO(read_text(table, "points table"), newline=""),
+                                             delimiter="\t"), 1):
+        if len(line) < len(POINT_COLUMNS):  # a sweep's table (name, axes) is not the reproduction's
+            raise ValueError("%s:%d: %d columns, not the %d or more of the reproduction's point table (%s); "
+                             "experiments/sweep's folders are collected by the sweep itself"
+                             % (table, number, len(line), len(POINT_COLUMNS), ",".join(POINT_COLUMNS)))
+        points.append(dict(zip(POINT_COLUMNS, line)))
     rows = [derived(point_row(res, p)) for p in points]
     flat = [r for r in rows if r["fig"] == "fig5_6"]
     clusters = [r for r in rows if r["fig"] == "fig10_12"]

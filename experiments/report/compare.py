@@ -52,14 +52,21 @@ def figure_csvs(results):
 
 
 def compare(old_dir, new_dir, columns=None):
-    """(rows compared, difference lines) over every figure CSV of `old_dir`."""
+    """(rows compared, difference lines) over every figure CSV of either folder: a CSV that only
+    one folder holds is a difference; a folder that does not exist is an error (ValueError)."""
+    for folder in (old_dir, new_dir):
+        if not os.path.isdir(folder):
+            raise ValueError("%s: no such results folder" % folder)
     rows, diffs = 0, []
+    new_csvs = dict(figure_csvs(new_dir))
     for rel, path in figure_csvs(old_dir):
-        other = os.path.join(new_dir, rel)
-        if not os.path.exists(other):
+        other = new_csvs.pop(rel, None)
+        if other is None:
             diffs.append("%s: not in %s" % (rel, new_dir))
             continue
         old = Table.load(path)
         rows += len(old.rows)
         diffs += compare_tables(old, Table.load(other), columns)
+    for rel in sorted(new_csvs):
+        diffs.append("%s: not in %s" % (rel, old_dir))
     return rows, diffs

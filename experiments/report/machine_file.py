@@ -5,6 +5,7 @@ option names without dashes and their values as the options take them. A machine
 key="value" lines (the subset of TOML that --dump-config writes), in --dump-config's order,
 which the report gives as config.option_order.
 """
+import json
 import tomllib
 
 
@@ -17,7 +18,13 @@ def from_report(report):
     order = report["config"].get("option_order", [])
     rank = {key: i for i, key in enumerate(order)}
     keys = sorted(options, key=lambda k: rank.get(k, len(order)))
-    return [(str(k), str(options[k])) for k in keys]
+    for key in keys:  # torusrt-sim writes every value as a string, every key in option_order
+        if order and key not in rank:
+            raise ValueError("config.options.%s: not a machine option (not in config.option_order)" % key)
+        if not isinstance(options[key], str):
+            raise ValueError("config.options.%s: %s, not a value torusrt-sim writes (a string)"
+                             % (key, json.dumps(options[key])))
+    return [(str(k), options[k]) for k in keys]
 
 
 def toml_string(value):

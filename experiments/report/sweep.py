@@ -5,13 +5,14 @@ import hashlib
 import io
 import itertools
 import json
+import math
 import os
 import re
 import shlex
 import subprocess
 import sys
 
-from output_files import OutputSet, atomic, named_files, write_lines, write_text
+from output_files import OUTPUT_OPTIONS, OutputSet, atomic, named_files, output_options, read_text, write_lines, write_text
 
 from .plots import gnuplot, write_dat
 
@@ -42,9 +43,14 @@ def parse_axis(text):
     """'ips=1,2,4x2x2' -> ('ips', ['1', '2', '4x2x2'])."""
     name, sep, values = text.partition("=")
     name = name.lstrip("-")
-    items = [v for v in values.split(",") if v != ""]
-    if not sep or not re.fullmatch(r"[a-z0-9][a-z0-9-]*", name) or not items:
+    items = values.split(",")
+    if not sep or not re.fullmatch(r"[a-z0-9][a-z0-9-]*", name) or not values:
         raise ValueError("--axis '%s': expected OPTION=v1,v2,... (an option of torusrt-sim without its dashes)" % text)
+    if "" in items:
+        raise ValueError("--axis '%s': an empty value (value %d); write each value once, between commas"
+                         % (text, items.index("") + 1))
+    if "--" + name in OUTPUT_OPTIONS:
+        raise ValueError("--axis '%s': --%s is an output; the sweep writes each point's files itself" % (text, name))
     return name, items
 
 
@@ -87,14 +93,33 @@ def identity(sim, args, cache):
 REPORT_KEYS = {"status": str, "sim_time_s": (int, float), "config": dict}
 
 
+def _refuse_constant(name):
+    raise ValueError("%s is not a number a report holds" % name)
+
+
+def _not_finite(value):
+    """The first number of a JSON value that is not finite (1e999 reads as inf), else None."""
+    if isinstance(value, float) and not math.isfinite(value):
+        return value
+    items = value.values() if isinstance(value, dict) else value if isinstance(value, list) else ()
+    for item in items:
+        bad = _not_finite(item)
+        if bad is not None:
+            return bad
+    return None
+
+
 def read_report(path):
-    """A point's JSON report; ValueError naming PATH when it is not one (not JSON, not an
-    object, or without the keys every report has)."""
+    """A point's JSON report; ValueError naming PATH when it is not one (not a regular file, not
+    JSON, not an object, a number that is not finite, or without the keys every report has)."""
     try:
-        with open(path, errors="replace") as f:
-            report = json.load(f)
+        report = json.loads(read_text(path, "point JSON"), parse_constant=_refuse_constant)
+    except OSError as e:
+        raise ValueError("%s: not a JSON report (%s)" % (path, e))
     except ValueError as e:
         raise ValueError("%s: not a JSON report (%s)" % (path, e))
+    if _not_finite(report) is not None:
+        raise ValueError("%s: not a JSON report (a number that is not finite: %r)" % (path, _not_finite(report)))
     if not isinstance(report, dict):
         raise ValueError("%s: not a JSON report (a %s, not an object)" % (path, type(report).__name__))
     missing = [k for k, kind in REPORT_KEYS.items()
@@ -120,8 +145,11 @@ def is_done(files, ident):
     try:
         read_report(files["json"])
         with open(files["id"]) as f:
-            if f.read().strip() != ident:
-                why = "%s: made by another executable, scene, input file or command line" % files["json"]
+            made = f.read().split()
+        if made[:1] != [ident]:
+            why = "%s: made by another executable, scene, input file or command line" % files["json"]
+        elif made[1:] != [file_hash(files["json"], {})]:
+            why = "%s: not the JSON its run wrote (changed since)" % files["json"]
     except FileNotFoundError:
         why = "%s: made by another command (no identity file %s)" % (files["json"], files["id"])
     except ValueError as e:
@@ -143,6 +171,18 @@ def plan(out, sim, scene, axes, fixed, listing):
     (status deadlock); a failed one leaves none. Every output is checked first (output_files)."""
     names = [n for n, _ in axes]
     combos = list(itertools.product(*(v for _, v in axes)))
+    written = output_options(fixed)
+    if written:
+        raise ValueError("%s among the fixed options: every point would write it into one file; the sweep "
+                         "writes each point's image and JSON itself (DIR/points/)" % written[0])
+    seen = {}
+    for values in combos:
+        name = point_name(names, values)
+        if name in seen:
+            raise ValueError("--axis: the points %s and %s have one name, %s (a point's name keeps letters, "
+                             "digits and dots of its values); nothing was written"
+                             % (",".join(seen[name]), ",".join(values), name))
+        seen[name] = values
     outs = OutputSet()
     outs.add_input("scene", scene)
     words = list(fixed) + [w for n, vs in axes for v in vs for w in ("--" + n, v)]
@@ -178,7 +218,7 @@ def plan(out, sim, scene, axes, fixed, listing):
         lines.append(f["json"] + "\t" +
                      "{run} >{log} 2>&1; rc=$?; "
                      "if [ $rc -eq 0 ] || {{ [ $rc -eq 3 ] && [ -s {t} ]; }}; then "
-                     "echo {ident} >{i}.tmp && mv {i}.tmp {i} && mv {t} {j}; {p}: "
+                     "echo {ident} $(sha256sum <{t} | cut -d' ' -f1) >{i}.tmp && mv {i}.tmp {i} && mv {t} {j}; {p}: "
                      "$([ $rc -eq 0 ] && echo ok || echo deadlock); else rm -f {t}; {p}: failed; exit $rc; fi".format(
                          j=j, t=t, i=i, ident=ident, run=run, log=shlex.quote(f["log"]), p=progress))
     table = io.StringIO()

@@ -77,6 +77,19 @@ class Collect(unittest.TestCase):
         self.assertEqual(collect.collect(self.res)[2], 1)
         self.assertEqual(self.table("fig5_6")[2]["image_identical"], "no")
 
+    def test_a_sweep_folder_is_named_not_a_key_error(self):
+        with open(os.path.join(self.res, "points.tsv"), "w") as f:
+            f.write("name\tips\nips_1\t1\n")  # experiments/sweep's table
+        with self.assertRaisesRegex(ValueError, r"points.tsv:1: 2 columns, not the 9 or more"):
+            collect.collect(self.res)
+
+    def test_a_point_json_that_is_not_an_object_is_named(self):
+        path = os.path.join(self.res, "fig5_6", "image1-cyclic-n16.json")
+        with open(path, "w") as f:
+            f.write("[1]")
+        with self.assertRaisesRegex(ValueError, "%s: not a JSON report \\(a list" % path):
+            collect.collect(self.res)
+
     def test_number_spelling(self):
         self.assertEqual(collect.json_text(2.0), "2")
         self.assertEqual(collect.json_text(0.1), "0.1")

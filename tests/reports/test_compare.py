@@ -75,6 +75,18 @@ class Compare(unittest.TestCase):
         edit(os.path.join(self.new, FIG), change)
         self.assertEqual(compare.compare(RESULTS, self.new)[1], [])
 
+    def test_a_csv_on_either_side_only_is_a_difference(self):
+        os.remove(os.path.join(self.new, FIG))
+        for old, new in ((RESULTS, self.new), (self.new, RESULTS)):
+            _, diffs = compare.compare(old, new)
+            self.assertEqual(diffs, ["%s: not in %s" % (FIG, self.new)])
+
+    def test_a_missing_folder_is_an_error(self):
+        missing = os.path.join(self.tmp.name, "nonexistent")
+        for old, new in ((missing, RESULTS), (RESULTS, missing)):
+            with self.assertRaisesRegex(ValueError, "%s: no such results folder" % missing):
+                compare.compare(old, new)
+
 
 if __name__ == "__main__":
     unittest.main()

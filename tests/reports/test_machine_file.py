@@ -58,5 +58,14 @@ class MachineFile(unittest.TestCase):
                     cli.machine(types.SimpleNamespace(report=path, compare=None))
 
 
+    def test_a_value_that_is_not_a_string_or_an_unknown_key_is_refused(self):
+        with self.assertRaisesRegex(ValueError, r"config.options.map: null, not a value"):
+            mf.from_report({"config": {"options": {"ips": "2", "map": None}}})
+        with self.assertRaisesRegex(ValueError, r"config.options.ips: \[2, 2\], not a value"):
+            mf.from_report({"config": {"options": {"ips": [2, 2]}}})
+        with self.assertRaisesRegex(ValueError, "config.options.frob: not a machine option"):
+            mf.from_report({"config": {"options": {"ips": "2", "frob": "1"}, "option_order": ["ips"]}})
+
+
 if __name__ == "__main__":
     unittest.main()

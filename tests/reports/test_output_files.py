@@ -188,6 +188,28 @@ class Refused(Base):
         os.symlink(os.path.join("gone", "t.csv"), self.path("l.csv"))
         self.assert_refused(self.path("l.csv"), "folder '.*gone' does not exist")
 
+    def test_a_stream_through_proc_or_dev_fd(self):
+        os.symlink("/proc/self/fd/1", self.path("to_stdout"))
+        for name in ("/dev/stdout", "/dev/stderr", "/dev/fd/1", "/proc/self/fd/2", self.path("to_stdout")):
+            with self.assertRaisesRegex(of.OutputError, "is a stream or a file another process holds open"):
+                of.target("--out", name)
+
+    def test_an_input_must_be_a_regular_utf8_file(self):
+        os.mkfifo(self.path("fifo"))
+        for name, why in (("/dev/zero", "is a character device"), (self.path("fifo"), "is a FIFO"),
+                          (self.dir, "is a folder"), (self.path("none"), "No such file")):
+            with self.assertRaisesRegex(OSError, "the list '%s': %s" % (name, why)):
+                of.read_text(name, "the list")
+        with open(self.path("bin"), "wb") as f:
+            f.write(b"ok\xff")
+        with self.assertRaisesRegex(ValueError, "the list '%s': not UTF-8 text .byte 2." % self.path("bin")):
+            of.read_text(self.path("bin"), "the list")
+
+    def test_output_options_found(self):
+        self.assertEqual(of.output_options(["--size", "8x8", "--vcd=v.vcd", "-o", "a.png", "--stats", "s"]),
+                         ["--vcd", "-o", "--stats"])
+        self.assertEqual(of.output_options(["--size", "8x8", "--map-file", "m"]), [])
+
     def test_refused_is_a_value_error(self):
         self.assertTrue(issubclass(of.OutputError, ValueError))
 
@@ -325,13 +347,49 @@ class SweepPoints(Base):
             done = sweep.is_done(files, ident)
         return done, said.getvalue()
 
+    def made(self, text):
+        """An identity file's text for a JSON holding TEXT: the identity and the JSON's hash."""
+        write(self.path("made.json"), text)
+        return "abc %s\n" % sweep.file_hash(self.path("made.json"), {})
+
     def test_done_only_with_a_report_of_the_same_identity(self):
-        files = self.point(json.dumps(REPORT), "abc\n")
+        files = self.point(json.dumps(REPORT), self.made(json.dumps(REPORT)))
         self.assertEqual(self.is_done(files, "abc"), (True, ""))
         self.assertTrue(os.path.exists(files["json"]))
 
+    def test_a_json_changed_after_its_run_runs_again(self):
+        other = dict(REPORT, sim_time_s=0.97511)  # another point's report copied over this one's
+        files = self.point(json.dumps(other), self.made(json.dumps(REPORT)))
+        done, said = self.is_done(files, "abc")
+        self.assertFalse(done)
+        self.assertIn(files["json"] + ": not the JSON its run wrote", said)
+        self.assertFalse(os.path.exists(files["json"]))
+
+    def test_a_number_that_is_not_finite_is_not_a_report(self):
+        for text in ('{"status":"ok","sim_time_s":1e999,"config":{}}',
+                     '{"status":"ok","sim_time_s":NaN,"config":{}}',
+                     '{"status":"ok","sim_time_s":1,"config":{},"x":[-Infinity]}'):
+            files = self.point(text, self.made(text))
+            done, said = self.is_done(files, "abc")
+            self.assertFalse(done, text)
+            self.assertIn(files["json"] + ": not a JSON report", said)
+
+    def test_a_config_files_inputs_make_the_identity(self):
+        sim, scene, timing = self.path("sim"), self.path("s.nff"), self.path("n.timing")
+        os.makedirs(self.path("cfg"))
+        machine = self.path("cfg", "m.toml")
+        for p in (sim, scene, timing):
+            write(p, p)
+        write(self.path("cfg", "n.timing"), "link 50\n")
+        write(machine, 'timing="n.timing"\n')  # from the machine file's folder, not the working one
+        args = [scene, "--config", machine]
+        base = sweep.identity(sim, args, {})
+        write(self.path("cfg", "n.timing"), "link 50000\n")
+        self.assertNotEqual(base, sweep.identity(sim, args, {}), "a file the machine file names")
+        self.assertIn(("--config %s's timing" % machine, self.path("cfg", "n.timing")), of.named_files(args))
+
     def test_another_identity_runs_again(self):
-        files = self.point(json.dumps(REPORT), "abc\n")
+        files = self.point(json.dumps(REPORT), self.made(json.dumps(REPORT)))
         done, said = self.is_done(files, "def")
         self.assertFalse(done)
         self.assertIn(files["json"] + ": made by another executable", said)
@@ -349,6 +407,24 @@ class SweepPoints(Base):
             self.assertFalse(done, text)
             self.assertIn(files["json"] + ": not a JSON report", said)
             self.assertFalse(os.path.exists(files["json"]), text)
+
+    def test_an_empty_axis_value_is_refused(self):
+        for text in ("ips=1,,2", "ips=1,", "ips=,1"):
+            with self.assertRaisesRegex(ValueError, "an empty value"):
+                sweep.parse_axis(text)
+        with self.assertRaisesRegex(ValueError, "--vcd is an output"):
+            sweep.parse_axis("vcd=a.vcd,b.vcd")
+
+    def test_two_points_of_one_name_or_an_output_option_refused_before_anything(self):
+        out = self.path("sw")
+        with self.assertRaisesRegex(ValueError, "the points a/t.timing and a_t.timing have one name, "
+                                                "timing_a_t.timing"):
+            sweep.plan(out, "sim", "s.nff", [("timing", ["a/t.timing", "a_t.timing"])], [], self.path("l"))
+        for fixed in (["--vcd", "v.vcd"], ["--size", "8x8", "--write-map=wm.txt"], ["-o", "a.png"]):
+            with self.assertRaisesRegex(ValueError, "%s among the fixed options" % fixed[-2 if len(fixed) == 2 else -1]
+                                        .partition("=")[0]):
+                sweep.plan(out, "sim", "s.nff", [("ips", ["1", "2"])], fixed, self.path("l"))
+        self.assertFalse(os.path.exists(out) or os.path.exists(self.path("l")))
 
 
 class Jobs(unittest.TestCase):
