@@ -78,6 +78,19 @@ std::string absolute_path(const std::string &path)
     return (std::strcmp(cwd, "/") == 0 ? "" : std::string(cwd)) + "/" + rel;
 }
 
+// --timing FILE: the table of the profile with the file's values on top.
+void read_timing_file(const OptionSpec &, const std::string &t, MachineConfig &m)
+{
+    if (t.empty()) return;
+    m.timing_profile = choose_timing(m.timing_base, t, &m.timing);
+    m.timing_file = t;
+    // The table as loaded is input: a value out of range is the file's fault, named at its line.
+    std::string key, problem = timing_limit_problem(m.timing, &key);
+    long line = problem.empty() ? 0 : timing_key_line(t, key);
+    if (!problem.empty())
+        throw UserError("--timing: " + shown_text(t) + (line > 0 ? ":" + std::to_string(line) : "") + ": " + problem);
+}
+
 // "KEY=VALUE,..." of every timing key, each key once; no empty item (a stray comma).
 void read_timing_values(const OptionSpec &spec, const std::string &text, MachineConfig &m)
 {
@@ -218,18 +231,7 @@ std::vector<MachineOption> timing_options()
              m.timing_base = t;
          },
          [](const MachineConfig &m) { return m.timing_base; }},
-        {common_option_spec("--timing"),
-         [](const OptionSpec &, const std::string &t, MachineConfig &m) {
-             if (t.empty()) return;
-             m.timing_profile = choose_timing(m.timing_base, t, &m.timing);
-             m.timing_file = t;
-             // The table as loaded is input: a value out of range is the file's fault.
-             std::string key, problem = timing_limit_problem(m.timing, &key);
-             long line = problem.empty() ? 0 : timing_key_line(t, key);
-             if (!problem.empty())
-                 throw UserError("--timing: " + shown_text(t) + (line > 0 ? ":" + std::to_string(line) : "") + ": " +
-                                 problem);
-         },
+        {common_option_spec("--timing"), read_timing_file,
          [](const MachineConfig &m) { return absolute_path(m.timing_file); }},
         {{"--timing-values", "LIST", K::text, "", 0, 0, "",
           "KEY=VALUE,... for every key of the timing table, in place of a profile's and a file's "
