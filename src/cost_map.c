@@ -1,4 +1,5 @@
 /* cost_map.c - the weighted cell graph and its Scotch mapping onto the node torus or mesh. */
+#include <errno.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -98,10 +99,14 @@ uint64_t rt_cost_map_bytes(size_t cells)
     return 2 * graph + 3 * n * sizeof(SCOTCH_Num);
 }
 
+/* A failed Scotch call; Scotch's own message is printed above. Its allocations are malloc's, so
+ * errno (cleared before the calls) tells an allocation refused: RT_ERR_NOMEM. */
 static rt_status scotch_fail(char *msg, size_t msg_len, const char *call)
 {
-    if (msg && msg_len) snprintf(msg, msg_len, "Scotch: %s failed (see its message above)", call);
-    return RT_ERR_INVALID;
+    int nomem = errno == ENOMEM;
+    if (msg && msg_len)
+        snprintf(msg, msg_len, "Scotch: %s failed (%ssee its message above)", call, nomem ? "out of memory; " : "");
+    return nomem ? RT_ERR_NOMEM : RT_ERR_INVALID;
 }
 
 /* A single-threaded, deterministic Scotch context with a fixed seed bound to `graph`. */
@@ -163,6 +168,7 @@ static rt_status scotch_map(cell_graph *g, const int nodes[3], int torus, const 
     SCOTCH_Context ctx;
     SCOTCH_randomSeed(1); /* the global generator too, for any path that uses it */
     SCOTCH_randomReset();
+    errno = 0; /* scotch_fail reads it */
     if (SCOTCH_graphInit(&graph) != 0) return scotch_fail(msg, msg_len, "SCOTCH_graphInit");
     rt_status st = RT_OK;
     if (SCOTCH_graphBuild(&graph, 0, g->vertnbr, g->verttab, NULL, g->velotab, NULL, g->edgenbr, g->edgetab,

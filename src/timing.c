@@ -178,13 +178,26 @@ static int parse_line(char *line, rt_timing *t, unsigned char seen[], char *msg,
     seen[i] = 1;
     double v = 0;
     rt_number_fault f = rt_number_real(value, value_len, &v);
-    if (f == RT_NUMBER_TOO_LARGE || f == RT_NUMBER_UNDERFLOW) {
-        range_msg((size_t)i, msg, msg_len);
+    if (f == RT_NUMBER_SYNTAX || f == RT_NUMBER_HEX) {
+        if (msg && msg_len)
+            snprintf(msg, msg_len, "'%s' needs a decimal number (such as 12.5 or 1e-3; no hexadecimal)", keys[i].name);
         return 0;
     }
     if (f != RT_NUMBER_OK) {
-        if (msg && msg_len)
-            snprintf(msg, msg_len, "'%s' needs a decimal number (such as 12.5 or 1e-3; no hexadecimal)", keys[i].name);
+        char quoted[4 * 64];
+        int neg = value[0] == '-';
+        size_t first = (size_t)neg; /* the value without its leading zeros, for the hint */
+        while (f == RT_NUMBER_LEADING_ZERO && first + 1 < value_len && value[first] == '0' && value[first + 1] >= '0' &&
+               value[first + 1] <= '9')
+            first++;
+        if (msg && msg_len) {
+            int n = snprintf(msg, msg_len, "'%s' value '%s' %s", keys[i].name,
+                             rt_escape_bytes(value, value_len < 64 ? value_len : 64, 1, quoted, sizeof quoted),
+                             rt_number_fault_text(f));
+            if (f == RT_NUMBER_LEADING_ZERO && n > 0 && (size_t)n < msg_len)
+                snprintf(msg + n, msg_len - (size_t)n, ": write '%s%.*s'", neg ? "-" : "",
+                         (int)(value_len - first < 64 ? value_len - first : 64), value + first);
+        }
         return 0;
     }
     return rt_timing_set(t, name, v, msg, msg_len) == RT_OK;

@@ -110,6 +110,26 @@ std::string temporary_pattern(const std::string &path)
     return (dir == "/" ? "/" : dir + "/") + "." + base + suffix;
 }
 
+// Throws UserError (exit 2) if the new file `target` (what `path` names) or its temporary
+// (".NAME.XXXXXX", 8 bytes longer) would be refused by the file system as too long: found
+// before the run, not at its end.
+void check_name_length(const std::string &option, const std::string &path, const std::string &target,
+                       const std::string &dir)
+{
+    long name_max = pathconf(dir.c_str(), _PC_NAME_MAX);
+    if (name_max <= 0) name_max = NAME_MAX;
+    size_t base = base_of(target).size();
+    std::string what = option + " '" + path + "': ";
+    if (base > static_cast<size_t>(name_max))
+        throw UserError(what + "the file name is too long (" + std::to_string(base) + " bytes; the file system takes " +
+                            std::to_string(name_max) + ")",
+                        2);
+    if (target.size() + 8 >= PATH_MAX)
+        throw UserError(what + "the path is too long (" + std::to_string(target.size()) +
+                            " bytes; with its temporary " + "it must stay under " + std::to_string(PATH_MAX - 8) + ")",
+                        2);
+}
+
 // Where a name points: its folder's identity and the last component.
 using NameKey = std::tuple<dev_t, ino_t, std::string>;
 using FileKey = std::pair<dev_t, ino_t>;
@@ -157,6 +177,7 @@ OutputSet::Id OutputSet::add(const std::string &option, const std::string &path)
             throw UserError(option + " '" + path + "': folder '" + dir + "' does not exist" +
                                 (e.target == path ? "" : " (the link names '" + e.target + "')"),
                             2);
+        check_name_length(option, path, e.target, dir);
     }
     m_entries.push_back(std::move(e));
     return m_entries.size() - 1;

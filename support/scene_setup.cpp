@@ -2,6 +2,7 @@
 #include "scene_setup.h"
 
 #include <cstdio>
+#include <new>
 
 #include "rt_framebuffer.h"
 #include "rt_grid.h"
@@ -50,6 +51,7 @@ LoadedScene load_scene(const std::string &path, unsigned width, unsigned height,
         throw UserError(shown_path(path) + ": " + msg);
     out.grid.reset(rt_grid_new_counted(raw, cells[0], cells[1], cells[2], count, budget, msg, sizeof msg));
     if (!out.grid && std::string(msg).rfind("memory budget", 0) == 0) throw UserError(shown_path(path) + ": " + msg);
+    if (!out.grid && std::string(msg).rfind("out of memory", 0) == 0) throw std::bad_alloc();  // cli_main's message
     if (!out.grid) throw UserError(std::string("--cells: ") + msg, 2);
     return out;
 }

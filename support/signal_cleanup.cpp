@@ -87,9 +87,17 @@ SignalsBlocked::~SignalsBlocked() { pthread_sigmask(SIG_SETMASK, &m_old, nullptr
 
 void stop_on_signals(const char *program)
 {
-    SignalsBlocked blocked;
-    std::strncpy(g_program, program, sizeof g_program - 1);
-    if (!g_installed) install_handler();
+    {
+        SignalsBlocked blocked;
+        std::strncpy(g_program, program, sizeof g_program - 1);
+        if (!g_installed) install_handler();
+    }
+    // A stopping signal held blocked across the program's own re-exec (huge_pages.h) is
+    // delivered here, to the handler, instead of being lost to the default action.
+    sigset_t set;
+    sigemptyset(&set);
+    for (const StopSignal &s : kSignals) sigaddset(&set, s.sig);
+    pthread_sigmask(SIG_UNBLOCK, &set, nullptr);
 }
 
 size_t remove_on_signal(const std::string &path, bool folder)

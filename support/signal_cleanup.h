@@ -1,7 +1,7 @@
 // signal_cleanup.h - files and folders to remove when the run is stopped by a signal.
 //
 // Usage:
-//   stop_on_signals("torusrt-sim");              // at the start of main: the stopping signals end the run
+//   stop_on_signals("torusrt-sim");              // first thing in main: the stopping signals end the run
 //   size_t slot = remove_on_signal(tmp_path);   // a stopping signal now removes it
 //   ...
 //   forget_on_signal(slot);                      // renamed or removed by the program itself
@@ -19,8 +19,9 @@
 
 namespace torusrt {
 
-// Installs the handler for the stopping signals; `program` starts its message. Called again, it
-// only changes the name.
+// Installs the handler for the stopping signals and unblocks them (one that arrived while they
+// were blocked is handled now); `program` starts its message. Called first thing in main, and
+// again by run_cli, where it only changes the name.
 void stop_on_signals(const char *program);
 // Registers PATH (a file, or a folder when `folder`); installs the handler if not yet done.
 size_t remove_on_signal(const std::string &path, bool folder = false);

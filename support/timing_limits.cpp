@@ -1,6 +1,8 @@
 // timing_limits.cpp - bounds on the timing table.
 #include "timing_limits.h"
 
+#include <fstream>
+
 #include "option_parsing.h"
 
 namespace torusrt {
@@ -28,6 +30,21 @@ std::string timing_limit_problem(const rt_timing &t, std::string *key)
         return "a packet's link transfer takes " + number_text(link) + " us, below SystemC's time resolution of 1 ps";
     }
     return "";
+}
+
+// The line of the timing file `path` that sets `key` (0 if none), so that a value out of range
+// is named at its line. The file was read a moment ago (a regular file of at most 1 MiB).
+long timing_key_line(const std::string &path, const std::string &key)
+{
+    std::ifstream in(path);
+    std::string text;
+    for (long number = 1; std::getline(in, text); number++) {
+        size_t start = text.find_first_not_of(" \t\r");
+        if (start == std::string::npos) continue;
+        size_t end = text.find_first_of(" \t\r=", start);
+        if (text.compare(start, end == std::string::npos ? std::string::npos : end - start, key) == 0) return number;
+    }
+    return 0;
 }
 
 }  // namespace torusrt

@@ -16,4 +16,8 @@ constexpr double kMaxTimingUs = 1e6;
 // to that key, or to "link transfer" / "bus transfer" for a time the rates and widths make.
 std::string timing_limit_problem(const rt_timing &timing, std::string *key = nullptr);
 
+// The line of the timing file `path` that sets `key` (0 if none): a value out of range is named
+// at its line ("FILE:LINE: ...").
+long timing_key_line(const std::string &path, const std::string &key);
+
 }  // namespace torusrt

@@ -25,6 +25,7 @@
 #include "scene_motion.h"
 #include "scene_setup.h"
 #include "setting_checks.h"
+#include "signal_cleanup.h"
 #include "stats_json.h"
 #include "cost_image.h"
 #include "user_error.h"
@@ -361,6 +362,7 @@ void declare_options(CLI::App &app)
 
 int main(int argc, char **argv)
 {
+    stop_on_signals("torusrt-render");  // before anything else: an early signal gets the message
     RenderOptions opt;
     CLI::App app{"torusrt-render: the sequential reference renderer (the golden image).\n"
                  "Runs the kernel's packet step over one work queue with one owner for every cell."};

@@ -32,6 +32,7 @@
 #include "option_spec.h"
 #include "remap_policy.h"
 #include "run_options.h"
+#include "signal_cleanup.h"
 #include "simulation.h"
 #include "systemc_messages.h"
 #include "user_error.h"
@@ -301,6 +302,7 @@ int sc_main(int argc, char **argv)
 // here; and the allocator's huge pages are asked for before anything is allocated.
 int main(int argc, char **argv)
 {
+    torusrt::stop_on_signals("torusrt-sim");  // before the re-exec and SystemC's start-up
     torusrt::reexec_with_huge_pages(argv);
     setenv("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE", "DISABLE", 1);
     return sc_core::sc_elab_and_sim(argc, argv);

@@ -55,13 +55,13 @@ bool run_finished(const SimConfig &config, TorusSystem &top, const PacketLedger 
     return finished;
 }
 
-void check_budget_before_start(const PacketLedger &ledger, rt_budget &memory)
+void check_budget_before_start(const PacketLedger &ledger, rt_budget &memory, const std::string &where)
 {
-    if (!ledger.over_limit()) return;  // sc_stop was called in elaboration: sc_start would fail (E546)
+    if (!ledger.over_limit()) return;  // sc_stop was called outside sc_start: sc_start would fail (E546)
     char msg[RT_MSG_LEN] = "";
     rt_budget_packets_exceeded(&memory, ledger.outstanding_over_limit(), PacketPool::bytes_per_packet(), msg,
                                sizeof msg);
-    throw UserError(std::string("before the simulation started: ") + msg);
+    throw UserError(where + msg);
 }
 
 void check_conservation(const PacketLedger &ledger)

@@ -44,9 +44,9 @@ void show_progress(void *ctx, uint64_t consumed, int64_t outstanding);
 // run; otherwise whether every packet was consumed (false: a deadlock);
 bool run_finished(const SimConfig &config, TorusSystem &top, const PacketLedger &ledger, rt_budget &memory);
 
-// Throws the memory budget's UserError when the packets made while elaborating already exceed
-// it, before sc_start is called.
-void check_budget_before_start(const PacketLedger &ledger, rt_budget &memory);
+// Throws the memory budget's UserError, `where` in front, when the packets made outside
+// sc_start (while elaborating, or setting a frame up) already exceed it; sc_start is not called.
+void check_budget_before_start(const PacketLedger &ledger, rt_budget &memory, const std::string &where);
 // InternalError (a bug of the model) unless created = consumed.
 void check_conservation(const PacketLedger &ledger);
 

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <new>
 #include <string>
 
 #include "elaboration_mark.h"
@@ -13,6 +14,7 @@
 #include "rt_cost_map.h"
 #include "rt_framebuffer.h"
 #include "run_stage.h"
+#include "systemc_messages.h"
 #include "torus_system.h"
 #include "tracing.h"
 #include "user_error.h"
@@ -120,9 +122,20 @@ RunFacts run_facts(const Machine &m, const FramePlan &plan, const std::vector<Fr
     return facts;
 }
 
-// Runs the current frame to its end; false on a deadlock.
-bool run_frame(const SimConfig &config, Machine &m, const std::string &label)
+// "building the machine (N nodes of C processors)": the stage named if memory runs out.
+std::string machine_stage(const SimConfig &config)
 {
+    std::string cluster = config.cluster > 1 ? " of " + std::to_string(config.cluster) + " processors" : "";
+    return "building the machine (" + std::to_string(config.node_count()) + " nodes" + cluster + ")";
+}
+
+// Runs the current frame to its end; false on a deadlock. `where` ("frame K: " in an animation)
+// starts the message of a run the memory budget stopped.
+bool run_frame(const SimConfig &config, Machine &m, const std::string &label, const std::string &where)
+{
+    // Setting the frame up made its primaries: past the packet limit sc_stop was called, and
+    // sc_start would fail (E546).
+    if (m.ledger.over_limit()) check_budget_before_start(m.ledger, m.memory, where + "as the frame was set up: ");
     Progress progress(label, config.quiet);
     m.ledger.set_progress(show_progress, &progress);
     double t0 = wall_clock_s();
@@ -130,7 +143,13 @@ bool run_frame(const SimConfig &config, Machine &m, const std::string &label)
     // bounded (check_timing_limits), so none can jump from below the limit past the maximum.
     sc_core::sc_time limit(config.time_limit_s, sc_core::SC_SEC);
     sc_core::sc_time left = limit > sc_core::sc_time_stamp() ? limit - sc_core::sc_time_stamp() : sc_core::SC_ZERO_TIME;
-    sc_core::sc_start(left, sc_core::SC_EXIT_ON_STARVATION);
+    try {
+        sc_core::sc_start(left, sc_core::SC_EXIT_ON_STARVATION);
+    } catch (const sc_core::sc_report &) {
+        if (!systemc_stack_failed()) throw;
+        set_run_stage(machine_stage(config) + ": its processes' stacks");
+        throw std::bad_alloc();  // cli_main's out-of-memory message
+    }
     double t1 = wall_clock_s();
     if (!m.started) {  // the first sc_start also ended the elaboration
         t0 = m.mark->ended_at(t0);
@@ -140,7 +159,11 @@ bool run_frame(const SimConfig &config, Machine &m, const std::string &label)
     m.sim_wall_s += t1 - t0;
     progress.finish();
     m.ledger.set_progress(nullptr, nullptr);
-    return run_finished(config, *m.top, m.ledger, m.memory);
+    try {
+        return run_finished(config, *m.top, m.ledger, m.memory);
+    } catch (const UserError &e) {
+        throw UserError(where + e.what(), e.exit_code());
+    }
 }
 
 // Frame k's mapping (k > 0) and its record's mapping fields; the owner table is updated.
@@ -176,15 +199,14 @@ void elaborate(const SimConfig &config, const rt_scene *scene, const rt_grid *gr
     if (config.style == TimingStyle::lt)
         tlm::tlm_global_quantum::instance().set(sc_core::sc_time(config.quantum_us, sc_core::SC_US));
     m.elaboration_start_s = wall_clock_s();
-    std::string cluster = config.cluster > 1 ? " of " + std::to_string(config.cluster) + " processors" : "";
-    set_run_stage("building the machine (" + std::to_string(config.node_count()) + " nodes" + cluster + ")");
+    set_run_stage(machine_stage(config));
     rt_replicas replicas = config.replica_table();
     m.top = &keep_until_exit(std::make_unique<TorusSystem>("top", config, scene, grid, m.owner.data(), m.ledger,
                                                            m.fb.get(), HandOverTiming::at_once,
                                                            config.replicated() ? &replicas : nullptr));
     if (!config.vcd_path.empty()) m.tracer = std::make_unique<Tracer>(config, *m.top);
     m.mark = &elaboration_mark();
-    check_budget_before_start(m.ledger, m.memory);
+    check_budget_before_start(m.ledger, m.memory, "before the simulation started: ");
 }
 
 // The policy and adaptive's settings as the report states them.
@@ -339,7 +361,7 @@ RunOutcome run_frames(const SimConfig &config, rt_scene *scene, const rt_grid *g
     for (size_t k = 0; k < n; k++) {
         set_run_stage(n > 1 ? "simulating frame " + std::to_string(k) : "simulating the image");
         FrameRecord rec = loop.prepare(m, k, out.frames);
-        if (!run_frame(config, m, progress_label(plan, k, n))) {
+        if (!run_frame(config, m, progress_label(plan, k, n), n > 1 ? "frame " + std::to_string(k) + ": " : "")) {
             deadlocked(loop, m, k, wall_start_s, out);
             return out;  // the tracer's destructor removes the partial trace
         }

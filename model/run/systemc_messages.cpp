@@ -2,6 +2,7 @@
 #include "systemc_messages.h"
 
 #include <cstdio>
+#include <cstring>
 #include <systemc>
 
 namespace torusrt {
@@ -9,9 +10,17 @@ namespace torusrt {
 namespace {
 
 bool g_quiet = false;
+bool g_stack_failed = false;
 
 void to_stderr(const sc_core::sc_report &report, const sc_core::sc_actions &actions)
 {
+    // A process's stack the system refused (E518) is memory running out: the run's own message
+    // says so (systemc_stack_failed), not SystemC's.
+    if (report.get_severity() >= sc_core::SC_ERROR && std::strcmp(report.get_msg_type(), "stack setup failed") == 0) {
+        g_stack_failed = true;
+        sc_core::sc_report_handler::default_handler(report, actions & ~sc_core::SC_DISPLAY);
+        return;
+    }
     if (actions & sc_core::SC_DISPLAY) {
         bool minor = report.get_severity() < sc_core::SC_ERROR;
         if (!(g_quiet && minor)) std::fprintf(stderr, "%s\n", sc_core::sc_report_compose_message(report).c_str());
@@ -21,6 +30,8 @@ void to_stderr(const sc_core::sc_report &report, const sc_core::sc_actions &acti
 }
 
 }  // namespace
+
+bool systemc_stack_failed() { return g_stack_failed; }
 
 void route_systemc_messages(bool quiet)
 {

@@ -5,5 +5,8 @@
 namespace torusrt {
 
 void route_systemc_messages(bool quiet);
+// Whether SystemC failed to set up a process's stack (E518, not displayed): the system refused
+// the memory.
+bool systemc_stack_failed();
 
 }  // namespace torusrt

@@ -145,7 +145,7 @@ int run_cli(const char *program, CLI::App &app, int argc, char **argv, const std
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError &e) {
-        if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+        if (e.get_exit_code() == 0) return check_standard_output(program, app.exit(e));  // --help, --version
         std::string what = with_suggestion(app, e, e.what());
         const CLI::Option *config = app.get_config_ptr();  // name the --config file its errors come from
         if (dynamic_cast<const CLI::ConfigError *>(&e) && config != nullptr && config->count() > 0) {

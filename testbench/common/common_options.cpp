@@ -63,9 +63,11 @@ CommonSettings parse_common_options(const CommonOptions &o)
     s.timing_label = choose_timing(o.timing_profile, o.timing_file, &s.timing);
     s.timing_base = o.timing_profile.empty() ? rt_timing_default_profile() : o.timing_profile;
     // The table as loaded is input: a value out of range is the file's (or profile's) fault.
-    std::string problem = timing_limit_problem(s.timing);
+    std::string key, problem = timing_limit_problem(s.timing, &key);
+    long line = problem.empty() || o.timing_file.empty() ? 0 : timing_key_line(o.timing_file, key);
     if (!problem.empty())
-        throw UserError((o.timing_file.empty() ? s.timing_label : shown_text(o.timing_file)) + ": " + problem);
+        throw UserError((o.timing_file.empty() ? s.timing_label : shown_text(o.timing_file)) +
+                        (line > 0 ? ":" + std::to_string(line) : "") + ": " + problem);
     return s;
 }
 

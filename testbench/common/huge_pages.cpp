@@ -6,6 +6,8 @@
 #include <cstring>
 #include <unistd.h>
 
+#include "signal_cleanup.h"
+
 namespace torusrt {
 
 namespace {
@@ -28,7 +30,12 @@ void reexec_with_huge_pages(char **argv)
     if (n <= 0) return;
     self[n] = '\0';
     if (setenv("GLIBC_TUNABLES", "glibc.malloc.hugetlb=1", 1) != 0) return;
-    execv(self, argv);
+    {
+        // The stopping signals stay blocked across the exec (a signal meanwhile is kept pending)
+        // until the new image's main has installed its handler (stop_on_signals).
+        SignalsBlocked held;
+        execv(self, argv);
+    }
     unsetenv("GLIBC_TUNABLES");  // exec failed: run on as we are
 }
 

@@ -156,6 +156,11 @@ TEST(Timing, LoadErrorsCarryFileAndLine)
         {"link 0x1p3\n", ":1: 'link' needs a decimal number"},
         {"link 1 2\n", ":1: expected 'key value'"},
         {"packet_bytes 0\n", ":1: 'packet_bytes' needs a positive number"},
+        {"link 1e-400\n", ":1: 'link' value '1e-400' is too close to 0 for a double"},
+        {"link 050\n",
+         ":1: 'link' value '050' has a leading zero (decimal only: it could be read as octal): write '50'"},
+        {"link -007.5\n", ":1: 'link' value '-007.5' has a leading zero (decimal only: it could be read as octal): "
+                          "write '-7.5'"},
     };
     int i = 0;
     for (const Case &c : cases) {

@@ -3,6 +3,7 @@
 #include <cstring>
 #include <map>
 #include <string>
+#include <unistd.h>
 
 #include "machine_options.h"
 #include "model_test.h"
@@ -120,10 +121,24 @@ TEST(MachineOptions, WritesTheMachineAsOptions)
 TEST(MachineOptions, FileMappingHasMapFileAndNoMap)
 {
     SimConfig c = sample_machine();
-    c.mapping = RT_MAP_FILE, c.map_file = "m.map";
+    c.mapping = RT_MAP_FILE, c.map_file = "/maps/m.map";
     nlohmann::json j = machine_options_json(c);
-    EXPECT_TRUE(!j.contains("map") && j["map-file"] == "m.map") << "a file mapping has map-file and no map";
-    EXPECT_NE(machine_options_toml(c).find("map-file=\"m.map\"\n"), std::string::npos) << "TOML lines key=\"value\"";
+    EXPECT_TRUE(!j.contains("map") && j["map-file"] == "/maps/m.map") << "a file mapping has map-file and no map";
+    EXPECT_NE(machine_options_toml(c).find("map-file=\"/maps/m.map\"\n"), std::string::npos)
+        << "TOML lines key=\"value\"";
+}
+
+TEST(MachineOptions, FilePathsAreWrittenAbsolute)
+{
+    SimConfig c = sample_machine();
+    c.mapping = RT_MAP_FILE, c.map_file = "./sub/m.map";
+    c.timing_file = "t.timing";
+    char cwd[4096];
+    ASSERT_NE(getcwd(cwd, sizeof cwd), nullptr);
+    const std::string here = std::string(cwd) == "/" ? "" : cwd;
+    nlohmann::json j = machine_options_json(c);
+    EXPECT_EQ(j["map-file"], here + "/sub/m.map") << "a machine file reads a relative path from its own folder";
+    EXPECT_EQ(j["timing"], here + "/t.timing") << "so the working folder is written in front";
 }
 
 TEST(MachineOptions, EveryOptionOfTheTableIsWrittenAndReadsBack)

@@ -4,8 +4,10 @@
 #include "machine_options.h"
 
 #include <algorithm>
+#include <climits>
 #include <cstdio>
 #include <cstring>
+#include <unistd.h>
 
 #include "bus_arbiter.h"
 #include "cluster_dispatch.h"
@@ -63,7 +65,33 @@ std::string map_text(const MachineConfig &m)
     return name;
 }
 
-// "KEY=VALUE,..." of every timing key, each key once.
+// `path` as an absolute path (the working folder in front of a relative one; an absolute one as
+// given): a machine file reads its relative paths from its own folder, so the path written back
+// names the same file wherever the dump or a report's machine file is put.
+std::string absolute_path(const std::string &path)
+{
+    if (path.empty() || path[0] == '/') return path;
+    char cwd[PATH_MAX];
+    if (getcwd(cwd, sizeof cwd) == nullptr) return path;  // a removed working folder: as given
+    std::string rel = path;
+    while (rel.rfind("./", 0) == 0) rel.erase(0, rel.find_first_not_of('/', 1));
+    return (std::strcmp(cwd, "/") == 0 ? "" : std::string(cwd)) + "/" + rel;
+}
+
+// --timing FILE: the table of the profile with the file's values on top.
+void read_timing_file(const OptionSpec &, const std::string &t, MachineConfig &m)
+{
+    if (t.empty()) return;
+    m.timing_profile = choose_timing(m.timing_base, t, &m.timing);
+    m.timing_file = t;
+    // The table as loaded is input: a value out of range is the file's fault, named at its line.
+    std::string key, problem = timing_limit_problem(m.timing, &key);
+    long line = problem.empty() ? 0 : timing_key_line(t, key);
+    if (!problem.empty())
+        throw UserError("--timing: " + shown_text(t) + (line > 0 ? ":" + std::to_string(line) : "") + ": " + problem);
+}
+
+// "KEY=VALUE,..." of every timing key, each key once; no empty item (a stray comma).
 void read_timing_values(const OptionSpec &spec, const std::string &text, MachineConfig &m)
 {
     std::vector<std::string> seen;
@@ -71,6 +99,11 @@ void read_timing_values(const OptionSpec &spec, const std::string &text, Machine
     while (pos < text.size()) {
         size_t comma = text.find(',', pos);
         std::string item = text.substr(pos, comma == std::string::npos ? std::string::npos : comma - pos);
+        if (item.empty() || (comma + 1 == text.size()))
+            throw UserError(spec.long_name() + " '" + shown_text(text) +
+                                "': an empty item (a comma with no KEY=VALUE " + (item.empty() ? "before" : "after") +
+                                " it)",
+                            2);
         size_t eq = item.find('=');
         if (eq == std::string::npos)
             throw UserError(spec.long_name() + " '" + shown_text(item) + "': expected KEY=VALUE", 2);
@@ -204,16 +237,8 @@ std::vector<MachineOption> timing_options()
              m.timing_base = t;
          },
          [](const MachineConfig &m) { return m.timing_base; }},
-        {common_option_spec("--timing"),
-         [](const OptionSpec &, const std::string &t, MachineConfig &m) {
-             if (t.empty()) return;
-             m.timing_profile = choose_timing(m.timing_base, t, &m.timing);
-             m.timing_file = t;
-             // The table as loaded is input: a value out of range is the file's fault.
-             std::string problem = timing_limit_problem(m.timing);
-             if (!problem.empty()) throw UserError("--timing: " + shown_text(t) + ": " + problem);
-         },
-         [](const MachineConfig &m) { return m.timing_file; }},
+        {common_option_spec("--timing"), read_timing_file,
+         [](const MachineConfig &m) { return absolute_path(m.timing_file); }},
         {{"--timing-values", "LIST", K::text, "", 0, 0, "",
           "KEY=VALUE,... for every key of the timing table, in place of a profile's and a file's "
           "(--dump-config --with-timing writes it)",
@@ -345,7 +370,7 @@ std::vector<MachineOption> mapping_file_options()
              m.mapping = RT_MAP_FILE;
              m.map_file = t;
          },
-         [](const MachineConfig &m) { return m.map_file; }},
+         [](const MachineConfig &m) { return absolute_path(m.map_file); }},
         {{"--pilot-size", "WxH", K::text, "", 0, 0, "",
           "image size of the --map cost or scatter pilot run (default the image's)", G::machine, "pilot-size"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {

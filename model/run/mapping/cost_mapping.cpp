@@ -3,8 +3,10 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <new>
 
 #include "rt_cost_map.h"
+#include "run_stage.h"
 #include "user_error.h"
 #include "wall_clock.h"
 
@@ -114,6 +116,11 @@ nlohmann::json cost_mapping(const MachineConfig &config, rt_scene *scene, const 
     for (size_t c = 0; c < pilot.cells; c++) max_cell_us = std::max(max_cell_us, pilot.work_us[c]);
     uint64_t faces = pilot.ops.handovers_sent;
     rt_cost_pilot_release(&pilot);
+    if (st == RT_ERR_NOMEM) {  // the system refused Scotch or the graph an allocation: cli_main's message
+        set_run_stage(std::string("mapping the cells with Scotch (") + (scatter ? "--map scatter" : "--map cost") +
+                      ")");
+        throw std::bad_alloc();
+    }
     if (st != RT_OK) throw UserError(std::string(scatter ? "--map scatter: " : "--map cost: ") + msg);
     const rt_camera *cam = rt_scene_camera(scene);
     unsigned pw = config.pilot_size[0] ? config.pilot_size[0] : cam->width;
