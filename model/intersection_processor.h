@@ -43,6 +43,7 @@
 #include "activation_queue.h"
 #include "sim_config.h"
 #include "time_keeper.h"
+#include "time_series.h"
 #include "timed_wake.h"
 #include "wake_calendar.h"
 
@@ -109,6 +110,8 @@ class IntersectionProcessor : public sc_core::sc_module,
                 std::string(name()) + ".queue_depth");
     }
     int index() const { return m_index; }
+    // The series told of every busy span (null: none).
+    void record_into(TimeSeries *series) { m_series = series; }
     bool &busy_trace() { return m_busy_flag; }  // the VCD's busy row
     bool busy() const { return m_busy_flag; }   // working on a packet now
 
@@ -178,6 +181,7 @@ class IntersectionProcessor : public sc_core::sc_module,
     const int32_t *m_owner;
     int m_owner_id, m_index;
     PacketLedger &m_ledger;
+    TimeSeries *m_series = nullptr;
     rt_step_params m_params;
     TimeKeeper m_time;
     sc_core::sc_time m_before, m_start, m_handed_at;

@@ -13,6 +13,7 @@
 #include "rt_cost_map.h"
 #include "rt_framebuffer.h"
 #include "run_stage.h"
+#include "series_recording.h"
 #include "torus_system.h"
 #include "tracing.h"
 #include "user_error.h"
@@ -87,7 +88,8 @@ struct Machine {
     FramebufferPtr fb;
     TorusSystem *top = nullptr;  // kept until the process exits (keep_until_exit)
     std::unique_ptr<Tracer> tracer;
-    ElaborationMark *mark = nullptr;  // its time ends the elaboration, inside the first sc_start
+    std::unique_ptr<SeriesRecording> series;  // --stats-interval
+    ElaborationMark *mark = nullptr;          // its time ends the elaboration, inside the first sc_start
     double elaboration_start_s = 0, elaboration_wall_s = 0, sim_wall_s = 0;
     bool started = false;
 };
@@ -123,7 +125,7 @@ RunFacts run_facts(const Machine &m, const FramePlan &plan, const std::vector<Fr
 // Runs the current frame to its end; false on a deadlock.
 bool run_frame(const SimConfig &config, Machine &m, const std::string &label)
 {
-    Progress progress(label, config.quiet);
+    Progress progress(label, ProgressSettings{config.quiet, config.progress_every_s, config.stderr_is_output});
     m.ledger.set_progress(show_progress, &progress);
     double t0 = wall_clock_s();
     // Stopping at the limit keeps SystemC's 64-bit time from wrapping: every single delay is
@@ -183,6 +185,8 @@ void elaborate(const SimConfig &config, const rt_scene *scene, const rt_grid *gr
                                                            m.fb.get(), HandOverTiming::at_once,
                                                            config.replicated() ? &replicas : nullptr));
     if (!config.vcd_path.empty()) m.tracer = std::make_unique<Tracer>(config, *m.top);
+    if (config.stats_interval_s > 0)
+        m.series = std::make_unique<SeriesRecording>(config.stats_interval_s, *m.top, m.ledger);
     m.mark = &elaboration_mark();
     check_budget_before_start(m.ledger, m.memory);
 }
@@ -363,6 +367,7 @@ RunOutcome run_frames(const SimConfig &config, rt_scene *scene, const rt_grid *g
     } else {
         out.frames.clear();  // a single image reports no frames
     }
+    if (m.series) out.series_csv = m.series->finish(m.ledger.image_time(), m.ledger.outstanding());
     if (m.tracer) m.tracer->finish();
     return out;
 }
