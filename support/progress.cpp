@@ -44,7 +44,9 @@ Progress::~Progress() { finish(); }
 
 void Progress::update(uint64_t done, uint64_t total, double sim_s)
 {
-    if (m_mode == Mode::off || total == 0) return;
+    if (m_mode == Mode::off || done < m_base || total <= m_base) return;
+    done -= m_base;
+    total -= m_base;
     int percent = static_cast<int>(done * 100 / total);
     if (m_mode == Mode::terminal) {
         if (percent == m_last_percent) return;

@@ -21,6 +21,8 @@ class Progress {
     // Shows done/total (the terminal's line throttled to whole percents); `sim_s` >= 0 adds
     // the simulated time to a batch line.
     void update(uint64_t done, uint64_t total, double sim_s = -1);
+    // Counts done (and total) from `done`: a frame's progress after the frames before it.
+    void start_from(uint64_t done) { m_base = done; }
     // Clears the terminal's line.
     void finish();
 
@@ -29,6 +31,7 @@ class Progress {
     std::string m_label;
     Mode m_mode;
     double m_every_s, m_start_s, m_next_line_s;
+    uint64_t m_base = 0;
     int m_last_percent = -1;
     size_t m_shown = 0;  // characters of the terminal's line
 };

@@ -126,6 +126,7 @@ RunFacts run_facts(const Machine &m, const FramePlan &plan, const std::vector<Fr
 bool run_frame(const SimConfig &config, Machine &m, const std::string &label)
 {
     Progress progress(label, ProgressSettings{config.quiet, config.progress_every_s, config.stderr_is_output});
+    progress.start_from(m.ledger.totals().consumed[0] + m.ledger.totals().consumed[1]);
     m.ledger.set_progress(show_progress, &progress);
     double t0 = wall_clock_s();
     // Stopping at the limit keeps SystemC's 64-bit time from wrapping: every single delay is
