@@ -21,7 +21,7 @@ ToroidalLink::ToroidalLink(sc_core::sc_module_name name, const MachineConfig &co
 
 void ToroidalLink::before_end_of_elaboration()
 {
-    // Only a traced link has the process, its event and its list of crossings: an untraced
+    // Only a traced link has the process, its event and its list of windows: an untraced
     // machine of n nodes saves 6n of each (5 MB at 512 nodes) and their creation. Tracing is
     // asked for before sc_start.
     if (!m_tracing || m_packet_time == sc_core::SC_ZERO_TIME) return;  // an instant link stays at 0
