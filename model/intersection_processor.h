@@ -181,7 +181,6 @@ class IntersectionProcessor : public sc_core::sc_module,
     const int32_t *m_owner;
     int m_owner_id, m_index;
     PacketLedger &m_ledger;
-    TimeSeries *m_series = nullptr;
     rt_step_params m_params;
     TimeKeeper m_time;
     sc_core::sc_time m_before, m_start, m_handed_at;
@@ -204,6 +203,8 @@ class IntersectionProcessor : public sc_core::sc_module,
     sc_core::sc_event m_out_room;  // the processor side may hand over again
     sc_core::sc_event m_timer;     // method driver: the owed wait is over
     sc_core::sc_event m_act;       // method driver: run the machine (notified at once)
+    // --stats-interval's series (null: none).
+    TimeSeries *m_series = nullptr;
 };
 
 }  // namespace torusrt

@@ -53,8 +53,8 @@ void ToroidalLink::send(PacketPool &pool, uint32_t handle)
     m_free_at = start + m_packet_time;
     m_packets++;
     m_bytes += m_packet_bytes;
-    if (m_series) m_series->link_busy(m_series_index, start, m_free_at);
-    if (m_trace) record_use(start, m_free_at);
+    if (m_recording) m_series->link_busy(m_series_index, start, m_free_at);
+    if (m_tracing && m_trace) record_use(start, m_free_at);  // m_trace: a link that takes time
     p.stamp = m_free_at;
     p.last_dir = m_dir;
     // A write to the receiving node, data = the packet as held in memory (its size on the wire is

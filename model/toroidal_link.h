@@ -74,6 +74,7 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
     {
         m_series = series;
         m_series_index = index;
+        m_recording = series != nullptr;
     }
     // Traced use: the percentage of the last window of kUseWindow packet times the link was
     // busy, set at each window's end; asking for it (before sc_start) makes the process that
@@ -100,15 +101,12 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
     tlm::tlm_fw_transport_if<> *m_fw = nullptr;
     int m_to;  // the receiving node: each crossing is addressed to it
     int8_t m_dir;
-    bool m_tracing = false;
-    int m_use = 0, m_use_peak = 0;
+    bool m_tracing = false, m_recording = false;  // the use traced; the crossings told to a series
     uint64_t m_packets = 0;
     double m_bytes = 0;
     double m_packet_bytes;
     ClassBuffers m_spaces;
     int m_from;
-    TimeSeries *m_series = nullptr;
-    size_t m_series_index = 0;
     TransactionPool m_own_transactions;
     PacketPool m_own_pool;  // packets handed over by value (accept), until they cross
     // Use trace (only when traced): the busy picoseconds of each window not yet shown (window
@@ -120,6 +118,9 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
         bool ticking = false;
     };
     std::unique_ptr<UseTrace> m_trace;
+    int m_use = 0, m_use_peak = 0;   // the traced use and its highest value
+    TimeSeries *m_series = nullptr;  // --stats-interval's (null: none), this link's index in it
+    size_t m_series_index = 0;
 };
 
 }  // namespace torusrt

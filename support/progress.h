@@ -21,6 +21,8 @@ class Progress {
     // Shows done/total (the terminal's line throttled to whole percents); `sim_s` >= 0 adds
     // the simulated time to a batch line.
     void update(uint64_t done, uint64_t total, double sim_s = -1);
+    // Whether anything is shown at all (the caller need not report otherwise).
+    bool active() const { return m_mode != Mode::off; }
     // Counts done (and total) from `done`: a frame's progress after the frames before it.
     void start_from(uint64_t done) { m_base = done; }
     // Clears the terminal's line.

@@ -127,7 +127,7 @@ bool run_frame(const SimConfig &config, Machine &m, const std::string &label)
 {
     Progress progress(label, ProgressSettings{config.quiet, config.progress_every_s, config.stderr_is_output});
     progress.start_from(m.ledger.totals().consumed[0] + m.ledger.totals().consumed[1]);
-    m.ledger.set_progress(show_progress, &progress);
+    if (progress.active()) m.ledger.set_progress(show_progress, &progress);
     double t0 = wall_clock_s();
     // Stopping at the limit keeps SystemC's 64-bit time from wrapping: every single delay is
     // bounded (check_timing_limits), so none can jump from below the limit past the maximum.
