@@ -178,6 +178,7 @@ void IntersectionProcessor::begin_step()
 void IntersectionProcessor::end_step()
 {
     m_busy += m_time.now() - m_start;
+    if (m_series) m_series->ip_busy(m_start, m_time.now());
     m_busy_flag = false;
     if (m_result.contrib_count) {
         sc_core::sc_time delay = sc_core::SC_ZERO_TIME;

@@ -43,6 +43,7 @@
 #include "activation_queue.h"
 #include "sim_config.h"
 #include "time_keeper.h"
+#include "time_series.h"
 #include "timed_wake.h"
 #include "wake_calendar.h"
 
@@ -109,6 +110,8 @@ class IntersectionProcessor : public sc_core::sc_module,
                 std::string(name()) + ".queue_depth");
     }
     int index() const { return m_index; }
+    // The series told of every busy span (null: none).
+    void record_into(TimeSeries *series) { m_series = series; }
     bool &busy_trace() { return m_busy_flag; }  // the VCD's busy row
     bool busy() const { return m_busy_flag; }   // working on a packet now
 
@@ -200,6 +203,8 @@ class IntersectionProcessor : public sc_core::sc_module,
     sc_core::sc_event m_out_room;  // the processor side may hand over again
     sc_core::sc_event m_timer;     // method driver: the owed wait is over
     sc_core::sc_event m_act;       // method driver: run the machine (notified at once)
+    // --stats-interval's series (null: none).
+    TimeSeries *m_series = nullptr;
 };
 
 }  // namespace torusrt

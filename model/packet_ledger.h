@@ -6,6 +6,8 @@
 #include <systemc>
 
 #include "rt_packet.h"
+#include "sim_now.h"
+#include "time_series.h"
 
 namespace torusrt {
 
@@ -13,6 +15,7 @@ class PacketLedger {
   public:
     void created(int kind)
     {
+        if (m_series) m_series->at(sim_now(), m_outstanding);
         m_totals.created[kind]++;
         // Past the memory budget's packet limit the run stops (checked by run_model).
         if (static_cast<uint64_t>(++m_outstanding) > m_limit && !m_over_limit) {
@@ -30,17 +33,20 @@ class PacketLedger {
     // `when` is the consumer's local time (its simulated completion).
     void consumed(int kind, const sc_core::sc_time &when)
     {
+        if (m_series) m_series->at(sim_now(), m_outstanding);
         m_totals.consumed[kind]++;
         m_outstanding--;
         if (when > m_last) m_last = when;
-        if (m_progress && (++m_consumed_count & 4095) == 0) m_progress(m_progress_ctx, m_consumed_count, m_outstanding);
+        if (m_progress && (++m_consumed_count & 1023) == 0) m_progress(m_progress_ctx, m_consumed_count, m_outstanding);
     }
-    // Called every 4096 consumed packets (for a progress display).
+    // Called every 1024 consumed packets (for a progress display).
     void set_progress(void (*fn)(void *, uint64_t consumed, int64_t outstanding), void *ctx)
     {
         m_progress = fn;
         m_progress_ctx = ctx;
     }
+    // The series told of the packets in flight as they change (null: none).
+    void record_into(TimeSeries *series) { m_series = series; }
     void forwarded() { m_totals.forwarded++; }
     void primary_missed(const sc_core::sc_time &when)
     {
@@ -62,6 +68,7 @@ class PacketLedger {
     sc_core::sc_time m_last = sc_core::SC_ZERO_TIME;
     void (*m_progress)(void *, uint64_t, int64_t) = nullptr;
     void *m_progress_ctx = nullptr;
+    TimeSeries *m_series = nullptr;
     uint64_t m_consumed_count = 0;
     uint64_t m_limit = UINT64_MAX;
     bool m_over_limit = false;

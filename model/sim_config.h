@@ -106,6 +106,9 @@ struct RunOptions {
     double time_limit_s = kMaxSimTimeS;      // stop with an error past this simulated time
     std::string write_map;                   // --write-map: where to write the table used
     bool quiet = false;
+    double stats_interval_s = 0;    // --stats-interval: the time series' interval (0: no series)
+    double progress_every_s = 10;   // seconds between progress lines in a batch log (0: none)
+    bool stderr_is_output = false;  // an output goes to standard error: no progress shown
 };
 
 // A run of a machine, with the cell -> node table prepared for it (prepare_mapping).

@@ -1,6 +1,9 @@
 // toroidal_link.cpp - busy-until serialisation of one link direction.
 #include "toroidal_link.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "sim_now.h"
 
 namespace torusrt {
@@ -18,14 +21,15 @@ ToroidalLink::ToroidalLink(sc_core::sc_module_name name, const MachineConfig &co
 
 void ToroidalLink::before_end_of_elaboration()
 {
-    // Only a traced link has the process, its event and its list of crossings: an untraced
+    // Only a traced link has the process, its event and its list of windows: an untraced
     // machine of n nodes saves 6n of each (5 MB at 512 nodes) and their creation. Tracing is
     // asked for before sc_start.
-    if (!m_tracing) return;
-    m_trace = std::make_unique<BusyTrace>();
+    if (!m_tracing || m_packet_time == sc_core::SC_ZERO_TIME) return;  // an instant link stays at 0
+    m_trace = std::make_unique<UseTrace>();
+    m_trace->window = m_packet_time.value() * kUseWindow;
     SC_HAS_PROCESS(ToroidalLink);
-    SC_METHOD(drive_busy_trace);
-    sensitive << m_trace->changed;
+    SC_METHOD(drive_use_trace);
+    sensitive << m_trace->tick;
     dont_initialize();
 }
 
@@ -49,10 +53,8 @@ void ToroidalLink::send(PacketPool &pool, uint32_t handle)
     m_free_at = start + m_packet_time;
     m_packets++;
     m_bytes += m_packet_bytes;
-    if (m_tracing) {  // m_trace exists whenever it is set
-        m_trace->crossings.emplace_back(start, m_free_at);
-        m_trace->changed.notify(sc_core::SC_ZERO_TIME);
-    }
+    if (m_recording) m_series->link_busy(m_series_index, start, m_free_at);
+    if (m_tracing && m_trace) record_use(start, m_free_at);  // m_trace: a link that takes time
     p.stamp = m_free_at;
     p.last_dir = m_dir;
     // A write to the receiving node, data = the packet as held in memory (its size on the wire is
@@ -74,25 +76,45 @@ void ToroidalLink::send(PacketPool &pool, uint32_t handle)
     if (refused) SC_REPORT_FATAL(name(), "the receiving communication unit refused a packet");
 }
 
-bool &ToroidalLink::busy_trace()
+int &ToroidalLink::use_trace()
 {
-    // The process that drives the line is made at the end of elaboration.
+    // The process that drives the value is made at the end of elaboration.
     if (sc_core::sc_get_status() != sc_core::SC_ELABORATION)
-        SC_REPORT_FATAL(name(), "a link's busy trace must be asked for before sc_start");
+        SC_REPORT_FATAL(name(), "a link's use trace must be asked for before sc_start");
     m_tracing = true;
-    return m_busy_flag;
+    return m_use;
 }
 
-void ToroidalLink::drive_busy_trace()
+void ToroidalLink::record_use(const sc_core::sc_time &start, const sc_core::sc_time &end)
 {
-    sc_core::sc_time now = sim_now();
-    auto &crossings = m_trace->crossings;
-    while (!crossings.empty() && crossings.front().second <= now) crossings.pop_front();
-    // Crossings are back to back or separated by idle time; the flag follows the front one.
-    m_busy_flag = !crossings.empty() && crossings.front().first <= now;
-    if (crossings.empty()) return;
-    const sc_core::sc_time &next = m_busy_flag ? crossings.front().second : crossings.front().first;
-    m_trace->changed.notify(next - now);
+    UseTrace &t = *m_trace;
+    // Crossings come in time order, so each piece lands in the last window listed or a later one.
+    for (uint64_t a = start.value(), b = end.value(); a < b;) {
+        uint64_t k = a / t.window, stop = std::min(b, (k + 1) * t.window);
+        if (t.windows.empty() || t.windows.back().first != k) t.windows.emplace_back(k, 0);
+        t.windows.back().second += stop - a;
+        a = stop;
+    }
+    if (t.ticking) return;
+    t.ticking = true;
+    uint64_t now = sc_core::sc_time_stamp().value();
+    t.tick.notify(sc_core::sc_time::from_value((now / t.window + 1) * t.window - now));
+}
+
+void ToroidalLink::drive_use_trace()
+{
+    UseTrace &t = *m_trace;
+    uint64_t ended = sc_core::sc_time_stamp().value() / t.window;  // window ended-1 just ended
+    while (!t.windows.empty() && t.windows.front().first + 1 < ended) t.windows.pop_front();
+    uint64_t busy = 0;
+    if (!t.windows.empty() && t.windows.front().first + 1 == ended) {
+        busy = t.windows.front().second;
+        t.windows.pop_front();
+    }
+    m_use = static_cast<int>(std::lround(100.0 * static_cast<double>(busy) / static_cast<double>(t.window)));
+    if (m_use > m_use_peak) m_use_peak = m_use;
+    t.ticking = !t.windows.empty() || m_use != 0;  // one more window shows the return to 0
+    if (t.ticking) t.tick.notify(sc_core::sc_time::from_value(t.window));
 }
 
 }  // namespace torusrt

@@ -25,6 +25,7 @@
 #include "packet_sink_if.h"
 #include "queue_registry.h"
 #include "sim_config.h"
+#include "time_series.h"
 #include "transaction_pool.h"
 
 namespace torusrt {
@@ -68,15 +69,27 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
     {
         reg.add(name(), QueueKind::link, m_from, m_spaces, m_spaces.depth_trace());
     }
-    // Traced busy line; asking for it (before sc_start) makes the process that drives it.
-    bool &busy_trace();
+    // The series told of every crossing as link `index` (null: none).
+    void record_into(TimeSeries *series, size_t index)
+    {
+        m_series = series;
+        m_series_index = index;
+        m_recording = series != nullptr;
+    }
+    // Traced use: the percentage of the last window of kUseWindow packet times the link was
+    // busy, set at each window's end; asking for it (before sc_start) makes the process that
+    // drives it.
+    int &use_trace();
+    int use_peak() const { return m_use_peak; }  // the highest traced use
+    static constexpr uint64_t kUseWindow = 100;
 
   private:
     static uint32_t index_of(const TimedPacket &p) { return 2 * p.cls + p.vc; }
     BufferSpace &space_for(const TimedPacket &p) { return m_spaces.at(index_of(p)); }
     // Sends packet `handle` of `pool` (its slot taken) now or, behind earlier crossings, later.
     void send(PacketPool &pool, uint32_t handle);
-    void drive_busy_trace();
+    void drive_use_trace();
+    void record_use(const sc_core::sc_time &start, const sc_core::sc_time &end);
     void before_end_of_elaboration() override;
     void start_of_simulation() override { m_fw = socket.operator->(); }
 
@@ -88,7 +101,7 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
     tlm::tlm_fw_transport_if<> *m_fw = nullptr;
     int m_to;  // the receiving node: each crossing is addressed to it
     int8_t m_dir;
-    bool m_tracing = false, m_busy_flag = false;
+    bool m_tracing = false, m_recording = false;  // the use traced; the crossings told to a series
     uint64_t m_packets = 0;
     double m_bytes = 0;
     double m_packet_bytes;
@@ -96,12 +109,18 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
     int m_from;
     TransactionPool m_own_transactions;
     PacketPool m_own_pool;  // packets handed over by value (accept), until they cross
-    // Busy trace (only when traced): crossings not yet over, and the event that re-evaluates.
-    struct BusyTrace {
-        std::deque<std::pair<sc_core::sc_time, sc_core::sc_time>> crossings;
-        sc_core::sc_event changed{"trace_changed"};
+    // Use trace (only when traced): the busy picoseconds of each window not yet shown (window
+    // index, busy), in time order, and the event at the next window's end while there are any.
+    struct UseTrace {
+        uint64_t window = 0;  // picoseconds
+        std::deque<std::pair<uint64_t, uint64_t>> windows;
+        sc_core::sc_event tick{"trace_tick"};
+        bool ticking = false;
     };
-    std::unique_ptr<BusyTrace> m_trace;
+    std::unique_ptr<UseTrace> m_trace;
+    int m_use = 0, m_use_peak = 0;   // the traced use and its highest value
+    TimeSeries *m_series = nullptr;  // --stats-interval's (null: none), this link's index in it
+    size_t m_series_index = 0;
 };
 
 }  // namespace torusrt

@@ -183,6 +183,13 @@ OutputSet::Id OutputSet::add(const std::string &option, const std::string &path)
     return m_entries.size() - 1;
 }
 
+bool OutputSet::writes_stream(int stream) const
+{
+    for (const Entry &e : m_entries)
+        if (e.stream == stream) return true;
+    return false;
+}
+
 void OutputSet::add_input(const std::string &option, const std::string &path)
 {
     if (!path.empty()) m_inputs.push_back({option, path});

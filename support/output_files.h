@@ -52,6 +52,8 @@ class OutputSet {
     std::string staged(Id id);
     const std::string &path(Id id) const { return m_entries[id].path; }
     bool special(Id id) const { return m_entries[id].special; }
+    // Whether an output is the command's standard error (2) or output (1).
+    bool writes_stream(int stream) const;
     // Renames every temporary onto its path. Throws UserError naming the target if one fails.
     void commit();
     // Renames only the temporaries registered for `option` (the others are removed with the

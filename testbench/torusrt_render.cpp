@@ -69,7 +69,7 @@ FrameResult render_frame(RenderSetup &setup, const std::string &label, const Ren
     if (!fb)
         throw UserError("out of memory for a " + std::to_string(cam->width) + "x" + std::to_string(cam->height) +
                         " image");
-    Progress progress(label, opt.common.quiet);
+    Progress progress(label, ProgressSettings{opt.common.quiet, 0, false});
     rt_render_options ro = setup.ro;
     ro.progress = on_progress;
     ro.progress_ctx = &progress;

@@ -18,7 +18,7 @@ def timescale_s(text):
 
 
 def busy_share(path, bins):
-    """[(bin start s, share busy)] over `bins` equal bins of the trace's span."""
+    """[(bin start s, share busy)] over `bins` equal bins from 0 to the end of the last busy span."""
     busy_ids, scope, scale, in_scale = {}, None, 1e-12, False
     intervals, since, now, scale_text = [], {}, 0, ""
     with open(path) as f:
@@ -48,7 +48,9 @@ def busy_share(path, bins):
                     since[key] = now
                 elif key in since:
                     intervals.append((since.pop(key), now))
-    end = max([now] + [b for _, b in intervals])
+    intervals += [(a, now) for a in since.values()]  # still busy where the trace ends
+    # The last processor's work ends the image; a link's use may still be written after it.
+    end = max([b for _, b in intervals], default=0)
     if not busy_ids or end == 0:
         raise ValueError(f"{path}: no processor busy signal")
     width = -(-end // bins)  # whole time units, so that a bin's end is exact

@@ -90,7 +90,8 @@ void show_progress(void *ctx, uint64_t consumed, int64_t outstanding)
 {
     auto *p = static_cast<Progress *>(ctx);
     // The total is not known in advance: show consumed against consumed + outstanding.
-    p->update(consumed, consumed + static_cast<uint64_t>(outstanding > 0 ? outstanding : 0));
+    p->update(consumed, consumed + static_cast<uint64_t>(outstanding > 0 ? outstanding : 0),
+              sc_core::sc_time_stamp().to_seconds());
 }
 
 TorusSystem &keep_until_exit(std::unique_ptr<TorusSystem> machine)
@@ -132,6 +133,7 @@ double one_processor_time(const SimConfig &config, const rt_scene *scene, const 
     one.replicate = 0;
     one.vcd_path.clear();
     one.trace_ips.clear();
+    one.stats_interval_s = 0;  // the parent writes the series
     one.quiet = true;
     one.style = TimingStyle::at;
     one.quantum_us = 0;

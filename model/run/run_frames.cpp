@@ -14,6 +14,7 @@
 #include "rt_cost_map.h"
 #include "rt_framebuffer.h"
 #include "run_stage.h"
+#include "series_recording.h"
 #include "systemc_messages.h"
 #include "torus_system.h"
 #include "tracing.h"
@@ -89,7 +90,8 @@ struct Machine {
     FramebufferPtr fb;
     TorusSystem *top = nullptr;  // kept until the process exits (keep_until_exit)
     std::unique_ptr<Tracer> tracer;
-    ElaborationMark *mark = nullptr;  // its time ends the elaboration, inside the first sc_start
+    std::unique_ptr<SeriesRecording> series;  // --stats-interval
+    ElaborationMark *mark = nullptr;          // its time ends the elaboration, inside the first sc_start
     double elaboration_start_s = 0, elaboration_wall_s = 0, sim_wall_s = 0;
     bool started = false;
 };
@@ -136,8 +138,9 @@ bool run_frame(const SimConfig &config, Machine &m, const std::string &label, co
     // Setting the frame up made its primaries: past the packet limit sc_stop was called, and
     // sc_start would fail (E546).
     if (m.ledger.over_limit()) check_budget_before_start(m.ledger, m.memory, where + "as the frame was set up: ");
-    Progress progress(label, config.quiet);
-    m.ledger.set_progress(show_progress, &progress);
+    Progress progress(label, ProgressSettings{config.quiet, config.progress_every_s, config.stderr_is_output});
+    progress.start_from(m.ledger.totals().consumed[0] + m.ledger.totals().consumed[1]);
+    if (progress.active()) m.ledger.set_progress(show_progress, &progress);
     double t0 = wall_clock_s();
     // Stopping at the limit keeps SystemC's 64-bit time from wrapping: every single delay is
     // bounded (check_timing_limits), so none can jump from below the limit past the maximum.
@@ -205,6 +208,8 @@ void elaborate(const SimConfig &config, const rt_scene *scene, const rt_grid *gr
                                                            m.fb.get(), HandOverTiming::at_once,
                                                            config.replicated() ? &replicas : nullptr));
     if (!config.vcd_path.empty()) m.tracer = std::make_unique<Tracer>(config, *m.top);
+    if (config.stats_interval_s > 0)
+        m.series = std::make_unique<SeriesRecording>(config.stats_interval_s, *m.top, m.ledger);
     m.mark = &elaboration_mark();
     check_budget_before_start(m.ledger, m.memory, "before the simulation started: ");
 }
@@ -385,6 +390,7 @@ RunOutcome run_frames(const SimConfig &config, rt_scene *scene, const rt_grid *g
     } else {
         out.frames.clear();  // a single image reports no frames
     }
+    if (m.series) out.series_csv = m.series->finish(m.ledger.image_time(), m.ledger.outstanding());
     if (m.tracer) m.tracer->finish();
     return out;
 }

@@ -51,6 +51,7 @@ struct RunOutcome {
     std::vector<std::vector<uint8_t>> images;  // every completed frame's RGB (none with frame_done)
     std::vector<FrameRecord> frames;           // an animation's frame records
     RunReport report;                          // the statistics, also after a deadlock
+    std::string series_csv;                    // --stats-interval's rows ("" without)
 };
 
 // Runs `plan`'s frames on `config`'s machine and the loaded scene (an animation leaves the

@@ -25,9 +25,21 @@ namespace {
 // and each other before the scene is read.
 struct StagedOutputs {
     OutputSet set;
-    std::optional<OutputSet::Id> png, stats, write_map, load_map, frames_csv;
+    std::optional<OutputSet::Id> png, stats, write_map, load_map, frames_csv, series;
     OutputSet::Id first_frame = 0;  // frame k is first_frame + k
 };
+
+// --stats-series, or X.series.csv beside --stats X.json (a stream or device has no "beside").
+std::string series_path(const SimRequest &r, bool stats_special)
+{
+    if (r.config.stats_interval_s <= 0) throw UserError("--stats-series: only with --stats-interval", 2);
+    if (!r.stats_series.empty()) return r.stats_series;
+    if (r.stats.empty() || stats_special)
+        throw UserError("--stats-interval: give --stats-series FILE (or --stats X.json, for X.series.csv)", 2);
+    const std::string ext = ".json";
+    bool has_ext = r.stats.size() > ext.size() && r.stats.compare(r.stats.size() - ext.size(), ext.size(), ext) == 0;
+    return (has_ext ? r.stats.substr(0, r.stats.size() - ext.size()) : r.stats) + ".series.csv";
+}
 
 void stage_outputs(SimRequest &r, StagedOutputs &out)
 {
@@ -49,8 +61,13 @@ void stage_outputs(SimRequest &r, StagedOutputs &out)
     if (!config.write_map.empty()) out.write_map = out.set.add("--write-map", config.write_map);
     if (!r.load_map.empty()) out.load_map = out.set.add("--load-map", r.load_map);
     if (!r.frames_csv.empty()) out.frames_csv = out.set.add("--frames-csv", r.frames_csv);
+    if (config.stats_interval_s > 0 || !r.stats_series.empty()) {
+        r.stats_series = series_path(r, out.stats ? out.set.special(*out.stats) : false);
+        out.series = out.set.add("--stats-series", r.stats_series);
+    }
     for (const auto &input : r.inputs) out.set.add_input(input.first, input.second);
     out.set.check();
+    config.stderr_is_output = out.set.writes_stream(2);
     if (vcd) config.vcd_write_path = out.set.staged(*vcd);
     if (gtkw) config.gtkw_write_path = out.set.staged(*gtkw);
 }
@@ -59,7 +76,8 @@ void stage_outputs(SimRequest &r, StagedOutputs &out)
 void print_written(const SimRequest &r, const std::string &first)
 {
     std::printf("  wrote        %s", first.c_str());
-    for (const std::string *path : {&r.stats, &r.frames_csv, &r.config.write_map, &r.load_map, &r.config.vcd_path})
+    for (const std::string *path :
+         {&r.stats, &r.stats_series, &r.frames_csv, &r.config.write_map, &r.load_map, &r.config.vcd_path})
         if (!path->empty()) std::printf(", %s", path->c_str());
     if (!r.config.gtkw_path.empty()) std::printf(" (gtkwave %s)", r.config.gtkw_path.c_str());
     std::printf("\n");
@@ -168,6 +186,7 @@ void write_outputs(const SimRequest &r, const rt_scene *scene, StagedOutputs &ou
     write_stats(outputs, r, out.report);
     if (outputs.frames_csv)
         write_text_file(outputs.set.staged(*outputs.frames_csv), r.frames_csv, frames_csv(out.frames));
+    if (outputs.series) write_text_file(outputs.set.staged(*outputs.series), r.stats_series, out.series_csv);
     outputs.set.commit();
 }
 

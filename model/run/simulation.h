@@ -33,7 +33,9 @@ struct SimRequest {
     // are frame_files.
     std::string image;
     std::vector<std::string> frame_files;
-    std::string stats, load_map, frames_csv;  // the trace and --write-map are config.vcd_path, config.write_map
+    std::string stats, load_map, frames_csv;
+    std::string stats_series;  // --stats-series, or (with --stats-interval) a name from --stats  // the trace and
+                               // --write-map are config.vcd_path, config.write_map
     // Input files (option, path) that no output may replace.
     std::vector<std::pair<std::string, std::string>> inputs;
 

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The GTKWave save file beside a VCD opens in the real GTKWave (under Xvfb) ready to read: the
-# window covers the whole run, or the --trace-from/--trace-to window; every row has a distinct
-# name saying what it is; the dump is found relative to the save file, so the pair can be moved.
+# window covers the whole run, or the --trace-from/--trace-to window; it opens on a group of every
+# processor's busy row alone, then a group per node; a link's row is its use in percent drawn as an
+# analog step, its peak in its name; every row has a distinct name saying what it is; the dump is
+# found relative to the save file, so the pair can be moved.
 source "$(dirname "$0")/common.bash" "$@"
 need_exe torusrt-sim
 for tool in gtkwave xvfb-run; do
@@ -15,8 +17,8 @@ probe() {
     grep '^PROBE ' "$TMP/$1.out" | sed 's/^PROBE //' > "$TMP/$1.probe"
 }
 value() { awk -v k="$2" '$1 == k { print $2 }' "$TMP/$1.probe"; }
-# rows NAME: the signal rows' names (the group rows are named "node N").
-rows() { sed -n 's/^row //p' "$TMP/$1.probe" | grep -v '^node [0-9]*$'; }
+# rows NAME: the signal rows' names (the group rows are named "processors busy" and "node N").
+rows() { sed -n 's/^row //p' "$TMP/$1.probe" | grep -v '^node [0-9]*$' | grep -vx 'processors busy'; }
 
 mkdir -p "$TMP/run/out" "$TMP/moved"
 (cd "$TMP/run" && "${sim[@]}" -o out/a.png --stats out/a.json --ips 4x2x2 --vcd out/t.vcd) || fail "traced run"
@@ -33,11 +35,20 @@ check "GTKWave shows every signal of the save file ($(wc -l < "$TMP/whole.rows")
     test "$(wc -l < "$TMP/whole.rows")" -eq "$(grep -c '^+{' "$TMP/moved/t.gtkw")"
 check "every row's name is distinct: $(sort "$TMP/whole.rows" | uniq -d | head -3 | tr '\n' ';')" \
     test -z "$(sort "$TMP/whole.rows" | uniq -d)"
-for name in "ip 3 busy" "ip 3 queue" "link 3->0 +x busy" "link 3->2 -x queue" "link 3->7 +y busy" "link 3->7 -y busy" \
-    "link 3->11 +z queue"; do
+for name in "ip 3 busy" "ip 3 queue" "link 3->2 -x queue" "link 3->11 +z queue"; do
     check "a row is named '$name'" grep -qxF "$name" "$TMP/whole.rows"
 done
-check "the rows are grouped per node" test "$(grep -c '^row node ' "$TMP/whole.probe")" -eq 32
+for name in "link 3->0 +x use" "link 3->7 +y use" "link 3->7 -y use"; do
+    check "a row is named '$name % (peak N)'" grep -qE "^${name//+/\\+} % \(peak [0-9]{1,3}\)\$" "$TMP/whole.rows"
+done
+check "no link row is a busy flag" test -z "$(grep '^link .* busy$' "$TMP/whole.rows")"
+sed -n 's/^row //p' "$TMP/whole.probe" | head -18 > "$TMP/first.rows"
+check "the window opens on the group of the processors' busy rows, ip 0 to ip 15 in order, alone" \
+    test "$(cat "$TMP/first.rows")" = "$(echo 'processors busy'; for i in $(seq 0 15); do echo "ip $i busy"; done; echo 'processors busy')"
+check "then a group per node" test "$(grep -c '^row node ' "$TMP/whole.probe")" -eq 32
+check "no processor's busy row in a node's group" test "$(grep -c '^ip .* busy$' "$TMP/whole.rows")" -eq 16
+check "every link's use is an analog step (flags 0x88024)" \
+    test "$(grep -B1 '^+{link .* use' "$TMP/moved/t.gtkw" | grep -c '^@88024$')" -eq 96
 
 "${sim[@]}" -o "$TMP/w.png" --ips 4x2x2 --vcd "$TMP/w.vcd" --trace-from 1ms --trace-to 3ms || fail "windowed run"
 probe window "$TMP/w.gtkw"

@@ -40,7 +40,9 @@ for t in a c; do
     check "$t: save file names its VCD beside it" grep -qxF "[dumpfile] \"$t.vcd\"" "$TMP/$t.gtkw"
     check "$t: queue depths shown decimal (flag @24 before each)" \
         awk '/queue_depth/ { if (prev != "@24") bad = 1; n++ } { prev = $0 } END { exit bad || n == 0 }' "$TMP/$t.gtkw"
-    check "$t: one group per node" test "$(grep -c '^@800200$' "$TMP/$t.gtkw")" -eq "$nodes"
+    check "$t: the processors' busy group, then one group per node" \
+        test "$(grep -A1 '^@800200$' "$TMP/$t.gtkw" | grep '^-[^-]' | tr '\n' ' ')" = \
+        "-processors busy $(for ((n = 0; n < nodes; n++)); do printf -- '-node %d ' "$n"; done)"
 done
 check "links named by their ends" grep -q 'link_0_to_1_xp' "$TMP/a.vcd.names"
 check "cluster bus in the save file" grep -q 'cluster_1.bus.owner' "$TMP/c.gtkw.names"

@@ -62,6 +62,10 @@ for input in "${sim_inputs[@]}"; do
     done
     refused "sim --frames-csv onto $file" "${sim[@]}" scene.nff "${extra[@]}" "${anim[@]}" -o "out/f%d.png" \
         --frames-csv "$file"
+    o=(-o out/a.png)
+    [ ${#anim[@]} -eq 0 ] && o=(-o "out/f%d.png")
+    refused "sim --stats-series onto $file" "${sim[@]}" scene.nff "${extra[@]}" "${o[@]}" --stats-interval 1ms \
+        --stats-series "$file"
     # A frame of the pattern is the input: x%d.EXT with the input copied to x1.EXT.
     ext=${file##*.}
     cp "$file" "x1.$ext" && cp "$file" "keep.x1.$ext"
@@ -76,6 +80,14 @@ for input in "${sim_inputs[@]}"; do
     check "sim: no other frame written" [ ! -e "x0.$ext" ] && [ ! -e "x2.$ext" ]
     rm -f "x1.$ext" "keep.x1.$ext" x0."$ext" x2."$ext"
 done
+
+# The series' name made from --stats (X.series.csv beside X.json) is judged as any output.
+cp t.timing t.series.csv
+refused "sim: the series beside --stats t.json is the --timing t.series.csv" "${sim[@]}" scene.nff \
+    --timing t.series.csv -o out/a.png --stats out/../t.json --stats-interval 1ms
+rm -f t.series.csv
+refused "sim: --stats-series is --stats" "${sim[@]}" scene.nff -o out/a.png --stats out/s.json --stats-interval 1ms \
+    --stats-series out/s.json
 
 for input in "${render_inputs[@]}"; do
     file=$(file_of "$input")

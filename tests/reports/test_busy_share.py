@@ -69,6 +69,17 @@ class BusyShare(unittest.TestCase):
         # (30 + 10) ns busy over 2 processors x 40 ns.
         self.assertEqual(busy_share(self.path, 1), [(0.0, 0.5)])
 
+    def test_the_bins_end_with_the_last_busy_span(self):
+        # A link's use written 20 ns after the image's end does not stretch the bins.
+        with open(self.path, "a") as f:
+            f.write("#60\n1d\n")
+        self.assertEqual([share for _, share in busy_share(self.path, 4)], [0.5, 0.25, 0.75, 0.5])
+
+    def test_a_processor_busy_at_the_end_of_a_window_counts_to_it(self):
+        with open(self.path, "w") as f:
+            f.write(TRACE.replace("#40\n0a\n", "#40\n"))
+        self.assertEqual(busy_share(self.path, 1), [(0.0, 0.5)])
+
     def test_a_trace_without_processors_is_refused(self):
         with open(self.path, "w") as f:
             f.write("$timescale 1 ps $end\n#0\n#5\n")

@@ -9,6 +9,8 @@ namespace torusrt {
 
 namespace {
 
+[[noreturn]] void bad(const std::string &message);
+
 using G = OptionGroup;
 using K = ValueKind;
 
@@ -16,6 +18,20 @@ using K = ValueKind;
 double time_us(const OptionSpec &s, const std::string &text) { return parse_time(s.long_name(), text, 0, -6); }
 double time_s(const OptionSpec &s, const std::string &text) { return parse_time(s.long_name(), text, 0, 0); }
 double real(const OptionSpec &s, const std::string &text) { return parse_real(s.long_name(), text, s.min, s.max); }
+
+// --stats-interval: at least 1 ps, SystemC's resolution.
+void read_stats_interval(const OptionSpec &s, const std::string &t, SimRequest &r)
+{
+    r.config.stats_interval_s = time_s(s, t);
+    if (r.config.stats_interval_s < 1e-12) bad(s.long_name() + " '" + shown_text(t) + "': must be at least 1 ps");
+}
+
+void read_progress_every(const OptionSpec &s, const std::string &t, SimRequest &r)
+{
+    r.config.progress_every_s = time_s(s, t);
+    if (r.config.progress_every_s > s.max)
+        bad(s.long_name() + " '" + shown_text(t) + "': must be at most " + number_text(s.max) + " s");
+}
 
 std::vector<RunOption> make_table()
 {
@@ -33,11 +49,19 @@ std::vector<RunOption> make_table()
          }},
         {{"--frames-csv", "FILE", K::file, "", 0, 0, "", "write one CSV row per frame of an animation", G::outputs, ""},
          [](const OptionSpec &, const std::string &t, SimRequest &r) { r.frames_csv = t; }},
+        {{"--stats-interval", "TIME", K::time, "", 0, max_s, "s",
+          "write statistics over time, one CSV row per interval of this simulated length, e.g. 10ms (to "
+          "--stats-series, or X.series.csv beside --stats X.json)",
+          G::outputs, ""},
+         read_stats_interval},
+        {{"--stats-series", "FILE", K::file, "", 0, 0, "",
+          "with --stats-interval: the CSV file of the statistics over time", G::outputs, ""},
+         [](const OptionSpec &, const std::string &t, SimRequest &r) { r.stats_series = t; }},
         {{"--t1", "TIME", K::time, "", 0, max_s, "s",
           "T(1) for the efficiency T(1)/(n T(n)) (default: run the model with one processor)", G::outputs, ""},
          [](const OptionSpec &s, const std::string &t, SimRequest &r) { r.config.t1_s = time_s(s, t); }},
         {{"--vcd", "FILE", K::file, "", 0, 0, "",
-          "write a VCD trace (IP busy, queue depths, link and bus activity) and a GTKWave save file beside "
+          "write a VCD trace (IP busy, queue depths, link use, bus activity) and a GTKWave save file beside "
           "it (X.gtkw for X.vcd)",
           G::tracing, ""},
          [](const OptionSpec &, const std::string &t, SimRequest &r) { r.config.vcd_path = t; }},
@@ -71,6 +95,11 @@ std::vector<RunOption> make_table()
           "is better by more than this fraction",
           G::animation, ""},
          [](const OptionSpec &s, const std::string &t, SimRequest &r) { r.adaptive.margin = real(s, t); }},
+        {{"--progress-every", "TIME", K::time, "10s", 0, 1e6, "s",
+          "when standard error is no terminal (a batch log), a progress line this often in wall time: simulated "
+          "time, packets done, time left (0: none)",
+          G::run, ""},
+         read_progress_every},
         {{"--time-limit", "TIME", K::time, "1e7s", 0, max_s, "s",
           "stop with an error (exit 1) when simulated time passes this (at most 1e7 s: SystemC's 64-bit "
           "picosecond time holds 1.8e7 s)",

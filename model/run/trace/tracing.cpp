@@ -78,15 +78,24 @@ Tracer::Tracer(const SimConfig &config, TorusSystem &top) : m_config(config)
     m_file->set_time_unit(1, sc_core::SC_PS);
     std::set<int> nodes(config.trace_ips.begin(), config.trace_ips.end());
     auto procs = top.processors();
+    // First every traced processor's busy row, one under the other, then a group per node.
+    Group busy{"processors busy", {}};
+    for (int node = 0; node < config.node_count(); node++) {
+        if (!nodes.empty() && nodes.count(node) == 0) continue;
+        for (int k = 0; k < config.cluster; k++) {
+            IntersectionProcessor *p = procs[static_cast<size_t>(node * config.cluster + k)];
+            add(busy, p->busy_trace(), std::string(p->name()) + ".busy");
+        }
+    }
+    m_groups.push_back(busy);
     for (int node = 0; node < config.node_count(); node++) {
         if (!nodes.empty() && nodes.count(node) == 0) continue;
         Group g{"node " + std::to_string(node), {}};
-        for (int k = 0; k < config.cluster; k++) {
-            IntersectionProcessor *p = procs[static_cast<size_t>(node * config.cluster + k)];
-            add(g, p->busy_trace(), std::string(p->name()) + ".busy");
-        }
         for (const auto &l : top.links())
-            if (l->from() == node) add(g, l->busy_trace(), std::string(l->name()) + ".busy");
+            if (l->from() == node) {
+                add(g, l->use_trace(), std::string(l->name()) + ".use", Shown::level);
+                g.signals.back().link = l.get();
+            }
         if (static_cast<size_t>(node) < top.clusters().size()) trace_cluster(g, *top.clusters()[node]);
         for (const QueueRef &q : top.queues().all())  // every buffer held in this node
             if (q.node == node) add(g, *q.depth, q.trace);
@@ -97,13 +106,13 @@ Tracer::Tracer(const SimConfig &config, TorusSystem &top) : m_config(config)
 void Tracer::add(Group &g, bool &value, const std::string &name)
 {
     sc_core::sc_trace(m_file, value, name);
-    g.signals.push_back({"SystemC." + name, alias_of(name), false});  // SystemC's VCD scope is SystemC
+    g.signals.push_back({"SystemC." + name, alias_of(name), Shown::flag});  // SystemC's VCD scope is SystemC
 }
 
-void Tracer::add(Group &g, int &value, const std::string &name)
+void Tracer::add(Group &g, int &value, const std::string &name, Shown shown)
 {
     sc_core::sc_trace(m_file, value, name);
-    g.signals.push_back({"SystemC." + name + "[31:0]", alias_of(name), true});
+    g.signals.push_back({"SystemC." + name + "[31:0]", alias_of(name), shown});
 }
 
 void Tracer::trace_cluster(Group &g, ClusterNode &cluster)
@@ -128,7 +137,10 @@ std::string Tracer::save_file_text(uint64_t end_ps) const
     char zoom[64];
     std::snprintf(zoom, sizeof zoom, "*%.6f -1\n", -std::log2(span * 200.0 / kSpanPixels));
     // GTKWave flags: 0x200 blank (a label line), 0x800000/0x1000000 group begin/end,
-    // 0x28 binary, 0x24 decimal (right-justified); "+{NAME} SIGNAL" shows SIGNAL as NAME.
+    // 0x28 binary, 0x24 decimal (right-justified), 0x88024 decimal drawn as an analog step
+    // (0x8000) scaled to the row's range over the whole trace (0x80000): a link's use in percent,
+    // its peak in the row's name, so that a link used 1 % of the time reads low, not solid;
+    // "+{NAME} SIGNAL" shows SIGNAL as NAME.
     std::string s = "[*] torusrt trace: open with  gtkwave FILE.gtkw\n";
     s += "[dumpfile] \"" + base_name(m_config.vcd_path) + "\"\n";
     s += "[savefile] \"" + base_name(m_config.gtkw_path) + "\"\n";
@@ -137,8 +149,12 @@ std::string Tracer::save_file_text(uint64_t end_ps) const
     s += zoom;
     for (const auto &g : m_groups) {
         s += "@800200\n-" + g.name + "\n";
-        for (const auto &sig : g.signals)
-            s += std::string(sig.counter ? "@24\n" : "@28\n") + "+{" + sig.alias + "} " + sig.name + "\n";
+        for (const auto &sig : g.signals) {
+            std::string alias = sig.alias;
+            if (sig.link) alias += " % (peak " + std::to_string(sig.link->use_peak()) + ")";
+            s += std::string(sig.shown == Shown::flag ? "@28\n" : sig.shown == Shown::count ? "@24\n" : "@88024\n");
+            s += "+{" + alias + "} " + sig.name + "\n";
+        }
         s += "@1000200\n-" + g.name + "\n";
     }
     return s;

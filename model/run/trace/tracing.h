@@ -1,5 +1,6 @@
-// tracing.h - the optional VCD trace: IP busy, link activity, bus owner and request lines, the
-// depth of every queue of the queue registry, and a GTKWave save file that groups them per node.
+// tracing.h - the optional VCD trace: IP busy, link use, bus owner and request lines, the
+// depth of every queue of the queue registry, and a GTKWave save file: the processors' busy rows
+// first, then a group per node.
 // Created only when --vcd is given; the trace goes through a VcdStream (every write checked,
 // optional time window) into the path the run's OutputSet handed out.
 #pragma once
@@ -25,17 +26,19 @@ class Tracer {
     void finish();
 
   private:
+    enum class Shown { flag, count, level };  // a binary row, a decimal row, an analog step
     struct Signal {
         std::string name;   // as GTKWave names it: SystemC.top.ip_3.busy
         std::string alias;  // the row's name: ip 3 busy
-        bool counter;       // shown in decimal
+        Shown shown;
+        const ToroidalLink *link = nullptr;  // a link's use: its peak is added to the name
     };
     struct Group {
         std::string name;
         std::vector<Signal> signals;
     };
     void add(Group &g, bool &value, const std::string &name);
-    void add(Group &g, int &value, const std::string &name);
+    void add(Group &g, int &value, const std::string &name, Shown shown = Shown::count);
     void trace_cluster(Group &g, ClusterNode &cluster);
     std::string save_file_text(uint64_t end_ps) const;  // end_ps: the end of the run
 
