@@ -28,7 +28,11 @@ struct TimedPacket {
     int8_t last_dir = -1;
     bool reserved = false;
     bool from_host = false;  // a primary packet from the host, not yet in any buffer
-    rt_packet packet{};      // the kernel's packet
+    uint16_t hops = 0;       // links crossed since it was made (latency statistics)
+    // Latency statistics (packet_latency.h), read and written by processors only: when the packet
+    // was made (a primary: its injection) and the steps that handed it on so far.
+    sc_core::sc_time born, worked;
+    rt_packet packet{};  // the kernel's packet
 };
 
 // Packets cross links as a generic payload (command WRITE, data = the packet's bytes on the wire)

@@ -55,6 +55,7 @@ void ToroidalLink::send(PacketPool &pool, uint32_t handle)
     }
     p.stamp = m_free_at;
     p.last_dir = m_dir;
+    p.hops++;
     // A write to the receiving node, data = the packet as held in memory (its size on the wire is
     // a timing parameter); the packet itself goes by handle, with the slot it holds here.
     TransactionPool::Crossing c = m_transactions->take();
