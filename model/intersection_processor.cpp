@@ -185,8 +185,10 @@ void IntersectionProcessor::begin_step()
     m_room_waited = sc_core::SC_ZERO_TIME;
     // A primary's first step: nothing worked on it yet, no link crossed.
     const rt_packet &in = m_cur->packet;
-    if (in.depth == 0 && in.kind == RT_PACKET_RAY && m_cur->hops == 0 && m_cur->worked == sc_core::SC_ZERO_TIME)
+    if (in.depth == 0 && in.kind == RT_PACKET_RAY && m_cur->hops == 0 && m_cur->worked == sc_core::SC_ZERO_TIME) {
+        m_cur->born = m_start;  // its wait in the host's memory, in no buffer, is not its latency
         m_ledger.latency().primary_started(in.x, in.y, m_start);
+    }
     if (m_params.on_test)
         for (uint32_t obj : m_tested) fetch->fetch(m_index, obj, m_time);  // a thread: it may wait
 }

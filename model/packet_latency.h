@@ -1,5 +1,5 @@
 // packet_latency.h - latency statistics in fixed memory: per packet kind, the time from a
-// packet's making (a primary: its injection) to its consumption, split into time in processing
+// packet's making (a primary: its first step) to its consumption, split into time in processing
 // (the steps that handed it on and the one that consumed it), on links (its hops times a link's
 // packet time) and queued (the rest: buffers, link queues, the bus, held for room); per pixel,
 // from the start of its primary's first step to its last frame-buffer contribution. Totals go into a log

@@ -51,7 +51,7 @@ TimedPacket PrimarySource::peek(int node) const
     TimedPacket t{};
     int enters = 0;
     rt_primary_packet(m_scene, m_grid, pixel % m_width, pixel / m_width, &t.packet, &enters);
-    t.stamp = t.born = inject_time(pixel);
+    t.stamp = inject_time(pixel);
     t.from_host = true;
     return t;
 }

@@ -30,7 +30,7 @@ struct TimedPacket {
     bool from_host = false;  // a primary packet from the host, not yet in any buffer
     uint16_t hops = 0;       // links crossed since it was made (latency statistics)
     // Latency statistics (packet_latency.h), read and written by processors only: when the packet
-    // was made (a primary: its injection) and the steps that handed it on so far.
+    // was made (a primary: its first step) and the steps that handed it on so far.
     sc_core::sc_time born, worked;
     rt_packet packet{};  // the kernel's packet
 };
