@@ -2,12 +2,18 @@
 // up) and its two drivers: SC_METHODs (flat) or an SC_THREAD (cluster).
 #include "intersection_processor.h"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "flow_control.h"
 #include "sim_now.h"
 
 namespace torusrt {
+
+namespace {
+const sc_core::sc_time kNanosecond(1, sc_core::SC_NS);
+}
 
 IntersectionProcessor::IntersectionProcessor(sc_core::sc_module_name name, const MachineConfig &config,
                                              const rt_scene *scene, const rt_grid *grid, const int32_t *cell_owner,
@@ -185,7 +191,7 @@ void IntersectionProcessor::begin_step()
     m_room_waited = sc_core::SC_ZERO_TIME;
     // A primary's first step: nothing worked on it yet, no link crossed.
     const rt_packet &in = m_cur->packet;
-    if (in.depth == 0 && in.kind == RT_PACKET_RAY && m_cur->hops == 0 && m_cur->worked == sc_core::SC_ZERO_TIME) {
+    if (in.depth == 0 && in.kind == RT_PACKET_RAY && m_cur->hops == 0 && m_cur->worked_ns == 0) {
         m_cur->born = m_start;  // its wait in the host's memory, in no buffer, is not its latency
         m_ledger.latency().primary_started(in.x, in.y, m_start);
     }
@@ -215,11 +221,13 @@ void IntersectionProcessor::end_step()
     sc_core::sc_time step = m_handed_at - m_start;
     if (m_result.fate == RT_FATE_FORWARDED) {
         m_ledger.forwarded();
-        m_cur->worked += step;  // it goes on, in its slot or as the last output
+        // It goes on, in its slot or as the last output; its steps' time saturates.
+        uint64_t ns = m_cur->worked_ns + static_cast<uint64_t>(std::llround(step / kNanosecond));
+        m_cur->worked_ns = static_cast<uint32_t>(std::min<uint64_t>(ns, UINT32_MAX));
         if (!m_forward_pooled) {
             TimedPacket &copy = m_outputs.back();
             copy.born = m_cur->born;
-            copy.worked = m_cur->worked;
+            copy.worked_ns = m_cur->worked_ns;
             copy.hops = m_cur->hops;
         }
     } else {
@@ -227,7 +235,7 @@ void IntersectionProcessor::end_step()
         int kind = in.kind == RT_PACKET_SHADOW ? PacketLatency::shadow
                    : in.depth == 0             ? PacketLatency::primary
                                                : PacketLatency::ray;
-        m_ledger.latency().consumed(kind, m_cur->born, m_cur->worked, step, m_cur->hops, m_handed_at);
+        m_ledger.latency().consumed(kind, m_cur->born, m_cur->worked_ns * kNanosecond, step, m_cur->hops, m_handed_at);
         m_ledger.consumed(m_cur->packet.kind, m_handed_at);
     }
     for (size_t i = 0; i < m_result.created_count; i++) m_outputs[i].born = m_handed_at;

@@ -28,10 +28,13 @@ struct TimedPacket {
     int8_t last_dir = -1;
     bool reserved = false;
     bool from_host = false;  // a primary packet from the host, not yet in any buffer
-    uint16_t hops = 0;       // links crossed since it was made (latency statistics)
-    // Latency statistics (packet_latency.h), read and written by processors only: when the packet
-    // was made (a primary: its first step) and the steps that handed it on so far.
-    sc_core::sc_time born, worked;
+    // Latency statistics (packet_latency.h), 16 bytes: the links crossed since the packet was
+    // made, the steps that handed it on so far (nanoseconds, at most 2^32 - 1, about 4.3 s) and
+    // when it was made (a primary: its first step); only links write `hops`, only processors the
+    // others.
+    uint16_t hops = 0;
+    uint32_t worked_ns = 0;
+    sc_core::sc_time born;
     rt_packet packet{};  // the kernel's packet
 };
 
