@@ -3,17 +3,12 @@
 #include "intersection_processor.h"
 
 #include <algorithm>
-#include <cmath>
 #include <stdexcept>
 
 #include "flow_control.h"
 #include "sim_now.h"
 
 namespace torusrt {
-
-namespace {
-const sc_core::sc_time kNanosecond(1, sc_core::SC_NS);
-}
 
 IntersectionProcessor::IntersectionProcessor(sc_core::sc_module_name name, const MachineConfig &config,
                                              const rt_scene *scene, const rt_grid *grid, const int32_t *cell_owner,
@@ -211,18 +206,19 @@ void IntersectionProcessor::end_step()
         m_fb_trans.set_streaming_width(m_fb_trans.get_data_length());
         m_fb_trans.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
         m_fb->b_transport(m_fb_trans, delay);
-        for (size_t i = 0; i < m_result.contrib_count; i++)
-            m_ledger.latency().contributed(m_result.contrib[i].x, m_result.contrib[i].y, m_time.now());
     }
     // New packets are counted before the input is consumed, so the ledger never sees
     // zero outstanding while work remains.
     m_handed_at = m_time.now();
+    for (size_t i = 0; i < m_result.contrib_count; i++)
+        m_ledger.latency().contributed(m_result.contrib[i].x, m_result.contrib[i].y, m_handed_at);
     for (size_t i = 0; i < m_result.created_count; i++) m_ledger.created(m_result.created[i].kind);
     sc_core::sc_time step = m_handed_at - m_start;
     if (m_result.fate == RT_FATE_FORWARDED) {
         m_ledger.forwarded();
-        // It goes on, in its slot or as the last output; its steps' time saturates.
-        uint64_t ns = m_cur->worked_ns + static_cast<uint64_t>(std::llround(step / kNanosecond));
+        // It goes on, in its slot or as the last output; its steps' time (time values are
+        // picoseconds, module_stats.h) saturates.
+        uint64_t ns = m_cur->worked_ns + step.value() / 1000;
         m_cur->worked_ns = static_cast<uint32_t>(std::min<uint64_t>(ns, UINT32_MAX));
         if (!m_forward_pooled) {
             TimedPacket &copy = m_outputs.back();
@@ -235,7 +231,8 @@ void IntersectionProcessor::end_step()
         int kind = in.kind == RT_PACKET_SHADOW ? PacketLatency::shadow
                    : in.depth == 0             ? PacketLatency::primary
                                                : PacketLatency::ray;
-        m_ledger.latency().consumed(kind, m_cur->born, m_cur->worked_ns * kNanosecond, step, m_cur->hops, m_handed_at);
+        m_ledger.latency().consumed(kind, m_cur->born, m_cur->worked_ns * UINT64_C(1000), step, m_cur->hops,
+                                    m_handed_at);
         m_ledger.consumed(m_cur->packet.kind, m_handed_at);
     }
     for (size_t i = 0; i < m_result.created_count; i++) m_outputs[i].born = m_handed_at;
@@ -260,6 +257,7 @@ bool IntersectionProcessor::hand_over()
         o.stamp = m_handed_at;
         if (!m_out->can_accept(o)) {  // a packet of ours is held (--flow none)
             m_out->on_space(o, m_out_room);
+            m_hand_over_waited = true;
             return false;
         }
         // A cluster's bus port waits here for the bus (a thread).
@@ -269,7 +267,9 @@ bool IntersectionProcessor::hand_over()
     }
     if (m_forward_pooled) m_handle = kNoHandle;  // the receiver owns it now
     m_packets_out += total;
-    m_blocked += m_time.now() - m_handed_at;  // waiting for room or the bus to hand over
+    // Waiting for room or (a thread) the bus to hand over.
+    if (m_threaded || m_hand_over_waited) m_blocked += m_time.now() - m_handed_at;
+    m_hand_over_waited = false;
     return true;
 }
 

@@ -190,7 +190,8 @@ class IntersectionProcessor : public sc_core::sc_module,
     // for the outputs of a packet in the queue began at m_room_from (m_room_wait: it is on).
     sc_core::sc_time m_starved, m_blocked, m_room_from, m_room_waited;
     bool m_room_wait = false;
-    size_t m_next_out = 0;  // the next output to hand over
+    bool m_hand_over_waited = false;  // a method: the hand-over waited for the processor side
+    size_t m_next_out = 0;            // the next output to hand over
     uint64_t m_packets_in = 0, m_packets_out = 0;
     bool m_busy_flag = false;
     rt_op_counts m_ops{};
