@@ -2,6 +2,7 @@
 // up) and its two drivers: SC_METHODs (flat) or an SC_THREAD (cluster).
 #include "intersection_processor.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "flow_control.h"
@@ -139,10 +140,18 @@ IntersectionProcessor::Wake IntersectionProcessor::act()
             break;
         case Stage::take_up:
             if (!try_take_up()) {
+                if (!m_room_wait && !m_queue.empty()) {  // a packet waits for room for its outputs
+                    m_room_wait = true;
+                    m_room_from = m_time.now();
+                }
                 m_queue.wait_reader();
                 return m_queue.empty() ? Wake::queue : Wake::queue_or_room;
             }
             m_time.settle(m_before);  // it may have waited for room
+            if (m_room_wait) {
+                m_room_waited = m_time.now() - m_room_from;
+                m_room_wait = false;
+            }
             m_stage = Stage::begin;
             if (owe(m_time.advance_to_nb(m_cur->stamp))) return Wake::timer;  // never start before it arrived
             break;
@@ -171,6 +180,16 @@ void IntersectionProcessor::begin_step()
     m_busy_flag = true;
     rt_ops_add(&m_ops, &m_result.ops);
     m_start = m_time.now();
+    // The idle time since the last hand-over: waiting for room, else for a packet to take up.
+    m_blocked += m_room_waited;
+    m_starved += m_start - m_before - m_room_waited;
+    m_room_waited = sc_core::SC_ZERO_TIME;
+    // A primary's first step: nothing worked on it yet, no link crossed.
+    const rt_packet &in = m_cur->packet;
+    if (in.depth == 0 && in.kind == RT_PACKET_RAY && m_cur->hops == 0 && m_cur->worked_ns == 0) {
+        m_cur->born = m_start;  // its wait in the host's memory, in no buffer, is not its latency
+        m_ledger.latency().primary_started(in.x, in.y, m_start);
+    }
     if (m_params.on_test)
         for (uint32_t obj : m_tested) fetch->fetch(m_index, obj, m_time);  // a thread: it may wait
 }
@@ -192,9 +211,32 @@ void IntersectionProcessor::end_step()
     // New packets are counted before the input is consumed, so the ledger never sees
     // zero outstanding while work remains.
     m_handed_at = m_time.now();
+    for (size_t i = 0; i < m_result.contrib_count; i++)
+        m_ledger.latency().contributed(m_result.contrib[i].x, m_result.contrib[i].y, m_handed_at);
     for (size_t i = 0; i < m_result.created_count; i++) m_ledger.created(m_result.created[i].kind);
-    if (m_result.fate == RT_FATE_FORWARDED) m_ledger.forwarded();
-    else m_ledger.consumed(m_cur->packet.kind, m_handed_at);
+    sc_core::sc_time step = m_handed_at - m_start;
+    if (m_result.fate == RT_FATE_FORWARDED) {
+        m_ledger.forwarded();
+        // It goes on, in its slot or as the last output; its steps' time (time values are
+        // picoseconds, module_stats.h) saturates.
+        uint64_t ns = m_cur->worked_ns + step.value() / 1000;
+        m_cur->worked_ns = static_cast<uint32_t>(std::min<uint64_t>(ns, UINT32_MAX));
+        if (!m_forward_pooled) {
+            TimedPacket &copy = m_outputs.back();
+            copy.born = m_cur->born;
+            copy.worked_ns = m_cur->worked_ns;
+            copy.hops = m_cur->hops;
+        }
+    } else {
+        const rt_packet &in = m_cur->packet;
+        int kind = in.kind == RT_PACKET_SHADOW ? PacketLatency::shadow
+                   : in.depth == 0             ? PacketLatency::primary
+                                               : PacketLatency::ray;
+        m_ledger.latency().consumed(kind, m_cur->born, m_cur->worked_ns * UINT64_C(1000), step, m_cur->hops,
+                                    m_handed_at);
+        m_ledger.consumed(m_cur->packet.kind, m_handed_at);
+    }
+    for (size_t i = 0; i < m_result.created_count; i++) m_outputs[i].born = m_handed_at;
     if (m_handle != kNoHandle && !m_forward_pooled) {  // consumed: its slot is free
         m_queue.pool().release(m_handle);
         m_handle = kNoHandle;
@@ -216,6 +258,7 @@ bool IntersectionProcessor::hand_over()
         o.stamp = m_handed_at;
         if (!m_out->can_accept(o)) {  // a packet of ours is held (--flow none)
             m_out->on_space(o, m_out_room);
+            m_hand_over_waited = true;
             return false;
         }
         // A cluster's bus port waits here for the bus (a thread).
@@ -225,6 +268,9 @@ bool IntersectionProcessor::hand_over()
     }
     if (m_forward_pooled) m_handle = kNoHandle;  // the receiver owns it now
     m_packets_out += total;
+    // Waiting for room or (a thread) the bus to hand over.
+    if (m_threaded || m_hand_over_waited) m_blocked += m_time.now() - m_handed_at;
+    m_hand_over_waited = false;
     return true;
 }
 

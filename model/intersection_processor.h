@@ -103,7 +103,11 @@ class IntersectionProcessor : public sc_core::sc_module,
     uint64_t packets_in() const { return m_packets_in; }
     uint64_t packets_out() const { return m_packets_out; }
     PacketQueue &queue() { return m_queue; }
-    IpStats stats() const { return {m_busy.to_seconds(), m_packets_in, m_packets_out, m_queue.high_water(), m_ops}; }
+    IpStats stats() const
+    {
+        return {m_busy.to_seconds(), m_starved.to_seconds(), m_blocked.to_seconds(), m_before.to_seconds(),
+                m_packets_in,        m_packets_out,          m_queue.high_water(),   m_ops};
+    }
     void register_queues(QueueRegistry &reg)
     {
         reg.add(std::string(name()) + ".input", QueueKind::ip, m_owner_id, m_queue.spaces(), m_queue.depth_trace(),
@@ -185,7 +189,12 @@ class IntersectionProcessor : public sc_core::sc_module,
     TimeKeeper m_time;
     sc_core::sc_time m_before, m_start, m_handed_at;
     sc_core::sc_time m_busy = sc_core::SC_ZERO_TIME;
-    size_t m_next_out = 0;  // the next output to hand over
+    // Idle time: with nothing to take up, and waiting for room or to hand over; a wait for room
+    // for the outputs of a packet in the queue began at m_room_from (m_room_wait: it is on).
+    sc_core::sc_time m_starved, m_blocked, m_room_from, m_room_waited;
+    bool m_room_wait = false;
+    bool m_hand_over_waited = false;  // a method: the hand-over waited for the processor side
+    size_t m_next_out = 0;            // the next output to hand over
     uint64_t m_packets_in = 0, m_packets_out = 0;
     bool m_busy_flag = false;
     rt_op_counts m_ops{};

@@ -26,6 +26,10 @@ struct QueueStats {
 
 struct IpStats {
     double busy_s = 0;
+    // Idle time before the last hand-over: waiting with nothing to take up (starved), waiting for
+    // room for a step's outputs or to hand them over (blocked); and when the last hand-over ended
+    // (the rest of the image time is drained).
+    double starved_s = 0, blocked_s = 0, last_done_s = 0;
     uint64_t packets_in = 0, packets_out = 0;
     uint64_t queue_high_water = 0;  // of the input queue, host primaries included
     rt_op_counts ops{};

@@ -1,10 +1,12 @@
 // packet_ledger.h - packets created and consumed by kind, and the moment the last one went:
-// completion detection for the host and the conservation check of every run.
+// completion detection for the host, the conservation check of every run and the packets'
+// latencies (packet_latency.h).
 #pragma once
 
 #include <cstdint>
 #include <systemc>
 
+#include "packet_latency.h"
 #include "rt_packet.h"
 #include "sim_now.h"
 #include "time_series.h"
@@ -61,6 +63,8 @@ class PacketLedger {
     const rt_packet_totals &totals() const { return m_totals; }
     // Simulated image time: when the last packet was consumed.
     sc_core::sc_time image_time() const { return m_last; }
+    PacketLatency &latency() { return m_latency; }
+    const PacketLatency &latency() const { return m_latency; }
 
   private:
     rt_packet_totals m_totals{};
@@ -73,6 +77,7 @@ class PacketLedger {
     uint64_t m_limit = UINT64_MAX;
     bool m_over_limit = false;
     uint64_t m_over_at = 0;
+    PacketLatency m_latency;
 };
 
 }  // namespace torusrt

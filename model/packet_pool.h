@@ -9,9 +9,10 @@
 // one used, so the packets in flight stay in few, warm cache lines. Slots live in fixed chunks: a packet never moves
 // while it is in the pool. A slot starts with what a hop uses: the credit, the node the packet is heading for (its
 // cell's owner, found once when it enters the pool: the cell does not change on the way) and the packet's hop fields
-// (timed_packet.h), 32 bytes that share a cache line in three slots of four; the kernel's packet behind them is read
-// again only at the owner. Slots are 16-byte aligned, not cache-line aligned: with thousands of packets waiting in the
-// queues of a big run, 208 bytes a slot instead of 256 is what keeps its peak memory down.
+// (timed_packet.h), 32 bytes that share a cache line in three slots of four, then the hop count and the latency fields;
+// the kernel's packet behind them is read again only at the owner. Slots are 16-byte aligned, not cache-line aligned:
+// with thousands of packets waiting in the queues of a big run, 224 bytes a slot instead of 256 is what keeps its peak
+// memory down.
 #pragma once
 
 #include <cstdint>

@@ -28,7 +28,14 @@ struct TimedPacket {
     int8_t last_dir = -1;
     bool reserved = false;
     bool from_host = false;  // a primary packet from the host, not yet in any buffer
-    rt_packet packet{};      // the kernel's packet
+    // Latency statistics (packet_latency.h), 16 bytes: the links crossed since the packet was
+    // made, the steps that handed it on so far (nanoseconds, at most 2^32 - 1, about 4.3 s) and
+    // when it was made (a primary: its first step); only links write `hops`, only processors the
+    // others.
+    uint16_t hops = 0;
+    uint32_t worked_ns = 0;
+    sc_core::sc_time born;
+    rt_packet packet{};  // the kernel's packet
 };
 
 // Packets cross links as a generic payload (command WRITE, data = the packet's bytes on the wire)

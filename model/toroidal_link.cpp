@@ -57,6 +57,7 @@ void ToroidalLink::send(PacketPool &pool, uint32_t handle)
     if (m_tracing && m_trace) record_use(start, m_free_at);  // m_trace: a link that takes time
     p.stamp = m_free_at;
     p.last_dir = m_dir;
+    p.hops++;
     // A write to the receiving node, data = the packet as held in memory (its size on the wire is
     // a timing parameter); the packet itself goes by handle, with the slot it holds here.
     TransactionPool::Crossing c = m_transactions->take();

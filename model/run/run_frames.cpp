@@ -354,6 +354,8 @@ RunOutcome run_frames(const SimConfig &config, rt_scene *scene, const rt_grid *g
     reserve_images(m.memory, cam, plan.frame_done ? 1 : n);
     reserve_frame_pilots(m.memory, scene, grid, plan);
     m.ledger.set_limit(rt_budget_packets_allowed(&m.memory, PacketPool::bytes_per_packet()));
+    m.ledger.latency().set_image(cam->width, cam->height);
+    m.ledger.latency().set_link_time(sc_core::sc_time(rt_timing_link_packet_us(&config.timing), sc_core::SC_US));
     FrameLoop loop(config, scene, grid, plan);
     m.owner = loop.first_table();
     warn_idle_nodes(config, m.owner);

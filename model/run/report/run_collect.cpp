@@ -116,6 +116,7 @@ RunReport collect(const SimConfig &config, TorusSystem &top, const PacketLedger 
     r.flow = flow_report_json(config, top, scene);
     r.packets = ledger.totals();
     r.conserved = ledger.conserved();
+    r.latency = latency_json(ledger.latency());
 
     int n = config.processor_count();
     rt_memory_use whole = rt_memory_whole_scene_layout(scene, grid, &config.memory_layout);

@@ -97,7 +97,8 @@ struct RunReport {
     std::vector<FrameRecord> frames;
     RemapSettings remap;
     std::string camera_source, output_pattern;
-    nlohmann::json motion;  // a moving scene: the motion file and the updates' totals (null: none)
+    nlohmann::json motion;   // a moving scene: the motion file and the updates' totals (null: none)
+    nlohmann::json latency;  // packet and pixel latencies (time_report.cpp)
 };
 
 // Reads the system after the run. `deadlock`: the network stalled (fills report.deadlock).
@@ -105,6 +106,14 @@ RunReport collect(const SimConfig &config, TorusSystem &top, const PacketLedger 
                   const rt_grid *grid, const int32_t *cell_owner, const RunFacts &facts, bool deadlock);
 nlohmann::json to_json(const RunReport &report);
 void print_summary(const RunReport &report, std::FILE *out);
+// Where the time goes (time_report.cpp): the JSON's `time` and `latency`, and the summary's
+// efficiency factors, time split, latency and busiest links lines.
+nlohmann::json time_breakdown_json(const RunReport &report);
+nlohmann::json latency_json(const PacketLatency &latency);
+void print_efficiency_factors(const RunReport &report, std::FILE *out);
+void print_time_split(const RunReport &report, std::FILE *out);
+void print_latency(const RunReport &report, std::FILE *out);
+void print_busiest_links(const RunReport &report, std::FILE *out);
 // Lines naming the full queues (occupancy/capacity, writers waiting) and waiting bus requesters.
 std::string deadlock_text(const RunReport &report);
 

@@ -207,6 +207,8 @@ nlohmann::json to_json(const RunReport &r)
     }
     if (!r.motion.is_null()) j["motion"] = r.motion;
     j["flow"] = r.flow;
+    j["time"] = time_breakdown_json(r);
+    if (r.latency.is_object()) j["latency"] = r.latency;
     if (r.status == "deadlock") {  // no image was finished: the stall's time is no T(n)
         j["deadlock"] = deadlock_json(r.deadlock);
         j["efficiency"] = j["efficiency_t1"] = nullptr;

@@ -148,6 +148,7 @@ void print_summary(const RunReport &r, std::FILE *out)
                      sig4(T).c_str(), r.frames.size());
     std::fprintf(out, "  efficiency   %.1f %% = T(1)/(n T(n)), n = %d   (load balance %.1f %% = busy/(n T(n)))\n",
                  T > 0 ? 100 * (f.t1_s / (n * T)) : 0.0, n, T > 0 ? 100 * (r.totals.busy_s / (n * T)) : 0.0);
+    print_efficiency_factors(r, out);
     std::fprintf(out,
                  "  timing       profile %s (hand-over send %g us, receive %g us; cell step %g us; bus cycle %g us, "
                  "memory %g us)\n",
@@ -156,6 +157,7 @@ void print_summary(const RunReport &r, std::FILE *out)
     Spread b = spread(r.ips, [](const IpStats &p) { return p.busy_s; });
     std::fprintf(out, "  busy per IP  min %s  mean %s  max %s s\n", sig4(b.min).c_str(), sig4(b.mean).c_str(),
                  sig4(b.max).c_str());
+    print_time_split(r, out);
     const rt_packet_totals &p = r.packets;
     std::fprintf(out,
                  "  packets      ray %llu  shadow %llu  created = consumed: %s  handed between nodes %llu\n"
@@ -166,6 +168,8 @@ void print_summary(const RunReport &r, std::FILE *out)
     Spread l = spread(r.links, [T](const LinkStats &k) { return T > 0 ? k.busy_s / T : 0.0; });
     std::fprintf(out, "  links        %zu links, %llu packet hops, utilisation mean %s %% max %s %%\n", r.links.size(),
                  static_cast<unsigned long long>(r.totals.hops), sig4(100 * l.mean).c_str(), sig4(100 * l.max).c_str());
+    print_busiest_links(r, out);
+    print_latency(r, out);
     print_bus(r, out);
     print_queues(r, out);
     const MemoryReport &m = r.memory;
