@@ -10,6 +10,7 @@ packages+=(python3)  # report generation (experiments/report) and its tests
 packages+=(clang-format)  # the format audit (audit.format, scripts/check_format.py)
 packages+=(slurm-wlm slurm-client munge iproute2 util-linux)  # the Slurm backend's test (tests/slurm)
 packages+=(xvfb xauth)  # the GTKWave test opens a trace in GTKWave on a virtual X display
+packages+=(linux-perf)  # bench/profile.sh: where a run's CPU time goes (perf record)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
