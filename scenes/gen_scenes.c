@@ -11,7 +11,8 @@
  *   torusrt-genscenes --help            print this usage
  * Returns 0 on success, 1 when a file cannot be written, 2 on a usage error (unknown name,
  * missing OUTDIR). Each file is written to NAME.nff.tmp and renamed, so a failed run never
- * leaves a partial NAME.nff behind.
+ * leaves a partial NAME.nff behind; the temporary is made anew (never written through a link
+ * left in its place), and a NAME.nff that is a link has its target written.
  *
  * Output is byte-reproducible: no clock, no rand(); the one pseudo-random placement uses a
  * fixed-seed 64-bit LCG. Every coordinate computed with libm is rounded to 9 significant
@@ -28,9 +29,13 @@
  *   gen/motion_scenes.c     bouncing-balls and the moving scenes' motion files
  *   gen/stiff_scenes.c      the stiff and extreme cases
  */
+#define _DEFAULT_SOURCE /* realpath, lstat */
+#include <errno.h>
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "gen/builders.h"
 #include "gen/nff_writer.h"
@@ -101,11 +106,13 @@ static int find_scene(const char *name)
 }
 
 /* Writes OUTDIR/NAME.EXT through NAME.EXT.tmp with write(f, ctx); returns 0, or 1 after
- * printing why not. */
+ * printing why not. A NAME.EXT that is a link is followed: its target is written (the link
+ * stays). The temporary is made anew (a file or link of that name left behind is removed first,
+ * never written through). */
 static int write_file(const char *outdir, const char *name, const char *ext, void (*write)(FILE *f, const void *ctx),
                       const void *ctx)
 {
-    size_t len = strlen(outdir) + strlen(name) + strlen(ext) + 16;
+    size_t len = strlen(outdir) + strlen(name) + strlen(ext) + PATH_MAX + 16;
     char *path = malloc(len), *tmp = malloc(len);
     int rc = 1;
     if (!path || !tmp) {
@@ -113,8 +120,23 @@ static int write_file(const char *outdir, const char *name, const char *ext, voi
         goto done;
     }
     snprintf(path, len, "%s/%s.%s", outdir, name, ext);
-    snprintf(tmp, len, "%s/%s.%s.tmp", outdir, name, ext);
-    FILE *f = fopen(tmp, "wb");
+    struct stat st;
+    if (lstat(path, &st) == 0 && S_ISLNK(st.st_mode)) {
+        char real[PATH_MAX];
+        if (!realpath(path, real)) {
+            fprintf(stderr, "torusrt-genscenes: %s is a link to nothing: ", path);
+            perror(NULL);
+            goto done;
+        }
+        snprintf(path, len, "%s", real);
+    }
+    if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
+        fprintf(stderr, "torusrt-genscenes: %s is not a regular file\n", path);
+        goto done;
+    }
+    snprintf(tmp, len, "%s.tmp", path);
+    FILE *f = fopen(tmp, "wbx");
+    if (!f && errno == EEXIST && remove(tmp) == 0) f = fopen(tmp, "wbx");
     if (!f) {
         fprintf(stderr, "torusrt-genscenes: cannot write %s: ", tmp);
         perror(NULL);
@@ -190,6 +212,33 @@ static int write_one(const char *outdir, const scene_def *def)
     return rc;
 }
 
+/* Whether NAME can name a scene file: not empty, at most 200 bytes, no '/', no control
+ * character, not starting with '-' or '.' (an option, or a hidden file). */
+static int good_name(const char *name)
+{
+    size_t n = strlen(name);
+    if (n == 0 || n > 200 || name[0] == '-' || name[0] == '.') return 0;
+    for (size_t i = 0; i < n; ++i)
+        if (name[i] == '/' || (unsigned char)name[i] < 0x20 || name[i] == 0x7f) return 0;
+    return 1;
+}
+
+/* Whether TEXT is a plain decimal: digits, with one '.' between digits, no sign, no exponent,
+ * no leading zero before another digit (the project's number syntax, docs/cli.md). */
+static int plain_decimal(const char *text)
+{
+    const char *p = text;
+    if (!(*p >= '0' && *p <= '9')) return 0;
+    if (p[0] == '0' && p[1] >= '0' && p[1] <= '9') return 0;
+    while (*p >= '0' && *p <= '9') ++p;
+    if (*p == '.') {
+        ++p;
+        if (!(*p >= '0' && *p <= '9')) return 0;
+        while (*p >= '0' && *p <= '9') ++p;
+    }
+    return *p == 0;
+}
+
 /* One KEY=VALUE of a variant into *v; 0, or 2 after printing why not. */
 static int variant_setting(const char *setting, paper_variant *v)
 {
@@ -229,8 +278,7 @@ static int variant_setting(const char *setting, paper_variant *v)
         if (numbers[i].image && numbers[i].image != v->image) break;
         char *end = NULL;
         double x = strtod(value, &end);
-        int digits_only = value[0] >= '0' && value[0] <= '9';
-        if (!digits_only || end == value || *end || !(x >= numbers[i].lo && x <= numbers[i].hi) ||
+        if (!plain_decimal(value) || end == value || *end || !(x >= numbers[i].lo && x <= numbers[i].hi) ||
             (numbers[i].whole && x != (double)(int)x)) {
             fprintf(stderr, "torusrt-genscenes: --variant %s '%s': expected a%s number from %g to %g\n",
                     numbers[i].name, value, numbers[i].whole ? " whole" : "", numbers[i].lo, numbers[i].hi);
@@ -257,6 +305,13 @@ static int write_variant(const char *base, const char *settings, const char *out
         fprintf(stderr, "torusrt-genscenes: --variant '%s': expected paper-image1 or paper-image2\n", base);
         return 2;
     }
+    if (!good_name(name)) {
+        fprintf(stderr,
+                "torusrt-genscenes: --variant NAME '%s': expected a file name without '/' or control "
+                "characters, not starting with '-' or '.'\n",
+                name);
+        return 2;
+    }
     paper_variant v = paper_variant_default(image);
     char *copy = malloc(strlen(settings) + 1);
     if (!copy) {
@@ -265,7 +320,31 @@ static int write_variant(const char *base, const char *settings, const char *out
     }
     strcpy(copy, settings);
     int rc = 0;
-    for (char *s = strtok(copy, ","); s && rc == 0; s = strtok(NULL, ",")) rc = variant_setting(s, &v);
+    char seen[32][16];
+    size_t n_seen = 0;
+    /* Every item KEY=VALUE, none empty, no key twice. */
+    for (char *s = copy, *next; s && rc == 0; s = next) {
+        next = strchr(s, ',');
+        if (next) *next++ = 0;
+        const char *eq = strchr(s, '=');
+        size_t klen = eq ? (size_t)(eq - s) : strlen(s);
+        if (!*s || klen >= sizeof seen[0]) {
+            fprintf(stderr, "torusrt-genscenes: --variant '%s': an empty or overlong setting\n", settings);
+            rc = 2;
+            break;
+        }
+        for (size_t k = 0; k < n_seen && rc == 0; ++k)
+            if (strncmp(seen[k], s, klen) == 0 && seen[k][klen] == 0) {
+                fprintf(stderr, "torusrt-genscenes: --variant: '%.*s' given twice\n", (int)klen, s);
+                rc = 2;
+            }
+        if (rc) break;
+        if (n_seen < 32) {
+            memcpy(seen[n_seen], s, klen);
+            seen[n_seen++][klen] = 0;
+        }
+        rc = variant_setting(s, &v);
+    }
     free(copy);
     if (rc) return rc;
     scene *sc = calloc(1, sizeof *sc);
@@ -322,6 +401,14 @@ static void usage(FILE *f)
           f);
 }
 
+/* 0 when standard output took everything written to it, else 1 after saying so. */
+static int stdout_written(void)
+{
+    if (fflush(stdout) == 0 && !ferror(stdout)) return 0;
+    fprintf(stderr, "torusrt-genscenes: standard output: cannot write: %s\n", strerror(errno));
+    return 1;
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 2) {
@@ -330,11 +417,11 @@ int main(int argc, char **argv)
     }
     if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0) {
         usage(stdout);
-        return 0;
+        return stdout_written();
     }
     if (strcmp(argv[1], "--list") == 0) {
         for (int i = 0; i < NSCENES; ++i) printf("%-18s %s\n", SCENES[i].name, SCENES[i].desc);
-        return 0;
+        return stdout_written();
     }
     if (strcmp(argv[1], "--variant") == 0) {
         if (argc != 6) {

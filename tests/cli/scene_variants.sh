@@ -6,7 +6,10 @@
 # - lights=1 and 3 write that many lights, with the same total intensity per channel;
 # - a larger margin widens the view angle, a smaller one narrows it;
 # - a variant renders, and the model on 2x2x2 gives the renderer's image;
-# - bad settings exit 2 naming the setting, and write no file.
+# - bad settings (out of range, not the project's number syntax, a key twice, an empty item) and
+#   bad NAMEs exit 2 naming the fault, and write no file;
+# - a link in the temporary's place is removed, not written through; an output link is followed;
+# - --help and --list to a full device exit 1.
 source "$(dirname "$0")/common.bash" "$@"
 need_exe torusrt-genscenes torusrt-render torusrt-sim
 gen="$BUILD/torusrt-genscenes"
@@ -85,4 +88,44 @@ bad paper-image2 plane=cube plane
 bad paper-image2 margin=nan margin
 bad paper-image3 lights=1 paper-image3
 bad paper-image1 lights "KEY=VALUE"
+bad paper-image1 lights=03 lights
+bad paper-image1 scale=0x1 scale
+bad paper-image1 scale=1,scale=2 "given twice"
+bad paper-image1 scale=1, "empty"
+bad paper-image1 "" "empty"
+
+# NAME: a file name, not a path, an option or a hidden file; nothing written.
+for name in "" "a/b" $'ev2\nl 0 0 0\n#' "-x" ".hidden"; do
+    rm -rf "$out/n" && mkdir "$out/n"
+    "$gen" --variant paper-image1 scale=1 "$out/n" "$name" >/dev/null 2>"$TMP/name.err"
+    rc=$?
+    check "NAME '$name': exit 2 (got $rc)" test "$rc" = 2
+    check "NAME '$name': names NAME" grep -q "NAME" "$TMP/name.err"
+    check "NAME '$name': nothing written" test -z "$(ls -A "$out/n")"
+done
+
+# A link where the temporary goes is removed, never written through; an output that is a link
+# is followed: its target is written and the link stays.
+mkdir -p "$TMP/links/gx"
+cp "$SRC/scenes/paper-image1.nff" "$TMP/links/keep.nff"
+cp "$SRC/scenes/paper-image1.nff" "$TMP/links/target.nff"
+ln -s ../keep.nff "$TMP/links/gx/paper-image2.nff.tmp"
+"$gen" "$TMP/links/gx" paper-image2 >/dev/null 2>&1
+check "a link in the temporary's place: the file it names is untouched" \
+    cmp -s "$TMP/links/keep.nff" "$SRC/scenes/paper-image1.nff"
+check "a link in the temporary's place: the scene written" cmp -s "$TMP/links/gx/paper-image2.nff" \
+    "$SRC/scenes/paper-image2.nff"
+ln -s ../target.nff "$TMP/links/gx/v.nff"
+"$gen" --variant paper-image1 scale=0.8 "$TMP/links/gx" v >/dev/null 2>&1
+check "an output link stays a link" test -L "$TMP/links/gx/v.nff"
+check "an output link: its target holds the variant" cmp -s <(body "$TMP/links/target.nff") <(body "$out/s08.nff")
+
+# Standard output that cannot take the help or the list: exit 1, said.
+if [ -w /dev/full ]; then
+    "$gen" --help >/dev/full 2>"$TMP/full.err"
+    check "--help > /dev/full: exit 1" test $? = 1
+    "$gen" --list >/dev/full 2>>"$TMP/full.err"
+    check "--list > /dev/full: exit 1" test $? = 1
+    check "/dev/full: the message says standard output" grep -q "standard output" "$TMP/full.err"
+fi
 finish
