@@ -44,18 +44,19 @@ CLUSTER_SHAPE=$SHAPE16
 CLUSTER_NODES=16
 # The readings swept, the default first: each has its own results folder RESULTS/READING with the
 # same points, CSVs and plots (docs/readings.md).
-#   fitted      --timing-profile fitted, image 1 scenes/paper-image1.nff, the load-balancing
-#               mapping block-cyclic:3: the machine files' reading (docs/fidelity.md)
+#   fitted      --timing-profile fitted, image 1 scenes/paper-image1-planar-z.nff, the load-balancing
+#               mapping block-cyclic:3: the fit of round one (experiments/fidelity/protocol.md)
 #   calibrated  --timing-profile calibrated, image 1 scenes/paper-image1-planar.nff, cyclic: the
 #               reading before the fit
 #   literal     --timing-profile literal, the planar image 1, cyclic
+# Image 2 is scenes/paper-image2-floor.nff under each (IMAGE2).
 READINGS=(fitted calibrated literal)
 
 # use_reading NAME: PROFILE, IMAGE1 (a file in scenes/) and the load-balancing mapping of reading
 # NAME; TORUSRT_SCENE_IMAGE1 and TORUSRT_LB_MAP still win.
 use_reading() {
     case $1 in
-        fitted) PROFILE=fitted IMAGE1=paper-image1.nff MAPARG[cyclic]=block-cyclic:3 ;;
+        fitted) PROFILE=fitted IMAGE1=paper-image1-planar-z.nff MAPARG[cyclic]=block-cyclic:3 ;;
         calibrated|literal) PROFILE=$1 IMAGE1=paper-image1-planar.nff MAPARG[cyclic]=cyclic ;;
         *) die "the reading must be one of: ${READINGS[*]}, not '$1'" ;;
     esac
@@ -92,7 +93,7 @@ define_mode() {
 scene_file() {
     case $1 in
         image1) echo "${TORUSRT_SCENE_IMAGE1:-$REPO/scenes/${IMAGE1:-paper-image1.nff}}" ;;
-        image2) echo "${TORUSRT_SCENE_IMAGE2:-$REPO/scenes/paper-image2.nff}" ;;
+        image2) echo "${TORUSRT_SCENE_IMAGE2:-$REPO/scenes/${IMAGE2:-paper-image2-floor.nff}}" ;;
         *) echo "$REPO/scenes/paper-$1.nff" ;;
     esac
 }

@@ -4,7 +4,7 @@
 # the fitted files. Robustness: the fitted reading with one unknown moved at a time, in the
 # protocol's order; a reading re-runs only the points its unknown can move and takes the fitted
 # reading's others (its scope, below). Readings that would start after the cap are dropped from
-# the end of the list and named in RES/dropped.tsv (under --smoke, all but the first two).
+# the end of the list and named in RES/dropped.tsv (under --smoke, all but the first).
 # Writes RES/readings.tsv (name, scope, settings) and RES/dropped.tsv (name, why, settings).
 
 fitted_dir=$res/sweeps/fitted/calibrated
@@ -37,7 +37,7 @@ reading() {
     local name=$1 scope=$2 dir=$res/sweeps/$1/calibrated ph
     shift 2
     if [ "$name" != fitted ]; then
-        if [ -n "$smoke" ] && [ "$ran" -ge 2 ]; then
+        if [ -n "$smoke" ] && [ "$ran" -ge 1 ]; then
             printf '%s\t%s\t%s\n' "$name" "smoke mode" "$*" >>"$scratch/dropped.tsv"; return 0
         fi
         if [ $(($(date +%s) - start)) -gt "$cap" ]; then

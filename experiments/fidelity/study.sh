@@ -3,7 +3,7 @@
 # five stages, the other claims judged on the fitted machine, and each claim judged again with one
 # unknown moved at a time. Runs docs/fidelity-protocol.md exactly.
 #
-#   bash experiments/fidelity/study.sh [--build DIR] [-j N] [--results DIR] [--smoke]
+#   bash experiments/fidelity/study.sh [--build DIR] [-j N] [--results DIR] [--smoke] [--stage 1]
 #          [--backend local|ssh:HOSTFILE|slurm] [--slurm-args "..."] [--per-task K]
 #
 # A full run (about 30 minutes of both cores) writes:
@@ -18,8 +18,10 @@
 #   -j N          runs in flight (default 2)
 #   --results DIR the folder of the runs and their tables (default experiments/fidelity/results/)
 #   --smoke       the pipeline end to end in about a minute: 16x16 images, two image 1 layouts,
-#                 two bus pairs, clusters of 4, the reproduction's quick points, two readings; it
-#                 writes everything, scenes, machines and page too, under RESULTS/out/ only
+#                 two bus pairs, two arbitration values, clusters of 4, the reproduction's quick
+#                 points, one robustness reading; it writes everything, scenes, machines and page
+#                 too, under RESULTS/out/ only (never scenes/, machines/ or docs/)
+#   --stage 1     run stage 1 alone (the scene work and cell-step cost) and print its choice
 #   --backend     where the runs go (experiments/backend, docs/cluster-runs.md)
 #   TORUSRT_STUDY_CAP_S  the cap (default 1800 s of wall time): robustness readings that would
 #                 start after it are dropped from the end of the protocol's list and named on the page
@@ -29,16 +31,17 @@
 set -euo pipefail
 source "$(dirname "$0")/../lib.sh"
 here=$EXP/fidelity root=$REPO
-build=$BUILD JOBS=2 res=$here/results smoke=""
+build=$BUILD JOBS=2 res=$here/results smoke="" only=""
 while [ $# -gt 0 ]; do
     if backend_option "$@"; then shift "$SHIFT"; continue; fi
     case $1 in
-        --build|--results) [ $# -ge 2 ] && [ -n "$2" ] || die "$1 needs a value (not an empty one)" ;;
+        --build|--results|--stage) [ $# -ge 2 ] && [ -n "$2" ] || die "$1 needs a value (not an empty one)" ;;
     esac
     case $1 in
         --build) build=$2; shift 2 ;;
         --results) res=$2; shift 2 ;;
         --smoke) smoke=--smoke; shift ;;
+        --stage) [ "$2" = 1 ] || die "--stage takes 1 (stage 1 alone), not '$2'"; only=1; shift 2 ;;
         -h|--help) sed -n '2,/^set -e/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
         *) die "unknown argument '$1' (see --help)" ;;
     esac
@@ -84,6 +87,7 @@ timing() { local f=$res/timing/$1.timing; shift; fit timing "$@" | write_file "$
 common=(--size "$size" --map cyclic --route-ties split)
 
 source "$here/fit_scenes.sh"     # stage 1: sets spec1 rule spec2 c, image1 image2, t1json1 t1json2
+[ "$only" = 1 ] && exit 0
 source "$here/fit_machine.sh"    # stages 2-5: sets bus memory shape handover header entry record
 source "$here/readings.sh"       # validation and robustness: RES/readings.tsv, RES/dropped.tsv
 end=$(date +%s)

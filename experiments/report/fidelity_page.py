@@ -115,7 +115,7 @@ def _stage1(L, res, smoke):
     choice, ranked, parts = st.stage1(res, smoke)
     L.append("### Stage 1: scenes and work (F1 + F0), %d combinations\n" % len(ranked))
     L.append("The score is separable: F1 depends on layout x scale x counting rule, F0 on each image's "
-             "variant and the cell-step cost. Every candidate's excesses are the sum of these tables' rows.\n")
+             "variant and the cell-step cost: a combination's excesses are those of its rows in the two tables below.\n")
     L.append("| layout | scale | rule | 1 IP | 16 IPs | 32 IPs | F1 excesses |\n| --- | --- | --- | ---: | ---: | ---: | --- |")
     for (layout, scale, rule), u in parts["units"].items():
         L.append("| %s | %s | %s | %d | %d | %d | %s |" % (layout, scale, rule, u[1], u[16], u[32],
@@ -244,7 +244,8 @@ def _claims_table(L, fit_claims):
              "| ---: | --- | --- | --- | --- |")
     for i, c in enumerate(fit_claims, 1):
         if c.verdict != HOLDS:
-            L.append("| %d | %s | %s | %s. %s | %s |" % (i, fidelity.role(i), c.verdict, c.ours, c.notes, SETTLES[i]))
+            L.append("| %d | %s | %s | %s. %s | %s |" % (i, fidelity.role(i), c.verdict, c.ours.rstrip(". "), c.notes,
+                                                         SETTLES[i]))
     L.append("")
 
 

@@ -35,6 +35,8 @@ void build_paper_image1_planar(scene *sc);
 void build_paper_image1_cube(scene *sc);
 void build_paper_image1_tree(scene *sc);
 void build_paper_image2_wall(scene *sc);
+void build_paper_image1_planar_z(scene *sc);
+void build_paper_image2_floor(scene *sc);
 void build_orbiting_mirror(scene *sc);
 
 /* stiff_scenes.c */

@@ -97,6 +97,18 @@ void build_paper_image1(scene *sc)
     build_image1_layout(sc, &v);
 }
 
+/* Image 1, planar-z layout under its own name: the image the round-one fit chose, kept selectable
+ * whatever scenes/paper-image1.nff holds. */
+void build_paper_image1_planar_z(scene *sc)
+{
+    note(sc, "Image 1, planar-z layout (docs/readings.md): nine flakes of 41 spheres on a 3x3 grid");
+    note(sc, "of x and y (centres 5 apart), the grid's three columns at z = -5, 0 and +5; radii 1,");
+    note(sc, "1/2 and 1/4; two lights, ambient 0.1, framed with margin 1.03: 369 spheres.");
+    paper_variant v = paper_variant_default(1);
+    v.layout = PAPER_PLANAR_Z;
+    build_image1_layout(sc, &v);
+}
+
 /* Image 1, planar layout: the nine flakes in the plane z = 0. */
 void build_paper_image1_planar(scene *sc)
 {
@@ -244,6 +256,18 @@ void build_paper_image2(scene *sc)
     note(sc, "123 objects. Colour of the small spheres shades with column and row.");
     note(sc, "The camera looks down on the plane so it shows behind, through and in the big ones.");
     paper_variant v = paper_variant_default(2);
+    build_image2_plane(sc, &v);
+}
+
+/* Image 2, floor arrangement under its own name: the image round one used, kept selectable
+ * whatever scenes/paper-image2.nff holds. */
+void build_paper_image2_floor(scene *sc)
+{
+    note(sc, "Image 2, floor arrangement (docs/readings.md): a glass and a mirror sphere (radius 2)");
+    note(sc, "in front of 121 small diffuse spheres (radius 0.5, 11 x 11, 1.5 apart) in the");
+    note(sc, "horizontal plane y = 0; two lights, framed with margin 1.02; 123 objects.");
+    paper_variant v = paper_variant_default(2);
+    v.layout = PAPER_FLOOR;
     build_image2_plane(sc, &v);
 }
 

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # torusrt-genscenes --variant: the paper images' scene-work variants (docs/fidelity-protocol.md).
-# - the default values write paper-image1's and paper-image2's objects, view and lights exactly;
+# - the default values write the objects, view and lights of paper-image1-planar-z and
+#   paper-image2-floor (round one's images) exactly;
 # - scale multiplies every radius of image 1 and keeps every centre; radius moves image 2's two
 #   big spheres to x = -+(r + 0.3), y = r + 0.5 and keeps the 121 small ones;
 # - lights=1 and 3 write that many lights, with the same total intensity per channel;
@@ -21,25 +22,25 @@ body() { grep -v '^#' "$1"; }
 field() { grep "^$2" "$1"; }
 
 "$gen" --variant paper-image1 layout=planar-z,scale=1,lights=2,margin=1.03 "$out" d1 >/dev/null
-check "image 1 defaults: paper-image1's body" cmp -s <(body "$out/d1.nff") <(body "$SRC/scenes/paper-image1.nff")
+check "image 1 defaults: paper-image1-planar-z's body" cmp -s <(body "$out/d1.nff") <(body "$SRC/scenes/paper-image1-planar-z.nff")
 "$gen" --variant paper-image2 plane=floor,radius=2,lights=2,margin=1.02 "$out" d2 >/dev/null
-check "image 2 defaults: paper-image2's body" cmp -s <(body "$out/d2.nff") <(body "$SRC/scenes/paper-image2.nff")
+check "image 2 defaults: paper-image2-floor's body" cmp -s <(body "$out/d2.nff") <(body "$SRC/scenes/paper-image2-floor.nff")
 "$gen" --variant paper-image1 layout=cube "$out" cube >/dev/null
 check "layout=cube: paper-image1-cube's body" cmp -s <(body "$out/cube.nff") <(body "$SRC/scenes/paper-image1-cube.nff")
 
 "$gen" --variant paper-image1 scale=0.8 "$out" s08 >/dev/null
 check "scale=0.8: 369 spheres" test "$(field "$out/s08.nff" 's ' | wc -l)" = 369
 check "scale=0.8: the same centres" cmp -s <(field "$out/s08.nff" 's ' | cut -d' ' -f1-4) \
-    <(field "$SRC/scenes/paper-image1.nff" 's ' | cut -d' ' -f1-4)
+    <(field "$SRC/scenes/paper-image1-planar-z.nff" 's ' | cut -d' ' -f1-4)
 check "scale=0.8: every radius x 0.8" test "$(paste -d' ' <(field "$out/s08.nff" 's ' | cut -d' ' -f5) \
-    <(field "$SRC/scenes/paper-image1.nff" 's ' | cut -d' ' -f5) |
+    <(field "$SRC/scenes/paper-image1-planar-z.nff" 's ' | cut -d' ' -f5) |
     awk '{ d = $1 - 0.8 * $2; if (d < 0) d = -d; if (d > 1e-9) bad++ } END { print bad + 0 }')" = 0
 
 "$gen" --variant paper-image2 radius=2.5 "$out" r25 >/dev/null
 check "radius=2.5: the glass sphere at (-2.8, 3, -2)" grep -qx 's -2.8 3 -2 2.5' "$out/r25.nff"
 check "radius=2.5: the mirror sphere at (2.8, 3, -2)" grep -qx 's 2.8 3 -2 2.5' "$out/r25.nff"
 check "radius=2.5: the 121 small spheres kept" cmp -s <(field "$out/r25.nff" 's ' | tail -n 121) \
-    <(field "$SRC/scenes/paper-image2.nff" 's ' | tail -n 121)
+    <(field "$SRC/scenes/paper-image2-floor.nff" 's ' | tail -n 121)
 
 # sum_lights FILE: the lights' intensities added per channel.
 sum_lights() { field "$1" 'l ' | awk '{ r += $5; g += $6; b += $7 } END { printf "%.6f %.6f %.6f\n", r, g, b }'; }
@@ -55,7 +56,7 @@ done
 angle() { field "$1" 'angle ' | cut -d' ' -f2; }
 "$gen" --variant paper-image1 margin=1.25 "$out" wide >/dev/null
 "$gen" --variant paper-image1 margin=0.8 "$out" tight >/dev/null
-base=$(angle "$SRC/scenes/paper-image1.nff")
+base=$(angle "$SRC/scenes/paper-image1-planar-z.nff")
 check "margin=1.25 widens the view" awk -v a="$(angle "$out/wide.nff")" -v b="$base" 'BEGIN { exit !(a > b) }'
 check "margin=0.8 narrows the view" awk -v a="$(angle "$out/tight.nff")" -v b="$base" 'BEGIN { exit !(a < b) }'
 
@@ -107,14 +108,14 @@ done
 # A link where the temporary goes is removed, never written through; an output that is a link
 # is followed: its target is written and the link stays.
 mkdir -p "$TMP/links/gx"
-cp "$SRC/scenes/paper-image1.nff" "$TMP/links/keep.nff"
-cp "$SRC/scenes/paper-image1.nff" "$TMP/links/target.nff"
-ln -s ../keep.nff "$TMP/links/gx/paper-image2.nff.tmp"
-"$gen" "$TMP/links/gx" paper-image2 >/dev/null 2>&1
+cp "$SRC/scenes/paper-image1-planar-z.nff" "$TMP/links/keep.nff"
+cp "$SRC/scenes/paper-image1-planar-z.nff" "$TMP/links/target.nff"
+ln -s ../keep.nff "$TMP/links/gx/paper-image2-floor.nff.tmp"
+"$gen" "$TMP/links/gx" paper-image2-floor >/dev/null 2>&1
 check "a link in the temporary's place: the file it names is untouched" \
-    cmp -s "$TMP/links/keep.nff" "$SRC/scenes/paper-image1.nff"
-check "a link in the temporary's place: the scene written" cmp -s "$TMP/links/gx/paper-image2.nff" \
-    "$SRC/scenes/paper-image2.nff"
+    cmp -s "$TMP/links/keep.nff" "$SRC/scenes/paper-image1-planar-z.nff"
+check "a link in the temporary's place: the scene written" cmp -s "$TMP/links/gx/paper-image2-floor.nff" \
+    "$SRC/scenes/paper-image2-floor.nff"
 ln -s ../target.nff "$TMP/links/gx/v.nff"
 "$gen" --variant paper-image1 scale=0.8 "$TMP/links/gx" v >/dev/null 2>&1
 check "an output link stays a link" test -L "$TMP/links/gx/v.nff"

@@ -3,7 +3,8 @@
 #
 # Usage: bash tests/cli/scenes_uptodate.sh BUILD_DIR SOURCE_DIR
 # Runs BUILD_DIR/torusrt-genscenes into a temporary folder, compares every file byte for byte
-# with SOURCE_DIR/scenes/NAME.nff (and NAME.motion), checks that the two sets of names (and --list) agree, that
+# with SOURCE_DIR/scenes/NAME.nff (and NAME.motion; paper-image1 and paper-image2 as the --variant
+# their notes name, when the fidelity study wrote them so), checks that the two sets of names (and --list) agree, that
 # the paper's scenes hold 369 and 123 objects, and that the generator is deterministic.
 # Prints "N passed, M failed"; exits 1 on any failure.
 set -u
@@ -28,7 +29,26 @@ else
     exit 1
 fi
 
-# 2. Every generated file (scenes and motion files) is checked in, byte for byte.
+# variant_spec FILE: the KEY=VALUE,... of a scene torusrt-genscenes --variant wrote (its notes name
+# every value), or nothing for a scene of the generator's list.
+variant_spec() {
+    sed -n '2,4p' "$1" | tr '\n' ' ' | sed -n \
+        -e 's/^# A variant of the paper.s image 1 .*layout \([a-z-]*\),.*radius x \([0-9.e+-]*\) .*, \([0-9]*\) light(s).*margin \([0-9.e+-]*\)\. *$/layout=\1,scale=\2,lights=\3,margin=\4/p' \
+        -e 's/^# A variant of the paper.s image 2 .*plane \([a-z]*\),.*of radius \([0-9.e+-]*\), \([0-9]*\) light(s).*margin \([0-9.e+-]*\)\. *$/plane=\1,radius=\2,lights=\3,margin=\4/p'
+}
+# The fitted paper images (experiments/fidelity/study.sh writes them with --variant): generated
+# again from the values their notes give, into the folder compared below.
+mkdir -p "$TMP/v"
+for image in 1 2; do
+    f=$scenes/paper-image$image.nff
+    spec=$(variant_spec "$f" 2>/dev/null)
+    [ -n "$spec" ] || continue
+    "$gen" --variant "paper-image$image" "$spec" "$TMP/v" "paper-image$image" >/dev/null &&
+        cp "$TMP/v/paper-image$image.nff" "$TMP/a/" || fail "paper-image$image.nff: --variant $spec failed"
+done
+
+# 2. Every generated file (scenes and motion files) is checked in, byte for byte (the paper
+#    images as their variant, when they are one).
 for f in "$TMP"/a/*.nff "$TMP"/a/*.motion; do
     [ -e "$f" ] || { fail "the generator wrote no .nff files"; break; }
     name=$(basename "$f")
@@ -114,8 +134,8 @@ done
 
 # 6. Deterministic: a second run, and a run naming two scenes, write the same bytes;
 #    no temporary files are left behind.
-if "$gen" "$TMP/b" paper-image1 one-cell >/dev/null 2>&1 &&
-    cmp -s "$TMP/a/paper-image1.nff" "$TMP/b/paper-image1.nff" &&
+if "$gen" "$TMP/b" paper-image1-planar-z one-cell >/dev/null 2>&1 &&
+    cmp -s "$TMP/a/paper-image1-planar-z.nff" "$TMP/b/paper-image1-planar-z.nff" &&
     cmp -s "$TMP/a/one-cell.nff" "$TMP/b/one-cell.nff" &&
     [ "$(ls -1 "$TMP/b" | wc -l)" -eq 2 ]; then
     pass
