@@ -19,9 +19,15 @@ check "exit 0 ($(tail -n 3 "$TMP/out" | tr '\n' ' '))" test $? -eq 0
 check "the source tree's scenes, machines and page untouched" test "$(tree_sum)" = "$before"
 page=$TMP/r/out/docs/fidelity.md
 check "the page is written" test -s "$page"
-check "line 3: claims holding" grep -qE '^- \*\*Claims holding: [0-9]+ of 17\.\*\*' <(sed -n 3p "$page")
-check "line 4: fit targets holding" grep -qE '^- \*\*Fit targets holding: [0-9]+ of 8\*\*' <(sed -n 4p "$page")
-check "line 5: validation claims holding" grep -qE '^- \*\*Validation claims holding: [0-9]+ of 9\*\*' <(sed -n 5p "$page")
+# The three counts first: the first lines under the page's '## Findings'.
+counts=$(sed -n '/^## Findings$/,$p' "$page" | grep -m 3 '^- ')
+check "first: claims holding" grep -qE '^- \*\*Claims holding: [0-9]+ of 17\.\*\*' <(sed -n 1p <<<"$counts")
+check "second: fit targets holding" grep -qE '^- \*\*Fit targets holding: [0-9]+ of 8\*\*' <(sed -n 2p <<<"$counts")
+check "third: validation claims holding" grep -qE '^- \*\*Validation claims holding: [0-9]+ of 9\*\*' <(sed -n 3p <<<"$counts")
+check "the findings open the page" test "$(sed -n 3p "$page")" = "## Findings"
+check "the opening every study page has (tests/reports/test_study_pages.py)" python3 -c "
+import sys; sys.path.insert(0, sys.argv[1]); import test_study_pages as t
+sys.exit(1 if t.opening_problems(open(sys.argv[2]).read()) else 0)" "$SRC/tests/reports" "$page"
 for h in "### Stage 1: scenes and work" "### Stage 2: the bus (F3)" "### Stage 3: the 1024 times (F2)" \
     "### Stage 4: memory accounting (F4)" "## The fitted reading and its residuals" \
     "## Efficiency: E_t1 (primary) and E_busy side by side" "## Robustness: each claim"; do
