@@ -1,4 +1,5 @@
 # shellcheck shell=bash
+# shellcheck disable=SC2154  # the variables of study.sh, which sources this file
 # fit_machine.sh - stages 2 to 5 of experiments/fidelity/study.sh (sourced), on stage 1's scenes
 # and cell-step cost, cyclic and route-ties split:
 #   2. the bus (F3): bus_cycle x memory_access, shared and replicated at m = M_FIT on 4x2x2,

@@ -1,4 +1,5 @@
 # shellcheck shell=bash
+# shellcheck disable=SC2154  # the variables of study.sh, which sources this file
 # fit_scenes.sh - stage 1 of experiments/fidelity/study.sh (sourced): the scene work and the
 # packet cost per cell step, chosen jointly on F1 (units) and F0 (the T(1) window).
 # Runs the renderer's units at 8x8 for every layout x scale x counting rule and one T(1) run at

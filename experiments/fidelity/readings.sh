@@ -1,4 +1,5 @@
 # shellcheck shell=bash
+# shellcheck disable=SC2154  # the variables of study.sh, which sources this file
 # readings.sh - validation and robustness of experiments/fidelity/study.sh (sourced).
 # Validation: the reproduction's points (experiments/points.sh, full; quick under --smoke) once on
 # the fitted files. Robustness: the fitted reading with one unknown moved at a time, in the

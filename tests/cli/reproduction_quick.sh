@@ -94,7 +94,7 @@ for f in "${figs[@]}"; do
     check "embedded fig$f exists" ispng "$RES/img/reproduction-fig$f.png"
 done
 check "report has the claims table" grep -q '^| # | claim (paper section) | paper | ours, fitted | verdict, fitted | ours, calibrated | verdict, calibrated | ours, literal | verdict, literal | notes (fitted) |' "$RES/reproduction.md"
-check "the fitted reading ran image 1 from paper-image1.nff" grep -q '^image1_scene,paper-image1.nff$' "$RES/fitted/run_facts.csv"
+check "the fitted reading ran image 1 from paper-image1-planar-z.nff" grep -q '^image1_scene,paper-image1-planar-z.nff$' "$RES/fitted/run_facts.csv"
 check "the calibrated reading ran image 1 from paper-image1-planar.nff" \
     grep -q '^image1_scene,paper-image1-planar.nff$' "$RES/calibrated/run_facts.csv"
 check "the fitted reading's load-balancing points ran block-cyclic:3" grep -q '^lb_map,block-cyclic:3$' "$RES/fitted/run_facts.csv"
