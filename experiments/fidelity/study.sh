@@ -12,7 +12,8 @@
 #   machines/paper-192-replicated.toml, paper-192-shared.toml   cyclic, route-ties split
 #   machines/timing/fitted.timing                     the fitted timing, every key
 #   docs/fidelity.md                                  the page: three counts, roles, stage tables
-# and keeps its runs and tables in the results folder (stage1-units.tsv ... dropped.tsv).
+# and keeps its runs and tables in the results folder (units.tsv, t1.tsv, stage2.tsv, stage3.tsv,
+# stage4.tsv, residuals.tsv, readings.tsv, dropped.tsv, sweeps/READING/).
 #
 #   --build DIR   build folder holding torusrt-sim, torusrt-render and torusrt-genscenes (default build/)
 #   -j N          runs in flight (default 2)
