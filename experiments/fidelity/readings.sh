@@ -2,7 +2,8 @@
 # shellcheck disable=SC2154  # the variables of study.sh, which sources this file
 # readings.sh - validation and robustness of experiments/fidelity/study.sh (sourced).
 # Validation: the reproduction's points (experiments/points.sh, full; quick under --smoke) once on
-# the fitted files. Robustness: the fitted reading with one unknown moved at a time, in the
+# the fitted files, each cluster point the mean of its runs at every bus_arbitration value
+# (experiments/report/fidelity_means.py); a robustness reading runs each point once. Robustness: the fitted reading with one unknown moved at a time, in the
 # protocol's order; a reading re-runs only the points its unknown can move and takes the fitted
 # reading's others (its scope, below). Readings that would start after the cap are dropped from
 # the end of the list and named in RES/dropped.tsv (under --smoke, all but the first).
@@ -55,8 +56,16 @@ reading() {
         env "$@" "$root/experiments/points.sh" --build "$build" --reading calibrated --tsv --phase $ph "$mode" "$dir" |
             cut -f9,10 | write_file "$dir/points.phase$ph"
     done
-    run_points "$dir/.." "fidelity-$name" "$dir/points.phase1" "$dir/points.phase2" ||
-        echo "study.sh: reading $name: some points failed (see $dir/..)" >&2
+    if [ "$name" = fitted ]; then
+        # Validation: each cluster point the mean of its runs at every bus_arbitration value.
+        fit means-lists "$dir/points.phase2" "$dir/points.flat" "$dir/points.replicas" "${arbitrations[@]}"
+        run_points "$dir/.." "fidelity-$name" "$dir/points.phase1" "$dir/points.flat" "$dir/points.replicas" ||
+            echo "study.sh: reading $name: some points failed (see $dir/..)" >&2
+        fit means "$dir/points.phase2" "${arbitrations[@]}" || echo "study.sh: reading $name: some means missing" >&2
+    else
+        run_points "$dir/.." "fidelity-$name" "$dir/points.phase1" "$dir/points.phase2" ||
+            echo "study.sh: reading $name: some points failed (see $dir/..)" >&2
+    fi
     merge_joblogs "$dir/.."
     python3 "$root/experiments/report" collect "$dir" >/dev/null
     printf '%s\t%s\t%s\n' "$name" "$scope" "$*" >>"$scratch/readings.tsv"

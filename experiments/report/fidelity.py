@@ -190,6 +190,19 @@ def machines(args):
     return 0
 
 
+def means_lists(args):
+    from . import fidelity_means
+    fidelity_means.split_lists(args.phase2, args.flat, args.replicas, args.arbitrations)
+    return 0
+
+
+def means(args):
+    from . import fidelity_means
+    done, missing = fidelity_means.mean_all(args.phase2, args.arbitrations)
+    print("fidelity means: %d cluster points written as their mean, %d with a run missing" % (done, missing))
+    return 1 if missing else 0
+
+
 def page(args):
     from . import fidelity_page
     return fidelity_page.write(args.results, args.doc, args.smoke)
@@ -222,6 +235,15 @@ def add_commands(sub):
     for opt in ("rule", "bus", "memory", "shape", "handover", "cell-step", "header", "entry", "record"):
         q.add_argument("--" + opt, required=True)
     q.set_defaults(run=machines)
+    q = fsub.add_parser("means-lists", help="the cluster points once per bus_arbitration value")
+    for a in ("phase2", "flat", "replicas"):
+        q.add_argument(a)
+    q.add_argument("arbitrations", nargs="+")
+    q.set_defaults(run=means_lists)
+    q = fsub.add_parser("means", help="each cluster point's JSON as the mean of its runs")
+    q.add_argument("phase2")
+    q.add_argument("arbitrations", nargs="+")
+    q.set_defaults(run=means)
     q = fsub.add_parser("page")
     q.add_argument("results")
     q.add_argument("doc")

@@ -272,6 +272,20 @@ def _claims_table(L, fit_claims):
     L.append("")
 
 
+def _spreads(L, res):
+    from . import fidelity_means
+    sp = fidelity_means.spreads(os.path.join(res, "sweeps", "fitted", "calibrated"))
+    if not sp:
+        return
+    L.append("## The validation's cluster points: the mean of each point's runs\n")
+    L.append("Each cluster point (claims 9-17) is the mean of its runs at every `bus_arbitration` value "
+             "(protocol section 3); the spread is the fastest and the slowest run.\n")
+    L.append("| point | mean s | fastest s | slowest s | runs |\n| --- | ---: | ---: | ---: | ---: |")
+    for name, (mean, lo, hi, n) in sp.items():
+        L.append("| %s | %.4f | %.4f | %.4f | %d |" % (name, mean, lo, hi, n))
+    L.append("")
+
+
 def _robustness(L, res, readings):
     L.append("## Robustness: each claim with one unknown moved at a time\n")
     names = [n for n in readings if n != "fitted"]
@@ -320,6 +334,7 @@ def write(res, doc, smoke=False):
     _residuals(L, fitted, figures)
     _claims_table(L, fit_claims)
     _efficiency_table(L, r, fit_claims)
+    _spreads(L, res)
     _robustness(L, res, readings)
     L.append("## The stages: every candidate's excesses\n")
     _stage1(L, res, smoke)

@@ -33,6 +33,8 @@ for h in "### Stage 1: scenes and work" "### Stage 2: the bus (F3)" "### Stage 3
     "## Efficiency: E_t1 (primary) and E_busy side by side" "## Robustness: each claim"; do
     check "the page has '$h'" grep -qF "$h" "$page"
 done
+check "the validation's cluster points are means of two runs" \
+    grep -qE '^\| image1-shared-m4 \| [0-9.]+ \| [0-9.]+ \| [0-9.]+ \| 2 \|$' "$page"
 check "every claim's role" test "$(grep -cE '^\| [0-9]+ \| .* \| (fit target|validation)' "$page")" -ge 17
 check "the dropped readings named" grep -qE '^\*\*Dropped readings\*\* \([0-9]+,.*ties-plus' "$page"
 check "stage 2's table lists both bus pairs" test "$(grep -cE '^\| (0\.5 \| 0\.5|2 \| 1) \|' "$page")" -ge 2

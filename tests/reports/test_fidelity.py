@@ -15,6 +15,7 @@ sys.path.insert(0, os.path.join(REPO, "experiments"))
 
 from report import fidelity  # noqa: E402
 from report import fidelity_score as fs  # noqa: E402
+from report import fidelity_means as fm  # noqa: E402
 from report import fidelity_stages as st  # noqa: E402
 
 
@@ -203,6 +204,46 @@ class Stages(unittest.TestCase):
         self.assertEqual((keys["bus_cycle"], keys["memory_access"], keys["cell_step_packet"]), ("2", "1", "580"))
         self.assertEqual((keys["handover_send"], keys["handover_receive"]), ("1600", "0"))
         self.assertEqual(keys["shading"], "4600")  # the rest is the calibrated profile's
+
+
+class MeanOfFive(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.res = self.tmp.name
+        os.makedirs(os.path.join(self.res, "fig10_12"))
+        os.makedirs(os.path.join(self.res, "fig5_6"))
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def test_cluster_points_run_once_per_arbitration_and_the_point_is_their_mean(self):
+        c = os.path.join(self.res, "fig10_12", "image1-shared-m64.json")
+        f = os.path.join(self.res, "fig5_6", "image1-cyclic-n16.json")
+        phase2 = os.path.join(self.res, "points.phase2")
+        write_rows(phase2, [(c, "run_point.sh %s --t1-from t1.json -- sim scene.nff --cluster 64" % c),
+                            (f, "run_point.sh %s -- sim scene.nff --ips 4x2x2" % f)])
+        flat, reps = os.path.join(self.res, "flat"), os.path.join(self.res, "reps")
+        fm.split_lists(phase2, flat, reps, ["0.240", "0.260"])
+        with open(flat) as fh:
+            self.assertEqual([line.split("\t")[0] for line in fh], [f])
+        with open(reps) as fh:
+            lines = [line.rstrip("\n").split("\t") for line in fh]
+        self.assertEqual([x[0] for x in lines], [fm.replica(c, "0.240"), fm.replica(c, "0.260")])
+        self.assertTrue(lines[1][1].endswith("--cluster 64 --timing-values bus_arbitration=0.260"))
+        self.assertIn(fm.replica(c, "0.240") + " --t1-from", lines[0][1])
+        self.assertFalse(fm.mean_point(c, ["0.240", "0.260"]), "a missing run writes nothing")
+        self.assertFalse(os.path.exists(c))
+        for a, t, e in (("0.240", 1.0, 0.8), ("0.260", 1.2, 0.6)):
+            write_json(fm.replica(c, a), {"sim_time_s": t, "efficiency": e, "load_balance": e, "bus": a})
+        self.assertTrue(fm.mean_point(c, ["0.240", "0.260"]))
+        with open(c) as fh:
+            j = json.load(fh)
+        self.assertAlmostEqual(j["sim_time_s"], 1.1)
+        self.assertAlmostEqual(j["efficiency"], 0.7)
+        self.assertEqual(j["arbitration_runs"]["sim_time_s"], [1.0, 1.2])
+        # Again: the mean of the runs, not of the mean.
+        self.assertTrue(fm.mean_point(c, ["0.240", "0.260"]))
+        self.assertEqual(fm.spreads(self.res)["image1-shared-m64"], (1.1, 1.0, 1.2, 2))
 
 
 if __name__ == "__main__":
