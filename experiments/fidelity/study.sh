@@ -17,7 +17,8 @@
 #
 #   --build DIR   build folder holding torusrt-sim, torusrt-render and torusrt-genscenes (default build/)
 #   -j N          runs in flight (default 2)
-#   --results DIR the folder of the runs and their tables (default experiments/fidelity/results/)
+#   --results DIR the folder of the runs and their tables (default experiments/fidelity/results/,
+#                 experiments/fidelity/results-smoke/ under --smoke); one mode's runs a folder
 #   --smoke       the pipeline end to end in about a minute: 16x16 images, two image 1 layouts,
 #                 two bus pairs, two arbitration values, clusters of 4, the reproduction's quick
 #                 points, one robustness reading; it writes everything, scenes, machines and page
@@ -53,8 +54,17 @@ sim=$build/torusrt-sim render=$build/torusrt-render gen=$build/torusrt-genscenes
 [ -x "$gen" ] || die "$gen not found (build torusrt-genscenes first)"
 cap=${TORUSRT_STUDY_CAP_S:-1800}
 [[ $cap =~ ^[0-9]+$ ]] || die "TORUSRT_STUDY_CAP_S must be a whole number of seconds, not '$cap'"
+[ -z "$smoke" ] || [ "$res" != "$here/results" ] || res=$here/results-smoke
 mkdir -p "$res"
 res=$(cd "$res" && pwd) runs=$res/runs
+# A results folder holds one mode's runs (their sizes differ under the same names).
+want=${smoke:+smoke}; want=${want:-full}
+if [ -s "$res/study-mode" ]; then
+    [ "$(cat "$res/study-mode")" = "$want" ] ||
+        die "$res holds a $(cat "$res/study-mode") run's results; give this $want run another --results"
+else
+    echo "$want" | write_file "$res/study-mode"
+fi
 mkdir -p "$runs" "$res/timing" "$res/scenes"
 fit() { python3 "$root/experiments/report" fidelity "$@"; }
 start=$(date +%s)

@@ -36,4 +36,7 @@ check "--backend pbs: refused" test $? -ne 0
 check "--backend pbs: the message names it" grep -q "pbs" "$TMP/bad.out"
 bash "$study" --stage 2 --build "$BUILD" --results "$TMP/bad2" >"$TMP/bad2.out" 2>&1
 check "--stage 2: refused, naming --stage" test $? -eq 2 -a -n "$(grep -- '--stage' "$TMP/bad2.out")"
+bash "$study" --stage 1 --build "$BUILD" --results "$TMP/local" >"$TMP/mixed.out" 2>&1
+check "a full run in a smoke run's results folder: refused" test $? -eq 2
+check "a full run in a smoke run's results folder: the message says so" grep -q "holds a smoke run's results" "$TMP/mixed.out"
 finish
