@@ -22,12 +22,12 @@ def _pct(x):
 def _exc(figures):
     """'t1_image1 0.12, ...' of the nonzero excesses, or 'none'."""
     e = fs.excesses(figures)
-    bad = ["%s %.3f" % (k, v) for k, v in sorted(e.items()) if v > 0]
+    bad = ["%s %.3g" % (k, v) for k, v in sorted(e.items()) if v > 0]
     return ", ".join(bad) if bad else "none"
 
 
 def _score(figures):
-    return " / ".join("%.3f" % x for x in fs.score(fs.excesses(figures)))
+    return " / ".join("%.3g" % x for x in fs.score(fs.excesses(figures)))
 
 
 def _claims_of(res, name):
@@ -100,11 +100,12 @@ def _trade(L, ranked, what):
             continue
         meets = [c for c in ranked if fs.excesses(c[1])[target] == 0]
         if meets:
-            L.append("- **Trade (%s)**: the choice misses %s by %.3f; the best candidate that meets it (%s) has "
+            L.append("- **Trade (%s)**: the choice misses %s by %.3g; the best candidate that meets it (%s) has "
                      "excesses %s, score %s against the choice's %s." % (
                          what, target, e, _name(meets[0][3]), _exc(meets[0][1]), _score(meets[0][1]), _score(chosen)))
         else:
-            L.append("- **Trade (%s)**: no candidate meets %s; the choice misses it by %.3f." % (what, target, e))
+            L.append("- **Trade (%s)**: no candidate meets %s; the choice misses it by %.3g." % (what, target, e))
+    L.append("")
 
 
 def _name(choice):
