@@ -292,8 +292,8 @@ def read_text(path, what="input"):
 
 # The output options of torusrt-sim and torusrt-render: a tool that runs several commands with
 # the same fixed options would write each of them into one file from every command.
-OUTPUT_OPTIONS = ("-o", "--output", "--stats", "--vcd", "--write-map", "--load-map", "--frames-csv",
-                  "--cost-image")
+OUTPUT_OPTIONS = ("-o", "--output", "--stats", "--stats-series", "--vcd", "--write-map", "--load-map",
+                  "--frames-csv", "--cost-image")
 
 
 def output_options(words):

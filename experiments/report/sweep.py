@@ -163,6 +163,15 @@ def is_done(files, ident):
     return False
 
 
+def check_fixed(fixed):
+    """ValueError naming the first output option among the fixed options (-o, --stats,
+    --stats-series, --vcd, ...): every point would write it into one file."""
+    written = output_options(fixed)
+    if written:
+        raise ValueError("%s among the fixed options: every point would write it into one file; the sweep "
+                         "writes each point's image, JSON and series itself (DIR/points/)" % written[0])
+
+
 def plan(out, sim, scene, axes, fixed, listing):
     """Writes OUT/points.tsv (name and axis values per point) and the point list LISTING
     (experiments/backend): the point's JSON, a tab and its shell command line. A point is done
@@ -171,10 +180,7 @@ def plan(out, sim, scene, axes, fixed, listing):
     (status deadlock); a failed one leaves none. Every output is checked first (output_files)."""
     names = [n for n, _ in axes]
     combos = list(itertools.product(*(v for _, v in axes)))
-    written = output_options(fixed)
-    if written:
-        raise ValueError("%s among the fixed options: every point would write it into one file; the sweep "
-                         "writes each point's image and JSON itself (DIR/points/)" % written[0])
+    check_fixed(fixed)
     seen = {}
     for values in combos:
         name = point_name(names, values)
