@@ -302,6 +302,20 @@ def output_options(words):
             if w.partition("=")[0] in OUTPUT_OPTIONS and (w.startswith("--") or w == "-o")]
 
 
+def output_values(words):
+    """(option, file) of each output option among WORDS (OPTION FILE or OPTION=FILE), in order."""
+    found = []
+    for i, word in enumerate(words):
+        option, eq, value = word.partition("=")
+        if option not in OUTPUT_OPTIONS or not (word.startswith("--") or option == "-o"):
+            continue
+        if eq and option != "-o":
+            found.append((option, value))
+        elif not eq and i + 1 < len(words):
+            found.append((option, words[i + 1]))
+    return found
+
+
 def machine_file_inputs(path):
     """(key, path) of every value of the machine file PATH (torusrt-sim --config) that names an
     existing regular file (timing, map-file, ...), a relative one taken from the machine file's
@@ -354,15 +368,36 @@ def exit_on_signals():
             signal.signal(sig, leave)
 
 
+# The outputs run_point.sh gives each command itself.
+POINT_OPTIONS = ("-o", "--output", "--stats")
+
+
+def check_point_command(outs, command):
+    """OutputError naming the option when COMMAND (run_point.sh's) gives -o or --stats, which
+    run_point.sh gives it, or an output option naming one of OUTS (the point's JSON, image, log
+    and series): the run would write over the point's own files."""
+    mine = {os.path.realpath(path): path for path in outs}
+    for option, value in output_values(command):
+        if option in POINT_OPTIONS:
+            raise OutputError("%s '%s': run_point.sh gives each point's -o and --stats itself "
+                              "(OUT.json, OUT.png)" % (option, value))
+        real = os.path.realpath(value) if value else ""
+        if real in mine:
+            raise OutputError("%s '%s': is the point's own file %s, which run_point.sh writes"
+                              % (option, value, mine[real]))
+
+
 def check_outputs(argv):
     """`output_files.py --check-outputs OUT... -- COMMAND...`: exit 2, naming both, when an OUT is
-    a file COMMAND names (named_files) or the file of another OUT; 0 otherwise."""
+    a file COMMAND names (named_files) or the file of another OUT, or when COMMAND's output
+    options name an OUT or are run_point.sh's own (check_point_command); 0 otherwise."""
     import sys
     split = argv.index("--") if "--" in argv else len(argv)
     outs = OutputSet()
     for option, path in named_files(argv[split + 1:]):
         outs.add_input(option, path)
     try:
+        check_point_command(argv[:split], argv[split + 1:])
         for path in argv[:split]:
             outs.add("output", path)
         outs.check()
