@@ -37,6 +37,25 @@ class OutputError(ValueError):
     """An output refused before anything was written: its message names the option and the file."""
 
 
+def shown(text, backslash=True):
+    """TEXT for a message, as the executables show a file name (rt_escape_bytes): a control
+    character, DEL or a byte that is not UTF-8 as \\xNN, a backslash as \\\\, so that no name
+    sends raw control bytes to a terminal or breaks a message's line. backslash=False leaves
+    backslashes: for a whole message whose names may be shown already."""
+    out = []
+    for ch in str(text):
+        code = ord(ch)
+        if ch == "\\" and backslash:
+            out.append("\\\\")
+        elif code < 0x20 or code == 0x7f:
+            out.append("\\x%02x" % code)
+        elif 0xdc80 <= code <= 0xdcff:  # a byte os.fsdecode could not decode
+            out.append("\\x%02x" % (code - 0xdc00))
+        else:
+            out.append(ch)
+    return "".join(out)
+
+
 def _kind(mode):
     """What a file that is not a regular one is, for a message."""
     for test, name in ((stat.S_ISFIFO, "FIFO"), (stat.S_ISCHR, "character device"),
@@ -71,7 +90,7 @@ def _through_stream(path, depth=0):
 def target(option, path):
     """The file PATH writes, a link followed to what it names; OutputError (naming OPTION) when
     it is empty, a folder, a FIFO, a device or a socket, or its folder does not exist."""
-    what = "%s '%s'" % (option, path)
+    what = "%s '%s'" % (option, shown(path))
     if not path:
         raise OutputError("%s: an empty file name" % option)
     if _through_stream(path):
@@ -88,8 +107,8 @@ def target(option, path):
         if not stat.S_ISREG(st.st_mode):
             raise OutputError("%s: is a %s, not a regular file" % (what, _kind(st.st_mode)))
     elif not os.path.isdir(os.path.dirname(real)):
-        shown = os.path.dirname(real) if os.path.islink(path) else os.path.dirname(path) or "."
-        raise OutputError("%s: folder '%s' does not exist" % (what, shown))
+        folder = os.path.dirname(real) if os.path.islink(path) else os.path.dirname(path) or "."
+        raise OutputError("%s: folder '%s' does not exist" % (what, shown(folder)))
     return real
 
 
@@ -251,10 +270,10 @@ class OutputSet:
         for option, path in self.inputs:
             key = _identity(path)
             if key is not None:
-                inputs.setdefault(key, "%s file %s" % (option, path))
+                inputs.setdefault(key, "%s file %s" % (option, shown(path)))
         names, files = {}, {}
         for option, path, real in self.outputs:
-            what = "%s '%s'" % (option, path)
+            what = "%s '%s'" % (option, shown(path))
             key = _identity(real)
             if key in inputs:
                 raise OutputError("%s: is the %s, an input" % (what, inputs[key]))
@@ -272,11 +291,11 @@ def input_file(path, what):
     try:
         st = os.stat(path)
     except OSError as e:
-        raise OSError("%s '%s': %s" % (what, path, e.strerror)) from None
+        raise OSError("%s '%s': %s" % (what, shown(path), e.strerror)) from None
     if stat.S_ISDIR(st.st_mode):
-        raise OSError("%s '%s': is a folder, not a file" % (what, path))
+        raise OSError("%s '%s': is a folder, not a file" % (what, shown(path)))
     if not stat.S_ISREG(st.st_mode):
-        raise OSError("%s '%s': is a %s, not a regular file" % (what, path, _kind(st.st_mode)))
+        raise OSError("%s '%s': is a %s, not a regular file" % (what, shown(path), _kind(st.st_mode)))
 
 
 def read_text(path, what="input"):
@@ -287,7 +306,7 @@ def read_text(path, what="input"):
     try:
         return data.decode("utf-8")
     except UnicodeDecodeError as e:
-        raise ValueError("%s '%s': not UTF-8 text (byte %d)" % (what, path, e.start)) from None
+        raise ValueError("%s '%s': not UTF-8 text (byte %d)" % (what, shown(path), e.start)) from None
 
 
 # The output options of torusrt-sim and torusrt-render: a tool that runs several commands with
