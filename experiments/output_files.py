@@ -37,6 +37,25 @@ class OutputError(ValueError):
     """An output refused before anything was written: its message names the option and the file."""
 
 
+def shown(text, backslash=True):
+    """TEXT for a message, as the executables show a file name (rt_escape_bytes): a control
+    character, DEL or a byte that is not UTF-8 as \\xNN, a backslash as \\\\, so that no name
+    sends raw control bytes to a terminal or breaks a message's line. backslash=False leaves
+    backslashes: for a whole message whose names may be shown already."""
+    out = []
+    for ch in str(text):
+        code = ord(ch)
+        if ch == "\\" and backslash:
+            out.append("\\\\")
+        elif code < 0x20 or code == 0x7f:
+            out.append("\\x%02x" % code)
+        elif 0xdc80 <= code <= 0xdcff:  # a byte os.fsdecode could not decode
+            out.append("\\x%02x" % (code - 0xdc00))
+        else:
+            out.append(ch)
+    return "".join(out)
+
+
 def _kind(mode):
     """What a file that is not a regular one is, for a message."""
     for test, name in ((stat.S_ISFIFO, "FIFO"), (stat.S_ISCHR, "character device"),
@@ -71,7 +90,7 @@ def _through_stream(path, depth=0):
 def target(option, path):
     """The file PATH writes, a link followed to what it names; OutputError (naming OPTION) when
     it is empty, a folder, a FIFO, a device or a socket, or its folder does not exist."""
-    what = "%s '%s'" % (option, path)
+    what = "%s '%s'" % (option, shown(path))
     if not path:
         raise OutputError("%s: an empty file name" % option)
     if _through_stream(path):
@@ -88,8 +107,8 @@ def target(option, path):
         if not stat.S_ISREG(st.st_mode):
             raise OutputError("%s: is a %s, not a regular file" % (what, _kind(st.st_mode)))
     elif not os.path.isdir(os.path.dirname(real)):
-        shown = os.path.dirname(real) if os.path.islink(path) else os.path.dirname(path) or "."
-        raise OutputError("%s: folder '%s' does not exist" % (what, shown))
+        folder = os.path.dirname(real) if os.path.islink(path) else os.path.dirname(path) or "."
+        raise OutputError("%s: folder '%s' does not exist" % (what, shown(folder)))
     return real
 
 
@@ -251,10 +270,10 @@ class OutputSet:
         for option, path in self.inputs:
             key = _identity(path)
             if key is not None:
-                inputs.setdefault(key, "%s file %s" % (option, path))
+                inputs.setdefault(key, "%s file %s" % (option, shown(path)))
         names, files = {}, {}
         for option, path, real in self.outputs:
-            what = "%s '%s'" % (option, path)
+            what = "%s '%s'" % (option, shown(path))
             key = _identity(real)
             if key in inputs:
                 raise OutputError("%s: is the %s, an input" % (what, inputs[key]))
@@ -272,11 +291,11 @@ def input_file(path, what):
     try:
         st = os.stat(path)
     except OSError as e:
-        raise OSError("%s '%s': %s" % (what, path, e.strerror)) from None
+        raise OSError("%s '%s': %s" % (what, shown(path), e.strerror)) from None
     if stat.S_ISDIR(st.st_mode):
-        raise OSError("%s '%s': is a folder, not a file" % (what, path))
+        raise OSError("%s '%s': is a folder, not a file" % (what, shown(path)))
     if not stat.S_ISREG(st.st_mode):
-        raise OSError("%s '%s': is a %s, not a regular file" % (what, path, _kind(st.st_mode)))
+        raise OSError("%s '%s': is a %s, not a regular file" % (what, shown(path), _kind(st.st_mode)))
 
 
 def read_text(path, what="input"):
@@ -287,19 +306,33 @@ def read_text(path, what="input"):
     try:
         return data.decode("utf-8")
     except UnicodeDecodeError as e:
-        raise ValueError("%s '%s': not UTF-8 text (byte %d)" % (what, path, e.start)) from None
+        raise ValueError("%s '%s': not UTF-8 text (byte %d)" % (what, shown(path), e.start)) from None
 
 
 # The output options of torusrt-sim and torusrt-render: a tool that runs several commands with
 # the same fixed options would write each of them into one file from every command.
-OUTPUT_OPTIONS = ("-o", "--output", "--stats", "--vcd", "--write-map", "--load-map", "--frames-csv",
-                  "--cost-image")
+OUTPUT_OPTIONS = ("-o", "--output", "--stats", "--stats-series", "--vcd", "--write-map", "--load-map",
+                  "--frames-csv", "--cost-image")
 
 
 def output_options(words):
     """The output options among WORDS (OPTION or OPTION=FILE), in order."""
     return [w.partition("=")[0] for w in words
             if w.partition("=")[0] in OUTPUT_OPTIONS and (w.startswith("--") or w == "-o")]
+
+
+def output_values(words):
+    """(option, file) of each output option among WORDS (OPTION FILE or OPTION=FILE), in order."""
+    found = []
+    for i, word in enumerate(words):
+        option, eq, value = word.partition("=")
+        if option not in OUTPUT_OPTIONS or not (word.startswith("--") or option == "-o"):
+            continue
+        if eq and option != "-o":
+            found.append((option, value))
+        elif not eq and i + 1 < len(words):
+            found.append((option, words[i + 1]))
+    return found
 
 
 def machine_file_inputs(path):
@@ -354,15 +387,36 @@ def exit_on_signals():
             signal.signal(sig, leave)
 
 
+# The outputs run_point.sh gives each command itself.
+POINT_OPTIONS = ("-o", "--output", "--stats")
+
+
+def check_point_command(outs, command):
+    """OutputError naming the option when COMMAND (run_point.sh's) gives -o or --stats, which
+    run_point.sh gives it, or an output option naming one of OUTS (the point's JSON, image, log
+    and series): the run would write over the point's own files."""
+    mine = {os.path.realpath(path): path for path in outs}
+    for option, value in output_values(command):
+        if option in POINT_OPTIONS:
+            raise OutputError("%s '%s': run_point.sh gives each point's -o and --stats itself "
+                              "(OUT.json, OUT.png)" % (option, value))
+        real = os.path.realpath(value) if value else ""
+        if real in mine:
+            raise OutputError("%s '%s': is the point's own file %s, which run_point.sh writes"
+                              % (option, value, mine[real]))
+
+
 def check_outputs(argv):
     """`output_files.py --check-outputs OUT... -- COMMAND...`: exit 2, naming both, when an OUT is
-    a file COMMAND names (named_files) or the file of another OUT; 0 otherwise."""
+    a file COMMAND names (named_files) or the file of another OUT, or when COMMAND's output
+    options name an OUT or are run_point.sh's own (check_point_command); 0 otherwise."""
     import sys
     split = argv.index("--") if "--" in argv else len(argv)
     outs = OutputSet()
     for option, path in named_files(argv[split + 1:]):
         outs.add_input(option, path)
     try:
+        check_point_command(argv[:split], argv[split + 1:])
         for path in argv[:split]:
             outs.add("output", path)
         outs.check()

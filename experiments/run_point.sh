@@ -4,20 +4,34 @@
 #   experiments/run_point.sh OUT.json [--t1-from T1.json] -- TORUSRT-SIM SCENE ARGS...
 #
 # Runs the given torusrt-sim command with -q -o OUT.png --stats OUT.json (and --t1 taken from the
-# sim_time_s of T1.json), writing both files under temporary names in the same folder and
-# renaming them into place only when the run succeeded and the JSON parses: a point is done
-# exactly when OUT.json exists. If OUT.json already exists the point is skipped. On failure the
-# simulator's messages are kept in OUT.log and the exit status is non-zero. A name that is a
-# link is followed to its file (the link kept); a folder, a FIFO or a device as OUT.json,
-# OUT.png or OUT.log, or any of them naming a file of the command (the scene, a --timing file, a
-# file a --config machine file names), is refused (exit 2) before the command runs.
+# sim_time_s of T1.json; with --stats-interval and no --stats-series, also --stats-series
+# OUT.series.csv), writing the files under temporary names in the same folder and renaming them
+# into place only when the run succeeded and the JSON parses: a point is done exactly when
+# OUT.json exists. If OUT.json already exists the point is skipped. On failure the simulator's
+# messages are kept in OUT.log and the exit status is non-zero. A name that is a link is
+# followed to its file (the link kept); a folder, a FIFO or a device as OUT.json, OUT.png,
+# OUT.log or OUT.series.csv, or any of them naming a file of the command (the scene, a --timing
+# file, a file a --config machine file names), is refused (exit 2) before the command runs, and
+# so is a command that gives -o or --stats itself or whose output option (--vcd, --stats-series,
+# ...) names one of these files. T1.json must be a regular file of at most 64 MiB: a FIFO, a
+# device or a folder is refused (exit 2, naming --t1-from) before it is read.
 set -uo pipefail
 out=${1:?usage: run_point.sh OUT.json [--t1-from T1.json] -- COMMAND...}
 shift
 t1args=()
+t1_max_bytes=$((64 << 20))  # a point's JSON is a few MiB at most; jq holds it whole
 if [ "${1:-}" = --t1-from ]; then
-    t1json=$2
-    shift 2
+    t1json=${2:-}
+    shift 2 || { echo "run_point: --t1-from needs a file" >&2; exit 2; }
+    # A FIFO may never open and a device never end: only a regular file is read.
+    if [ -e "$t1json" ] && [ ! -f "$t1json" ]; then
+        echo "run_point: --t1-from '$t1json': not a regular file (a folder, a FIFO or a device)" >&2
+        exit 2
+    fi
+    if [ -f "$t1json" ] && [ "$(stat -L -c %s -- "$t1json")" -gt "$t1_max_bytes" ]; then
+        echo "run_point: --t1-from '$t1json': larger than 64 MiB, not a point's JSON" >&2
+        exit 2
+    fi
     if ! t1=$(jq -er '.sim_time_s' "$t1json" 2>/dev/null); then
         echo "run_point: $out: no T(1) in $t1json (run the phase-1 points first)" >&2
         exit 3
@@ -32,7 +46,8 @@ mkdir -p "$dir"
 # The files the point writes, each a link followed to the file it names (the link is kept); a
 # folder, a FIFO or a device is refused (experiments/output_files.py's rules).
 json=$(realpath -m -- "$out") png=$(realpath -m -- "$dir/$base.png") log=$(realpath -m -- "$dir/$base.log")
-for f in "$json" "$png" "$log"; do
+series=$(realpath -m -- "$dir/$base.series.csv")
+for f in "$json" "$png" "$log" "$series"; do
     if [ -e "$f" ] && [ ! -f "$f" ]; then
         echo "run_point: $f: not a regular file (a folder, a FIFO or a device)" >&2
         exit 2
@@ -40,7 +55,7 @@ for f in "$json" "$png" "$log"; do
 done
 # None of them may be a file the command reads (a word naming a file, or FILE of --option=FILE,
 # and the files a --config machine file names): the point would write over its own input.
-if ! python3 "$(dirname "${BASH_SOURCE[0]}")/output_files.py" --check-outputs "$json" "$png" "$log" -- "$@"; then
+if ! python3 "$(dirname "${BASH_SOURCE[0]}")/output_files.py" --check-outputs "$json" "$png" "$log" "$series" -- "$@"; then
     exit 2
 fi
 if [ -s "$json" ] && jq -e '.sim_time_s' "$json" >/dev/null 2>&1; then
@@ -49,8 +64,15 @@ if [ -s "$json" ] && jq -e '.sim_time_s' "$json" >/dev/null 2>&1; then
 fi
 tag=.$base.tmp.$(hostname -s 2>/dev/null || echo host).$$
 tmpjson=$(dirname "$json")/$tag.json tmppng=$(dirname "$png")/$tag.png tmplog=$(dirname "$log")/$tag.log
-trap 'rm -f "$tmpjson" "$tmppng" "$tmplog" "$tmplog.full"' EXIT
-"$@" "${t1args[@]}" -q -o "$tmppng" --stats "$tmpjson" >"$tmplog" 2>&1
+tmpseries=$(dirname "$series")/$tag.series.csv
+# A series named from --stats would be named from the temporary: it gets its own name.
+seriesargs=()
+for word in "$@"; do
+    case $word in --stats-series | --stats-series=*) seriesargs=(); break ;; esac
+    case $word in --stats-interval | --stats-interval=*) seriesargs=(--stats-series "$tmpseries") ;; esac
+done
+trap 'rm -f "$tmpjson" "$tmppng" "$tmplog" "$tmplog.full" "$tmpseries"' EXIT
+"$@" "${t1args[@]}" -q -o "$tmppng" --stats "$tmpjson" "${seriesargs[@]}" >"$tmplog" 2>&1
 rc=$?
 if [ $rc -eq 0 ] && ! jq -e '.sim_time_s' "$tmpjson" >/dev/null 2>&1; then
     echo "torusrt-sim exited 0 but wrote no valid statistics" >>"$tmplog"
@@ -65,4 +87,5 @@ if [ $rc -ne 0 ]; then
 fi
 rm -f "$log"
 mv -f "$tmppng" "$png"
+[ ${#seriesargs[@]} -eq 0 ] || mv -f "$tmpseries" "$series"
 mv -f "$tmpjson" "$json"

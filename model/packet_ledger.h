@@ -3,6 +3,7 @@
 // latencies (packet_latency.h).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <systemc>
 
@@ -20,17 +21,21 @@ class PacketLedger {
         if (m_series) m_series->at(sim_now(), m_outstanding);
         m_totals.created[kind]++;
         // Past the memory budget's packet limit the run stops (checked by run_model).
-        if (static_cast<uint64_t>(++m_outstanding) > m_limit && !m_over_limit) {
-            m_over_limit = true;
-            m_over_at = static_cast<uint64_t>(m_outstanding);
-            // The run fails with its own message: no "stopped by user" note.
-            sc_core::sc_report_handler::set_actions("/OSCI/SystemC", sc_core::SC_INFO, sc_core::SC_DO_NOTHING);
-            sc_core::sc_stop();
+        if (static_cast<uint64_t>(++m_outstanding) > m_limit) {
+            if (!m_over_limit) {
+                m_over_limit = true;
+                // The run fails with its own message: no "stopped by user" note.
+                sc_core::sc_report_handler::set_actions("/OSCI/SystemC", sc_core::SC_INFO, sc_core::SC_DO_NOTHING);
+                sc_core::sc_stop();
+            }
+            // What is made until the stop counts too: a frame's primaries all come at its start.
+            m_over_at = std::max(m_over_at, static_cast<uint64_t>(m_outstanding));
         }
     }
     // Most packets that may be outstanding at once (the memory budget's share).
     void set_limit(uint64_t packets) { m_limit = packets; }
     bool over_limit() const { return m_over_limit; }
+    // The most packets outstanding once past the limit: what the run needed when it stopped.
     uint64_t outstanding_over_limit() const { return m_over_at; }
     // `when` is the consumer's local time (its simulated completion).
     void consumed(int kind, const sc_core::sc_time &when)

@@ -5,7 +5,7 @@ import os
 import subprocess
 import sys
 
-from output_files import OutputError, OutputSet, exit_on_signals, read_text
+from output_files import OutputError, OutputSet, exit_on_signals, read_text, shown
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
@@ -86,7 +86,9 @@ def sweep_plan(args):
     if len({n for n, _ in axes}) != len(axes):
         raise ValueError("each --axis option may be given once")
     fixed = args.fixed[1:] if args.fixed[:1] == ["--"] else args.fixed
+    sweep.check_fixed(fixed)  # before --out is made
     out = os.path.abspath(args.out)
+    os.makedirs(out, exist_ok=True)
     total, done = sweep.plan(out, args.sim, args.scene, axes, fixed, os.path.join(out, "points.list"))
     print("sweep: %d points (%d done before), results in %s" % (total, done, out))
     return 0
@@ -113,6 +115,22 @@ def compare(args):
     return 1 if diffs else 0
 
 
+def machine_as_run_reads_it(path, build):
+    """{key: value} of the machine file PATH as torusrt-sim reads it: every key, the defaults of
+    those it leaves out, each value as a run writes it (`ips="2"` is `2x1x1`), from
+    `torusrt-sim --dump-config --config PATH`; None when BUILD holds no torusrt-sim."""
+    from . import machine_file as mf
+    sim = os.path.join(build, "torusrt-sim")
+    if not os.access(sim, os.X_OK):
+        return None
+    done = subprocess.run([sim, "--dump-config", "--config", path], stdin=subprocess.DEVNULL,
+                          capture_output=True, text=True, errors="replace")
+    if done.returncode != 0:
+        raise ValueError("--compare '%s': torusrt-sim does not read it: %s"
+                         % (shown(path), shown(done.stderr.strip(), backslash=False)))
+    return mf.read_machine_file(done.stdout, "torusrt-sim --dump-config --config %s" % shown(path))
+
+
 def machine(args):
     import json
     from . import machine_file as mf
@@ -123,14 +141,21 @@ def machine(args):
             raise ValueError("not a JSON report (a %s, not an object)" % type(report).__name__)
         pairs = mf.from_report(report)
     except ValueError as e:  # not JSON, or no machine in it: name the report
-        raise ValueError("%s: %s" % (args.report, e))
+        raise ValueError("%s: %s" % (shown(args.report), e))
     if not args.compare:
         sys.stdout.write(mf.toml_text(pairs))
         return 0
-    diff = mf.differences(pairs, mf.read_machine_file(read_text(args.compare, "--compare"), args.compare))
+    # The file's syntax first (its own lines named), then its machine as a run reads it.
+    written = mf.read_machine_file(read_text(args.compare, "--compare"), shown(args.compare))
+    values = machine_as_run_reads_it(args.compare, args.build)
+    if values is None:
+        print("machine: no torusrt-sim in %s (--build): keys compared as written, without the defaults of the "
+              "keys the file leaves out" % shown(args.build), file=sys.stderr)
+        values = written
+    diff = mf.differences(pairs, values)
     for line in diff:
-        print("machine: %s" % line, file=sys.stderr)
-    print("machine: %s and %s: %s" % (args.report, args.compare,
+        print("machine: %s" % shown(line, backslash=False), file=sys.stderr)
+    print("machine: %s and %s: %s" % (shown(args.report), shown(args.compare),
                                       "%d keys differ" % len(diff) if diff else "the same %d keys" % len(pairs)))
     return 1 if diff else 0
 
@@ -180,7 +205,11 @@ def main(argv):
     p.set_defaults(run=compare)
     p = sub.add_parser("machine", help="the machine file (torusrt-sim --config) of a JSON report's config.options")
     p.add_argument("report")
-    p.add_argument("--compare", metavar="M.toml", help="compare with this machine file key by key instead")
+    p.add_argument("--compare", metavar="M.toml", help="compare with this machine file key by key instead, as "
+                                                       "torusrt-sim reads it (the defaults of the keys it leaves out)")
+    p.add_argument("--build", default=os.environ.get("TORUSRT_BUILD", os.path.join(REPO, "build")),
+                   help="the build folder whose torusrt-sim reads the --compare file (default $TORUSRT_BUILD, "
+                        "else build/)")
     p.set_defaults(run=machine)
     from . import fidelity
     fidelity.add_commands(sub)
@@ -189,8 +218,8 @@ def main(argv):
     try:
         return args.run(args)
     except OutputError as e:  # an output refused before anything was written: the command line's fault
-        print("%s: %s" % (prog, e), file=sys.stderr)
+        print("%s: %s" % (prog, shown(e, backslash=False)), file=sys.stderr)
         return 2
     except (OSError, ValueError, KeyError, subprocess.CalledProcessError) as e:
-        print("%s: %s" % (prog, e), file=sys.stderr)
+        print("%s: %s" % (prog, shown(e, backslash=False)), file=sys.stderr)
         return 1

@@ -1,5 +1,8 @@
 """CSV tables read by column name."""
 import csv
+import io
+
+from output_files import read_text
 
 
 class Table:
@@ -12,10 +15,11 @@ class Table:
 
     @classmethod
     def load(cls, path):
-        with open(path, newline="") as f:
-            reader = csv.DictReader(f)
-            rows = list(reader)
-            return cls(rows, list(reader.fieldnames or []), path)
+        """The table of the CSV file PATH; OSError or ValueError naming PATH when it is not a
+        regular file or not UTF-8 text."""
+        reader = csv.DictReader(io.StringIO(read_text(path, "CSV"), newline=""))
+        rows = list(reader)
+        return cls(rows, list(reader.fieldnames or []), path)
 
     def where(self, ok_only=True, **match):
         """Rows whose columns equal the given values (compared as text); only status ok rows

@@ -132,7 +132,9 @@ def read_report(path):
 def point_files(out, name):
     """The files of one point: its JSON report, image, log and identity."""
     base = os.path.join(out, "points", name)
-    return {ext: base + "." + ext for ext in ("json", "png", "log", "id")}
+    files = {ext: base + "." + ext for ext in ("json", "png", "log", "id")}
+    files["series"] = base + ".series.csv"  # with --stats-interval
+    return files
 
 
 def is_done(files, ident):
@@ -163,6 +165,20 @@ def is_done(files, ident):
     return False
 
 
+def has_series(args):
+    """True when a point's command line asks for a time series (--stats-interval)."""
+    return any(w.partition("=")[0] == "--stats-interval" for w in args)
+
+
+def check_fixed(fixed):
+    """ValueError naming the first output option among the fixed options (-o, --stats,
+    --stats-series, --vcd, ...): every point would write it into one file."""
+    written = output_options(fixed)
+    if written:
+        raise ValueError("%s among the fixed options: every point would write it into one file; the sweep "
+                         "writes each point's image, JSON and series itself (DIR/points/)" % written[0])
+
+
 def plan(out, sim, scene, axes, fixed, listing):
     """Writes OUT/points.tsv (name and axis values per point) and the point list LISTING
     (experiments/backend): the point's JSON, a tab and its shell command line. A point is done
@@ -171,10 +187,7 @@ def plan(out, sim, scene, axes, fixed, listing):
     (status deadlock); a failed one leaves none. Every output is checked first (output_files)."""
     names = [n for n, _ in axes]
     combos = list(itertools.product(*(v for _, v in axes)))
-    written = output_options(fixed)
-    if written:
-        raise ValueError("%s among the fixed options: every point would write it into one file; the sweep "
-                         "writes each point's image and JSON itself (DIR/points/)" % written[0])
+    check_fixed(fixed)
     seen = {}
     for values in combos:
         name = point_name(names, values)
@@ -194,7 +207,7 @@ def plan(out, sim, scene, axes, fixed, listing):
     points = os.path.join(out, "points")
     if os.path.isdir(points):  # a new folder holds nothing to check
         for f in files:
-            for ext in ("json", "png", "log", "id"):
+            for ext in ("json", "png", "log", "id", "series"):
                 f[ext] = outs.add("--out", f[ext])
     outs.add("--out", os.path.join(out, FACTS))
     outs.check()
@@ -212,15 +225,22 @@ def plan(out, sim, scene, axes, fixed, listing):
         if is_done(f, ident):
             done += 1
         tmp = f["json"] + ".tmp"
-        run = shlex.join([sim] + args + ["-o", f["png"], "--stats", tmp, "-q"])
+        # A series torusrt-sim would name from --stats gets the point's own name instead (its
+        # temporary renamed with the JSON), never one made from the temporary JSON's.
+        series = ["--stats-series", f["series"] + ".tmp"] if has_series(args) else []
+        run = shlex.join([sim] + args + ["-o", f["png"], "--stats", tmp] + series + ["-q"])
         j, t, i = shlex.quote(f["json"]), shlex.quote(tmp), shlex.quote(f["id"])
+        st, sf = shlex.quote(f["series"] + ".tmp"), shlex.quote(f["series"])
+        keep = "{ [ ! -e %s ] || mv %s %s; } && " % (st, st, sf) if series else ""
+        drop = " " + st if series else ""
         progress = "echo >&3 %s" % shlex.quote("sweep: [%d/%d] %s" % (k, len(combos), name))
         lines.append(f["json"] + "\t" +
                      "{run} >{log} 2>&1; rc=$?; "
                      "if [ $rc -eq 0 ] || {{ [ $rc -eq 3 ] && [ -s {t} ]; }}; then "
-                     "echo {ident} $(sha256sum <{t} | cut -d' ' -f1) >{i}.tmp && mv {i}.tmp {i} && mv {t} {j}; {p}: "
-                     "$([ $rc -eq 0 ] && echo ok || echo deadlock); else rm -f {t}; {p}: failed; exit $rc; fi".format(
-                         j=j, t=t, i=i, ident=ident, run=run, log=shlex.quote(f["log"]), p=progress))
+                     "echo {ident} $(sha256sum <{t} | cut -d' ' -f1) >{i}.tmp && mv {i}.tmp {i} && {keep}mv {t} {j}; {p}: "
+                     "$([ $rc -eq 0 ] && echo ok || echo deadlock); else rm -f {t}{drop}; {p}: failed; exit $rc; fi".format(
+                         j=j, t=t, i=i, ident=ident, run=run, log=shlex.quote(f["log"]), p=progress,
+                         keep=keep, drop=drop))
     table = io.StringIO()
     csv.writer(table, delimiter="\t", lineterminator="\n").writerows(rows)
     write_text(os.path.join(out, PLAN), table.getvalue(), "--out")

@@ -163,6 +163,7 @@ bool run_frame(const SimConfig &config, Machine &m, const std::string &label, co
     progress.finish();
     m.ledger.set_progress(nullptr, nullptr);
     try {
+        if (m.series) m.series->check();  // a series past its memory stopped the run
         return run_finished(config, *m.top, m.ledger, m.memory);
     } catch (const UserError &e) {
         throw UserError(where + e.what(), e.exit_code());
@@ -209,7 +210,7 @@ void elaborate(const SimConfig &config, const rt_scene *scene, const rt_grid *gr
                                                            config.replicated() ? &replicas : nullptr));
     if (!config.vcd_path.empty()) m.tracer = std::make_unique<Tracer>(config, *m.top);
     if (config.stats_interval_s > 0)
-        m.series = std::make_unique<SeriesRecording>(config.stats_interval_s, *m.top, m.ledger);
+        m.series = std::make_unique<SeriesRecording>(config.stats_interval_s, *m.top, m.ledger, m.memory);
     m.mark = &elaboration_mark();
     check_budget_before_start(m.ledger, m.memory, "before the simulation started: ");
 }

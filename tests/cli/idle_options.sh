@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # An option given on the command line that changes nothing in the machine asked for is run but
 # warned about (--data, --arbiter, --dispatch without --cluster above 1; --link-us beside
-# --link-bytes-per-us; --replica-choice without --replicate; --trace-ips without --vcd), and not
+# --link-bytes-per-us; --replica-choice without --replicate; --trace-ips without --vcd;
+# --route-ties on a machine with no even ring, or a mesh), and not
 # when it acts, nor when it comes from a --config file or goes to --dump-config. An option
 # missing its value is named (--ips --map cost). --ips with one number says it builds a ring, on
 # stderr and in the summary's system line; one processor per node prints no data mode; a paper
@@ -40,10 +41,14 @@ warns dispatch --dispatch "--cluster above 1" --ips 2x2 --dispatch=shortest-queu
 warns link --link-us "--link-bytes-per-us 0 (it sets the link time)" --ips 2x2 --link-us 100 --link-bytes-per-us 10
 warns replica --replica-choice "--replicate above 0" --ips 2x2 --replica-choice hash
 warns trace --trace-ips --vcd --ips 2x2 --trace-ips 0,1
+warns ties-odd --route-ties "an even ring (a dimension of --ips with an even number of nodes)" --ips 3x3 \
+    --route-ties plus
+warns ties-mesh --route-ties "--topology torus (a mesh has no way round)" --ips 2x2 --topology mesh --route-ties plus
 check "-q: no warning" test -z "$("$sim" "$scene" --size 8x8 -o "$TMP/q.png" --data shared -q 2>&1)"
 quiet_run cluster --ips 2x2 --cluster 2 --data shared --arbiter fixed-priority --dispatch shortest-queue
 quiet_run traced --ips 2x2 --trace-ips 0,1 --vcd "$TMP/t.vcd"
 quiet_run linkus --ips 2x2 --link-us 100
+quiet_run ties-even --ips 3x2 --route-ties plus
 # A machine file holds every key: what it sets is never warned about.
 "$sim" --dump-config --ips 2x2 --data shared --arbiter fixed-priority >"$TMP/m.toml" 2>"$TMP/dump.err"
 check "--dump-config with idle options: exit 0 and no warning ($(head -c 200 "$TMP/dump.err"))" \

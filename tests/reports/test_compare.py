@@ -87,6 +87,48 @@ class Compare(unittest.TestCase):
             with self.assertRaisesRegex(ValueError, "%s: no such results folder" % missing):
                 compare.compare(old, new)
 
+    def test_a_point_twice_is_an_error_naming_the_file_and_the_point(self):
+        # A second row of a changed point would hide the change: neither side may hold one twice.
+        def change(rows):
+            twin = dict(rows[0])
+            twin["sim_time_s"] = str(float(twin["sim_time_s"]) * 2)
+            return rows + [twin]
+        edit(os.path.join(self.new, FIG), change)
+        for old, new in ((RESULTS, self.new), (self.new, RESULTS)):
+            with self.assertRaisesRegex(ValueError, r"%s: line \d+: the point .*=.* is also on line 2"
+                                        % os.path.join(self.new, FIG)):
+                compare.compare(old, new)
+
+    def test_an_unknown_column_is_an_error_naming_it(self):
+        with self.assertRaisesRegex(ValueError, "--columns: no such column .*: nosuch$"):
+            compare.compare(RESULTS, self.new, ["sim_time_s", "nosuch"])
+        self.assertEqual(compare.compare(RESULTS, self.new, ["sim_time_s"])[1], [])
+
+    def test_a_column_only_in_the_new_csv_is_compared(self):
+        def change(rows):
+            for r in rows:
+                r["extra"] = "1"
+            return rows
+        path = os.path.join(self.new, FIG)
+        with open(path, newline="") as f:
+            columns = next(csv.reader(f))
+        with open(path, newline="") as f:
+            rows = change(list(csv.DictReader(f)))
+        with open(path, "w", newline="") as f:
+            w = csv.DictWriter(f, fieldnames=columns + ["extra"], lineterminator="\n")
+            w.writeheader()
+            w.writerows(rows)
+        _, diffs = compare.compare(RESULTS, self.new, ["extra"])
+        self.assertTrue(diffs and all("extra None -> 1" in d for d in diffs), diffs[:2])
+
+    def test_a_csv_that_is_not_utf8_is_named(self):
+        path = os.path.join(self.new, FIG)
+        with open(path, "ab") as f:
+            f.write(b"\xff\xfe,\n")
+        for old, new in ((RESULTS, self.new), (self.new, RESULTS)):
+            with self.assertRaisesRegex(ValueError, "'%s': not UTF-8 text" % path):
+                compare.compare(old, new)
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -151,6 +151,16 @@ std::string registered_name(const std::string &option, const std::string &text, 
     throw UserError(option + " '" + text + "': expected " + listed(names), 2);
 }
 
+// --route-ties acts only where a packet may go either way round: a ring of an even number of
+// nodes, which a torus has in a dimension of --ips that is even.
+const char *needs_even_ring(const MachineConfig &m)
+{
+    if (m.topology != Topology::torus) return "--topology torus (a mesh has no way round)";
+    for (int nodes : m.ips)
+        if (nodes % 2 == 0) return nullptr;
+    return "an even ring (a dimension of --ips with an even number of nodes)";
+}
+
 // Machine options of the network (nodes, mapping, topology, grid, buffers, flow), in dump order.
 std::vector<MachineOption> network_options()
 {
@@ -182,7 +192,8 @@ std::vector<MachineOption> network_options()
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
              m.route_ties = value_named(s.long_name(), t, kRouteTiesNames);
          },
-         [](const MachineConfig &m) { return std::string(route_ties_name(m.route_ties)); }},
+         [](const MachineConfig &m) { return std::string(route_ties_name(m.route_ties)); },
+         needs_even_ring},
         {common_option_spec("--cells"),
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
              m.cells = parse_triple(s.long_name(), t, 1, static_cast<int>(s.max));
