@@ -14,11 +14,10 @@ IntersectionProcessor::IntersectionProcessor(sc_core::sc_module_name name, const
                                              const rt_scene *scene, const rt_grid *grid, const int32_t *cell_owner,
                                              int owner_id, int index, PacketLedger &ledger, const ProcessorSetup &setup)
     : sc_module(name), in("in"), out("out"), fetch("fetch"), fb_socket("fb_socket"),
-      m_reserving(config.flow != FlowControl::none && config.queue_capacity != 0),
+      m_reserving(config.flow != FlowControl::none && config.queue_capacity != 0), m_threaded(config.cluster > 1),
       m_timer_wake(setup.calendar, *this, m_timer), m_config(config), m_scene(scene), m_grid(grid), m_owner(cell_owner),
       m_owner_id(owner_id), m_index(index), m_ledger(ledger), m_params(config.step),
-      m_time(config.style == TimingStyle::lt), m_queue(std::string(basename()) + ".queue", config.queue_capacity),
-      m_threaded(config.cluster > 1)
+      m_time(config.style == TimingStyle::lt), m_queue(std::string(basename()) + ".queue", config.queue_capacity)
 {
     in.bind(*this);
     m_params.replicas = setup.replicas;
@@ -149,7 +148,7 @@ IntersectionProcessor::Wake IntersectionProcessor::act()
             }
             m_time.settle(m_before);  // it may have waited for room
             if (m_room_wait) {
-                m_room_waited = m_time.now() - m_room_from;
+                m_blocked += m_time.now() - m_room_from;
                 m_room_wait = false;
             }
             m_stage = Stage::begin;
@@ -180,10 +179,6 @@ void IntersectionProcessor::begin_step()
     m_busy_flag = true;
     rt_ops_add(&m_ops, &m_result.ops);
     m_start = m_time.now();
-    // The idle time since the last hand-over: waiting for room, else for a packet to take up.
-    m_blocked += m_room_waited;
-    m_starved += m_start - m_before - m_room_waited;
-    m_room_waited = sc_core::SC_ZERO_TIME;
     // A primary's first step: nothing worked on it yet, no link crossed.
     const rt_packet &in = m_cur->packet;
     if (in.depth == 0 && in.kind == RT_PACKET_RAY && m_cur->hops == 0 && m_cur->worked_ns == 0) {
@@ -196,8 +191,9 @@ void IntersectionProcessor::begin_step()
 
 void IntersectionProcessor::end_step()
 {
-    m_busy += m_time.now() - m_start;
-    if (m_series) m_series->ip_busy(m_start, m_time.now());
+    sc_core::sc_time done = m_time.now();
+    m_busy += done - m_start;
+    if (m_series) m_series->ip_busy(m_start, done);
     m_busy_flag = false;
     if (m_result.contrib_count) {
         sc_core::sc_time delay = sc_core::SC_ZERO_TIME;

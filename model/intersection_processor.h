@@ -105,8 +105,11 @@ class IntersectionProcessor : public sc_core::sc_module,
     PacketQueue &queue() { return m_queue; }
     IpStats stats() const
     {
-        return {m_busy.to_seconds(), m_starved.to_seconds(), m_blocked.to_seconds(), m_before.to_seconds(),
-                m_packets_in,        m_packets_out,          m_queue.high_water(),   m_ops};
+        // Starved: the rest of the time before the last hand-over (busy and blocked are counted).
+        sc_core::sc_time counted = m_busy + m_blocked;
+        sc_core::sc_time starved = m_before > counted ? m_before - counted : sc_core::SC_ZERO_TIME;
+        return {m_busy.to_seconds(), starved.to_seconds(), m_blocked.to_seconds(), m_before.to_seconds(),
+                m_packets_in,        m_packets_out,        m_queue.high_water(),   m_ops};
     }
     void register_queues(QueueRegistry &reg)
     {
@@ -164,8 +167,11 @@ class IntersectionProcessor : public sc_core::sc_module,
     Wake m_wake = Wake::start;
     bool m_woken = false, m_room_woken = false;  // method driver: what woke it this delta
     bool m_act_asked = false, m_acting = false;
-    bool m_reserving;               // outputs reserve their slots before a packet is taken up
-    bool m_forward_pooled = false;  // the step forwards the packet taken up by its handle
+    bool m_reserving;                 // outputs reserve their slots before a packet is taken up
+    bool m_threaded;                  // a thread (cluster): a hand-over may wait for the bus
+    bool m_forward_pooled = false;    // the step forwards the packet taken up by its handle
+    bool m_room_wait = false;         // a wait for room for a queued packet's outputs is on
+    bool m_hand_over_waited = false;  // a method: the hand-over waited for the processor side
     static constexpr uint32_t kNoHandle = ~uint32_t{0};
     uint32_t m_handle = kNoHandle;
     uint32_t m_out_cls = 0;  // the class of the step's outputs
@@ -178,6 +184,7 @@ class IntersectionProcessor : public sc_core::sc_module,
     // read the ports for them.
     PacketSinkIf *m_out = nullptr;
     tlm::tlm_fw_transport_if<> *m_fb = nullptr;
+    TimeSeries *m_series = nullptr;   // --stats-interval's series (null: none)
     sc_core::sc_time m_delay, m_due;  // the owed wait and when it ends
     const MachineConfig &m_config;
     const rt_scene *m_scene;
@@ -189,12 +196,10 @@ class IntersectionProcessor : public sc_core::sc_module,
     TimeKeeper m_time;
     sc_core::sc_time m_before, m_start, m_handed_at;
     sc_core::sc_time m_busy = sc_core::SC_ZERO_TIME;
-    // Idle time: with nothing to take up, and waiting for room or to hand over; a wait for room
-    // for the outputs of a packet in the queue began at m_room_from (m_room_wait: it is on).
-    sc_core::sc_time m_starved, m_blocked, m_room_from, m_room_waited;
-    bool m_room_wait = false;
-    bool m_hand_over_waited = false;  // a method: the hand-over waited for the processor side
-    size_t m_next_out = 0;            // the next output to hand over
+    // Idle time waiting for room or to hand over; a wait for room for the outputs of a packet in
+    // the queue began at m_room_from.
+    sc_core::sc_time m_blocked, m_room_from;
+    size_t m_next_out = 0;  // the next output to hand over
     uint64_t m_packets_in = 0, m_packets_out = 0;
     bool m_busy_flag = false;
     rt_op_counts m_ops{};
@@ -202,9 +207,8 @@ class IntersectionProcessor : public sc_core::sc_module,
     // The current step's created packets, then the forwarded one (by copy).
     std::vector<TimedPacket> m_outputs;
     PacketQueue m_queue;
-    TimedPacket m_current;           // the packet taken up (after its step), when taken up by copy
-    std::vector<uint32_t> m_tested;  // objects tested in the current step (shared data only)
-    bool m_threaded;
+    TimedPacket m_current;                // the packet taken up (after its step), when taken up by copy
+    std::vector<uint32_t> m_tested;       // objects tested in the current step (shared data only)
     tlm::tlm_generic_payload m_fb_trans;  // a member, not a thread local: freed with the module
     // On the calendar's path (a flat machine with a positive link time) no event is touched per
     // step.
@@ -212,8 +216,6 @@ class IntersectionProcessor : public sc_core::sc_module,
     sc_core::sc_event m_out_room;  // the processor side may hand over again
     sc_core::sc_event m_timer;     // method driver: the owed wait is over
     sc_core::sc_event m_act;       // method driver: run the machine (notified at once)
-    // --stats-interval's series (null: none).
-    TimeSeries *m_series = nullptr;
 };
 
 }  // namespace torusrt

@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <systemc>
 #include <vector>
 
@@ -55,14 +56,17 @@ class LogHistogram {
     }
 
   private:
+    // Read from the double's bits (every consumed packet passes here): the exponent is the
+    // octave, the top four bits of the fraction the sixteenth within it.
     static int bucket_of(double us)
     {
+        static_assert(kSub == 16, "four bits of the fraction");
         if (!(us >= 1.0)) return 0;
-        int e = 0;
-        double m = std::frexp(us, &e);  // us = m 2^e, m in [0.5, 1)
-        int octave = e - 1;
+        uint64_t bits;
+        std::memcpy(&bits, &us, sizeof bits);
+        int octave = static_cast<int>(bits >> 52) - 1023;  // us >= 1: positive, normal
         if (octave >= kOctaves) return kBuckets - 1;
-        return 1 + octave * kSub + static_cast<int>((2.0 * m - 1.0) * kSub);
+        return 1 + octave * kSub + static_cast<int>((bits >> 48) & (kSub - 1));
     }
     static double upper_edge(int b)
     {
@@ -92,9 +96,9 @@ struct KindLatency {
         queued_us += queued;
         links_us += links;
         processing_us += processing;
-        queued_max_us = std::fmax(queued_max_us, queued);
-        links_max_us = std::fmax(links_max_us, links);
-        processing_max_us = std::fmax(processing_max_us, processing);
+        if (queued > queued_max_us) queued_max_us = queued;
+        if (links > links_max_us) links_max_us = links;
+        if (processing > processing_max_us) processing_max_us = processing;
         hops += h;
         if (h > hops_max) hops_max = h;
     }
@@ -104,6 +108,13 @@ struct KindLatency {
 };
 
 class PacketLatency {
+    static constexpr uint64_t kNone = UINT64_MAX;
+    // Per pixel, SystemC time values side by side: a pixel's start and its contributions touch
+    // one cache line.
+    struct PixelSpan {
+        uint64_t start = kNone, last = 0;
+    };
+
   public:
     enum Kind { primary, ray, shadow, kKinds };
     static const char *kind_name(int k) { return k == primary ? "primary" : k == ray ? "ray" : "shadow"; }
@@ -112,9 +123,10 @@ class PacketLatency {
     void set_image(uint32_t width, uint32_t height)
     {
         m_width = width;
-        m_start.assign(static_cast<size_t>(width) * height, kNone);
-        m_last.assign(m_start.size(), 0);
+        m_pixel.assign(static_cast<size_t>(width) * height, PixelSpan{});
     }
+    // Memory the per-pixel figures take for each pixel (the run's budget holds it).
+    static constexpr uint64_t bytes_per_pixel() { return sizeof(PixelSpan); }
     void set_link_time(const sc_core::sc_time &t) { m_link = t.value(); }
 
     // A packet consumed at `when`: made at `born`, `worked` (a time value) in the steps before,
@@ -128,13 +140,13 @@ class PacketLatency {
     void primary_started(uint32_t x, uint32_t y, const sc_core::sc_time &when)
     {
         size_t i = index(x, y);
-        if (i < m_start.size()) m_start[i] = when.value();
+        if (i < m_pixel.size()) m_pixel[i].start = when.value();
     }
     // Pixel (x, y) got a contribution at `when`.
     void contributed(uint32_t x, uint32_t y, const sc_core::sc_time &when)
     {
         size_t i = index(x, y);
-        if (i < m_last.size() && when.value() > m_last[i]) m_last[i] = when.value();
+        if (i < m_pixel.size() && when.value() > m_pixel[i].last) m_pixel[i].last = when.value();
     }
 
     const KindLatency &kind(int k) const { return m_kind[k]; }
@@ -142,18 +154,17 @@ class PacketLatency {
     LogHistogram pixels() const
     {
         LogHistogram h;
-        for (size_t i = 0; i < m_start.size(); i++)
-            if (m_start[i] != kNone && m_last[i] >= m_start[i]) h.add(KindLatency::us(m_last[i] - m_start[i]));
+        for (const PixelSpan &p : m_pixel)
+            if (p.start != kNone && p.last >= p.start) h.add(KindLatency::us(p.last - p.start));
         return h;
     }
 
   private:
-    static constexpr uint64_t kNone = UINT64_MAX;
     size_t index(uint32_t x, uint32_t y) const { return x < m_width ? static_cast<size_t>(y) * m_width + x : SIZE_MAX; }
     std::array<KindLatency, kKinds> m_kind{};
     uint64_t m_link = 0;  // a link's packet time (time value)
     uint32_t m_width = 0;
-    std::vector<uint64_t> m_start, m_last;  // per pixel, SystemC time values
+    std::vector<PixelSpan> m_pixel;
 };
 
 }  // namespace torusrt

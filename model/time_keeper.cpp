@@ -7,8 +7,6 @@ namespace torusrt {
 
 TimeKeeper::TimeKeeper(bool loosely_timed) : m_lt(loosely_timed) { m_qk.reset(); }
 
-sc_core::sc_time TimeKeeper::now() const { return m_lt ? m_qk.get_current_time() : sim_now(); }
-
 TimeWait TimeKeeper::advance_nb(const sc_core::sc_time &d)
 {
     if (!m_lt) return {true, d};

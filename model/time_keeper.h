@@ -11,6 +11,8 @@
 #include <systemc>
 #include <tlm_utils/tlm_quantumkeeper.h>
 
+#include "sim_now.h"
+
 namespace torusrt {
 
 // A wait owed: `due` false = none; else `delay` (SC_ZERO_TIME: one delta cycle).
@@ -23,7 +25,7 @@ class TimeKeeper {
   public:
     explicit TimeKeeper(bool loosely_timed);
     // The process's local time (simulation time plus its offset).
-    sc_core::sc_time now() const;
+    sc_core::sc_time now() const { return m_lt ? m_qk.get_current_time() : sim_now(); }
     // Spends `d` of simulated time.
     void advance(const sc_core::sc_time &d) { spend(advance_nb(d)); }
     TimeWait advance_nb(const sc_core::sc_time &d);

@@ -53,6 +53,16 @@ void reserve_images(rt_budget &memory, const rt_camera *cam, size_t images)
     if (rt_budget_reserve(&memory, bytes, what.c_str(), msg, sizeof msg) != RT_OK) throw UserError(msg);
 }
 
+// The per-pixel latency figures (packet_latency.h): a start and a last contribution a pixel.
+void reserve_pixel_latency(rt_budget &memory, const rt_camera *cam)
+{
+    uint64_t bytes = static_cast<uint64_t>(cam->width) * cam->height * PacketLatency::bytes_per_pixel();
+    std::string what = "the per-pixel latency figures of " + std::to_string(cam->width) + "x" +
+                       std::to_string(cam->height) + " pixels";
+    char msg[RT_MSG_LEN] = "";
+    if (rt_budget_reserve(&memory, bytes, what.c_str(), msg, sizeof msg) != RT_OK) throw UserError(msg);
+}
+
 // An animation's pilots (the current frame's, the two before it and adaptive's preview, kept
 // from frame to frame) with one pilot's frame buffer and a remapping's Scotch tables, held from
 // the run's budget before the first pilot runs.
@@ -355,6 +365,7 @@ RunOutcome run_frames(const SimConfig &config, rt_scene *scene, const rt_grid *g
     reserve_images(m.memory, cam, plan.frame_done ? 1 : n);
     reserve_frame_pilots(m.memory, scene, grid, plan);
     m.ledger.set_limit(rt_budget_packets_allowed(&m.memory, PacketPool::bytes_per_packet()));
+    reserve_pixel_latency(m.memory, cam);
     m.ledger.latency().set_image(cam->width, cam->height);
     m.ledger.latency().set_link_time(sc_core::sc_time(rt_timing_link_packet_us(&config.timing), sc_core::SC_US));
     FrameLoop loop(config, scene, grid, plan);
