@@ -364,8 +364,8 @@ RunOutcome run_frames(const SimConfig &config, rt_scene *scene, const rt_grid *g
     const size_t image_bytes = static_cast<size_t>(cam->width) * cam->height * 3;
     reserve_images(m.memory, cam, plan.frame_done ? 1 : n);
     reserve_frame_pilots(m.memory, scene, grid, plan);
-    m.ledger.set_limit(rt_budget_packets_allowed(&m.memory, PacketPool::bytes_per_packet()));
     reserve_pixel_latency(m.memory, cam);
+    m.ledger.set_limit(rt_budget_packets_allowed(&m.memory, PacketPool::bytes_per_packet()));
     m.ledger.latency().set_image(cam->width, cam->height);
     m.ledger.latency().set_link_time(sc_core::sc_time(rt_timing_link_packet_us(&config.timing), sc_core::SC_US));
     FrameLoop loop(config, scene, grid, plan);

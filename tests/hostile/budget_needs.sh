@@ -5,7 +5,8 @@
 # --memory-budget stops the run (exit 2, naming --stats-interval and --memory-budget, nothing
 # written) instead of growing past it; an interval as long as the longest run (1e7 s) is one
 # interval, not "more than 1000000"; an interval of 1 ps (0.001ns) stops at 1,000,000 intervals,
-# and `1ps` is refused, as docs/cli.md says (units ns, us, ms, s).
+# and `1ps` is refused, as docs/cli.md says (units ns, us, ms, s); the per-pixel latency figures
+# are held from the budget before the run.
 #
 # Usage (CTest runs it so): bash tests/hostile/budget_needs.sh BUILD_DIR SOURCE_DIR
 set -u
@@ -66,5 +67,12 @@ fails "--stats-interval 0.001ns" 2 \
     --size 16x16 -o out/p.png --stats out/p.json --stats-interval 0.001ns
 fails "--stats-interval 1ps" 2 "^torusrt-sim: --stats-interval '1ps': expected a time: .* unit ns, us, ms or s" \
     --size 16x16 -o out/p.png --stats out/p.json --stats-interval 1ps
+
+# ---- the per-pixel latency figures inside the budget -------------------------------------------
+# 2048x2048: the frame buffer and the image (about 120 MiB) fit 150M, the latency figures' 16
+# bytes a pixel (64 MiB) do not; refused before any run, naming them.
+fails "per-pixel latency" 1 \
+    "memory budget exceeded: the per-pixel latency figures of 2048x2048 pixels would take 64.0 MiB" \
+    --size 2048x2048 -o out/big.png --stats out/big.json --memory-budget 150M
 
 finish
