@@ -9,11 +9,11 @@ need_exe torusrt-sim
 sim="$BUILD/torusrt-sim"
 scene=$(source_scene one-pixel) || exit 1
 
-# toml_reads FILE KEY VALUE: tomllib reads FILE, and KEY holds VALUE.
+# toml_reads FILE TABLE KEY VALUE: tomllib reads FILE, and KEY of [TABLE] holds VALUE.
 toml_reads() {
     python3 -c 'import sys, tomllib
 with open(sys.argv[1], "rb") as f: d = tomllib.load(f)
-sys.exit(0 if d[sys.argv[2]] == sys.argv[3] else 1)' "$@" 2> "$TMP/py.err"
+sys.exit(0 if d[sys.argv[2]][sys.argv[3]] == sys.argv[4] else 1)' "$@" 2> "$TMP/py.err"
 }
 names=("back\\slash" "double\"quote" "single'quote" "both\"and'" "hash #1" $'tab\there' $'bell\a' $'line\nbreak' "naïve")
 k=0
@@ -25,7 +25,7 @@ for name in "${names[@]}"; do
     cp "$SRC/timing/literal.timing" "$path"
     "$sim" --dump-config --timing "$path" > "$dir/m.toml" 2> "$TMP/err"
     check "dump with path $k exits 0 ($(head -1 "$TMP/err"))" [ $? = 0 ]
-    check "tomllib reads the dump of path $k ($(tail -1 "$TMP/py.err" 2>/dev/null))" toml_reads "$dir/m.toml" timing "$path"
+    check "tomllib reads the dump of path $k ($(tail -1 "$TMP/py.err" 2>/dev/null))" toml_reads "$dir/m.toml" timing timing "$path"
     "$sim" --dump-config --config "$dir/m.toml" > "$dir/again.toml" 2> "$TMP/err"
     check "path $k reads back to the same machine ($(head -1 "$TMP/err"))" cmp -s "$dir/m.toml" "$dir/again.toml"
 done
