@@ -55,6 +55,64 @@ std::string listed(const std::vector<std::string> &names)
     return s;
 }
 
+// The keys and values of a parsed file, flat or in one of `tables`, in the file's order; a table
+// that is none of them, an array of tables, an inline table for a table and a table in a table
+// are errors.
+std::vector<Entry> entries_of(const toml::table &root, const std::vector<std::string> &tables)
+{
+    std::vector<Entry> entries;
+    for (auto &&[key, node] : root) {
+        const std::string name(key.str());
+        const toml::source_position at = key.source().begin;
+        if (node.is_array_of_tables())
+            throw MachineFileError(at.line, at.column,
+                                   "[[" + shown_text(name) + "]]: an array of tables; a machine file's tables are [" +
+                                       shown_text(name) + "]");
+        const toml::table *table = node.as_table();
+        if (table == nullptr) {
+            entries.push_back({name, "", &node, at});
+            continue;
+        }
+        if (std::find(tables.begin(), tables.end(), name) == tables.end()) {
+            std::string near = closest_name(name, tables);
+            throw MachineFileError(at.line, at.column,
+                                   "[" + shown_text(name) + "]: not a table of a machine file (" + listed(tables) +
+                                       (near.empty() ? "" : "; did you mean [" + near + "]?") + ")");
+        }
+        if (table->is_inline())
+            throw MachineFileError(at.line, at.column,
+                                   shown_text(name) + ": an inline table; write [" + name + "] and its keys below it");
+        for (auto &&[inner_key, inner] : *table) {
+            const toml::source_position where = inner_key.source().begin;
+            if (inner.is_table() && !inner.as_table()->is_inline())
+                throw MachineFileError(where.line, where.column,
+                                       "[" + name + "." + shown_text(std::string(inner_key.str())) +
+                                           "]: a machine file's tables hold no tables");
+            entries.push_back({std::string(inner_key.str()), name, &inner, where});
+        }
+    }
+    std::sort(entries.begin(), entries.end(), [](const Entry &a, const Entry &b) { return before(a.where, b.where); });
+    return entries;
+}
+
+// The text an entry's value gives its option: a string as it is, a boolean as true or false, a
+// number as its source text (judged by the option's parser); anything else is an error.
+std::string value_text(const Entry &e, const std::vector<std::string> &lines)
+{
+    const toml::node &v = *e.value;
+    const long line = e.where.line, column = e.where.column;
+    if (v.is_string()) return v.as_string()->get();
+    if (v.is_boolean()) return v.as_boolean()->get() ? "true" : "false";
+    if (v.is_number()) return number_source(lines, v.source().begin);
+    if (v.is_array())
+        throw MachineFileError(line, column,
+                               e.key + ": an array; a machine option takes one value (a list is one string, e.g. "
+                                       "\"a,b\")");
+    if (v.is_table())
+        throw MachineFileError(line, column, e.key + ": an inline table; a machine option takes one value");
+    throw MachineFileError(line, column, e.key + ": a date or time; a machine option takes a string");
+}
+
 }  // namespace
 
 MachineFileReader::MachineFileReader(std::vector<std::pair<std::string, std::string>> keys,
@@ -84,46 +142,11 @@ std::vector<CLI::ConfigItem> MachineFileReader::from_config(std::istream &input)
         key_names.push_back(kt.first);
         if (std::find(tables.begin(), tables.end(), kt.second) == tables.end()) tables.push_back(kt.second);
     }
-    std::vector<Entry> entries;
-    for (auto &&[key, node] : root) {
-        const std::string name(key.str());
-        const toml::table *table = node.as_table();
-        if (node.is_array_of_tables()) {
-            const toml::source_position at = key.source().begin;
-            throw MachineFileError(at.line, at.column,
-                                   "[[" + shown_text(name) + "]]: an array of tables; a machine file's tables are [" +
-                                       shown_text(name) + "]");
-        }
-        if (table == nullptr) {
-            entries.push_back({name, "", &node, key.source().begin});
-            continue;
-        }
-        const toml::source_position at = key.source().begin;
-        if (std::find(tables.begin(), tables.end(), name) == tables.end()) {
-            std::string near = closest_name(name, tables);
-            throw MachineFileError(at.line, at.column,
-                                   "[" + shown_text(name) + "]: not a table of a machine file (" + listed(tables) +
-                                       (near.empty() ? "" : "; did you mean [" + near + "]?") + ")");
-        }
-        if (table->is_inline())
-            throw MachineFileError(at.line, at.column,
-                                   shown_text(name) + ": an inline table; write [" + name + "] and its keys below it");
-        for (auto &&[inner_key, inner] : *table) {
-            const toml::source_position where = inner_key.source().begin;
-            if (inner.is_table() && !inner.as_table()->is_inline())
-                throw MachineFileError(where.line, where.column,
-                                       "[" + name + "." + shown_text(std::string(inner_key.str())) +
-                                           "]: a machine file's tables hold no tables");
-            entries.push_back({std::string(inner_key.str()), name, &inner, where});
-        }
-    }
-    std::sort(entries.begin(), entries.end(), [](const Entry &a, const Entry &b) { return before(a.where, b.where); });
-
     std::vector<std::string> lines;
     std::istringstream split(text);
     for (std::string line; std::getline(split, line);) lines.push_back(line);
     std::vector<CLI::ConfigItem> items;
-    for (const Entry &e : entries) {
+    for (const Entry &e : entries_of(root, tables)) {
         const long line = e.where.line, column = e.where.column;
         auto known = std::find_if(m_keys.begin(), m_keys.end(), [&](const auto &kt) { return kt.first == e.key; });
         if (known == m_keys.end()) {
@@ -137,26 +160,13 @@ std::vector<CLI::ConfigItem> MachineFileReader::from_config(std::istream &input)
                                    e.key + ": a key of [" + known->second + "], not of [" + e.table + "]");
         if (m_positions.count(e.key))
             throw MachineFileError(line, column, e.key + ": given twice (also at " + m_positions[e.key] + ")");
-        const toml::node &v = *e.value;
-        const toml::source_position value_at = v.source().begin;
-        std::string value;
-        if (v.is_string()) value = v.as_string()->get();
-        else if (v.is_boolean()) value = v.as_boolean()->get() ? "true" : "false";
-        else if (v.is_number()) value = number_source(lines, value_at);  // judged by the option's parser
-        else if (v.is_array())
-            throw MachineFileError(line, column,
-                                   e.key + ": an array; a machine option takes one value (a list is one string, "
-                                           "e.g. \"a,b\")");
-        else if (v.is_table())
-            throw MachineFileError(line, column, e.key + ": an inline table; a machine option takes one value");
-        else  // a date or a time
-            throw MachineFileError(line, column, e.key + ": a date or time; a machine option takes a string");
+        std::string value = value_text(e, lines);
         bool timed = std::find(m_timed_keys.begin(), m_timed_keys.end(), e.key) != m_timed_keys.end();
         if (timed && !value.empty() && value != "0" && !has_time_unit(value))
             throw MachineFileError(line, column,
                                    e.key + " = \"" + shown_text(value) +
                                        "\": a time in a machine file needs its unit (us, ms or s), e.g. \"500us\"");
-        m_positions[e.key] = position_text(value_at);
+        m_positions[e.key] = position_text(e.value->source().begin);
         CLI::ConfigItem item;
         item.name = e.key;
         item.inputs = {value};

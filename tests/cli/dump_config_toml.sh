@@ -2,7 +2,8 @@
 # dump_config_toml.sh - --dump-config writes TOML that Python's tomllib reads for any path
 # (backslashes, both quotes, control bytes, '#'), which reads back to the same machine;
 # --with-timing makes a machine file that needs no timing file; and
-# `experiments/report machine` writes a report's machine exactly as --dump-config does; a run
+# `experiments/report machine` writes a report's machine exactly as --dump-config does, grouped
+# in tables (flat for a report without config.option_tables, which reads the same); a run
 # with --timing-values and its dump are one machine, and a dump without it another.
 source "$(dirname "$0")/common.bash" "$@"
 need_exe torusrt-sim
@@ -58,6 +59,15 @@ python3 "$SRC/experiments/report" machine "$TMP/r.json" > "$TMP/report.toml" 2> 
 check "report machine exits 0 ($(head -1 "$TMP/err"))" [ $? = 0 ]
 check "report machine = --dump-config ($(diff "$TMP/dump.toml" "$TMP/report.toml" | head -3 | tr '\n' ' '))" \
     cmp -s "$TMP/dump.toml" "$TMP/report.toml"
+check "the report's machine file is grouped ($(grep -c '^\[' "$TMP/report.toml") tables)" \
+    [ "$(grep -c '^\[' "$TMP/report.toml")" = 4 ]
+# A report without config.option_tables (written before tables) gives a flat file: the same machine.
+jq 'del(.config.option_tables)' "$TMP/r.json" >"$TMP/flat.json"
+python3 "$SRC/experiments/report" machine "$TMP/flat.json" >"$TMP/flat.toml" 2>"$TMP/err"
+check "report machine of a report without tables exits 0 ($(head -1 "$TMP/err"))" [ $? = 0 ]
+check "... and writes no table" [ "$(grep -c '^\[' "$TMP/flat.toml")" = 0 ]
+"$sim" --dump-config --config "$TMP/flat.toml" >"$TMP/flat.dump" 2>"$TMP/err"
+check "the flat file is the same machine ($(head -1 "$TMP/err"))" cmp -s "$TMP/dump.toml" "$TMP/flat.dump"
 
 # --timing-values is part of the machine: in the dump without --with-timing, and in the report,
 # so that a machine without it compares as another machine.
