@@ -86,6 +86,14 @@ std::vector<std::string> timed_machine_keys()
     return keys;
 }
 
+// "[network], [timing], ...": the machine file's tables for the help.
+std::string machine_file_table_names()
+{
+    std::string s;
+    for (const std::string &t : machine_file_tables()) s += (s.empty() ? "[" : ", [") + t + "]";
+    return s;
+}
+
 const char *const kUsage = "Usage: torusrt-sim SCENE -o FILE [OPTIONS]\n"
                            "       torusrt-sim --dump-config [--with-timing] [MACHINE OPTIONS]";
 const char *const kRules = "Numbers are decimal (010 and 0x10 are refused). A time takes a unit ns, us, ms or s; a\n"
@@ -101,8 +109,10 @@ void declare_options(CLI::App &app, std::shared_ptr<MachineFileReader> reader)
         "PNG image to write; with --frames/--camera-path/--motion a pattern like out_%04d.png";
     add_common_options(app, output_help, {"scene", "--size"});
     app.set_config("--config", "",
-                   wrapped("read the machine from this TOML file (as --dump-config writes it); "
-                           "options on the command line take precedence",
+                   wrapped("read the machine from this TOML file (as --dump-config writes it), its keys in the "
+                           "tables " +
+                               machine_file_table_names() +
+                               " or at the top; options on the command line take precedence",
                            kHelpColumns - 31))
         ->type_name("FILE")
         ->group(group_title(OptionGroup::machine))
