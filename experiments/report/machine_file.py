@@ -88,14 +88,17 @@ def option_tables(sim):
 
 def key_position(text, table, key):
     """(line, column) of KEY's line in TABLE ("" for the top) of TEXT, as far as a plain scan of
-    its `[table]` and `key =` lines finds it; (0, 0) if it does not."""
+    its `[table]`, `key =` and `table.key =` lines finds it; (0, 0) if it does not."""
+    quoted = r"""(%s|"%s"|'%s')""" % ((re.escape(key),) * 3)
+    in_table = re.compile(quoted + r"\s*=")
+    dotted = re.compile(re.escape(table) + r"\s*\.\s*" + quoted + r"\s*=")
     current = ""
     for number, line in enumerate(text.splitlines(), 1):
         stripped = line.strip()
         header = re.match(r"\[\s*([A-Za-z0-9_-]+)\s*\]\s*(#.*)?$", stripped)
         if header:
             current = header.group(1)
-        elif current == table and re.match(r"""(%s|"%s"|'%s')\s*=""" % ((re.escape(key),) * 3), stripped):
+        elif (current == table and in_table.match(stripped)) or (table and not current and dotted.match(stripped)):
             return number, len(line) - len(line.lstrip()) + 1
     return 0, 0
 

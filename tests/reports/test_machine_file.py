@@ -97,6 +97,7 @@ class MachineFile(unittest.TestCase):
         # As torusrt-sim reads them: the option's parser judges the text (0x10 is refused there).
         text = '[network]\nqueue = 0x10 # hex\ncells = 1_000\n[mapping]\nreplicate = inf\n'
         self.assertEqual(mf.read_machine_file(text), {"queue": "0x10", "cells": "1_000", "replicate": "inf"})
+        self.assertEqual(mf.read_machine_file('network.queue = 8\nips = "2"\n'), {"queue": "8", "ips": "2"})
         with self.assertRaisesRegex(ValueError, r"m.toml:2:1: ips: an array"):
             mf.read_machine_file('[network]\nips = ["2", "2"]\n', "m.toml")
         with self.assertRaisesRegex(ValueError, r"m.toml:2:9: Illegal character"):
