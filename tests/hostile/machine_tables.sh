@@ -38,6 +38,12 @@ for form in grouped flat mixed; do
     check "the $form file is the command line's machine ($(diff "$TMP/want.toml" "$TMP/$form.dump" | head -3 | tr '\n' ' '))" \
         cmp -s "$TMP/want.toml" "$TMP/$form.dump"
 done
+# The example of docs/cli.md#machine-files reads.
+awk '/^    # m.toml - four nodes/ { on = 1 } on && /^[^ ]/ { exit } on { sub(/^    /, ""); print }' \
+    "$SRC/docs/cli.md" > "$TMP/doc.toml"
+check "docs/cli.md's example found ($(grep -c . "$TMP/doc.toml") lines)" grep -q '^\[mapping\]' "$TMP/doc.toml"
+"$sim" --dump-config --config "$TMP/doc.toml" > "$TMP/doc.dump" 2> "$TMP/err"
+check "docs/cli.md's example reads ($(head -1 "$TMP/err"))" grep -qx 'data="shared"' "$TMP/doc.dump"
 # Dotted keys are the same table.
 printf 'network.ips = "2x2"\n' > "$TMP/dotted.toml"
 "$sim" --dump-config --config "$TMP/dotted.toml" > "$TMP/dotted.dump" 2> "$TMP/err"
