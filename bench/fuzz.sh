@@ -53,7 +53,8 @@ build_target() {  # NAME: compiles BUILD_DIR/NAME
     machine_fuzz)
         "$cxx" -std=c++17 "${sanitize[@]}" -I"$here/support" -I"$here/testbench/common" -I"$here/include" \
             "$here"/testbench/common/machine_file_reader.cpp "$here"/support/{option_parsing,option_spec}.cpp \
-            "$here/tests/fuzz/machine_fuzz.cpp" "$build"/kernel/*.o "${libs[@]}" -o "$build/$name" ;;
+            "$here/tests/fuzz/machine_fuzz.cpp" "$build"/kernel/*.o "${libs[@]}" \
+            $(pkg-config --cflags --libs tomlplusplus) -o "$build/$name" ;;
     *) echo "fuzz.sh: no target $name" >&2; exit 2 ;;
     esac
 }

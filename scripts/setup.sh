@@ -4,6 +4,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(cmake g++ make pkg-config libsystemc-dev libpng-dev nlohmann-json3-dev libcli11-dev
+          libtomlplusplus-dev
           libgtest-dev gtkwave gnuplot-nox parallel jq clang time
           libscotch-dev)
 packages+=(python3)  # report generation (experiments/report) and its tests

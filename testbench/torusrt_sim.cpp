@@ -69,14 +69,29 @@ void run_from(const CommandLine &cl, const CommonSettings &common, RunOptions &r
     r.memory = rt_budget_make(common.memory_bytes);
 }
 
-// The names of the machine options' keys a machine file may hold, and those whose bare number
-// would be seconds.
-std::vector<std::string> machine_keys(bool timed_only)
+// The machine options' keys a machine file may hold with their tables, and those whose bare
+// number would be seconds.
+std::vector<std::pair<std::string, std::string>> machine_keys()
+{
+    std::vector<std::pair<std::string, std::string>> keys;
+    for (const MachineOption &o : machine_option_table()) keys.emplace_back(o.spec.key, o.table);
+    return keys;
+}
+
+std::vector<std::string> timed_machine_keys()
 {
     std::vector<std::string> keys;
     for (const MachineOption &o : machine_option_table())
-        if (!timed_only || (o.spec.kind == ValueKind::time && o.spec.unit == "s")) keys.push_back(o.spec.key);
+        if (o.spec.kind == ValueKind::time && o.spec.unit == "s") keys.push_back(o.spec.key);
     return keys;
+}
+
+// "[network], [timing], ...": the machine file's tables for the help.
+std::string machine_file_table_names()
+{
+    std::string s;
+    for (const std::string &t : machine_file_tables()) s += (s.empty() ? "[" : ", [") + t + "]";
+    return s;
 }
 
 const char *const kUsage = "Usage: torusrt-sim SCENE -o FILE [OPTIONS]\n"
@@ -94,8 +109,10 @@ void declare_options(CLI::App &app, std::shared_ptr<MachineFileReader> reader)
         "PNG image to write; with --frames/--camera-path/--motion a pattern like out_%04d.png";
     add_common_options(app, output_help, {"scene", "--size"});
     app.set_config("--config", "",
-                   wrapped("read the machine from this TOML file (as --dump-config writes it); "
-                           "options on the command line take precedence",
+                   wrapped("read the machine from this TOML file (as --dump-config writes it), its keys in the "
+                           "tables " +
+                               machine_file_table_names() +
+                               " or at the top; options on the command line take precedence",
                            kHelpColumns - 31))
         ->type_name("FILE")
         ->group(group_title(OptionGroup::machine))
@@ -141,15 +158,15 @@ bool on_command_line(int argc, char **argv, const std::string &name)
 }
 
 // A bad setting (exit 2) whose option came from the --config file, not the command line: the
-// message names the file and its line too (the option's parser names only the option).
+// message names the file, its line and column too (the option's parser names only the option).
 UserError naming_config_file(const CommandLine &cl, const MachineFileReader &reader, const UserError &e, int argc,
                              char **argv)
 {
     std::string what = e.what();
     std::string name = what.substr(0, what.find_first_of(" :"));
-    int line = name.rfind("--", 0) == 0 ? reader.line_of(name.substr(2)) : 0;
-    if (e.exit_code() != 2 || cl.config_file.empty() || line == 0 || on_command_line(argc, argv, name)) return e;
-    return UserError(shown_text(cl.config_file) + ":" + std::to_string(line) + ": " + what, 2);
+    std::string at = name.rfind("--", 0) == 0 ? reader.position_of(name.substr(2)) : "";
+    if (e.exit_code() != 2 || cl.config_file.empty() || at.empty() || on_command_line(argc, argv, name)) return e;
+    return UserError(shown_text(cl.config_file) + ":" + at + ": " + what, 2);
 }
 
 // A relative --timing or --map-file path read from a --config file names a file beside the
@@ -275,7 +292,7 @@ int sc_main(int argc, char **argv)
     CommandLine cl;
     CLI::App app{"torusrt-sim: a SystemC/TLM-2.0 model of the object-space-parallel ray-tracing\n"
                  "multiprocessor (Kubota et al.): intersection processors on a torus exchange ray packets."};
-    auto reader = std::make_shared<MachineFileReader>(machine_keys(false), machine_keys(true));
+    auto reader = std::make_shared<MachineFileReader>(machine_keys(), timed_machine_keys());
     declare_options(app, reader);
     return run_cli(
         "torusrt-sim", app, argc, argv,

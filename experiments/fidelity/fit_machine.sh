@@ -97,7 +97,7 @@ echo "study: stage 4 chose cell header $header B, list entry $entry B, object re
 "$gen" --variant paper-image1 "$spec1" "$dest/scenes" paper-image1 >/dev/null
 "$gen" --variant paper-image2 "$spec2" "$dest/scenes" paper-image2 >/dev/null
 fit machines "$res" "$dest/machines" --rule "$rule" --bus "$bus" --memory "$memory" --shape "$shape" \
-    --handover "$handover" --cell-step "$c" --header "$header" --entry "$entry" --record "$record"
+    --handover "$handover" --cell-step "$c" --header "$header" --entry "$entry" --record "$record" --sim "$sim"
 printf '%s\n' "$spec1" "$spec2" | write_file "$res/fitted-specs"
 : >"$scratch/residuals.tsv"; : >"$scratch/residuals.list"; : >"$scratch/residuals2.list"
 fitted=$dest/machines/timing/fitted.timing

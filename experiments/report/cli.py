@@ -140,10 +140,11 @@ def machine(args):
         if not isinstance(report, dict):
             raise ValueError("not a JSON report (a %s, not an object)" % type(report).__name__)
         pairs = mf.from_report(report)
+        tables = mf.tables_from_report(report)
     except ValueError as e:  # not JSON, or no machine in it: name the report
         raise ValueError("%s: %s" % (shown(args.report), e))
     if not args.compare:
-        sys.stdout.write(mf.toml_text(pairs))
+        sys.stdout.write(mf.toml_text(pairs, tables))
         return 0
     # The file's syntax first (its own lines named), then its machine as a run reads it.
     written = mf.read_machine_file(read_text(args.compare, "--compare"), shown(args.compare))

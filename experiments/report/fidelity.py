@@ -159,6 +159,8 @@ MACHINES = {
 
 def machines(args):
     """OUT/timing/fitted.timing (every key) and OUT/paper-*.toml: the fitted reading."""
+    from . import machine_file as mf
+    tables = mf.option_tables(args.sim)  # each key in its table, as torusrt-sim groups them
     out = args.out
     os.makedirs(os.path.join(out, "timing"), exist_ok=True)
     keys = {"bus_cycle": args.bus, "memory_access": args.memory, "cell_step_packet": args.cell_step}
@@ -184,9 +186,10 @@ def machines(args):
                  ("timing-profile", "calibrated"), ("timing", "timing/fitted.timing"), ("cluster", str(m)),
                  ("data", data), ("cell-header-bytes", args.header), ("list-entry-bytes", args.entry),
                  ("object-record-bytes", args.record)]
-        text += ['%s="%s"' % kv for kv in pairs]
+        rank = {key: i for i, key in enumerate(tables)}  # --dump-config's order
+        pairs.sort(key=lambda kv: rank.get(kv[0], len(rank)))
         with atomic(os.path.join(out, name + ".toml")) as f:
-            f.write("\n".join(text) + "\n")
+            f.write("\n".join(text) + "\n" + mf.toml_text(pairs, tables))
     return 0
 
 
@@ -234,6 +237,7 @@ def add_commands(sub):
     q.add_argument("out")
     for opt in ("rule", "bus", "memory", "shape", "handover", "cell-step", "header", "entry", "record"):
         q.add_argument("--" + opt, required=True)
+    q.add_argument("--sim", required=True, help="the torusrt-sim whose --dump-config gives each key's table")
     q.set_defaults(run=machines)
     q = fsub.add_parser("means-lists", help="the cluster points once per bus_arbitration value")
     for a in ("phase2", "flat", "replicas"):

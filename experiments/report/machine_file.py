@@ -1,11 +1,14 @@
 """A machine file (torusrt-sim --config) from a JSON report, and the two compared key by key.
 
 The report's config.options holds the machine as torusrt-sim --dump-config writes it: the
-option names without dashes and their values as the options take them. A machine file is
-key="value" lines (the subset of TOML that --dump-config writes), in --dump-config's order,
-which the report gives as config.option_order.
+option names without dashes and their values as the options take them. A machine file is TOML:
+key="value" lines grouped in tables ([network], [timing], [cluster], [mapping]; the report gives
+each key's table as config.option_tables), in --dump-config's order, which the report gives as
+config.option_order. A file of key="value" lines without tables (flat) reads too.
 """
 import json
+import re
+import subprocess
 import tomllib
 
 
@@ -40,41 +43,104 @@ def toml_string(value):
     return '"' + "".join(out) + '"'
 
 
-def toml_text(pairs):
-    """key="value" lines, as --dump-config writes them."""
-    return "".join("%s=%s\n" % (key, toml_string(value)) for key, value in pairs)
+def tables_from_report(report):
+    """{key: table} of a report's machine (config.option_tables); {} for a report without it."""
+    tables = report.get("config", {}).get("option_tables", {})
+    if not isinstance(tables, dict) or not all(isinstance(t, str) for t in tables.values()):
+        raise ValueError("config.option_tables: not an object of table names")
+    return tables
 
 
-def without_comment(line):
-    """The line up to a '#' outside quotes (a path may hold '#'), as torusrt-sim reads it."""
-    quote = None
-    for i, c in enumerate(line):
-        if quote:
-            quote = None if c == quote else quote
-        elif c in "\"'":
-            quote = c
-        elif c == "#":
-            return line[:i]
-    return line
+def toml_text(pairs, tables=None):
+    """The machine file as --dump-config writes it: each key's [table] (TABLES: {key: table}),
+    the tables in the order of their first key, a blank line between them; without TABLES,
+    key="value" lines without tables."""
+    if not tables:
+        return "".join("%s=%s\n" % (key, toml_string(value)) for key, value in pairs)
+    for key, _ in pairs:
+        if key not in tables:
+            raise ValueError("%s: no table for this key (config.option_tables)" % key)
+    order = []
+    for key, _ in pairs:
+        if tables[key] not in order:
+            order.append(tables[key])
+    out = []
+    for table in order:
+        out.append(("\n" if out else "") + "[%s]\n" % table)
+        out += ["%s=%s\n" % (key, toml_string(value)) for key, value in pairs if tables[key] == table]
+    return "".join(out)
+
+
+def tables_from_dump(text):
+    """{key: table} of a grouped machine file, e.g. `torusrt-sim --dump-config`'s."""
+    return {key: table for table, values in tomllib.loads(text).items() if isinstance(values, dict)
+            for key in values}
+
+
+def option_tables(sim):
+    """{key: table} of every machine option, from `SIM --dump-config` (torusrt-sim's option table)."""
+    done = subprocess.run([sim, "--dump-config"], stdin=subprocess.DEVNULL, capture_output=True, text=True,
+                          errors="replace")
+    if done.returncode != 0:
+        raise ValueError("%s --dump-config: exit %d: %s" % (sim, done.returncode, done.stderr.strip()))
+    return tables_from_dump(done.stdout)
+
+
+def key_position(text, table, key):
+    """(line, column) of KEY's line in TABLE ("" for the top) of TEXT, as far as a plain scan of
+    its `[table]`, `key =` and `table.key =` lines finds it; (0, 0) if it does not."""
+    quoted = r"""(%s|"%s"|'%s')""" % ((re.escape(key),) * 3)
+    in_table = re.compile(quoted + r"\s*=")
+    dotted = re.compile(re.escape(table) + r"\s*\.\s*" + quoted + r"\s*=")
+    current = ""
+    for number, line in enumerate(text.splitlines(), 1):
+        stripped = line.strip()
+        header = re.match(r"\[\s*([A-Za-z0-9_-]+)\s*\]\s*(#.*)?$", stripped)
+        if header:
+            current = header.group(1)
+        elif (current == table and in_table.match(stripped)) or (table and not current and dotted.match(stripped)):
+            return number, len(line) - len(line.lstrip()) + 1
+    return 0, 0
+
+
+def scalar_text(value, text, table, key, name):
+    """A value as torusrt-sim hands it to the option: a string as it is, a boolean as true or
+    false, a number as its source text (torusrt-sim's number parser judges it: 0x10 is refused)."""
+    if isinstance(value, str):
+        return value
+    line, column = key_position(text, table, key)
+    where = "%s:%d:%d" % (name, line, column) if line else name
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, (int, float)) and line:
+        raw = text.splitlines()[line - 1].split("=", 1)[1]
+        return re.split(r"[\s#]", raw.strip(), maxsplit=1)[0]
+    kind = "a table" if isinstance(value, dict) else "an array" if isinstance(value, list) else "not a string"
+    raise ValueError("%s: %s: %s; a machine option takes one value, e.g. %s=\"...\"" % (where, key, kind, key))
 
 
 def read_machine_file(text, name="machine file"):
-    """{key: value} of key="value" lines; blank lines and # comments are skipped."""
-    values = {}
-    for number, line in enumerate(text.splitlines(), 1):
-        line = without_comment(line).strip()
-        if not line:
-            continue
-        try:  # each line is a TOML document of one key (escapes as TOML has them)
-            pair = tomllib.loads(line)
-        except tomllib.TOMLDecodeError:
-            pair = None
-        if not pair or len(pair) != 1 or not isinstance(next(iter(pair.values())), str):
-            raise ValueError("%s:%d: expected key=\"value\"" % (name, number))
-        key, value = next(iter(pair.items()))
-        if key in values:
-            raise ValueError("%s:%d: %s given twice" % (name, number, key))
-        values[key] = value
+    """{key: value} of a machine file, flat or in tables; TOML's errors name the line and column,
+    and so does a key given twice (once at the top and once in a table)."""
+    try:
+        doc = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as e:
+        at = re.search(r"\(at line (\d+), column (\d+)\)$", str(e))
+        what = str(e)[:at.start()].strip() if at else str(e)
+        raise ValueError("%s:%s: %s" % (name, "%s:%s" % at.groups() if at else "?", what)) from None
+    values, where = {}, {}
+    for top, item in doc.items():
+        inner = item.items() if isinstance(item, dict) else [(top, item)]
+        table = top if isinstance(item, dict) else ""
+        for key, value in inner:
+            if isinstance(value, dict) and table:
+                raise ValueError("%s: [%s.%s]: a machine file's tables hold no tables" % (name, table, key))
+            if key in values:
+                line, column = key_position(text, table, key)
+                first = "in [%s]" % where[key] if where[key] else "at the top"
+                raise ValueError("%s:%d:%d: %s given twice (%s and in [%s])" % (name, line, column, key, first, table))
+            values[key] = scalar_text(value, text, table, key, name)
+            where[key] = table
     return values
 
 

@@ -1,11 +1,12 @@
-// machine_file_reader.cpp - the lines of a machine file parsed here rather than by CLI11, whose
-// reader cuts a value at its first '#' even inside quotes and knows no escapes.
+// machine_file_reader.cpp - a machine file parsed by toml++ (its syntax, escapes and UTF-8
+// checks), then checked key by key against the machine's option table; CLI11 gets the values as
+// the command line would give them.
 #include "machine_file_reader.h"
 
 #include <algorithm>
-#include <cstdio>
-#include <set>
+#include <iterator>
 #include <sstream>
+#include <toml++/toml.h>
 
 #include "option_parsing.h"
 #include "option_spec.h"
@@ -14,138 +15,160 @@ namespace torusrt {
 
 namespace {
 
-std::string trimmed(const std::string &s)
+// A key or value of the file with where it stands; `table` is "" for a key at the top.
+struct Entry {
+    std::string key, table;
+    const toml::node *value;
+    toml::source_position where;
+};
+
+bool before(const toml::source_position &a, const toml::source_position &b)
 {
-    size_t b = s.find_first_not_of(" \t\r"), e = s.find_last_not_of(" \t\r");
-    return b == std::string::npos ? "" : s.substr(b, e - b + 1);
+    return a.line != b.line ? a.line < b.line : a.column < b.column;
 }
 
-void append_utf8(std::string &out, unsigned long cp)
+std::string position_text(const toml::source_position &p)
 {
-    if (cp < 0x80) {
-        out += static_cast<char>(cp);
-    } else if (cp < 0x800) {
-        out += static_cast<char>(0xc0 | (cp >> 6));
-        out += static_cast<char>(0x80 | (cp & 0x3f));
-    } else if (cp < 0x10000) {
-        out += static_cast<char>(0xe0 | (cp >> 12));
-        out += static_cast<char>(0x80 | ((cp >> 6) & 0x3f));
-        out += static_cast<char>(0x80 | (cp & 0x3f));
-    } else {
-        out += static_cast<char>(0xf0 | (cp >> 18));
-        out += static_cast<char>(0x80 | ((cp >> 12) & 0x3f));
-        out += static_cast<char>(0x80 | ((cp >> 6) & 0x3f));
-        out += static_cast<char>(0x80 | (cp & 0x3f));
+    return std::to_string(p.line) + ":" + std::to_string(p.column);
+}
+
+// The source text of the number that starts at `p` (toml++ counts columns in code points): the
+// number as written, for the project's number parser to judge.
+std::string number_source(const std::vector<std::string> &lines, const toml::source_position &p)
+{
+    if (p.line == 0 || p.line > lines.size()) return "";
+    const std::string &line = lines[p.line - 1];
+    size_t i = 0;
+    for (toml::source_index column = 1; i < line.size(); i++) {
+        if ((static_cast<unsigned char>(line[i]) & 0xc0) == 0x80) continue;  // inside a code point
+        if (column++ == p.column) break;
     }
+    size_t end = line.find_first_of(" \t\r#,]}", i);
+    return line.substr(i, end == std::string::npos ? std::string::npos : end - i);
 }
 
-// A quoted string starting at s[i] (the quote); sets `i` past the closing quote. "" and false on
-// a bad escape or no closing quote, with `why` set.
-bool quoted_string(const std::string &s, size_t &i, std::string &out, std::string &why)
+// "a, b or c".
+std::string listed(const std::vector<std::string> &names)
 {
-    char quote = s[i++];
-    for (; i < s.size(); i++) {
-        char c = s[i];
-        if (c == quote) {
-            i++;
-            return true;
-        }
-        if (c != '\\' || quote == '\'') {
-            out += c;
+    std::string s;
+    for (size_t i = 0; i < names.size(); i++) s += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+    return s;
+}
+
+// The keys and values of a parsed file, flat or in one of `tables`, in the file's order; a table
+// that is none of them, an array of tables, an inline table for a table and a table in a table
+// are errors.
+std::vector<Entry> entries_of(const toml::table &root, const std::vector<std::string> &tables)
+{
+    std::vector<Entry> entries;
+    for (auto &&[key, node] : root) {
+        const std::string name(key.str());
+        const toml::source_position at = key.source().begin;
+        if (node.is_array_of_tables())
+            throw MachineFileError(at.line, at.column,
+                                   "[[" + shown_text(name) + "]]: an array of tables; a machine file's tables are [" +
+                                       shown_text(name) + "]");
+        const toml::table *table = node.as_table();
+        if (table == nullptr) {
+            entries.push_back({name, "", &node, at});
             continue;
         }
-        if (++i == s.size()) break;
-        switch (s[i]) {
-        case '"': out += '"'; break;
-        case '\\': out += '\\'; break;
-        case 'b': out += '\b'; break;
-        case 't': out += '\t'; break;
-        case 'n': out += '\n'; break;
-        case 'f': out += '\f'; break;
-        case 'r': out += '\r'; break;
-        case 'u':
-        case 'U': {
-            size_t n = s[i] == 'u' ? 4 : 8;
-            std::string hex = s.substr(i + 1, n);
-            if (hex.size() != n || hex.find_first_not_of("0123456789abcdefABCDEF") != std::string::npos) {
-                why = "a \\u escape needs " + std::to_string(n) + " hexadecimal digits";
-                return false;
-            }
-            unsigned long cp = std::stoul(hex, nullptr, 16);
-            if (cp > 0x10ffff || (cp >= 0xd800 && cp <= 0xdfff)) {
-                why = "a \\u escape outside Unicode";
-                return false;
-            }
-            append_utf8(out, cp);
-            i += n;
-            break;
+        if (std::find(tables.begin(), tables.end(), name) == tables.end()) {
+            std::string near = closest_name(name, tables);
+            throw MachineFileError(at.line, at.column,
+                                   "[" + shown_text(name) + "]: not a table of a machine file (" + listed(tables) +
+                                       (near.empty() ? "" : "; did you mean [" + near + "]?") + ")");
         }
-        default: why = "an unknown escape \\" + shown_text(std::string(1, s[i])); return false;
+        if (table->is_inline())
+            throw MachineFileError(at.line, at.column,
+                                   shown_text(name) + ": an inline table; write [" + name + "] and its keys below it");
+        for (auto &&[inner_key, inner] : *table) {
+            const toml::source_position where = inner_key.source().begin;
+            if (inner.is_table() && !inner.as_table()->is_inline())
+                throw MachineFileError(where.line, where.column,
+                                       "[" + name + "." + shown_text(std::string(inner_key.str())) +
+                                           "]: a machine file's tables hold no tables");
+            entries.push_back({std::string(inner_key.str()), name, &inner, where});
         }
     }
-    why = std::string("no closing ") + quote;
-    return false;
+    std::sort(entries.begin(), entries.end(), [](const Entry &a, const Entry &b) { return before(a.where, b.where); });
+    return entries;
+}
+
+// The text an entry's value gives its option: a string as it is, a boolean as true or false, a
+// number as its source text (judged by the option's parser); anything else is an error.
+std::string value_text(const Entry &e, const std::vector<std::string> &lines)
+{
+    const toml::node &v = *e.value;
+    const long line = e.where.line, column = e.where.column;
+    if (v.is_string()) return v.as_string()->get();
+    if (v.is_boolean()) return v.as_boolean()->get() ? "true" : "false";
+    if (v.is_number()) return number_source(lines, v.source().begin);
+    if (v.is_array())
+        throw MachineFileError(line, column,
+                               e.key + ": an array; a machine option takes one value (a list is one string, e.g. "
+                                       "\"a,b\")");
+    if (v.is_table())
+        throw MachineFileError(line, column, e.key + ": an inline table; a machine option takes one value");
+    throw MachineFileError(line, column, e.key + ": a date or time; a machine option takes a string");
 }
 
 }  // namespace
 
-MachineFileReader::MachineFileReader(std::vector<std::string> keys, std::vector<std::string> timed_keys)
+MachineFileReader::MachineFileReader(std::vector<std::pair<std::string, std::string>> keys,
+                                     std::vector<std::string> timed_keys)
     : m_keys(std::move(keys)), m_timed_keys(std::move(timed_keys))
 {
 }
 
-int MachineFileReader::line_of(const std::string &key) const
+std::string MachineFileReader::position_of(const std::string &key) const
 {
-    auto it = m_lines.find(key);
-    return it == m_lines.end() ? 0 : it->second;
+    auto it = m_positions.find(key);
+    return it == m_positions.end() ? "" : it->second;
 }
 
 std::vector<CLI::ConfigItem> MachineFileReader::from_config(std::istream &input) const
 {
+    m_positions.clear();
+    std::string text{std::istreambuf_iterator<char>(input), std::istreambuf_iterator<char>()};
+    toml::table root;
+    try {
+        root = toml::parse(text);
+    } catch (const toml::parse_error &e) {
+        throw MachineFileError(e.source().begin.line, e.source().begin.column, std::string(e.description()));
+    }
+    std::vector<std::string> key_names, tables;
+    for (const auto &kt : m_keys) {
+        key_names.push_back(kt.first);
+        if (std::find(tables.begin(), tables.end(), kt.second) == tables.end()) tables.push_back(kt.second);
+    }
+    std::vector<std::string> lines;
+    std::istringstream split(text);
+    for (std::string line; std::getline(split, line);) lines.push_back(line);
     std::vector<CLI::ConfigItem> items;
-    m_lines.clear();
-    std::string raw;
-    for (int n = 1; std::getline(input, raw); n++) {
-        if (n == 1 && raw.compare(0, 3, "\xef\xbb\xbf") == 0) raw.erase(0, 3);  // a UTF-8 byte-order mark
-        if (raw.find('\0') != std::string::npos) throw MachineFileError(n, "a NUL byte: not a machine file");
-        std::string line = trimmed(raw);
-        if (line.empty() || line[0] == '#') continue;
-        if (line[0] == '[') throw MachineFileError(n, shown_text(line) + ": a machine file has no sections");
-        size_t eq = line.find('=');
-        if (eq == std::string::npos) throw MachineFileError(n, "expected key = \"value\"");
-        std::string key = trimmed(line.substr(0, eq)), why;
-        if (!key.empty() && (key[0] == '"' || key[0] == '\'')) {
-            size_t i = 0;
-            std::string name;
-            if (!quoted_string(key, i, name, why) || i != key.size()) throw MachineFileError(n, "a bad key: " + why);
-            key = name;
+    for (const Entry &e : entries_of(root, tables)) {
+        const long line = e.where.line, column = e.where.column;
+        auto known = std::find_if(m_keys.begin(), m_keys.end(), [&](const auto &kt) { return kt.first == e.key; });
+        if (known == m_keys.end()) {
+            std::string near = closest_name(e.key, key_names);
+            throw MachineFileError(line, column,
+                                   shown_text(e.key) + ": not a machine option" +
+                                       (near.empty() ? "" : " (did you mean " + near + "?)"));
         }
-        if (key.empty()) throw MachineFileError(n, "no key before '='");
-        std::string rest = trimmed(line.substr(eq + 1)), value;
-        size_t end = 0;
-        if (!rest.empty() && (rest[0] == '"' || rest[0] == '\'')) {
-            if (!quoted_string(rest, end, value, why)) throw MachineFileError(n, shown_text(key) + ": " + why);
-        } else {  // a bare word: up to a comment
-            end = rest.find('#');
-            value = trimmed(rest.substr(0, end));
-            end = end == std::string::npos ? rest.size() : end;
-        }
-        std::string after = trimmed(rest.substr(end));
-        if (!after.empty() && after[0] != '#')
-            throw MachineFileError(n, shown_text(key) + ": text after the value: " + shown_text(after));
-        if (std::find(m_keys.begin(), m_keys.end(), key) == m_keys.end()) {
-            std::string near = closest_name(key, m_keys);
-            throw MachineFileError(n, shown_text(key) + ": not a machine option" +
-                                          (near.empty() ? "" : " (did you mean " + near + "?)"));
-        }
-        if (!m_lines.emplace(key, n).second) throw MachineFileError(n, key + ": given twice");
-        bool timed = std::find(m_timed_keys.begin(), m_timed_keys.end(), key) != m_timed_keys.end();
+        if (!e.table.empty() && e.table != known->second)
+            throw MachineFileError(line, column,
+                                   e.key + ": a key of [" + known->second + "], not of [" + e.table + "]");
+        if (m_positions.count(e.key))
+            throw MachineFileError(line, column, e.key + ": given twice (also at " + m_positions[e.key] + ")");
+        std::string value = value_text(e, lines);
+        bool timed = std::find(m_timed_keys.begin(), m_timed_keys.end(), e.key) != m_timed_keys.end();
         if (timed && !value.empty() && value != "0" && !has_time_unit(value))
-            throw MachineFileError(n, key + " = \"" + shown_text(value) +
-                                          "\": a time in a machine file needs its unit (us, ms or s), "
-                                          "e.g. \"500us\"");
+            throw MachineFileError(line, column,
+                                   e.key + " = \"" + shown_text(value) +
+                                       "\": a time in a machine file needs its unit (us, ms or s), e.g. \"500us\"");
+        m_positions[e.key] = position_text(e.value->source().begin);
         CLI::ConfigItem item;
-        item.name = key;
+        item.name = e.key;
         item.inputs = {value};
         items.push_back(std::move(item));
     }

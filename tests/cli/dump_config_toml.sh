@@ -2,18 +2,19 @@
 # dump_config_toml.sh - --dump-config writes TOML that Python's tomllib reads for any path
 # (backslashes, both quotes, control bytes, '#'), which reads back to the same machine;
 # --with-timing makes a machine file that needs no timing file; and
-# `experiments/report machine` writes a report's machine exactly as --dump-config does; a run
+# `experiments/report machine` writes a report's machine exactly as --dump-config does, grouped
+# in tables (flat for a report without config.option_tables, which reads the same); a run
 # with --timing-values and its dump are one machine, and a dump without it another.
 source "$(dirname "$0")/common.bash" "$@"
 need_exe torusrt-sim
 sim="$BUILD/torusrt-sim"
 scene=$(source_scene one-pixel) || exit 1
 
-# toml_reads FILE KEY VALUE: tomllib reads FILE, and KEY holds VALUE.
+# toml_reads FILE TABLE KEY VALUE: tomllib reads FILE, and KEY of [TABLE] holds VALUE.
 toml_reads() {
     python3 -c 'import sys, tomllib
 with open(sys.argv[1], "rb") as f: d = tomllib.load(f)
-sys.exit(0 if d[sys.argv[2]] == sys.argv[3] else 1)' "$@" 2> "$TMP/py.err"
+sys.exit(0 if d[sys.argv[2]][sys.argv[3]] == sys.argv[4] else 1)' "$@" 2> "$TMP/py.err"
 }
 names=("back\\slash" "double\"quote" "single'quote" "both\"and'" "hash #1" $'tab\there' $'bell\a' $'line\nbreak' "naïve")
 k=0
@@ -25,7 +26,7 @@ for name in "${names[@]}"; do
     cp "$SRC/timing/literal.timing" "$path"
     "$sim" --dump-config --timing "$path" > "$dir/m.toml" 2> "$TMP/err"
     check "dump with path $k exits 0 ($(head -1 "$TMP/err"))" [ $? = 0 ]
-    check "tomllib reads the dump of path $k ($(tail -1 "$TMP/py.err" 2>/dev/null))" toml_reads "$dir/m.toml" timing "$path"
+    check "tomllib reads the dump of path $k ($(tail -1 "$TMP/py.err" 2>/dev/null))" toml_reads "$dir/m.toml" timing timing "$path"
     "$sim" --dump-config --config "$dir/m.toml" > "$dir/again.toml" 2> "$TMP/err"
     check "path $k reads back to the same machine ($(head -1 "$TMP/err"))" cmp -s "$dir/m.toml" "$dir/again.toml"
 done
@@ -58,6 +59,15 @@ python3 "$SRC/experiments/report" machine "$TMP/r.json" > "$TMP/report.toml" 2> 
 check "report machine exits 0 ($(head -1 "$TMP/err"))" [ $? = 0 ]
 check "report machine = --dump-config ($(diff "$TMP/dump.toml" "$TMP/report.toml" | head -3 | tr '\n' ' '))" \
     cmp -s "$TMP/dump.toml" "$TMP/report.toml"
+check "the report's machine file is grouped ($(grep -c '^\[' "$TMP/report.toml") tables)" \
+    [ "$(grep -c '^\[' "$TMP/report.toml")" = 4 ]
+# A report without config.option_tables (written before tables) gives a flat file: the same machine.
+jq 'del(.config.option_tables)' "$TMP/r.json" >"$TMP/flat.json"
+python3 "$SRC/experiments/report" machine "$TMP/flat.json" >"$TMP/flat.toml" 2>"$TMP/err"
+check "report machine of a report without tables exits 0 ($(head -1 "$TMP/err"))" [ $? = 0 ]
+check "... and writes no table" [ "$(grep -c '^\[' "$TMP/flat.toml")" = 0 ]
+"$sim" --dump-config --config "$TMP/flat.toml" >"$TMP/flat.dump" 2>"$TMP/err"
+check "the flat file is the same machine ($(head -1 "$TMP/err"))" cmp -s "$TMP/dump.toml" "$TMP/flat.dump"
 
 # --timing-values is part of the machine: in the dump without --with-timing, and in the report,
 # so that a machine without it compares as another machine.

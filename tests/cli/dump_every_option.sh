@@ -2,8 +2,10 @@
 # dump_every_option.sh - the machine file --dump-config writes is complete: for every option of
 # the machine's table (the help's machine group, which the table generates), a run given a
 # non-default value of it and a run from the dump of the same options simulate the same image
-# time and report the same JSON `config`. An option of the table without a sample value here
-# fails the test, so a new machine option gets its check.
+# time and report the same JSON `config`; the dump holds the key in the table the report's
+# config.option_tables names, and the dump without its tables (a flat file) reads back to the
+# same dump. An option of the table without a sample value here fails the test, so a new
+# machine option gets its check.
 source "$(dirname "$0")/common.bash" "$@"
 need_exe torusrt-sim
 sim="$BUILD/torusrt-sim"
@@ -74,5 +76,13 @@ for option in $options; do
     check "$option: the run from the dump reports the same config" \
         cmp -s <(jq -S .config "$TMP/a$k.json") <(jq -S .config "$TMP/b$k.json")
     check "$option: the dump holds its key" grep -q "^${option#--}=\"..*\"" "$TMP/d$k.toml"
+    # The key in its table, the one the report names; the same file flat is the same machine.
+    table=$(awk -v k="${option#--}=" '/^\[/ { t = $0 } index($0, k) == 1 { print t }' "$TMP/d$k.toml")
+    want=$(jq -r --arg k "${option#--}" '.config.option_tables[$k]' "$TMP/a$k.json")
+    check "$option: in the table the report names ($table, [$want])" test "$table" = "[$want]"
+    grep -v -e '^\[' -e '^$' "$TMP/d$k.toml" >"$TMP/f$k.toml"
+    "$sim" --dump-config --config "$TMP/f$k.toml" >"$TMP/f$k.dump" 2>"$TMP/err"
+    check "$option: the dump without its tables (flat) is the same machine ($(head -c 200 "$TMP/err"))" \
+        cmp -s "$TMP/d$k.toml" "$TMP/f$k.dump"
 done
 finish

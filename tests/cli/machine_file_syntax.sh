@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Machine files as a user writes them: '#' starts a comment only outside a quoted value (a path
-# may hold '#', and its dump reads back to the same machine); a key given twice or a [section]
-# is an error naming the file, the line and the key (exit 2), never a silent choice.
+# may hold '#', and its dump reads back to the same machine); a key given twice or in a table
+# that is not its own is an error naming the file, the line, the column and the key (exit 2),
+# never a silent choice.
 source "$(dirname "$0")/common.bash" "$@"
 need_exe torusrt-sim
 sim="$BUILD/torusrt-sim"
@@ -23,6 +24,7 @@ check "a '#' map-file path reads back ($(head -1 "$TMP/err"))" cmp -s "$TMP/m.to
 printf '# a machine\nips="2x2" # four nodes\n  # indented\nmap="block"\n' > "$TMP/c.toml"
 "$sim" --dump-config --config "$TMP/c.toml" > "$TMP/c-dump.toml" 2> "$TMP/err"
 check "comments are skipped ($(head -1 "$TMP/err"))" grep -qx 'ips="2x2x1"' "$TMP/c-dump.toml"
+check "comments are skipped: map too" grep -qx 'map="block"' "$TMP/c-dump.toml"
 
 # --dump-config reads the --map-file as a run does: a missing table or one for another grid exits 2.
 "$sim" --dump-config --ips 2 --map-file "$TMP/missing.map" > "$TMP/out" 2> "$TMP/err"
@@ -41,8 +43,8 @@ from_file() {  # from_file EXPECTED CONTENT OPTIONS...
     check "'$expect' exits 2 (got $rc)" test $rc -eq 2
     check "message '$expect' ($(head -1 "$TMP/err"))" grep -q -- "$expect" "$TMP/err"
 }
-from_file "m.toml:1: --ips 'zz'" 'ips="zz"\n'
-from_file "m.toml:2: --quantum: only meaningful with --style lt" 'style="lt"\nquantum="10us"\n' --style at
+from_file "m.toml:1:5: --ips 'zz'" 'ips="zz"\n'
+from_file "m.toml:2:9: --quantum: only meaningful with --style lt" 'style="lt"\nquantum="10us"\n' --style at
 "$sim" --dump-config --config "$TMP/m.toml" --style at --quantum 10us > "$TMP/out" 2> "$TMP/err"
 check "an option from the command line is named without the file ($(head -1 "$TMP/err"))" \
     grep -q "^torusrt-sim: --quantum: only meaningful" "$TMP/err"
@@ -65,8 +67,9 @@ bad_file() {
     check "'$2': message '$1' ($(head -1 "$TMP/err"))" grep -q -- "$1" "$TMP/err"
     check "'$2': no dump" test ! -s "$TMP/out"
 }
-bad_file "bad.toml:3: ips: given twice" 'ips="2"\nmap="block"\nips="3"\n'
-bad_file "bad.toml:2: ips: given twice" 'ips="2"\n ips = "2"\n'
-bad_file "bad.toml:1: \[machine\]: a machine file has no sections" '[machine]\nips="2"\n'
-bad_file "bad.toml:2: frobnicate: not a machine option" 'ips="2"\nfrobnicate="2"\n'
+bad_file "bad.toml:3:5: .*cannot redefine existing string 'ips'" 'ips="2"\nmap="block"\nips="3"\n'
+bad_file "bad.toml:2:8: .*cannot redefine existing string 'ips'" 'ips="2"\n ips = "2"\n'
+bad_file "bad.toml:1:2: \[machine\]: not a table of a machine file (network, timing, cluster or mapping)" \
+    '[machine]\nips="2"\n'
+bad_file "bad.toml:2:1: frobnicate: not a machine option" 'ips="2"\nfrobnicate="2"\n'
 finish

@@ -90,9 +90,9 @@ bad_file() {
     check "'$content': message has '$expect' ($(head -1 "$TMP/err"))" grep -q -- "$expect" "$TMP/err"
     check "'$content': no output left" test -z "$(ls -A "$TMP/out")"
 }
-bad_file "bad.toml:1: .*frobnicate" 'frobnicate=3'
+bad_file "bad.toml:1:1: .*frobnicate" 'frobnicate=3'
 for key in output stats size memory-budget t1 time-limit trace-ips vcd quiet; do
-    bad_file "bad.toml:1: .*$key" "$key=\"1\""
+    bad_file "bad.toml:1:1: .*$key" "$key=\"1\""
 done
 bad_file "--queue" 'queue="lots"'
 bad_file "--ips" 'ips="abc"'

@@ -158,3 +158,33 @@ TEST(MachineOptions, EveryOptionOfTheTableIsWrittenAndReadsBack)
     EXPECT_EQ(std::memcmp(&back.timing, &m.timing, sizeof m.timing), 0) << "and the same timing table";
     EXPECT_EQ(machine_options_json(machine_from_texts({}))["timing-values"], "") << "not given: empty";
 }
+
+TEST(MachineOptions, TomlGroupsEachKeyInItsTable)
+{
+    MachineConfig m = machine_from_texts({{"--ips", "2x2"}, {"--cluster", "2"}});
+    const std::string toml = machine_options_toml(m);
+    const nlohmann::json tables = machine_option_tables_json(m);
+    std::vector<std::string> seen;
+    std::string table;
+    size_t keys = 0;
+    for (size_t pos = 0; pos < toml.size();) {
+        size_t end = toml.find('\n', pos);
+        std::string line = toml.substr(pos, end - pos);
+        pos = end + 1;
+        if (line.empty()) continue;
+        if (line.front() == '[') {
+            table = line.substr(1, line.size() - 2);
+            seen.push_back(table);
+            continue;
+        }
+        std::string key = line.substr(0, line.find('='));
+        EXPECT_EQ(tables.value(key, std::string()), table) << key << " in the table the report names";
+        keys++;
+    }
+    EXPECT_EQ(seen, machine_file_tables()) << "every table once, in order";
+    EXPECT_EQ(keys, machine_options(m).size()) << "every key once";
+    EXPECT_EQ(tables.value("ips", ""), "network");
+    EXPECT_EQ(tables.value("quantum", ""), "timing");
+    EXPECT_EQ(tables.value("dispatch", ""), "cluster");
+    EXPECT_EQ(tables.value("map", ""), "mapping");
+}

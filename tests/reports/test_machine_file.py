@@ -35,14 +35,14 @@ class MachineFile(unittest.TestCase):
     def test_bad_input(self):
         with self.assertRaises(ValueError):
             mf.from_report({"config": {"ips": [1, 1, 1]}})
-        with self.assertRaisesRegex(ValueError, "m.toml:2:"):
+        with self.assertRaisesRegex(ValueError, "m.toml:2:5: Invalid value"):
             mf.read_machine_file('ips="1"\nmap=cyclic\n', "m.toml")
 
     def test_read_as_torusrt_sim_reads(self):
         # As torusrt-sim --config: '#' outside quotes is a comment, inside a path it is kept.
         text = 'ips="2x2x1" # four nodes\ntiming="run #2.timing"\n'
         self.assertEqual(mf.read_machine_file(text), {"ips": "2x2x1", "timing": "run #2.timing"})
-        with self.assertRaisesRegex(ValueError, "m.toml:3: ips given twice"):
+        with self.assertRaisesRegex(ValueError, "m.toml:3:8: Cannot overwrite a value"):
             mf.read_machine_file('ips="1"\nmap="cyclic"\nips="2"\n', "m.toml")
 
     def test_bad_report_is_named(self):
@@ -65,6 +65,56 @@ class MachineFile(unittest.TestCase):
             mf.from_report({"config": {"options": {"ips": [2, 2]}}})
         with self.assertRaisesRegex(ValueError, "config.options.frob: not a machine option"):
             mf.from_report({"config": {"options": {"ips": "2", "frob": "1"}, "option_order": ["ips"]}})
+
+    def test_grouped_file_as_dump_config_writes_it(self):
+        report = {"config": {"options": {"ips": "2x1x1", "queue": "8", "timing": "t.timing", "map": "block"},
+                             "option_order": ["ips", "queue", "timing", "map"],
+                             "option_tables": {"ips": "network", "queue": "network", "timing": "timing",
+                                               "map": "mapping"}}}
+        text = mf.toml_text(mf.from_report(report), mf.tables_from_report(report))
+        self.assertEqual(text, '[network]\nips="2x1x1"\nqueue="8"\n\n[timing]\ntiming="t.timing"\n'
+                               '\n[mapping]\nmap="block"\n')
+        self.assertEqual(mf.read_machine_file(text), report["config"]["options"])
+        self.assertEqual(mf.tables_from_dump(text), report["config"]["option_tables"])
+        # A report without tables (older) gives a flat file, which reads too.
+        del report["config"]["option_tables"]
+        self.assertEqual(mf.toml_text(mf.from_report(report), mf.tables_from_report(report)),
+                         'ips="2x1x1"\nqueue="8"\ntiming="t.timing"\nmap="block"\n')
+        with self.assertRaisesRegex(ValueError, "map: no table"):
+            mf.toml_text([("ips", "2"), ("map", "block")], {"ips": "network"})
+
+    def test_flat_and_grouped_mix_and_a_key_given_twice_is_named(self):
+        text = 'ips="2" # flat\n[network]\nqueue = "4"\n[timing]\nstyle = "lt"\n'
+        self.assertEqual(mf.read_machine_file(text), {"ips": "2", "queue": "4", "style": "lt"})
+        with self.assertRaisesRegex(ValueError, r"m.toml:3:1: ips given twice \(at the top and in \[network\]\)"):
+            mf.read_machine_file('ips="2"\n[network]\nips="3"\n', "m.toml")
+        with self.assertRaisesRegex(ValueError, r"m.toml:4:1: ips given twice \(in \[network\] and in \[timing\]\)"):
+            mf.read_machine_file('[network]\nips="2"\n[timing]\nips="3"\n', "m.toml")
+        with self.assertRaisesRegex(ValueError, r"m.toml: \[network.inner\]: a machine file's tables hold no tables"):
+            mf.read_machine_file('[network.inner]\nips="2"\n', "m.toml")
+
+    def test_numbers_keep_their_source_text(self):
+        # As torusrt-sim reads them: the option's parser judges the text (0x10 is refused there).
+        text = '[network]\nqueue = 0x10 # hex\ncells = 1_000\n[mapping]\nreplicate = inf\n'
+        self.assertEqual(mf.read_machine_file(text), {"queue": "0x10", "cells": "1_000", "replicate": "inf"})
+        self.assertEqual(mf.read_machine_file('network.queue = 8\nips = "2"\n'), {"queue": "8", "ips": "2"})
+        with self.assertRaisesRegex(ValueError, r"m.toml:2:1: ips: an array"):
+            mf.read_machine_file('[network]\nips = ["2", "2"]\n', "m.toml")
+        with self.assertRaisesRegex(ValueError, r"m.toml:2:9: Illegal character"):
+            mf.read_machine_file('ips="2"\nmap = "a\x01"\n', "m.toml")
+
+    def test_tables_of_a_dump(self):
+        import tempfile
+        with tempfile.TemporaryDirectory() as tmp:
+            sim = os.path.join(tmp, "torusrt-sim")
+            with open(sim, "w") as f:
+                f.write('#!/bin/sh\nprintf \'[network]\\nips="1x1x1"\\n\\n[cluster]\\ncluster="1"\\n\'\n')
+            os.chmod(sim, 0o755)
+            self.assertEqual(mf.option_tables(sim), {"ips": "network", "cluster": "cluster"})
+            with open(sim, "w") as f:
+                f.write("#!/bin/sh\necho no >&2; exit 2\n")
+            with self.assertRaisesRegex(ValueError, "--dump-config: exit 2: no"):
+                mf.option_tables(sim)
 
 
 if __name__ == "__main__":

@@ -161,7 +161,7 @@ const char *needs_even_ring(const MachineConfig &m)
     return "an even ring (a dimension of --ips with an even number of nodes)";
 }
 
-// Machine options of the network (nodes, mapping, topology, grid, buffers, flow), in dump order.
+// Machine options of the network (nodes, topology, grid, buffers, flow), in dump order.
 std::vector<MachineOption> network_options()
 {
     using G = OptionGroup;
@@ -173,11 +173,6 @@ std::vector<MachineOption> network_options()
              m.ips = parse_dims_1_to_3(s.long_name(), t, 1, kMaxNodes);
          },
          [](const MachineConfig &m) { return dims(m.ips); }},
-        {{"--map", "KIND", K::text, "cyclic", 0, 0, "", "cell mapping: " + mapping_forms(), G::machine, "map"},
-         [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
-             m.mapping = parse_mapping(s.long_name(), t, m.block);
-         },
-         map_text},
         {{"--topology", "KIND", K::text, "torus", 0, 0, "",
           choice_help("network", kTopologyNames) + " (mesh: no wrap-around)", G::machine, "topology"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
@@ -368,12 +363,17 @@ std::vector<MachineOption> cluster_options()
     };
 }
 
-// Machine options of an explicit map and the cost pilot, in dump order.
-std::vector<MachineOption> mapping_file_options()
+// Machine options of the mapping (its kind, an explicit map, the cost pilot, replicas), in dump order.
+std::vector<MachineOption> mapping_options()
 {
     using G = OptionGroup;
     using K = ValueKind;
     return {
+        {{"--map", "KIND", K::text, "cyclic", 0, 0, "", "cell mapping: " + mapping_forms(), G::machine, "map"},
+         [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
+             m.mapping = parse_mapping(s.long_name(), t, m.block);
+         },
+         map_text},
         {{"--map-file", "FILE", K::file, "", 0, 0, "", "explicit cell -> node table (torusrt-map 1 format)", G::machine,
           "map-file"},
          [](const OptionSpec &, const std::string &t, MachineConfig &m) {
@@ -411,13 +411,24 @@ std::vector<MachineOption> mapping_file_options()
     };
 }
 
+// The parts of the table, each a table of the machine file, in dump order.
+struct TablePart {
+    const char *name;
+    std::vector<MachineOption> (*options)();
+};
+const TablePart kTableParts[] = {{"network", network_options},
+                                 {"timing", timing_options},
+                                 {"cluster", cluster_options},
+                                 {"mapping", mapping_options}};
+
 std::vector<MachineOption> build_table()
 {
     std::vector<MachineOption> table;
-    for (auto part : {network_options, timing_options, cluster_options, mapping_file_options}) {
-        std::vector<MachineOption> options = part();
-        table.insert(table.end(), options.begin(), options.end());
-    }
+    for (const TablePart &part : kTableParts)
+        for (MachineOption &o : part.options()) {
+            o.table = part.name;
+            table.push_back(std::move(o));
+        }
     return table;
 }
 
@@ -490,11 +501,23 @@ OptionList machine_options(const MachineConfig &m, bool with_timing)
     return list;
 }
 
+std::vector<std::string> machine_file_tables()
+{
+    std::vector<std::string> names;
+    for (const TablePart &part : kTableParts) names.push_back(part.name);
+    return names;
+}
+
 std::string machine_options_toml(const MachineConfig &m, bool with_timing)
 {
-    std::string s;
-    for (const auto &kv : machine_options(m, with_timing))
+    const nlohmann::json tables = machine_option_tables_json(m);
+    std::string s, table;
+    for (const auto &kv : machine_options(m, with_timing)) {
+        const std::string &in = tables.at(kv.first).get_ref<const std::string &>();
+        if (in != table) s += (table.empty() ? "[" : "\n[") + in + "]\n";
+        table = in;
         s += kv.first + "=" + toml_string(kv.first, kv.second) + "\n";
+    }
     return s;
 }
 
@@ -509,6 +532,14 @@ nlohmann::json machine_option_order_json(const MachineConfig &m)
 {
     nlohmann::json j = nlohmann::json::array();
     for (const auto &kv : machine_options(m)) j.push_back(kv.first);
+    return j;
+}
+
+nlohmann::json machine_option_tables_json(const MachineConfig &m)
+{
+    nlohmann::json j = nlohmann::json::object();
+    for (const MachineOption &o : machine_option_table())
+        if (o.spec.key != "map" || m.mapping != RT_MAP_FILE) j[o.spec.key] = o.table;
     return j;
 }
 

@@ -27,6 +27,9 @@ struct MachineOption {
     // nullptr; no function: it always acts. The validator warns of such an option given on the
     // command line (idle_option_warnings).
     const char *(*needs)(const MachineConfig &machine) = nullptr;
+    // The machine file's table that groups it ("network", "timing", "cluster", "mapping"): the
+    // part of the table that declares it.
+    std::string table = "";
 };
 
 // Every machine option, in --dump-config's order.
@@ -46,13 +49,19 @@ using OptionList = std::vector<std::pair<std::string, std::string>>;
 // "timing" is empty, so that the machine needs no timing file.
 OptionList machine_options(const MachineConfig &machine, bool with_timing = false);
 
-// key = "value" lines, TOML basic strings with every byte a path may hold escaped.
+// The machine file's tables in --dump-config's order: "network", "timing", "cluster", "mapping".
+std::vector<std::string> machine_file_tables();
+
+// The machine file: a [table] per part of the option table, each holding its key = "value"
+// lines, TOML basic strings with every byte a path may hold escaped.
 std::string machine_options_toml(const MachineConfig &machine, bool with_timing = false);
 
 // {"key": "value", ...}.
 nlohmann::json machine_options_json(const MachineConfig &machine);
 // ["key", ...]: the keys of machine_options_json in --dump-config's order (a JSON object keeps none).
 nlohmann::json machine_option_order_json(const MachineConfig &machine);
+// {"key": "table", ...}: the machine file's table of each key of machine_options_json.
+nlohmann::json machine_option_tables_json(const MachineConfig &machine);
 
 // The names a --map value may take, for the help and messages: "block, cyclic, ...".
 std::string mapping_forms();

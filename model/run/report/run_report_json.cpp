@@ -51,7 +51,8 @@ nlohmann::json config_json(const SimConfig &config)
             {"timing_profile", config.timing_profile},
             {"timing", timing_json(config.timing)},
             {"options", machine_options_json(config)},  // the machine, as --dump-config writes it
-            {"option_order", machine_option_order_json(config)}};
+            {"option_order", machine_option_order_json(config)},
+            {"option_tables", machine_option_tables_json(config)}};  // the machine file's table of each key
 }
 
 nlohmann::json per_ip_json(const RunReport &r, std::vector<double> &busy)
