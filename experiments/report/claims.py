@@ -205,18 +205,33 @@ def memory_ratio_at_16(r):
                 total += 1
                 ok += in_ratio_range(x)
             ours += "%s %s 1/%.1f; " % (label(s), m, x)
-    cells = r.facts.cells
+    cells, f = r.facts.cells, r.facts
     whole = r.f7.value("whole_scene_bytes", scene="image1", n=1)
+    headers = cells * f.cell_header_bytes
+    if headers:
+        header_text = ("The headers (%s KiB for the %d cells, %s %% of image 1's whole scene) divide exactly by n "
+                       "and pull the ratio down" % (fmt("%.0f", headers / 1024), cells,
+                                                    fmt("%.0f", whole and 100 * headers / whole)))
+    else:
+        header_text = "No header is counted, so the ratio rests on the lists and the records alone"
     return make("At 16 IPs the data memory is %s of the pixel-partitioned system's (sec. 7)"
                 % paper.ratio_range(paper.MEMORY_RATIO_AT_16), paper.ratio_range(paper.MEMORY_RATIO_AT_16), ours, verdict(ok, total),
                 "Judged on the load-balancing (cyclic) mapping, within 1/6 to 1/7; block is shown. The ratio is (largest per-IP data) / (whole "
                 "scene) and depends on what is counted, which the paper does not say. We count each "
-                "object record once per IP that lists it, its material, and the cell lists: a 4-byte "
-                "header per cell plus 4 bytes per entry (%s KiB of headers for the %d cells, %s %% of "
-                "image 1's whole scene). The headers divide exactly by n and pull the ratio down, and "
+                "object record once per IP that lists it (%s), its material, and the cell lists: %s. %s; "
                 "our spheres are sized differently from the paper's, which changes how many are "
-                "stored more than once." % (fmt("%.0f", cells * 4 / 1024), cells,
-                                             fmt("%.0f", whole and 100 * cells * 4 / whole)))
+                "stored more than once." % (record_text(f), lists_text(f), header_text))
+
+
+def record_text(f):
+    """The object record's size under the run's accounting, in words."""
+    return "its natural size" if not f.object_record_bytes else "%d bytes" % f.object_record_bytes
+
+
+def lists_text(f):
+    """The cell lists' accounting of the run, in words."""
+    head = "a %d-byte header per cell" % f.cell_header_bytes if f.cell_header_bytes else "no header per cell"
+    return "%s plus %d bytes per entry" % (head, f.list_entry_bytes)
 
 
 def preprocessing_units(r):
@@ -433,9 +448,9 @@ def shared_memory_half(r):
                 or_na(ours), verdict(ok, len(rows)),
                 "Shared: each object of a node is held by one of its processors; the cell lists, as in "
                 "the paper, by every processor. So shared / replicated can go no lower than the lists' "
-                "share of a node's data, which in our accounting (a 4-byte header per cell, 4 bytes per "
-                "entry) is large: %sThe paper's < 1/2 implies its lists were a smaller part of the data "
-                "(bigger object records or more compact lists)." % why)
+                "share of a node's data, which in our accounting (%s, records of %s) is large: %sThe "
+                "paper's < 1/2 implies its lists were a smaller part of the data (bigger object records or "
+                "more compact lists)." % (lists_text(r.facts), record_text(r.facts), why))
 
 
 def shared_memory_pixel_partitioned(r):

@@ -36,7 +36,8 @@ class Facts:
     run_facts.csv), else from run_facts.csv."""
 
     KEYS = ("image_size", "cells", "hop_us", "t1_runs", "joblog_points", "joblog_span_s", "timing_profile",
-            "image1_scene", "lb_map", "cell_step_us")
+            "image1_scene", "lb_map", "cell_step_us", "cell_header_bytes", "list_entry_bytes",
+            "object_record_bytes")
 
     def __init__(self, res):
         path = os.path.join(res, FACTS_FILE)
@@ -61,6 +62,10 @@ class Facts:
         self.image1_scene = values["image1_scene"] or "?"
         self.lb_map = values["lb_map"] or "?"
         self.cell_step_us = values["cell_step_us"] or "0"  # a table without the key charged nothing
+        # The memory accounting the points ran under (docs/memory.md; a record of 0 is the natural size).
+        self.cell_header_bytes = int(values["cell_header_bytes"] or 4)
+        self.list_entry_bytes = int(values["list_entry_bytes"] or 4)
+        self.object_record_bytes = int(values["object_record_bytes"] or 0)
 
     @staticmethod
     def _from_sweep(res):
@@ -86,7 +91,11 @@ class Facts:
         lb = sorted(glob.glob(os.path.join(res, "fig5_6", "*-cyclic-n*.json")))
         if lb:
             with open(lb[0]) as f:
-                found["lb_map"] = json.load(f)["config"]["options"]["map"]
+                options = json.load(f)["config"]["options"]
+            found["lb_map"] = options["map"]
+            for key in ("cell_header_bytes", "list_entry_bytes", "object_record_bytes"):
+                if key.replace("_", "-") in options:
+                    found[key] = options[key.replace("_", "-")]
         joblog = _own_or_parent(res, "joblog")
         if os.path.exists(joblog) and os.path.getsize(joblog) > 0:
             with open(joblog, newline="") as f:

@@ -265,6 +265,19 @@ class ClaimsOnFrozenSweep(unittest.TestCase):
         self.assertIn("work beyond T(1) 25.0 % of the busy time, balance 80.0 %", claims.load_balancing_floor(r).notes)
         self.assertIn("Image 1 cyclic: 25 % of its cell steps", claims.mapping_gain(r).notes)
 
+    def test_memory_notes_follow_the_accounting(self):
+        # The accounting named in claims 6 and 15 is the one the points ran under.
+        self.assertIn("a 4-byte header per cell plus 4 bytes per entry", claims.memory_ratio_at_16(self.r).notes)
+        r = copy.deepcopy(self.r)
+        r.facts.cell_header_bytes, r.facts.list_entry_bytes, r.facts.object_record_bytes = 0, 2, 36
+        six = claims.memory_ratio_at_16(r).notes
+        self.assertIn("(36 bytes)", six)
+        self.assertIn("no header per cell plus 2 bytes per entry", six)
+        self.assertIn("No header is counted", six)
+        self.assertNotIn("4-byte header", six)
+        self.assertIn("no header per cell plus 2 bytes per entry, records of 36 bytes",
+                      claims.shared_memory_half(r).notes)
+
     def test_cluster_notes_place_t1_against_the_work_window(self):
         # Claims 9 and 12 bound the paper's T(1) to [0.8 n t, n t] at its replicated time t.
         r = edited(self.r, "f10", "t1_s", 100, scene="image1", data="replicated", m=64)
