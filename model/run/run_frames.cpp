@@ -159,6 +159,10 @@ bool run_frame(const SimConfig &config, Machine &m, const std::string &label, co
     try {
         sc_core::sc_start(left, sc_core::SC_EXIT_ON_STARVATION);
     } catch (const sc_core::sc_report &) {
+        if (systemc_out_of_memory()) {  // cli_main's out-of-memory message, at the stage set
+            if (m.series) set_run_stage(std::string(run_stage()) + " and its --stats-interval series");
+            throw std::bad_alloc();
+        }
         if (!systemc_stack_failed()) throw;
         set_run_stage(machine_stage(config) + ": its processes' stacks");
         throw std::bad_alloc();  // cli_main's out-of-memory message
