@@ -23,7 +23,10 @@ bad "--map" --map block-cyclic:0
 bad "--topology" --topology ring
 bad "--link-us" --link-us -5
 bad "--link-us" --link-us nan
-bad "--packet-bytes" --packet-bytes -1
+# One range message for every size out of range, 0 included.
+bad "--packet-bytes '-1': must be more than 0 and at most 1000000" --packet-bytes -1
+bad "--packet-bytes '0': must be more than 0 and at most 1000000" --packet-bytes 0
+bad "--packet-bytes '1e308': must be more than 0 and at most 1000000" --packet-bytes 1e308
 bad "--cells" --cells 0
 bad "--cells" --cells 2x2
 bad "--size" --size 0x10
