@@ -73,4 +73,14 @@ bad "--link-us '-007': decimal only .*write '-7'" --link-us -007
 bad "--timing-values 'link=2': the key 'link' is given twice" --timing-values link=1,link=2
 # A value that underflows to 0 is refused, not read as 0.
 bad "--min-weight '1e-400': too close to 0" --min-weight 1e-400
+# --help and --version to a full device: exit 1 with the system's reason.
+if [ -w /dev/full ]; then
+  for option in --help --version; do
+    "$BUILD/torusrt-sim" "$option" > /dev/full 2> "$TMP/stderr"
+    rc=$?
+    check "$option > /dev/full: exit $rc, expected 1" [ "$rc" -eq 1 ]
+    check "$option > /dev/full: the system's reason: $(cat "$TMP/stderr")" \
+      grep -q "^torusrt-sim: standard output: cannot write: No space left on device$" "$TMP/stderr"
+  done
+fi
 finish
