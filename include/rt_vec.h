@@ -44,6 +44,15 @@ static inline rt_vec3 rt_vec_normalize(rt_vec3 a)
     double len = rt_vec_length(a);
     return len > 0.0 ? rt_vec_scale(a, 1.0 / len) : rt_vec(0.0, 0.0, 0.0);
 }
+/* A as a direction whose length can be computed: A itself when its largest component is from
+ * 1e-100 to 1e100, else A divided by that component, so that 1e-300 or 1e300 keeps its direction
+ * (the squares of the length would underflow or overflow); the zero vector stays zero. */
+static inline rt_vec3 rt_vec_rescaled(rt_vec3 a)
+{
+    double big = fmax(fabs(a.x), fmax(fabs(a.y), fabs(a.z)));
+    if (!(big > 0.0) || (big >= 1e-100 && big <= 1e100)) return a;
+    return rt_vec(a.x / big, a.y / big, a.z / big); /* 1 / big overflows for a subnormal big */
+}
 /* Component by axis index 0, 1, 2. */
 static inline double rt_vec_axis(rt_vec3 a, int axis) { return axis == 0 ? a.x : axis == 1 ? a.y : a.z; }
 static inline double rt_vec_max_component(rt_vec3 a)

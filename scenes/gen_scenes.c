@@ -10,9 +10,9 @@
  *   torusrt-genscenes --list            print every name with a one-line description
  *   torusrt-genscenes --help            print this usage
  * Returns 0 on success, 1 when a file cannot be written, 2 on a usage error (unknown name,
- * missing OUTDIR). Each file is written to NAME.nff.tmp and renamed, so a failed run never
- * leaves a partial NAME.nff behind; the temporary is made anew (never written through a link
- * left in its place), and a NAME.nff that is a link has its target written.
+ * missing OUTDIR). Each file is written to a new temporary .NAME.nff.XXXXXX beside it (mkstemp:
+ * never a file of the user's, never through a link) and renamed, so a failed run never leaves a
+ * partial NAME.nff behind; a NAME.nff that is a link has its target written.
  *
  * Output is byte-reproducible: no clock, no rand(); the one pseudo-random placement uses a
  * fixed-seed 64-bit LCG. Every coordinate computed with libm is rounded to 9 significant
@@ -29,13 +29,14 @@
  *   gen/motion_scenes.c     bouncing-balls and the moving scenes' motion files
  *   gen/stiff_scenes.c      the stiff and extreme cases
  */
-#define _DEFAULT_SOURCE /* realpath, lstat */
+#define _DEFAULT_SOURCE /* realpath, lstat, mkstemp, fchmod */
 #include <errno.h>
 #include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include "gen/builders.h"
 #include "gen/nff_writer.h"
@@ -109,10 +110,38 @@ static int find_scene(const char *name)
     return -1;
 }
 
-/* Writes OUTDIR/NAME.EXT through NAME.EXT.tmp with write(f, ctx); returns 0, or 1 after
- * printing why not. A NAME.EXT that is a link is followed: its target is written (the link
- * stays). The temporary is made anew (a file or link of that name left behind is removed first,
- * never written through). */
+/* TEXT's first N bytes as messages show them (docs/cli.md): control bytes and DEL escaped
+ * (\x0a), at most 200 characters; four buffers in turn, so one message can show four texts. */
+static const char *shown_n(const char *text, size_t n)
+{
+    static char buffers[4][200 * 4 + 4];
+    static int next;
+    char *out = buffers[next++ % 4], *o = out;
+    size_t i = 0;
+    for (; i < n && o - out < 200 * 4 - 4; ++i) {
+        unsigned char c = (unsigned char)text[i];
+        if (c < 0x20 || c == 0x7f) o += sprintf(o, "\\x%02x", c);
+        else *o++ = (char)c;
+    }
+    if (i < n) o += sprintf(o, "...");
+    *o = 0;
+    return out;
+}
+
+static const char *shown(const char *text) { return shown_n(text, strlen(text)); }
+
+/* The mode a new file gets from fopen: mkstemp makes 0600. */
+static mode_t new_file_mode(void)
+{
+    mode_t mask = umask(0);
+    umask(mask);
+    return 0666 & ~mask;
+}
+
+/* Writes OUTDIR/NAME.EXT through a new temporary .NAME.EXT.XXXXXX in the same folder with
+ * write(f, ctx); returns 0, or 1 after printing why not. A NAME.EXT that is a link is followed:
+ * its target is written (the link stays), and the temporary goes beside the target. mkstemp makes
+ * the temporary under a name no file has, so no file of the user's is ever removed or written. */
 static int write_file(const char *outdir, const char *name, const char *ext, void (*write)(FILE *f, const void *ctx),
                       const void *ctx)
 {
@@ -128,33 +157,45 @@ static int write_file(const char *outdir, const char *name, const char *ext, voi
     if (lstat(path, &st) == 0 && S_ISLNK(st.st_mode)) {
         char real[PATH_MAX];
         if (!realpath(path, real)) {
-            fprintf(stderr, "torusrt-genscenes: %s is a link to nothing: ", path);
+            fprintf(stderr, "torusrt-genscenes: %s is a link to nothing: ", shown(path));
             perror(NULL);
             goto done;
         }
         snprintf(path, len, "%s", real);
     }
     if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
-        fprintf(stderr, "torusrt-genscenes: %s is not a regular file\n", path);
+        fprintf(stderr, "torusrt-genscenes: %s is not a regular file\n", shown(path));
         goto done;
     }
-    snprintf(tmp, len, "%s.tmp", path);
-    FILE *f = fopen(tmp, "wbx");
-    if (!f && errno == EEXIST && remove(tmp) == 0) f = fopen(tmp, "wbx");
-    if (!f) {
-        fprintf(stderr, "torusrt-genscenes: cannot write %s: ", tmp);
+    const char *slash = strrchr(path, '/');
+    size_t dir_len = slash ? (size_t)(slash - path) + 1 : 0;
+    /* The base cut so that ".BASE.XXXXXX" fits NAME_MAX. */
+    size_t base_len = strlen(path + dir_len), room = NAME_MAX - 8;
+    if (base_len > room) base_len = room;
+    snprintf(tmp, len, "%.*s.%.*s.XXXXXX", (int)dir_len, path, (int)base_len, path + dir_len);
+    int fd = mkstemp(tmp);
+    if (fd < 0) {
+        fprintf(stderr, "torusrt-genscenes: cannot write %s: ", shown(path));
         perror(NULL);
+        goto done;
+    }
+    FILE *f = fchmod(fd, new_file_mode()) == 0 ? fdopen(fd, "wb") : NULL;
+    if (!f) {
+        fprintf(stderr, "torusrt-genscenes: cannot write %s: ", shown(tmp));
+        perror(NULL);
+        close(fd);
+        remove(tmp);
         goto done;
     }
     write(f, ctx);
     int bad = ferror(f);
     if (fclose(f) != 0 || bad) {
-        fprintf(stderr, "torusrt-genscenes: error writing %s\n", tmp);
+        fprintf(stderr, "torusrt-genscenes: error writing %s\n", shown(tmp));
         remove(tmp);
         goto done;
     }
     if (rename(tmp, path) != 0) {
-        fprintf(stderr, "torusrt-genscenes: cannot rename %s to %s: ", tmp, path);
+        fprintf(stderr, "torusrt-genscenes: cannot rename %s to %s: ", shown(tmp), shown(path));
         perror(NULL);
         remove(tmp);
         goto done;
@@ -253,7 +294,7 @@ static int variant_setting(const char *setting, paper_variant *v)
                    {"tree", 1, PAPER_TREE},         {"floor", 2, PAPER_FLOOR},   {"wall", 2, PAPER_WALL}};
     const char *eq = strchr(setting, '=');
     if (!eq) {
-        fprintf(stderr, "torusrt-genscenes: --variant setting '%s' is not KEY=VALUE\n", setting);
+        fprintf(stderr, "torusrt-genscenes: --variant setting '%s' is not KEY=VALUE\n", shown(setting));
         return 2;
     }
     size_t klen = (size_t)(eq - setting);
@@ -265,7 +306,7 @@ static int variant_setting(const char *setting, paper_variant *v)
                 v->layout = layouts[i].layout;
                 return 0;
             }
-        fprintf(stderr, "torusrt-genscenes: --variant %s '%s': expected %s\n", key, value,
+        fprintf(stderr, "torusrt-genscenes: --variant %s '%s': expected %s\n", key, shown(value),
                 v->image == 1 ? "planar-z, planar, cube or tree" : "floor or wall");
         return 2;
     }
@@ -283,9 +324,9 @@ static int variant_setting(const char *setting, paper_variant *v)
         char *end = NULL;
         double x = strtod(value, &end);
         if (!plain_decimal(value) || end == value || *end || !(x >= numbers[i].lo && x <= numbers[i].hi) ||
-            (numbers[i].whole && x != (double)(int)x)) {
+            (numbers[i].whole && strchr(value, '.'))) {
             fprintf(stderr, "torusrt-genscenes: --variant %s '%s': expected a%s number from %g to %g\n",
-                    numbers[i].name, value, numbers[i].whole ? " whole" : "", numbers[i].lo, numbers[i].hi);
+                    numbers[i].name, shown(value), numbers[i].whole ? " whole" : "", numbers[i].lo, numbers[i].hi);
             return 2;
         }
         switch (i) {
@@ -306,14 +347,14 @@ static int write_variant(const char *base, const char *settings, const char *out
 {
     int image = strcmp(base, "paper-image1") == 0 ? 1 : strcmp(base, "paper-image2") == 0 ? 2 : 0;
     if (!image) {
-        fprintf(stderr, "torusrt-genscenes: --variant '%s': expected paper-image1 or paper-image2\n", base);
+        fprintf(stderr, "torusrt-genscenes: --variant '%s': expected paper-image1 or paper-image2\n", shown(base));
         return 2;
     }
     if (!good_name(name)) {
         fprintf(stderr,
                 "torusrt-genscenes: --variant NAME '%s': expected a file name without '/' or control "
                 "characters, not starting with '-' or '.'\n",
-                name);
+                shown(name));
         return 2;
     }
     paper_variant v = paper_variant_default(image);
@@ -333,13 +374,13 @@ static int write_variant(const char *base, const char *settings, const char *out
         const char *eq = strchr(s, '=');
         size_t klen = eq ? (size_t)(eq - s) : strlen(s);
         if (!*s || klen >= sizeof seen[0]) {
-            fprintf(stderr, "torusrt-genscenes: --variant '%s': an empty or overlong setting\n", settings);
+            fprintf(stderr, "torusrt-genscenes: --variant '%s': an empty or overlong setting\n", shown(settings));
             rc = 2;
             break;
         }
         for (size_t k = 0; k < n_seen && rc == 0; ++k)
             if (strncmp(seen[k], s, klen) == 0 && seen[k][klen] == 0) {
-                fprintf(stderr, "torusrt-genscenes: --variant: '%.*s' given twice\n", (int)klen, s);
+                fprintf(stderr, "torusrt-genscenes: --variant: '%s' given twice\n", shown_n(s, klen));
                 rc = 2;
             }
         if (rc) break;
@@ -435,14 +476,14 @@ int main(int argc, char **argv)
         return write_variant(argv[2], argv[3], argv[4], argv[5]);
     }
     if (argv[1][0] == '-') {
-        fprintf(stderr, "torusrt-genscenes: unknown option '%s'\n", argv[1]);
+        fprintf(stderr, "torusrt-genscenes: unknown option '%s'\n", shown(argv[1]));
         usage(stderr);
         return 2;
     }
     const char *outdir = argv[1];
     for (int a = 2; a < argc; ++a) {
         if (find_scene(argv[a]) < 0) {
-            fprintf(stderr, "torusrt-genscenes: unknown scene '%s' (see --list)\n", argv[a]);
+            fprintf(stderr, "torusrt-genscenes: unknown scene '%s' (see --list)\n", shown(argv[a]));
             return 2;
         }
     }

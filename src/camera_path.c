@@ -32,7 +32,7 @@ rt_status rt_camera_pose_check(const rt_camera_pose *p, char *msg, size_t msg_le
     double wl = rt_vec_length(w);
     if (!(wl > 0.0) || !isfinite(wl))
         return pose_fail(msg, msg_len, "degenerate camera: 'from' and 'at' are the same point");
-    rt_vec3 u = rt_vec_cross(rt_vec_scale(w, 1.0 / wl), rt_vec_normalize(p->up));
+    rt_vec3 u = rt_vec_cross(rt_vec_scale(w, 1.0 / wl), rt_vec_normalize(rt_vec_rescaled(p->up)));
     if (!(rt_vec_length(u) > 1e-12))
         return pose_fail(msg, msg_len, "degenerate camera: 'up' is zero or parallel to the view direction");
     return RT_OK;

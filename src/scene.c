@@ -100,7 +100,7 @@ rt_status rt_scene_set_view(rt_scene *s, rt_vec3 from, rt_vec3 at, rt_vec3 up, d
     if (width > RT_SCENE_MAX_RESOLUTION || height > RT_SCENE_MAX_RESOLUTION) return RT_ERR_LIMIT;
     s->camera.from = from;
     s->camera.at = at;
-    s->camera.up = up;
+    s->camera.up = rt_vec_rescaled(up); /* a tiny or huge 'up' keeps its direction */
     s->camera.angle = angle_deg;
     s->camera.width = width;
     s->camera.height = height;

@@ -99,6 +99,18 @@ mode_t new_file_mode()
     return mode;
 }
 
+// Points standard error at the terminal (/dev/tty) when the command has one, else at /dev/null:
+// called when standard error is an input, so that no message is written into it.
+void divert_stderr()
+{
+    int fd = open("/dev/tty", O_WRONLY | O_NOCTTY | O_CLOEXEC);
+    if (fd < 0) fd = open("/dev/null", O_WRONLY | O_CLOEXEC);
+    if (fd >= 0 && fd != STDERR_FILENO) {
+        dup2(fd, STDERR_FILENO);
+        close(fd);
+    }
+}
+
 // ".NAME.XXXXXX" beside PATH, NAME cut so that the temporary's name fits NAME_MAX.
 std::string temporary_pattern(const std::string &path)
 {
@@ -204,12 +216,14 @@ void OutputSet::check() const
             inputs.emplace(FileKey{st.st_dev, st.st_ino}, in.option + " file " + in.path);
     }
     // The summary and the messages go to standard output and error: neither may be an input.
-    for (int fd : {STDOUT_FILENO, STDERR_FILENO}) {
+    // Standard error first: when it is an input, it is diverted before any message is written.
+    for (int fd : {STDERR_FILENO, STDOUT_FILENO}) {
         struct stat st;
         if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) continue;
         auto in = inputs.find({st.st_dev, st.st_ino});
-        if (in != inputs.end())
-            throw UserError(std::string(stream_name(fd)) + " is redirected to the " + in->second + ", an input", 2);
+        if (in == inputs.end()) continue;
+        if (fd == STDERR_FILENO) divert_stderr();  // the message must not land in the input
+        throw UserError(std::string(stream_name(fd)) + " is redirected to the " + in->second + ", an input", 2);
     }
     std::map<std::string, FileKey> folders;  // one stat per folder, not per output
     std::map<NameKey, const Entry *> names;

@@ -9,6 +9,8 @@
 #include <stdexcept>
 #include <string>
 #include <systemc>
+#include <utility>
+#include <vector>
 
 #include "animation_options.h"
 #include "cli_main.h"
@@ -218,6 +220,13 @@ int dump_config(const CommandLine &cl)
     return 0;
 }
 
+// The files a run reads, each with the option that names it.
+std::vector<std::pair<std::string, std::string>> run_inputs(const CommandLine &cl, const SimConfig &config)
+{
+    return {{"scene", cl.common.scene},      {"--config", cl.config_file},           {"--timing", config.timing_file},
+            {"--map-file", config.map_file}, {"--camera-path", cl.anim.camera_path}, {"--motion", cl.anim.motion}};
+}
+
 // The rest of the request the command line describes: the frames and the files to write.
 void fill_request(CommandLine &cl, SimRequest &r)
 {
@@ -232,9 +241,16 @@ void fill_request(CommandLine &cl, SimRequest &r)
     }
     r.image = cl.common.output;
     r.stats = cl.common.stats;
-    r.inputs = {
-        {"scene", cl.common.scene},        {"--config", cl.config_file},           {"--timing", r.config.timing_file},
-        {"--map-file", r.config.map_file}, {"--camera-path", cl.anim.camera_path}, {"--motion", cl.anim.motion}};
+    r.inputs = run_inputs(cl, r.config);
+}
+
+// Refuses standard output or error redirected to one of the inputs (exit 2) before any warning
+// is printed; standard error that is an input is diverted first, so nothing is written into it.
+void check_streams(const CommandLine &cl, const SimConfig &config)
+{
+    OutputSet streams;
+    for (const auto &input : run_inputs(cl, config)) streams.add_input(input.first, input.second);
+    streams.check();
 }
 
 // --ips N (one number, 3 or more) builds a ring (a line on a mesh), which is easy to take for a
@@ -256,8 +272,10 @@ int run(CommandLine &cl, double wall_start, int argc, char **argv)
     require_scene_and_output(cl.common);
     route_systemc_messages(cl.common.quiet);
     SimRequest request;
+    check_streams(cl, request.config);  // the inputs named on the command line
     check_animation(cl, request);
     check_config(cl, request);
+    check_streams(cl, request.config);  // and those the machine file names
     const SimConfig &config = request.config;
     if (config.replicate > 0 && request.remap != RemapPolicy::static_map)
         throw UserError("--replicate: not with --remap (a remapped table keeps one owner per cell)", 2);

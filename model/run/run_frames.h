@@ -41,6 +41,10 @@ struct FramePlan {
     // file), so that no frame is kept; null: the images are kept in RunOutcome::images.
     std::function<void(size_t frame, const std::vector<uint8_t> &rgb8)> frame_done;
 
+    // --stats or --frames-csv: every frame's record is written out when the run ends (its JSON
+    // or CSV built in memory then), so the budget holds room for that too.
+    bool report_frames = false;
+
     bool animated() const { return frames > 0; }
 };
 

@@ -158,6 +158,7 @@ FramePlan frame_plan(SimRequest &r, const FrameScene &fs, StagedOutputs &outputs
         plan.adaptive = r.adaptive;
         plan.motion = fs.motion.get();
         plan.moving_grid = fs.motion ? fs.grid : nullptr;
+        plan.report_frames = !r.stats.empty() || !r.frames_csv.empty();
         // Each frame goes to its temporary as it completes; commit() renames them all at the end.
         const rt_camera *cam = rt_scene_camera(fs.scene);
         unsigned w = cam->width, h = cam->height;

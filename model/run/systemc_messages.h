@@ -8,5 +8,8 @@ void route_systemc_messages(bool quiet);
 // Whether SystemC failed to set up a process's stack (E518, not displayed): the system refused
 // the memory.
 bool systemc_stack_failed();
+// Whether a process ended on std::bad_alloc (E549 "uncaught exception", not displayed): the
+// system refused the memory while simulating.
+bool systemc_out_of_memory();
 
 }  // namespace torusrt

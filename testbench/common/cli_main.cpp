@@ -4,7 +4,9 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <iostream>
 #include <new>
+#include <sstream>
 #include <string>
 #include <system_error>
 
@@ -113,6 +115,20 @@ int check_standard_output(const char *program, int status)
     return status == 0 ? 1 : status;
 }
 
+// --help and --version: CLI11's text written here, so that a write that fails keeps the
+// system's reason (std::cout's would be lost by the time standard output is checked).
+int print_help_or_version(const char *program, CLI::App &app, const CLI::ParseError &e)
+{
+    std::ostringstream text;
+    int status = app.exit(e, text, std::cerr);
+    const std::string out = text.str();
+    errno = 0;
+    bool written = std::fwrite(out.data(), 1, out.size(), stdout) == out.size() && std::fflush(stdout) == 0;
+    if (written) return status;
+    std::fprintf(stderr, "%s: standard output: cannot write: %s\n", program, std::strerror(errno != 0 ? errno : EIO));
+    return 1;
+}
+
 }  // namespace
 
 int run_cli(const char *program, CLI::App &app, int argc, char **argv, const std::function<int()> &body,
@@ -145,7 +161,7 @@ int run_cli(const char *program, CLI::App &app, int argc, char **argv, const std
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError &e) {
-        if (e.get_exit_code() == 0) return check_standard_output(program, app.exit(e));  // --help, --version
+        if (e.get_exit_code() == 0) return print_help_or_version(program, app, e);
         std::string what = with_suggestion(app, e, e.what());
         const CLI::Option *config = app.get_config_ptr();  // name the --config file its errors come from
         if (dynamic_cast<const CLI::ConfigError *>(&e) && config != nullptr && config->count() > 0) {

@@ -82,6 +82,7 @@ bad paper-image1 scale=.8 scale
 bad paper-image1 scale=0.8x scale
 bad paper-image1 lights=4 lights
 bad paper-image1 lights=1.5 lights
+bad paper-image1 lights=1.0 "whole number"
 bad paper-image1 layout=wall layout
 bad paper-image1 radius=2 "layout, scale"
 bad paper-image2 scale=2 "plane, radius"
@@ -104,9 +105,14 @@ for name in "" "a/b" $'ev2\nl 0 0 0\n#' "-x" ".hidden"; do
     check "NAME '$name': names NAME" grep -q "NAME" "$TMP/name.err"
     check "NAME '$name': nothing written" test -z "$(ls -A "$out/n")"
 done
+# A control byte in NAME is shown escaped: the message stays one line.
+"$gen" --variant paper-image1 scale=1 "$out/n" $'ev2\nl' >/dev/null 2>"$TMP/name.err"
+check "NAME with a newline: shown as \\x0a" grep -qF "'ev2\x0al'" "$TMP/name.err"
+check "NAME with a newline: a one-line message" test "$(wc -l <"$TMP/name.err")" = 1
 
-# A link where the temporary goes is removed, never written through; an output that is a link
-# is followed: its target is written and the link stays.
+# The temporary is a new .NAME.nff.XXXXXX: a file or link of the user's named NAME.nff.tmp is
+# neither removed nor written through, and no temporary is left; an output that is a link is
+# followed: its target is written and the link stays.
 mkdir -p "$TMP/links/gx"
 cp "$SRC/scenes/paper-image1-planar-z.nff" "$TMP/links/keep.nff"
 cp "$SRC/scenes/paper-image1-planar-z.nff" "$TMP/links/target.nff"
@@ -116,6 +122,13 @@ check "a link in the temporary's place: the file it names is untouched" \
     cmp -s "$TMP/links/keep.nff" "$SRC/scenes/paper-image1-planar-z.nff"
 check "a link in the temporary's place: the scene written" cmp -s "$TMP/links/gx/paper-image2-floor.nff" \
     "$SRC/scenes/paper-image2-floor.nff"
+check "a link named NAME.nff.tmp stays" test -L "$TMP/links/gx/paper-image2-floor.nff.tmp"
+echo precious >"$TMP/links/gx/v1.nff.tmp"
+(umask 022 && "$gen" --variant paper-image1 scale=1 "$TMP/links/gx" v1 >/dev/null 2>&1)
+check "a file named NAME.nff.tmp is kept as it was" test "$(cat "$TMP/links/gx/v1.nff.tmp")" = precious
+check "the variant written beside it" test -s "$TMP/links/gx/v1.nff"
+check "the scene's mode is the umask's (0644), not mkstemp's" test "$(stat -c %a "$TMP/links/gx/v1.nff")" = 644
+check "no temporary left" test -z "$(find "$TMP/links/gx" -name '.*')"
 ln -s ../target.nff "$TMP/links/gx/v.nff"
 "$gen" --variant paper-image1 scale=0.8 "$TMP/links/gx" v >/dev/null 2>&1
 check "an output link stays a link" test -L "$TMP/links/gx/v.nff"

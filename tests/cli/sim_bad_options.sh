@@ -23,7 +23,10 @@ bad "--map" --map block-cyclic:0
 bad "--topology" --topology ring
 bad "--link-us" --link-us -5
 bad "--link-us" --link-us nan
-bad "--packet-bytes" --packet-bytes -1
+# One range message for every size out of range, 0 included.
+bad "--packet-bytes '-1': must be more than 0 and at most 1000000" --packet-bytes -1
+bad "--packet-bytes '0': must be more than 0 and at most 1000000" --packet-bytes 0
+bad "--packet-bytes '1e308': must be more than 0 and at most 1000000" --packet-bytes 1e308
 bad "--cells" --cells 0
 bad "--cells" --cells 2x2
 bad "--size" --size 0x10
@@ -70,4 +73,14 @@ bad "--link-us '-007': decimal only .*write '-7'" --link-us -007
 bad "--timing-values 'link=2': the key 'link' is given twice" --timing-values link=1,link=2
 # A value that underflows to 0 is refused, not read as 0.
 bad "--min-weight '1e-400': too close to 0" --min-weight 1e-400
+# --help and --version to a full device: exit 1 with the system's reason.
+if [ -w /dev/full ]; then
+  for option in --help --version; do
+    "$BUILD/torusrt-sim" "$option" > /dev/full 2> "$TMP/stderr"
+    rc=$?
+    check "$option > /dev/full: exit $rc, expected 1" [ "$rc" -eq 1 ]
+    check "$option > /dev/full: the system's reason: $(cat "$TMP/stderr")" \
+      grep -q "^torusrt-sim: standard output: cannot write: No space left on device$" "$TMP/stderr"
+  done
+fi
 finish

@@ -6,7 +6,8 @@
 # written) instead of growing past it; an interval as long as the longest run (1e7 s) is one
 # interval, not "more than 1000000"; an interval of 1 ps (0.001ns) stops at 1,000,000 intervals,
 # and `1ps` is refused, as docs/cli.md says (units ns, us, ms, s); the per-pixel latency figures
-# are held from the budget before the run.
+# are held from the budget before the run, and so are an animation's frame records and their
+# JSON (refused before the first frame when they cannot fit).
 #
 # Usage (CTest runs it so): bash tests/hostile/budget_needs.sh BUILD_DIR SOURCE_DIR
 set -u
@@ -74,5 +75,15 @@ fails "--stats-interval 1ps" 2 "^torusrt-sim: --stats-interval '1ps': expected a
 fails "per-pixel latency" 1 \
     "memory budget exceeded: the per-pixel latency figures of 2048x2048 pixels would take 64.0 MiB" \
     --size 2048x2048 -o out/big.png --stats out/big.json --memory-budget 150M
+
+# ---- an animation's frame records inside the budget --------------------------------------------
+# 20000 frames of 1x1 with --stats: their records and JSON do not fit 8M; refused before the
+# first frame, naming them (the run took 162 MB when they were not counted).
+fails "frame records" 1 "memory budget exceeded: the records of 20000 frames and their JSON" \
+    --size 1x1 -o 'out/f%d.png' --frames 20000 --orbit 360 --memory-budget 8M --stats out/f.json
+# 100 frames fit, and every record is in the JSON.
+"${run_limited[@]}" "${sim[@]}" --size 1x1 -o 'r%d.png' --frames 100 --orbit 360 --memory-budget 8M \
+    --stats r.json </dev/null
+check "100 frames in 8M: exit $?, 100 records" [ "$(jq '.frames | length' r.json)" = 100 ]
 
 finish

@@ -87,6 +87,23 @@ done
 printf 'frames 2\nobjects 0\nkey 0 move 0 0 0\nkey 1 move 0.5 5 -1e-3\n' >"$TMP/m.motion"
 check "motion file with plain numbers is accepted" "$render" "$scene" "${size[@]}" -q --motion "$TMP/m.motion" \
     -o "$TMP/good_%d.png"
+# A tiny 'up' in a camera path keeps its direction, as a motion file's axis does: the
+# frames equal those of 'up 0 1 0'; the zero vector is refused as zero.
+image=$(source_scene paper-image1) || exit 1
+for up in "0 1e-300 0" "0 1e-200 0"; do
+    rm -f "$TMP"/up_*.png "$TMP"/one_*.png
+    printf '0 0 -5  0 0 0  %s  40\n0 1 -5  0 0 0  %s  40\n' "$up" "$up" >"$TMP/c.path"
+    printf '0 0 -5  0 0 0  0 1 0  40\n0 1 -5  0 0 0  0 1 0  40\n' >"$TMP/c1.path"
+    "$render" "$image" --size 8x8 -q --camera-path "$TMP/c.path" -o "$TMP/up_%d.png" 2>"$TMP/f.err"
+    rc=$?
+    check "camera path up $up: accepted (exit $rc: $(head -c 200 "$TMP/f.err"))" [ "$rc" -eq 0 ]
+    "$render" "$image" --size 8x8 -q --camera-path "$TMP/c1.path" -o "$TMP/one_%d.png"
+    check "camera path up $up: the frames of up 0 1 0" cmp -s "$TMP/up_1.png" "$TMP/one_1.png"
+done
+printf '0 0 -5  0 0 0  0 0 0  40\n' >"$TMP/c.path"
+file_refuses "camera path up 0 0 0" "$TMP/c.path" 1 "$render" "$scene" "${size[@]}" -q --camera-path "$TMP/c.path" \
+    -o "$TMP/bad/f_%d.png"
+check "camera path up 0 0 0: says zero" grep -q "'up' is zero" "$TMP/f.err"
 { echo "torusrt-map 1 2 2 2 2"; for c in 0 1 2 3 4 5 6 7; do echo $((c % 2)); done; } >"$TMP/m.map"
 check "map file with plain numbers is accepted" "$sim" "$scene" "${size[@]}" -q --cells 2 --ips 2 \
     --map-file "$TMP/m.map" -o "$TMP/good.png"

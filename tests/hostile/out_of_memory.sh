@@ -2,7 +2,8 @@
 # out_of_memory.sh - the system refusing memory (ulimit -v) while a 4096-node machine is being
 # built: the run says what it was building and names --memory-budget, exits 1 (no abort), and
 # leaves no output and no temporary (its VCD's and save file's, and the trace's FIFO folder); and
-# the same when memory runs out later in the run.
+# the same when memory runs out later in the run; Scotch short of memory (--map cost) and a
+# --stats-interval series growing past the limit end so too, with the run's message once.
 #
 # Usage (CTest runs it so): bash tests/hostile/out_of_memory.sh BUILD_DIR SOURCE_DIR
 set -u
@@ -37,4 +38,35 @@ for limit in 200000 250000; do
 done
 check "ulimit -v 200000 and 250000: runs that aborted: $aborts" [ "$aborts" -eq 0 ]
 check "ulimit -v 200000 and 250000: failed runs that left a file: $left" [ "$left" -eq 0 ]
+# Scotch short of memory (--map cost on 48x48x48 cells): Scotch 7.0 aborts on a double free when
+# one of its allocations fails, so the run asks for Scotch's room first: exit 1 with the
+# mapping's message, never an abort, nothing left.
+for limit in 60000 90000 120000; do
+    rm -rf out && mkdir out
+    ("${run_limited[@]}" bash -c 'ulimit -v "$0" && exec "$@"' "$limit" "$BUILD/torusrt-sim" "$f" -q --size 16x16 \
+        --ips 4x4 --map cost --cells 48 -o out/o.png --stats out/o.json >/dev/null 2>err.txt </dev/null)
+    rc=$?
+    check "Scotch under ulimit -v $limit: exit $rc, expected 0 or 1: $(head -c 300 err.txt)" [ "$rc" -le 1 ]
+    check "Scotch under ulimit -v $limit: no abort" bash -c '! grep -q "double free\|Aborted\|terminate called" err.txt'
+    [ "$limit" -eq 90000 ] && check "Scotch under ulimit -v 90000: refused (exit $rc)" [ "$rc" -eq 1 ]
+    if [ "$rc" -eq 1 ]; then
+        check "Scotch under ulimit -v $limit: the message: $(head -c 300 err.txt)" \
+            grep -q "out of memory while .*mapping the cells with Scotch (--map cost)" err.txt
+        check "Scotch under ulimit -v $limit: nothing left" [ -z "$(ls -A out)" ]
+    fi
+done
+
+# A --stats-interval series growing until the system refuses memory: the run's message, once,
+# naming the stage and the series, not SystemC's raw E549 report.
+rm -rf out && mkdir out
+("${run_limited[@]}" bash -c 'ulimit -v 60000 && exec "$@"' _ "$BUILD/torusrt-sim" "$f" -q --size 256x256 --ips 2 \
+    -o out/o.png --stats out/x.json --stats-interval 1e-5 --memory-budget 0 >/dev/null 2>err.txt </dev/null)
+rc=$?
+check "series under ulimit -v: exit $rc, expected 1: $(head -c 300 err.txt)" [ "$rc" -eq 1 ]
+check "series under ulimit -v: the run's message: $(head -c 300 err.txt)" \
+    grep -q "^torusrt-sim: out of memory while simulating the image and its --stats-interval series" err.txt
+check "series under ulimit -v: said once" [ "$(grep -c "out of memory" err.txt)" -eq 1 ]
+check "series under ulimit -v: no E549" bash -c '! grep -q "E549" err.txt'
+check "series under ulimit -v: nothing left" [ -z "$(ls -A out)" ]
+
 finish

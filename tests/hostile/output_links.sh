@@ -4,6 +4,7 @@
 # namespace) is written through that stream and stays a link, for every output option of both
 # programs; a link to a file replaces the file, never the link; standard output appended to the
 # scene (>> SCENE), with or without --stats /dev/stdout, is refused before anything is written;
+# standard error appended to an input (2>> SCENE) is refused with nothing written into it;
 # two outputs on one stream are refused naming both options; a null device takes any number.
 #
 # Usage (CTest runs it so): bash tests/hostile/output_links.sh BUILD_DIR SOURCE_DIR
@@ -85,6 +86,36 @@ done
 "${run_limited[@]}" "$BUILD/torusrt-render" --size 8x8 scene.nff -o out/a.png --stats /dev/stdout \
     >>scene.nff 2>err.txt </dev/null
 check "render --stats /dev/stdout >> SCENE: exit $?: $(head -c 200 err.txt)" cmp -s scene.nff keep.nff
+cp keep.nff scene.nff
+
+# Standard error appended to an input (the scene, a hard link to it, the machine file): refused
+# (exit 2) with nothing written into the input, not the message, not a warning or note printed
+# before the outputs are checked; no image.
+printf 'ips = "4"\n' >m.toml
+cp m.toml keep.toml
+ln scene.nff hard.nff
+for stats in "" "--stats /dev/stderr" "--ips 4" "--config m.toml"; do
+    for target in scene.nff hard.nff m.toml; do
+        [ "$target" = m.toml ] && [ "$stats" != "--config m.toml" ] && continue
+        rm -rf out && mkdir out
+        # shellcheck disable=SC2086 # the option and its file, or nothing
+        "${run_limited[@]}" "$BUILD/torusrt-sim" --t1 1 --size 8x8 scene.nff -o out/a.png $stats \
+            >out.txt 2>>"$target" </dev/null
+        rc=$?
+        check "sim ${stats:-(plain)} 2>> $target: exit $rc, expected 2" [ "$rc" -eq 2 ]
+        check "sim ${stats:-(plain)} 2>> $target: the scene unchanged" cmp -s scene.nff keep.nff
+        check "sim ${stats:-(plain)} 2>> $target: the machine file unchanged" cmp -s m.toml keep.toml
+        check "sim ${stats:-(plain)} 2>> $target: no image" [ -z "$(ls -A out)" ]
+        cp keep.nff scene.nff
+        cp keep.toml m.toml
+    done
+done
+rm -rf out && mkdir out
+"${run_limited[@]}" "$BUILD/torusrt-render" --size 8x8 scene.nff -o out/a.png --stats /dev/stderr \
+    >out.txt 2>>scene.nff </dev/null
+rc=$?
+check "render --stats /dev/stderr 2>> SCENE: exit $rc, expected 2" [ "$rc" -eq 2 ]
+check "render --stats /dev/stderr 2>> SCENE: the scene unchanged" cmp -s scene.nff keep.nff
 cp keep.nff scene.nff
 
 # Two outputs on one stream: refused naming both options, nothing written.

@@ -268,7 +268,13 @@ std::vector<MachineOption> timing_options()
         {{"--packet-bytes", "BYTES", K::real, "28", 0, kMaxTimingUs, "bytes", "packet size on the wire", G::machine,
           "packet-bytes"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
-             set_timing(s, m.timing, "packet_bytes", parse_real(s.long_name(), t, s.min, s.max));
+             // 0 passes the table's range but not the timing (no size): one range message for all.
+             double bytes = parse_real(s.long_name(), t, -HUGE_VAL, HUGE_VAL);
+             if (!(bytes > 0 && bytes <= s.max))
+                 throw UserError(s.long_name() + " '" + shown_text(t) + "': must be more than 0 and at most " +
+                                     number_text(s.max),
+                                 2);
+             set_timing(s, m.timing, "packet_bytes", bytes);
          },
          [](const MachineConfig &m) { return number_text(timing_value(m.timing, "packet_bytes")); }},
         {{"--link-bytes-per-us", "RATE", K::real, "0", 0, HUGE_VAL, "bytes/us",
