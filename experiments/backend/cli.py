@@ -7,7 +7,8 @@ import signal
 import sys
 import time
 
-from output_files import OutputError, OutputSet, append_text, input_file, write_lines
+from output_files import (OutputError, OutputSet, WriteError, append_text, finish_stdout, input_file,  # noqa: E501
+                          named_stdout, nonempty, os_message, out_folder, write_lines)
 
 from . import local, points, slurm, task
 

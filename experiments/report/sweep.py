@@ -12,7 +12,8 @@ import shlex
 import subprocess
 import sys
 
-from output_files import OUTPUT_OPTIONS, OutputSet, atomic, named_files, output_options, read_text, write_lines, write_text
+from output_files import (ANIMATION_OPTIONS, NO_RUN_OPTIONS, OUTPUT_OPTIONS, OutputSet, atomic, list_values,
+                          named_files, output_options, read_text, unusable_option, write_lines, write_text)
 
 from .plots import gnuplot, write_dat
 

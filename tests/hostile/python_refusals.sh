@@ -1,0 +1,87 @@
+#!/usr/bin/env bash
+# python_refusals.sh - the Python and shell tools of experiments/ never end in a traceback: a
+# command line that would make every run fail is refused before anything runs or is made
+# (exit 2, the option named), a failed write names the file and the reason (exit 1):
+# - after `--` (compare-mappings, a sweep's fixed options, run_point.sh's command): --help, -h,
+#   --version, --dump-config, -o glued to its file (-ox.png, -qox.png) and --stats=FILE; for the
+#   sweep and compare-mappings an animation (--frames, --orbit, --motion), and --stats-interval
+#   for compare-mappings (its series would be dropped);
+# - standard output on a full device or a closed pipe: `standard output: cannot write: REASON`,
+#   exit 1 (compare-mappings, report, the backend, the sweep, a study's --help);
+# - an empty value (--out '', --state '', --runs '', --columns '', a report's folder or file):
+#   exit 2, nothing written into the current folder;
+# - the sweep's --out naming the scene or a file, the backend's --state naming a file, a study's
+#   --results naming a file: exit 2 naming it; a refused sweep leaves no --out folder;
+# - compare-mappings' --map: an empty or repeated mapping refused, as the sweep's axis values;
+# - report machine: a report whose config is null, and an explicit --build without torusrt-sim;
+# - report compare: a row with more fields than its header, a header naming a column twice;
+# - run_point.sh: no command after --, an empty OUT.json, a --t1-from whose sim_time_s is not a
+#   number, --t1 given with --t1-from;
+# - the sweep's per-point temporaries are unique per process (two sweeps into one --out).
+#
+# Usage (CTest runs it so): bash tests/hostile/python_refusals.sh BUILD_DIR SOURCE_DIR
+set -u
+source "$(dirname "$0")/../cli/common.bash" "$@"
+need_exe torusrt-sim
+for tool in python3 parallel gnuplot jq; do
+    command -v "$tool" >/dev/null || { echo "$TEST_NAME: $tool is not installed; skipped"; exit 77; }
+done
+time_limit 60
+EXP=$SRC/experiments
+export TORUSRT_BUILD=$BUILD
+scene1=$(source_scene paper-image1) || exit 1
+cd "$TMP" || exit 1
+small=(--size 8x8)
+
+# exits STATUS NAME PATTERN COMMAND...: exit STATUS, stderr matching PATTERN, no traceback; the
+# command's output in $logs/NAME.out and NAME.err (a space, ' or / of NAME as _).
+logs=$TMP/logs
+mkdir "$logs" && mkdir work && cd work || exit 1
+cp "$scene1" s1.nff && cp s1.nff keep.nff
+exits() {
+    local status=$1 name=$2 pattern=$3 f=$logs/${2//[\/ \']/_}
+    shift 3
+    "${run_limited[@]}" "$@" >"$f.out" 2>"$f.err" </dev/null
+    local rc=$?
+    check "$name: exit $rc, expected $status: $(head -c 300 "$f.err")" [ "$rc" -eq "$status" ]
+    check "$name: the message names it ('$pattern'): $(head -c 300 "$f.err")" grep -q -e "$pattern" "$f.err"
+    check "$name: no traceback" test "$(grep -c Traceback "$f.err")" -eq 0
+}
+refused() { exits 2 "$@"; }
+# full STATUS NAME PATTERN COMMAND...: as exits, with standard output on /dev/full (and no
+# errno number in the message).
+full() {
+    local status=$1 name=$2 pattern=$3 f=$logs/${2//[\/ \']/_}
+    shift 3
+    "${run_limited[@]}" "$@" >/dev/full 2>"$f.err" </dev/null
+    local rc=$?
+    check "$name: exit $rc, expected $status: $(head -c 300 "$f.err")" [ "$rc" -eq "$status" ]
+    check "$name: the message names it ('$pattern'): $(head -c 300 "$f.err")" grep -q -e "$pattern" "$f.err"
+    check "$name: no traceback, no errno number" test "$(grep -c 'Traceback\|Errno' "$f.err")" -eq 0
+}
+# nothing_new NAME: the current folder holds what it held at the last snapshot.
+snapshot() { ls -A >snap.list; }
+nothing_new() { check "$1: wrote into the current folder: $(ls -A | comm -13 snap.list - | tr '\n' ' ')" \
+    cmp -s snap.list <(ls -A); }
+ENOSPC="standard output: cannot write: No space left on device"
+cm=("$EXP/compare-mappings" --build "$BUILD" --map "block,cyclic")
+sweep=("$EXP/sweep" --build "$BUILD")
+rp=("$EXP/run_point.sh" rp/p.json)
+"${run_limited[@]}" "$BUILD/torusrt-sim" s1.nff -q -o a.png "${small[@]}" --stats a.json </dev/null
+check "a report to read: exit $?" [ -s a.json ]
+printf '/dev/null\ttrue\n' >list.tsv  # a point list
+
+# ---- -o glued to its file, --stats=FILE ---------------------------------------------------
+refused "cm -- -ox.png" "-o after --" "${cm[@]}" s1.nff --out c.png -- --ips 2 "${small[@]}" -ox.png
+refused "cm -- -qox.png" "-o after --" "${cm[@]}" s1.nff --out c.png -- --ips 2 "${small[@]}" -qox.png
+refused "sweep -- -ox.png" "-o among the fixed options" "${sweep[@]}" s1.nff --axis ips=1,2 --out sw -- -ox.png
+refused "sweep -- --stats=x.json" "--stats among the fixed options" "${sweep[@]}" s1.nff --axis ips=1,2 --out sw \
+    -- --stats=x.json
+check "sweep -- -ox.png: no --out folder made" [ ! -e sw ]
+refused "run_point -ox.png" "'-o'\|-o 'x.png'" "${rp[@]}" -- "$BUILD/torusrt-sim" s1.nff "${small[@]}" -ox.png
+refused "run_point --stats=x.json" "--stats" "${rp[@]}" -- "$BUILD/torusrt-sim" s1.nff "${small[@]}" --stats=x.json
+refused "run_point --help" "--help in the command" "${rp[@]}" -- "$BUILD/torusrt-sim" s1.nff --help
+refused "run_point --dump-config" "--dump-config in the command" "${rp[@]}" -- "$BUILD/torusrt-sim" s1.nff --dump-config
+check "run_point refusals: nothing written" [ ! -e rp/p.json ] && [ ! -e rp/p.log ]
+
+finish
