@@ -44,14 +44,13 @@ def parse_axis(text):
     """'ips=1,2,4x2x2' -> ('ips', ['1', '2', '4x2x2'])."""
     name, sep, values = text.partition("=")
     name = name.lstrip("-")
-    items = values.split(",")
     if not sep or not re.fullmatch(r"[a-z0-9][a-z0-9-]*", name) or not values:
         raise ValueError("--axis '%s': expected OPTION=v1,v2,... (an option of torusrt-sim without its dashes)" % text)
-    if "" in items:
-        raise ValueError("--axis '%s': an empty value (value %d); write each value once, between commas"
-                         % (text, items.index("") + 1))
+    items = list_values("--axis", values, text)
     if "--" + name in OUTPUT_OPTIONS:
         raise ValueError("--axis '%s': --%s is an output; the sweep writes each point's files itself" % (text, name))
+    if "--" + name in NO_RUN_OPTIONS + ANIMATION_OPTIONS:
+        raise ValueError("--axis '%s': %s" % (text, UNSWEPT % ("--" + name)))
     return name, items
 
 
@@ -171,13 +170,22 @@ def has_series(args):
     return any(w.partition("=")[0] == "--stats-interval" for w in args)
 
 
+# Why an option of NO_RUN_OPTIONS or ANIMATION_OPTIONS cannot be given to every point.
+UNSWEPT = ("%s: every point would fail (help, the version and --dump-config print and run nothing; an "
+           "animation's -o is a frame pattern, and a sweep point is one image)")
+
+
 def check_fixed(fixed):
-    """ValueError naming the first output option among the fixed options (-o, --stats,
-    --stats-series, --vcd, ...): every point would write it into one file."""
+    """ValueError naming the first output option among the fixed options (-o, -oFILE, --stats,
+    --stats-series, --vcd, ...): every point would write it into one file; or an option that
+    makes every point fail (--help, --version, --dump-config, an animation's)."""
     written = output_options(fixed)
     if written:
         raise ValueError("%s among the fixed options: every point would write it into one file; the sweep "
                          "writes each point's image, JSON and series itself (DIR/points/)" % written[0])
+    unusable = unusable_option(fixed, NO_RUN_OPTIONS + ANIMATION_OPTIONS)
+    if unusable:
+        raise ValueError("%s among the fixed options: %s" % (unusable, UNSWEPT % unusable))
 
 
 def plan(out, sim, scene, axes, fixed, listing):

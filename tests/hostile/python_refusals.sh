@@ -71,6 +71,25 @@ rp=("$EXP/run_point.sh" rp/p.json)
 check "a report to read: exit $?" [ -s a.json ]
 printf '/dev/null\ttrue\n' >list.tsv  # a point list
 
+# ---- options that make every run fail, after -- ------------------------------------
+for opt in --help -h --version --dump-config "--frames 2 --orbit 3" --stats-interval=0.1; do
+    read -r -a words <<<"$opt"
+    snapshot
+    refused "cm -- $opt" "${words[0]%%=*} after --" "${cm[@]}" s1.nff --out c.png -- --ips 2 "${small[@]}" "${words[@]}"
+    nothing_new "cm -- $opt"
+done
+printf 'torusrt-motion 1\nframes 2\n' >m.motion
+for opt in --help --version --dump-config "--frames 2 --orbit 3" "--motion m.motion"; do
+    read -r -a words <<<"$opt"
+    refused "sweep -- $opt" "${words[0]} among the fixed options" "${sweep[@]}" s1.nff --axis ips=1,2 --out sw -- \
+        "${small[@]}" "${words[@]}"
+    check "sweep -- $opt: no --out folder made" [ ! -e sw ]
+done
+refused "sweep -- -qh" "-h among the fixed options" "${sweep[@]}" s1.nff --axis ips=1,2 --out sw -- -qh
+check "sweep -- -qh: no --out folder made" [ ! -e sw ]
+refused "sweep --axis frames" "--axis 'frames=1,2'" "${sweep[@]}" s1.nff --axis frames=1,2 --out sw -- "${small[@]}"
+check "sweep --axis frames: no --out folder made" [ ! -e sw ]
+
 # ---- -o glued to its file, --stats=FILE ---------------------------------------------------
 refused "cm -- -ox.png" "-o after --" "${cm[@]}" s1.nff --out c.png -- --ips 2 "${small[@]}" -ox.png
 refused "cm -- -qox.png" "-o after --" "${cm[@]}" s1.nff --out c.png -- --ips 2 "${small[@]}" -qox.png
