@@ -44,7 +44,7 @@ while [ $# -gt 0 ]; do
         --doc) doc=$2; shift 2 ;;
         --no-report) report=0; shift ;;
         --no-clusters) popt+=(--no-clusters); shift ;;
-        -h|--help) sed -n '2,/^set -uo/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
+        -h|--help) show_help '^set -uo' ;;
         *) backend_option "$@" || die "unknown argument '$1' (see --help)"; shift "$SHIFT" ;;
     esac
 done

@@ -149,14 +149,20 @@ def main(argv):
     args = parser.parse_args(argv)
     signal.signal(signal.SIGTERM, interrupted)
     signal.signal(signal.SIGINT, signal.default_int_handler)  # even where the shell started us ignoring it
+    named_stdout()  # a full disk or a closed pipe on standard output: named, exit 1
     try:
-        return args.run(args)
+        status = args.run(args)
+        finish_stdout()
+        return status
     except KeyboardInterrupt:
         print("experiments/backend: interrupted", file=sys.stderr)
         return 130
     except OutputError as e:
         print("experiments/backend: %s" % e, file=sys.stderr)
         return 2
-    except (OSError, ValueError, RuntimeError) as e:
+    except WriteError as e:  # the run's own records or standard output: nothing more can be said
         print("experiments/backend: %s" % e, file=sys.stderr)
+        return 1
+    except (OSError, ValueError, RuntimeError) as e:
+        print("experiments/backend: %s" % os_message(e), file=sys.stderr)
         return 2

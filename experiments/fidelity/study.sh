@@ -44,7 +44,7 @@ while [ $# -gt 0 ]; do
         --results) res=$2; shift 2 ;;
         --smoke) smoke=--smoke; shift ;;
         --stage) [ "$2" = 1 ] || die "--stage takes 1 (stage 1 alone), not '$2'"; only=1; shift 2 ;;
-        -h|--help) sed -n '2,/^set -e/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
+        -h|--help) show_help '^set -e' ;;
         *) die "unknown argument '$1' (see --help)" ;;
     esac
 done

@@ -217,11 +217,17 @@ def main(argv):
     fidelity.add_commands(sub)
     args = parser.parse_args(argv)
     prog = "sweep" if args.command.startswith("sweep-") else "experiments/report"  # the command the user ran
+    named_stdout()  # a full disk or a closed pipe on standard output: named, exit 1
     try:
-        return args.run(args)
+        status = args.run(args)
+        finish_stdout()
+        return status
     except OutputError as e:  # an output refused before anything was written: the command line's fault
         print("%s: %s" % (prog, shown(e, backslash=False)), file=sys.stderr)
         return 2
-    except (OSError, ValueError, KeyError, subprocess.CalledProcessError) as e:
+    except ValueError as e:
         print("%s: %s" % (prog, shown(e, backslash=False)), file=sys.stderr)
+        return 2 if args.command == "sweep-plan" else 1  # the sweep's command line, checked before any run
+    except (OSError, KeyError, subprocess.CalledProcessError) as e:
+        print("%s: %s" % (prog, shown(os_message(e), backslash=False)), file=sys.stderr)
         return 1

@@ -103,4 +103,24 @@ refused "run_point --help" "--help in the command" "${rp[@]}" -- "$BUILD/torusrt
 refused "run_point --dump-config" "--dump-config in the command" "${rp[@]}" -- "$BUILD/torusrt-sim" s1.nff --dump-config
 check "run_point refusals: nothing written" [ ! -e rp/p.json ] && [ ! -e rp/p.log ]
 
+# ---- standard output on a full device, or a closed pipe --------------------------
+full 1 "cm >/dev/full" "compare-mappings: $ENOSPC" "${cm[@]}" s1.nff --out c.png -- --ips 2 "${small[@]}"
+full 1 "report machine >/dev/full" "report: $ENOSPC" python3 "$EXP/report" machine a.json
+full 1 "sweep >/dev/full" "$ENOSPC" "${sweep[@]}" s1.nff --axis ips=1,2 --out swfull -- "${small[@]}"
+full 1 "fidelity --help >/dev/full" "study.sh: $ENOSPC" bash "$EXP/fidelity/study.sh" --help
+full 1 "sweep --help >/dev/full" "sweep: $ENOSPC" "${sweep[@]}" --help
+# A closed pipe: its reading end is closed before the sweep starts.
+closed_pipe() {
+    python3 -c 'import os, subprocess, sys
+r, w = os.pipe()
+os.close(r)
+sys.exit(subprocess.call(sys.argv[1:], stdout=w))' "$@"
+}
+closed_pipe "${run_limited[@]}" "${sweep[@]}" s1.nff --axis ips=1,2 --out swpipe -- "${small[@]}" 2>pipe.err </dev/null
+rc=$?
+check "sweep | closed: exit $rc, expected 1: $(head -c 300 pipe.err)" [ "$rc" -eq 1 ]
+check "sweep | closed: names standard output: $(head -c 300 pipe.err)" \
+    grep -q "standard output: cannot write: Broken pipe" pipe.err
+check "sweep | closed: no errno number, no traceback" test "$(grep -c 'Errno\|Traceback' pipe.err)" -eq 0
+
 finish
