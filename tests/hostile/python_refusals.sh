@@ -123,4 +123,8 @@ check "sweep | closed: names standard output: $(head -c 300 pipe.err)" \
     grep -q "standard output: cannot write: Broken pipe" pipe.err
 check "sweep | closed: no errno number, no traceback" test "$(grep -c 'Errno\|Traceback' pipe.err)" -eq 0
 
+# ---- report machine on a report whose config is null --------------------------------------
+python3 -c "import json; d = json.load(open('a.json')); d['config'] = None; json.dump(d, open('n.json', 'w'))"
+exits 1 "report machine config null" "n.json: config: null, not an object" python3 "$EXP/report" machine n.json
+
 finish
