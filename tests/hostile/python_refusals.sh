@@ -123,6 +123,14 @@ check "sweep | closed: names standard output: $(head -c 300 pipe.err)" \
     grep -q "standard output: cannot write: Broken pipe" pipe.err
 check "sweep | closed: no errno number, no traceback" test "$(grep -c 'Errno\|Traceback' pipe.err)" -eq 0
 
+# ---- report machine --build without torusrt-sim -----------------------------------------
+python3 "$EXP/report" machine a.json >a.toml 2>/dev/null
+mkdir nobuild
+refused "report machine --build nonexist" "--build '/nonexist': no torusrt-sim" \
+    python3 "$EXP/report" machine a.json --compare a.toml --build /nonexist
+refused "report machine --build a folder without it" "--build 'nobuild': no torusrt-sim" \
+    python3 "$EXP/report" machine a.json --compare a.toml --build nobuild
+
 # ---- report machine on a report whose config is null --------------------------------------
 python3 -c "import json; d = json.load(open('a.json')); d['config'] = None; json.dump(d, open('n.json', 'w'))"
 exits 1 "report machine config null" "n.json: config: null, not an object" python3 "$EXP/report" machine n.json
