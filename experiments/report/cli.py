@@ -107,8 +107,9 @@ def sweep_collect(args):
 
 
 def compare(args):
+    from output_files import list_values
     from . import compare as comparelib
-    columns = [c for c in args.columns.split(",") if c] if args.columns else None
+    columns = list_values("--columns", args.columns) if args.columns else None
     rows, diffs = comparelib.compare(os.path.abspath(args.old), os.path.abspath(args.new), columns)
     for line in diffs:
         print(line)

@@ -123,6 +123,18 @@ check "sweep | closed: names standard output: $(head -c 300 pipe.err)" \
     grep -q "standard output: cannot write: Broken pipe" pipe.err
 check "sweep | closed: no errno number, no traceback" test "$(grep -c 'Errno\|Traceback' pipe.err)" -eq 0
 
+# ---- empty values ------------------------------------------------------------------------
+snapshot
+refused "sweep --out ''" "--out needs a value" "${sweep[@]}" s1.nff --axis ips=1 --out '' -- "${small[@]}"
+refused "sweep --columns ''" "--columns needs a value" "${sweep[@]}" s1.nff --axis ips=1 --columns '' -- "${small[@]}"
+refused "backend --state ''" "--state: an empty value" python3 "$EXP/backend" run --state '' list.tsv
+refused "backend --runs ''" "--runs: an empty value" python3 "$EXP/backend" run --state st --runs '' list.tsv
+refused "report compare '' DIR" "old: an empty value" python3 "$EXP/report" compare '' .
+refused "report compare --columns ''" "--columns: an empty value" python3 "$EXP/report" compare . . --columns ''
+refused "report machine --compare ''" "--compare: an empty value" python3 "$EXP/report" machine a.json --compare ''
+refused "cm --build ''" "--build: an empty value" "$EXP/compare-mappings" s1.nff --build '' -- --ips 2
+nothing_new "empty values"
+
 # ---- report machine --build without torusrt-sim -----------------------------------------
 python3 "$EXP/report" machine a.json >a.toml 2>/dev/null
 mkdir nobuild
