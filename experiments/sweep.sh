@@ -53,7 +53,7 @@ set_build "$build"
 [ -x "$SIM" ] || die "$SIM not found: build it first (cmake --build BUILD --target torusrt-sim)"
 command -v jq >/dev/null || die "jq is required"
 [ -n "$results" ] || results=$EXP/results$([ "$mode" = quick ] && echo -quick)
-mkdir -p "$results"
+make_folder --results "$results"
 RES=$(cd "$results" && pwd)
 if [ -z "$doc" ]; then
     if [ "$mode" = full ]; then doc=$REPO/docs/reproduction.md; else doc=$RES/reproduction.md; fi

@@ -87,7 +87,7 @@ def run(args):
             outs.add_input("point list", f)
         outs.add("--runs", args.runs)
         outs.check()
-    state = os.path.abspath(args.state)
+    state = out_folder("--state", args.state, [("point list", f) for f in args.lists])
     os.makedirs(os.path.join(state, "logs"), exist_ok=True)
     phases = [points.read(os.path.abspath(f)) for f in args.lists]
     points.assign_logs(phases, os.path.join(state, "logs"))

@@ -68,7 +68,7 @@ if [ "$QUICK" = 1 ]; then
 else
   [ -n "$REPS" ] && qargs=(--reps "$REPS") && pargs=(--reps "$REPS")
 fi
-mkdir -p "$RESULTS/points"
+make_folder --results "$RESULTS" && mkdir -p "$RESULTS/points"
 RESULTS=$(cd "$RESULTS" && pwd)
 work=$RESULTS/points
 # point_line STEP CSV ARGS...: one line of a point list: done when CSV exists.

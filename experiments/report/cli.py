@@ -88,8 +88,7 @@ def sweep_plan(args):
         raise ValueError("each --axis option may be given once")
     fixed = args.fixed[1:] if args.fixed[:1] == ["--"] else args.fixed
     sweep.check_fixed(fixed)  # before --out is made
-    out = os.path.abspath(args.out)
-    os.makedirs(out, exist_ok=True)
+    out = out_folder("--out", args.out, [("scene", args.scene)] + sweep.named_files(fixed))
     total, done = sweep.plan(out, args.sim, args.scene, axes, fixed, os.path.join(out, "points.list"))
     print("sweep: %d points (%d done before), results in %s" % (total, done, out))
     return 0

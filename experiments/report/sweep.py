@@ -211,14 +211,14 @@ def plan(out, sim, scene, axes, fixed, listing):
     for option, path in named_files(words):
         outs.add_input(option, path)
     files = [point_files(out, point_name(names, values)) for values in combos]
-    for name in (PLAN, "points.list", "sweep.csv", "sweep.png"):
-        outs.add("--out", os.path.join(out, name))
     points = os.path.join(out, "points")
-    if os.path.isdir(points):  # a new folder holds nothing to check
+    if os.path.isdir(out):  # a new folder holds nothing to check, and is made after the checks
+        for name in (PLAN, "points.list", "sweep.csv", "sweep.png", FACTS):
+            outs.add("--out", os.path.join(out, name))
+    if os.path.isdir(points):
         for f in files:
             for ext in ("json", "png", "log", "id", "series"):
                 f[ext] = outs.add("--out", f[ext])
-    outs.add("--out", os.path.join(out, FACTS))
     outs.check()
     dry_run(sim, scene, names, combos[0], fixed)
     os.makedirs(points, exist_ok=True)

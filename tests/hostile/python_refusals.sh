@@ -147,4 +147,21 @@ refused "report machine --build a folder without it" "--build 'nobuild': no toru
 python3 -c "import json; d = json.load(open('a.json')); d['config'] = None; json.dump(d, open('n.json', 'w'))"
 exits 1 "report machine config null" "n.json: config: null, not an object" python3 "$EXP/report" machine n.json
 
+# ---- --out, --state, --results naming a file; no --out left by a refused sweep ------------
+refused "sweep --out the scene" "--out 's1.nff': is the scene file" "${sweep[@]}" s1.nff --axis ips=1 --out s1.nff
+check "sweep --out the scene: unchanged" cmp -s s1.nff keep.nff
+echo x >afile
+refused "sweep --out a file" "--out 'afile': is a file, not a folder" "${sweep[@]}" s1.nff --axis ips=1 --out afile
+refused "backend --state a file" "--state 'afile': is a file, not a folder" \
+    python3 "$EXP/backend" run --state afile list.tsv
+refused "fidelity --results a file" "--results 'afile': is a file, not a folder" \
+    bash "$EXP/fidelity/study.sh" --smoke --build "$BUILD" --results afile
+mkdir -p a && cp "$SRC/timing/literal.timing" a/t.timing && cp a/t.timing a_t.timing
+refused "sweep two points of one name" "have one name" "${sweep[@]}" s1.nff --axis timing=a/t.timing,a_t.timing \
+    --out s14 -- "${small[@]}"
+check "sweep two points of one name: no --out folder made" [ ! -e s14 ]
+refused "sweep a failed first-point check" "do not check out" "${sweep[@]}" s1.nff --axis ips=1 --out s15 \
+    -- --no-such-option
+check "sweep a failed first-point check: no --out folder made" [ ! -e s15 ]
+
 finish
