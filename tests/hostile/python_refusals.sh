@@ -164,4 +164,10 @@ refused "sweep a failed first-point check" "do not check out" "${sweep[@]}" s1.n
     -- --no-such-option
 check "sweep a failed first-point check: no --out folder made" [ ! -e s15 ]
 
+# ---- compare-mappings' --map checked as the sweep's axis values ---------------------------
+refused "cm --map block," "--map 'block,': an empty value" "${cm[@]:0:3}" --map block, s1.nff --out c.png -- --ips 2
+refused "cm --map block,block" "'block' is given twice" "${cm[@]:0:3}" --map block,block s1.nff --out c.png -- --ips 2
+refused "sweep --axis map=block,block" "--axis 'map=block,block': 'block' is given twice" \
+    "${sweep[@]}" s1.nff --axis map=block,block --out sw
+
 finish
