@@ -170,4 +170,14 @@ refused "cm --map block,block" "'block' is given twice" "${cm[@]:0:3}" --map blo
 refused "sweep --axis map=block,block" "--axis 'map=block,block': 'block' is given twice" \
     "${sweep[@]}" s1.nff --axis map=block,block --out sw
 
+# ---- report compare on a CSV with more fields than its header, a column named twice -------
+mkdir -p old new
+printf 'ips,status,sim_time_s\n1,ok,2\n' >old/fig7.csv
+printf 'ips,status,sim_time_s\n1,ok,2,9\n' >new/fig7.csv
+exits 1 "compare a row with an extra field" "fig7.csv: line 2: 4 fields, the header has 3" \
+    python3 "$EXP/report" compare old new
+printf 'ips,status,sim_time_s,sim_time_s\n1,ok,3,2\n' >new/fig7.csv
+exits 1 "compare a column named twice" "fig7.csv: line 1: the column 'sim_time_s' is named twice" \
+    python3 "$EXP/report" compare old new
+
 finish
