@@ -180,4 +180,16 @@ printf 'ips,status,sim_time_s,sim_time_s\n1,ok,3,2\n' >new/fig7.csv
 exits 1 "compare a column named twice" "fig7.csv: line 1: the column 'sim_time_s' is named twice" \
     python3 "$EXP/report" compare old new
 
+# ---- run_point.sh's command line ----------------------------------------------------------
+refused "run_point no command" "no command after --" "${rp[@]}" --
+check "run_point no command: no log" [ ! -e rp/p.log ]
+refused "run_point ''" "not an empty value" "$EXP/run_point.sh" ''
+echo '{"sim_time_s": "0.5ms"}' >t1.json
+exits 3 "run_point --t1-from a string" "no sim_time_s number" "$EXP/run_point.sh" rp/p.json --t1-from t1.json \
+    -- "$BUILD/torusrt-sim" s1.nff "${small[@]}"
+echo '{"sim_time_s": 0.5}' >t1.json
+refused "run_point --t1 and --t1-from" "give T(1) once" "$EXP/run_point.sh" rp/p.json --t1-from t1.json \
+    -- "$BUILD/torusrt-sim" s1.nff "${small[@]}" --t1 0.4
+check "run_point refusals: no JSON, no log" [ ! -e rp/p.json ] && [ ! -e rp/p.log ]
+
 finish
