@@ -233,22 +233,27 @@ def plan(out, sim, scene, axes, fixed, listing):
         ident = identity(sim, args, cache)
         if is_done(f, ident):
             done += 1
-        tmp = f["json"] + ".tmp"
+        # The temporaries end in .tmp.HOST.PID ($u, set by the point's shell): two sweeps into
+        # one --out, or a point run twice at once, never share one.
+        u = '"$u"'
+        t = shlex.quote(f["json"] + ".tmp") + u
         # A series torusrt-sim would name from --stats gets the point's own name instead (its
         # temporary renamed with the JSON), never one made from the temporary JSON's.
-        series = ["--stats-series", f["series"] + ".tmp"] if has_series(args) else []
-        run = shlex.join([sim] + args + ["-o", f["png"], "--stats", tmp] + series + ["-q"])
-        j, t, i = shlex.quote(f["json"]), shlex.quote(tmp), shlex.quote(f["id"])
-        st, sf = shlex.quote(f["series"] + ".tmp"), shlex.quote(f["series"])
+        st, sf = shlex.quote(f["series"] + ".tmp") + u, shlex.quote(f["series"])
+        series = " --stats-series " + st if has_series(args) else ""
+        run = shlex.join([sim] + args + ["-o", f["png"]]) + " --stats " + t + series + " -q"
+        j, i = shlex.quote(f["json"]), shlex.quote(f["id"])
+        it = shlex.quote(f["id"] + ".tmp") + u
         keep = "{ [ ! -e %s ] || mv %s %s; } && " % (st, st, sf) if series else ""
         drop = " " + st if series else ""
         progress = "echo >&3 %s" % shlex.quote("sweep: [%d/%d] %s" % (k, len(combos), name))
         lines.append(f["json"] + "\t" +
+                     "u=.$(hostname -s 2>/dev/null || echo host).$$; "
                      "{run} >{log} 2>&1; rc=$?; "
                      "if [ $rc -eq 0 ] || {{ [ $rc -eq 3 ] && [ -s {t} ]; }}; then "
-                     "echo {ident} $(sha256sum <{t} | cut -d' ' -f1) >{i}.tmp && mv {i}.tmp {i} && {keep}mv {t} {j}; {p}: "
+                     "echo {ident} $(sha256sum <{t} | cut -d' ' -f1) >{it} && mv {it} {i} && {keep}mv {t} {j}; {p}: "
                      "$([ $rc -eq 0 ] && echo ok || echo deadlock); else rm -f {t}{drop}; {p}: failed; exit $rc; fi".format(
-                         j=j, t=t, i=i, ident=ident, run=run, log=shlex.quote(f["log"]), p=progress,
+                         j=j, t=t, i=i, it=it, ident=ident, run=run, log=shlex.quote(f["log"]), p=progress,
                          keep=keep, drop=drop))
     table = io.StringIO()
     csv.writer(table, delimiter="\t", lineterminator="\n").writerows(rows)

@@ -192,4 +192,14 @@ refused "run_point --t1 and --t1-from" "give T(1) once" "$EXP/run_point.sh" rp/p
     -- "$BUILD/torusrt-sim" s1.nff "${small[@]}" --t1 0.4
 check "run_point refusals: no JSON, no log" [ ! -e rp/p.json ] && [ ! -e rp/p.log ]
 
+# ---- two sweeps into one --out: no shared temporary ---------------------------------------------
+"${run_limited[@]}" "${sweep[@]}" s1.nff --axis ips=1,2 --out two -- "${small[@]}" >two.out 2>two.err </dev/null
+check "sweep for the point list: exit $?" [ -s two/points.list ]
+check "a point's temporaries are per process: $(grep -o 'stats [^ ]*' two/points.list | head -1)" \
+    grep -q -e "ips_1.json.tmp'\\?\"\$u\"" two/points.list
+check "\$u is the host and the process: $(grep -o 'u=[^;]*' two/points.list | head -1)" \
+    grep -q 'u=.$(hostname -s 2>/dev/null || echo host).$$;' two/points.list
+left=(two/points/*.tmp*)
+check "no temporary left: ${left[*]}" [ ! -e "${left[0]}" ]
+
 finish
