@@ -137,21 +137,26 @@ def point_files(out, name):
     return files
 
 
-def is_done(files, ident):
-    """True when the point's JSON is a report made by this identity; a JSON that is not a report,
-    or was made by another executable, scene, input or command line, is removed (with a message)
-    so that the point runs again."""
+def is_done(files, ident, series=False):
+    """True when the point's JSON is a report made by this identity and, unless it deadlocked
+    (a deadlock writes only the JSON), its image (and its series, with SERIES) is there; a JSON
+    that is not a report, was made by another executable, scene, input or command line, or lost
+    its image or series, is removed (with a message) so that the point runs again."""
     if not os.path.exists(files["json"]):
         return False
     why = None
     try:
-        read_report(files["json"])
+        report = read_report(files["json"])
         with open(files["id"]) as f:
             made = f.read().split()
+        kept = [files["png"]] + ([files["series"]] if series else [])
+        gone = [path for path in kept if not os.path.exists(path)] if report["status"] != "deadlock" else []
         if made[:1] != [ident]:
             why = "%s: made by another executable, scene, input file or command line" % files["json"]
         elif made[1:] != [file_hash(files["json"], {})]:
             why = "%s: not the JSON its run wrote (changed since)" % files["json"]
+        elif gone:
+            why = "%s: its run's %s is gone" % (files["json"], gone[0])
     except FileNotFoundError:
         why = "%s: made by another command (no identity file %s)" % (files["json"], files["id"])
     except ValueError as e:
@@ -231,7 +236,7 @@ def plan(out, sim, scene, axes, fixed, listing):
         for n, v in zip(names, values):
             args += ["--" + n, v]
         ident = identity(sim, args, cache)
-        if is_done(f, ident):
+        if is_done(f, ident, has_series(args)):
             done += 1
         # The temporaries end in .tmp.HOST.PID ($u, set by the point's shell): two sweeps into
         # one --out, or a point run twice at once, never share one.

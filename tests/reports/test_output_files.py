@@ -408,6 +408,22 @@ class SweepPoints(Base):
         self.assertEqual(self.is_done(files, "abc"), (True, ""))
         self.assertTrue(os.path.exists(files["json"]))
 
+    def test_a_point_whose_image_or_series_is_gone_runs_again(self):
+        files = self.point(json.dumps(REPORT), self.made(json.dumps(REPORT)))
+        os.remove(files["png"])
+        done, said = self.is_done(files, "abc")
+        self.assertFalse(done)
+        self.assertIn(files["json"] + ": its run's " + files["png"] + " is gone", said)
+        self.assertFalse(os.path.exists(files["json"]))
+        files = self.point(json.dumps(REPORT), self.made(json.dumps(REPORT)))
+        with contextlib.redirect_stderr(io.StringIO()) as said:
+            self.assertFalse(sweep.is_done(files, "abc", series=True), "no series.csv")
+        self.assertIn(files["series"] + " is gone", said.getvalue())
+        stalled = dict(REPORT, status="deadlock")  # a deadlock writes only its JSON
+        files = self.point(json.dumps(stalled), self.made(json.dumps(stalled)))
+        os.remove(files["png"])
+        self.assertEqual(self.is_done(files, "abc"), (True, ""))
+
     def test_a_json_changed_after_its_run_runs_again(self):
         other = dict(REPORT, sim_time_s=0.97511)  # another point's report copied over this one's
         files = self.point(json.dumps(other), self.made(json.dumps(REPORT)))
