@@ -5,8 +5,8 @@ import os
 import subprocess
 import sys
 
-from output_files import (OutputError, OutputSet, WriteError, exit_on_signals, finish_stdout, named_stdout,
-                          nonempty, os_message, out_folder, read_text, shown)
+from output_files import (OutputError, OutputSet, exit_on_signals, finish_stdout, named_stdout, nonempty,
+                          os_message, out_folder, read_text, shown)
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
