@@ -15,6 +15,22 @@ die() { echo "$(basename "$0"): $*" >&2; exit 2; }
 # device refused naming OPTION, exit 2).
 write_file() { python3 "$EXP/output_files.py" "$@"; }
 
+# show_help END: the comment block at the top of the running script, from its second line to the
+# line matching END, as --help prints it; exit 0, or 1 with "SCRIPT: standard output: cannot
+# write: REASON" when standard output cannot take it (a full disk, a closed pipe).
+show_help() {
+    sed -n "2,/$1/p" "$0" | sed '$d; s/^# \{0,1\}//' | python3 "$EXP/output_files.py" --stdout "$(basename "$0")"
+    exit $?
+}
+
+# make_folder OPTION DIR: DIR made (with its parents) for OPTION's results; a DIR that is a file,
+# or a parent that is one, ends the command (exit 2) naming OPTION, before anything is written.
+make_folder() {
+    local err
+    [ ! -e "$2" ] || [ -d "$2" ] || die "$1 '$2': is a file, not a folder"
+    err=$(mkdir -p -- "$2" 2>&1) || die "$1 '$2': cannot make the folder: ${err##*: }"
+}
+
 # set_build DIR: make BUILD absolute and check the simulator is there.
 set_build() {
     [ -d "$1" ] || die "build folder '$1' does not exist (configure and build first, or pass --build / TORUSRT_BUILD)"
@@ -198,7 +214,7 @@ study_args() {
         if backend_option "$@"; then shift "$SHIFT"; continue; fi
         case $1 in
             --build) [ $# -ge 2 ] || die "--build needs a folder"; BUILD=$2; shift 2 ;;
-            -h|--help) sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
+            -h|--help) show_help '^set -euo' ;;
             -*) die "unknown option '$1' (see --help)" ;;
             *) positional+=("$1"); shift ;;
         esac

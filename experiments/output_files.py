@@ -127,9 +127,20 @@ def _temporary(real):
     return fd, tmp
 
 
+class WriteError(OSError):
+    """A write that failed (a full disk, a closed pipe): `FILE: cannot write: REASON`, exit 1."""
+
+
+def os_message(e):
+    """An OSError as `FILE: REASON` (no errno number), as the executables name a file."""
+    if isinstance(e, OSError) and e.strerror and str(e).startswith("["):
+        return "%s: %s" % (shown(os.fsdecode(e.filename)), e.strerror) if e.filename is not None else e.strerror
+    return str(e)
+
+
 def _cannot_write(shown, e):
     """`SHOWN: cannot write: REASON`, the executables' form (no errno number in front)."""
-    return OSError("%s: cannot write: %s" % (shown, e.strerror or e))
+    return WriteError("%s: cannot write: %s" % (shown, e.strerror or e))
 
 
 def _replace(tmp, real, shown):
@@ -145,17 +156,20 @@ class _Named:
     def __init__(self, f, shown):
         self._f, self._shown = f, shown
 
+    def _failed(self, e):
+        return _cannot_write(self._shown, e)
+
     def write(self, data):
         try:
             return self._f.write(data)
         except OSError as e:
-            raise _cannot_write(self._shown, e) from None
+            raise self._failed(e) from None
 
     def flush(self):
         try:
             self._f.flush()
         except OSError as e:
-            raise _cannot_write(self._shown, e) from None
+            raise self._failed(e) from None
 
     def __getattr__(self, name):
         return getattr(self._f, name)
@@ -199,7 +213,7 @@ def staged(path, option="output"):
     try:
         yield tmp
         if os.path.getsize(tmp) == 0:
-            raise OSError("%s: cannot write: the program wrote nothing" % path)
+            raise WriteError("%s: cannot write: the program wrote nothing" % path)
         _replace(tmp, real, path)
     except BaseException:
         with contextlib.suppress(OSError):
@@ -315,24 +329,129 @@ OUTPUT_OPTIONS = ("-o", "--output", "--stats", "--stats-series", "--vcd", "--wri
                   "--frames-csv", "--cost-image")
 
 
-def output_options(words):
-    """The output options among WORDS (OPTION or OPTION=FILE), in order."""
-    return [w.partition("=")[0] for w in words
-            if w.partition("=")[0] in OUTPUT_OPTIONS and (w.startswith("--") or w == "-o")]
+def _short_output(word):
+    """The value of -o in a word of short options (-o, -oFILE, -qoFILE: CLI11 reads -o glued to
+    its value, after flags): '' when the value is the next word, None when WORD has no -o."""
+    if not word.startswith("-") or word.startswith("--") or len(word) < 2:
+        return None
+    cluster = word[1:]
+    flags = cluster.partition("o")[0]
+    if "o" not in cluster or any(c not in "qh" for c in flags):
+        return None
+    return cluster[len(flags) + 1:]
 
 
 def output_values(words):
-    """(option, file) of each output option among WORDS (OPTION FILE or OPTION=FILE), in order."""
+    """(option, file) of each output option among WORDS (OPTION FILE, OPTION=FILE, or -o glued
+    to its file as -oFILE), in order; FILE is None when OPTION is the last word."""
     found = []
     for i, word in enumerate(words):
         option, eq, value = word.partition("=")
-        if option not in OUTPUT_OPTIONS or not (word.startswith("--") or option == "-o"):
+        glued = _short_output(word)
+        if glued is not None:
+            option, eq, value = "-o", glued, glued
+        elif option not in OUTPUT_OPTIONS or not word.startswith("--"):
             continue
-        if eq and option != "-o":
+        if eq:
             found.append((option, value))
-        elif not eq and i + 1 < len(words):
-            found.append((option, words[i + 1]))
+        else:
+            found.append((option, words[i + 1] if i + 1 < len(words) else None))
     return found
+
+
+def output_options(words):
+    """The output options among WORDS (OPTION, OPTION=FILE or -oFILE), in order."""
+    return [option for option, _ in output_values(words)]
+
+
+# Options after which a command runs nothing a point can use: it prints and ends (help, version,
+# the machine file), so every point of a sweep or compare-mappings would fail alike.
+NO_RUN_OPTIONS = ("--help", "--version", "--dump-config")
+# Options that make a run an animation: its -o is a frame pattern and its report per frame, which
+# the sweep's and compare-mappings' one image per run cannot hold.
+ANIMATION_OPTIONS = ("--frames", "--orbit", "--camera-path", "--motion")
+
+
+def unusable_option(words, refused=NO_RUN_OPTIONS):
+    """The first of REFUSED (or -h, --help's short form, also among other short flags) among
+    WORDS as OPTION or OPTION=VALUE; None when there is none."""
+    for word in words:
+        option = word.partition("=")[0]
+        if option in refused and word.startswith("--"):
+            return option
+        if "--help" in refused and word.startswith("-") and not word.startswith("--"):
+            flags = word[1:].partition("o")[0]
+            if "h" in flags and all(c in "qh" for c in flags):
+                return "-h"
+    return None
+
+
+def nonempty(text):
+    """An argparse type: TEXT, refused (exit 2, the option named by argparse) when it is empty,
+    as the executables refuse an empty value."""
+    if text == "":
+        import argparse
+        raise argparse.ArgumentTypeError("an empty value")
+    return text
+
+
+def list_values(option, text, given=None):
+    """The comma-separated values of OPTION's TEXT ('block,cyclic'); ValueError naming OPTION and
+    what was GIVEN (default TEXT) when TEXT is empty, a value is empty (',,' or a trailing comma)
+    or a value is given twice."""
+    what = "%s '%s'" % (option, shown(text if given is None else given))
+    items = text.split(",")
+    if "" in items:
+        raise ValueError("%s: an empty value (value %d); write each value once, between commas"
+                         % (what, items.index("") + 1))
+    for i, item in enumerate(items):
+        if item in items[:i]:
+            raise ValueError("%s: '%s' is given twice; write each value once" % (what, shown(item)))
+    return items
+
+
+def out_folder(option, path, inputs=()):
+    """Checks the folder PATH a command writes into (made if it does not exist) before anything is
+    made: OutputError naming OPTION when PATH is empty, or exists and is not a folder (naming
+    the input of INPUTS, (option, path) pairs, that it is)."""
+    if not path:
+        raise OutputError("%s: an empty value (name a folder)" % option)
+    if os.path.exists(path) and not os.path.isdir(path):
+        key = _identity(path)
+        for what, input_path in inputs:
+            if key is not None and _identity(input_path) == key:
+                raise OutputError("%s '%s': is the %s file %s, an input, not a folder"
+                                  % (option, shown(path), what, shown(input_path)))
+        raise OutputError("%s '%s': is a file, not a folder" % (option, shown(path)))
+    return os.path.abspath(path)
+
+
+class _Stdout(_Named):
+    """Standard output whose failed writes raise `standard output: cannot write: REASON`; after
+    one, further output goes to /dev/null, so that the exit flush adds no second report."""
+
+    def __init__(self, f):
+        super().__init__(f, "standard output")
+
+    def _failed(self, e):
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, self._f.fileno())
+        os.close(devnull)
+        return _cannot_write(self._shown, e)
+
+
+def named_stdout():
+    """Makes sys.stdout report a failed write (a full disk, a closed pipe) as an OSError
+    `standard output: cannot write: REASON`; call finish_stdout() before the exit status is
+    chosen so that a failure at the last flush is reported too."""
+    import sys
+    if not isinstance(sys.stdout, _Stdout):
+        sys.stdout = _Stdout(sys.stdout)
+
+
+def finish_stdout():
+    import sys
+    sys.stdout.flush()
 
 
 def machine_file_inputs(path):
@@ -396,7 +515,12 @@ def check_point_command(outs, command):
     run_point.sh gives it, or an output option naming one of OUTS (the point's JSON, image, log
     and series): the run would write over the point's own files."""
     mine = {os.path.realpath(path): path for path in outs}
+    unusable = unusable_option(command)
+    if unusable:
+        raise OutputError("%s in the command: torusrt-sim would print and end without a run, and the point "
+                          "would fail" % unusable)
     for option, value in output_values(command):
+        value = value or ""
         if option in POINT_OPTIONS:
             raise OutputError("%s '%s': run_point.sh gives each point's -o and --stats itself "
                               "(OUT.json, OUT.png)" % (option, value))
@@ -426,12 +550,29 @@ def check_outputs(argv):
     return 0
 
 
+def copy_to_stdout(prog):
+    """`output_files.py --stdout PROG`: standard input onto standard output, for the shell tools'
+    --help: exit 1 with `PROG: standard output: cannot write: REASON` when it cannot be written."""
+    import sys
+    named_stdout()
+    try:
+        sys.stdout.write(sys.stdin.read())
+        finish_stdout()
+    except OSError as e:
+        print("%s: %s" % (prog, e), file=sys.stderr)
+        return 1
+    return 0
+
+
 def main(argv):
     """`python3 output_files.py FILE [OPTION]`: standard input into FILE under these rules, for
-    the shell scripts (exit 2 when FILE is refused, naming OPTION; 1 when the write fails)."""
+    the shell scripts (exit 2 when FILE is refused, naming OPTION; 1 when the write fails);
+    --check-outputs and --stdout: see check_outputs() and copy_to_stdout()."""
     import sys
     if argv[:1] == ["--check-outputs"]:
         return check_outputs(argv[1:])
+    if argv[:1] == ["--stdout"] and len(argv) == 2:
+        return copy_to_stdout(argv[1])
     if len(argv) not in (1, 2):
         print("usage: output_files.py FILE [OPTION] < TEXT", file=sys.stderr)
         return 2

@@ -28,7 +28,7 @@ while [ $# -gt 0 ]; do
         --tsv) tsv=1; shift ;;
         --no-clusters) clusters=0; shift ;;
         --reading) reading=$2; shift 2 ;;
-        -h|--help) sed -n '2,/^set -e/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
+        -h|--help) show_help '^set -e' ;;
         -*) die "unknown option '$1'" ;;
         *) break ;;
     esac

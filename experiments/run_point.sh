@@ -13,10 +13,15 @@
 # OUT.log or OUT.series.csv, or any of them naming a file of the command (the scene, a --timing
 # file, a file a --config machine file names), is refused (exit 2) before the command runs, and
 # so is a command that gives -o or --stats itself or whose output option (--vcd, --stats-series,
-# ...) names one of these files. T1.json must be a regular file of at most 64 MiB: a FIFO, a
-# device or a folder is refused (exit 2, naming --t1-from) before it is read.
+# ...) names one of these files, or that gives --help, --version or --dump-config (-h, -oFILE
+# and --stats=FILE are seen too). T1.json must be a regular file of at most 64 MiB: a FIFO, a
+# device or a folder is refused (exit 2, naming --t1-from) before it is read; its sim_time_s
+# must be a number (else exit 3, as when it has none), and the command may not give --t1 too
+# (exit 2). An empty OUT.json or no command after -- is a usage error (exit 2).
 set -uo pipefail
-out=${1:?usage: run_point.sh OUT.json [--t1-from T1.json] -- COMMAND...}
+usage="usage: run_point.sh OUT.json [--t1-from T1.json] -- COMMAND..."
+[ $# -ge 1 ] && [ -n "$1" ] || { echo "run_point: $usage (OUT.json: not an empty value)" >&2; exit 2; }
+out=$1
 shift
 t1args=()
 t1_max_bytes=$((64 << 20))  # a point's JSON is a few MiB at most; jq holds it whole
@@ -32,14 +37,23 @@ if [ "${1:-}" = --t1-from ]; then
         echo "run_point: --t1-from '$t1json': larger than 64 MiB, not a point's JSON" >&2
         exit 2
     fi
-    if ! t1=$(jq -er '.sim_time_s' "$t1json" 2>/dev/null); then
-        echo "run_point: $out: no T(1) in $t1json (run the phase-1 points first)" >&2
+    # A number only: a string ("0.5ms") would reach torusrt-sim as --t1 0.5ms.
+    if ! t1=$(jq -er '.sim_time_s | numbers' "$t1json" 2>/dev/null); then
+        echo "run_point: $out: no T(1) in $t1json (no sim_time_s number in it; run the phase-1 points first)" >&2
         exit 3
     fi
     t1args=(--t1 "$t1")
 fi
 [ "${1:-}" = -- ] || { echo "run_point: expected -- before the command" >&2; exit 2; }
 shift
+[ $# -ge 1 ] && [ -n "$1" ] || { echo "run_point: no command after -- ($usage)" >&2; exit 2; }
+if [ ${#t1args[@]} -gt 0 ]; then
+    for word in "$@"; do
+        case $word in
+            --t1 | --t1=*) echo "run_point: --t1 in the command and --t1-from: give T(1) once" >&2; exit 2 ;;
+        esac
+    done
+fi
 dir=$(dirname "$out")
 base=$(basename "$out" .json)
 mkdir -p "$dir"

@@ -44,7 +44,7 @@ while [ $# -gt 0 ]; do
         --doc) doc=$2; shift 2 ;;
         --no-report) report=0; shift ;;
         --no-clusters) popt+=(--no-clusters); shift ;;
-        -h|--help) sed -n '2,/^set -uo/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
+        -h|--help) show_help '^set -uo' ;;
         *) backend_option "$@" || die "unknown argument '$1' (see --help)"; shift "$SHIFT" ;;
     esac
 done
@@ -53,7 +53,7 @@ set_build "$build"
 [ -x "$SIM" ] || die "$SIM not found: build it first (cmake --build BUILD --target torusrt-sim)"
 command -v jq >/dev/null || die "jq is required"
 [ -n "$results" ] || results=$EXP/results$([ "$mode" = quick ] && echo -quick)
-mkdir -p "$results"
+make_folder --results "$results"
 RES=$(cd "$results" && pwd)
 if [ -z "$doc" ]; then
     if [ "$mode" = full ]; then doc=$REPO/docs/reproduction.md; else doc=$RES/reproduction.md; fi

@@ -7,7 +7,8 @@ import signal
 import sys
 import time
 
-from output_files import OutputError, OutputSet, append_text, input_file, write_lines
+from output_files import (OutputError, OutputSet, WriteError, append_text, finish_stdout, input_file,  # noqa: E501
+                          named_stdout, nonempty, os_message, out_folder, write_lines)
 
 from . import local, points, slurm, task
 
@@ -86,7 +87,7 @@ def run(args):
             outs.add_input("point list", f)
         outs.add("--runs", args.runs)
         outs.check()
-    state = os.path.abspath(args.state)
+    state = out_folder("--state", args.state, [("point list", f) for f in args.lists])
     os.makedirs(os.path.join(state, "logs"), exist_ok=True)
     phases = [points.read(os.path.abspath(f)) for f in args.lists]
     points.assign_logs(phases, os.path.join(state, "logs"))
@@ -128,34 +129,41 @@ def main(argv):
     parser = argparse.ArgumentParser(prog="experiments/backend", description=__doc__)
     sub = parser.add_subparsers(dest="command", required=True)
     p = sub.add_parser("run", help="run point lists (one per phase, in order): DONE-FILE<TAB>COMMAND per line")
-    p.add_argument("lists", nargs="+", metavar="LIST")
-    p.add_argument("--state", required=True, help="folder for the run's todo lists, joblogs, logs, Slurm output")
-    p.add_argument("--backend", default="local", help="local (default), ssh:HOSTFILE or slurm")
+    p.add_argument("lists", nargs="+", metavar="LIST", type=nonempty)
+    p.add_argument("--state", required=True, type=nonempty,
+                   help="folder for the run's todo lists, joblogs, logs, Slurm output")
+    p.add_argument("--backend", default="local", type=nonempty, help="local (default), ssh:HOSTFILE or slurm")
     p.add_argument("-j", "--jobs", type=positive, default=None, help="points in flight (default: local one per "
                    "core, ssh per machine as the sshlogin file says, slurm unlimited); at most the points of the "
                    "largest phase and %d" % MAX_JOBS)
     p.add_argument("--slurm-args", default="", help="more sbatch options, e.g. \"--partition=short --time=0:20:00\"")
     p.add_argument("--per-task", type=positive, default=4, help="points per Slurm array task (default 4)")
-    p.add_argument("--name", default="torusrt", help="the Slurm job name's prefix")
-    p.add_argument("--runs", help="append one line about this run to this TSV file")
+    p.add_argument("--name", default="torusrt", type=nonempty, help="the Slurm job name's prefix")
+    p.add_argument("--runs", type=nonempty, help="append one line about this run to this TSV file")
     p.add_argument("--label", default="", help="the mode column of that line")
     p.set_defaults(run=run)
     p = sub.add_parser("task", help="(inside a Slurm array task) run this task's lines of a todo list")
-    p.add_argument("todo")
+    p.add_argument("todo", type=nonempty)
     p.add_argument("per_task", type=int)
     p.add_argument("rcdir")
     p.set_defaults(run=lambda a: task.run(a.todo, a.per_task, a.rcdir))
     args = parser.parse_args(argv)
     signal.signal(signal.SIGTERM, interrupted)
     signal.signal(signal.SIGINT, signal.default_int_handler)  # even where the shell started us ignoring it
+    named_stdout()  # a full disk or a closed pipe on standard output: named, exit 1
     try:
-        return args.run(args)
+        status = args.run(args)
+        finish_stdout()
+        return status
     except KeyboardInterrupt:
         print("experiments/backend: interrupted", file=sys.stderr)
         return 130
     except OutputError as e:
         print("experiments/backend: %s" % e, file=sys.stderr)
         return 2
-    except (OSError, ValueError, RuntimeError) as e:
+    except WriteError as e:  # the run's own records or standard output: nothing more can be said
         print("experiments/backend: %s" % e, file=sys.stderr)
+        return 1
+    except (OSError, ValueError, RuntimeError) as e:
+        print("experiments/backend: %s" % os_message(e), file=sys.stderr)
         return 2

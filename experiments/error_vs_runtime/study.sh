@@ -44,7 +44,7 @@ while [ $# -gt 0 ]; do
     --reps) REPS=$2; shift 2 ;;
     --only) ONLY=$2; shift 2 ;;
     --quick) QUICK=1; shift ;;
-    -h|--help) sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) show_help '^set -euo' ;;
     *) die "unknown option $1 (see --help)" ;;
   esac
 done
@@ -68,7 +68,7 @@ if [ "$QUICK" = 1 ]; then
 else
   [ -n "$REPS" ] && qargs=(--reps "$REPS") && pargs=(--reps "$REPS")
 fi
-mkdir -p "$RESULTS/points"
+make_folder --results "$RESULTS" && mkdir -p "$RESULTS/points"
 RESULTS=$(cd "$RESULTS" && pwd)
 work=$RESULTS/points
 # point_line STEP CSV ARGS...: one line of a point list: done when CSV exists.

@@ -44,7 +44,7 @@ while [ $# -gt 0 ]; do
         --results) res=$2; shift 2 ;;
         --smoke) smoke=--smoke; shift ;;
         --stage) [ "$2" = 1 ] || die "--stage takes 1 (stage 1 alone), not '$2'"; only=1; shift 2 ;;
-        -h|--help) sed -n '2,/^set -e/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
+        -h|--help) show_help '^set -e' ;;
         *) die "unknown argument '$1' (see --help)" ;;
     esac
 done
@@ -55,7 +55,7 @@ sim=$build/torusrt-sim render=$build/torusrt-render gen=$build/torusrt-genscenes
 cap=${TORUSRT_STUDY_CAP_S:-1800}
 [[ $cap =~ ^[0-9]+$ ]] || die "TORUSRT_STUDY_CAP_S must be a whole number of seconds, not '$cap'"
 [ -z "$smoke" ] || [ "$res" != "$here/results" ] || res=$here/results-smoke
-mkdir -p "$res"
+make_folder --results "$res"
 res=$(cd "$res" && pwd) runs=$res/runs
 # A results folder holds one mode's runs (their sizes differ under the same names).
 want=${smoke:+smoke}; want=${want:-full}

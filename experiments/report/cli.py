@@ -5,7 +5,8 @@ import os
 import subprocess
 import sys
 
-from output_files import OutputError, OutputSet, exit_on_signals, read_text, shown
+from output_files import (OutputError, OutputSet, exit_on_signals, finish_stdout, named_stdout, nonempty,
+                          os_message, out_folder, read_text, shown)
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
@@ -87,8 +88,7 @@ def sweep_plan(args):
         raise ValueError("each --axis option may be given once")
     fixed = args.fixed[1:] if args.fixed[:1] == ["--"] else args.fixed
     sweep.check_fixed(fixed)  # before --out is made
-    out = os.path.abspath(args.out)
-    os.makedirs(out, exist_ok=True)
+    out = out_folder("--out", args.out, [("scene", args.scene)] + sweep.named_files(fixed))
     total, done = sweep.plan(out, args.sim, args.scene, axes, fixed, os.path.join(out, "points.list"))
     print("sweep: %d points (%d done before), results in %s" % (total, done, out))
     return 0
@@ -106,8 +106,9 @@ def sweep_collect(args):
 
 
 def compare(args):
+    from output_files import list_values
     from . import compare as comparelib
-    columns = [c for c in args.columns.split(",") if c] if args.columns else None
+    columns = list_values("--columns", args.columns) if args.columns else None
     rows, diffs = comparelib.compare(os.path.abspath(args.old), os.path.abspath(args.new), columns)
     for line in diffs:
         print(line)
@@ -115,13 +116,17 @@ def compare(args):
     return 1 if diffs else 0
 
 
-def machine_as_run_reads_it(path, build):
+def machine_as_run_reads_it(path, build, given):
     """{key: value} of the machine file PATH as torusrt-sim reads it: every key, the defaults of
     those it leaves out, each value as a run writes it (`ips="2"` is `2x1x1`), from
-    `torusrt-sim --dump-config --config PATH`; None when BUILD holds no torusrt-sim."""
+    `torusrt-sim --dump-config --config PATH`; None when the default BUILD holds no torusrt-sim,
+    OutputError (exit 2) when the --build the user GIVEN holds none."""
     from . import machine_file as mf
     sim = os.path.join(build, "torusrt-sim")
     if not os.access(sim, os.X_OK):
+        if given:
+            raise OutputError("--build '%s': no torusrt-sim in it (build first, or name the build folder)"
+                              % shown(build))
         return None
     done = subprocess.run([sim, "--dump-config", "--config", path], stdin=subprocess.DEVNULL,
                           capture_output=True, text=True, errors="replace")
@@ -148,10 +153,12 @@ def machine(args):
         return 0
     # The file's syntax first (its own lines named), then its machine as a run reads it.
     written = mf.read_machine_file(read_text(args.compare, "--compare"), shown(args.compare))
-    values = machine_as_run_reads_it(args.compare, args.build)
+    given = args.build is not None
+    build = args.build if given else os.environ.get("TORUSRT_BUILD") or os.path.join(REPO, "build")
+    values = machine_as_run_reads_it(args.compare, build, given)
     if values is None:
         print("machine: no torusrt-sim in %s (--build): keys compared as written, without the defaults of the "
-              "keys the file leaves out" % shown(args.build), file=sys.stderr)
+              "keys the file leaves out" % shown(build), file=sys.stderr)
         values = written
     diff = mf.differences(pairs, values)
     for line in diff:
@@ -200,27 +207,34 @@ def main(argv):
     p.set_defaults(run=sweep_collect)
     p = sub.add_parser("compare", help="the same points of two sweeps must report the same values "
                                        "(every column but wall_s); exit 1 on any difference")
-    p.add_argument("old", help="a results folder (fig*.csv, in profile subfolders or not)")
-    p.add_argument("new", help="the results folder to hold against it")
-    p.add_argument("--columns", default="", help="compare only these columns (comma-separated)")
+    p.add_argument("old", type=nonempty, help="a results folder (fig*.csv, in profile subfolders or not)")
+    p.add_argument("new", type=nonempty, help="the results folder to hold against it")
+    p.add_argument("--columns", default=None, type=nonempty, help="compare only these columns (comma-separated)")
     p.set_defaults(run=compare)
     p = sub.add_parser("machine", help="the machine file (torusrt-sim --config) of a JSON report's config.options")
-    p.add_argument("report")
-    p.add_argument("--compare", metavar="M.toml", help="compare with this machine file key by key instead, as "
-                                                       "torusrt-sim reads it (the defaults of the keys it leaves out)")
-    p.add_argument("--build", default=os.environ.get("TORUSRT_BUILD", os.path.join(REPO, "build")),
+    p.add_argument("report", type=nonempty)
+    p.add_argument("--compare", metavar="M.toml", type=nonempty,
+                   help="compare with this machine file key by key instead, as torusrt-sim reads it (the defaults "
+                        "of the keys it leaves out)")
+    p.add_argument("--build", type=nonempty,
                    help="the build folder whose torusrt-sim reads the --compare file (default $TORUSRT_BUILD, "
-                        "else build/)")
+                        "else build/); one given must hold torusrt-sim (exit 2)")
     p.set_defaults(run=machine)
     from . import fidelity
     fidelity.add_commands(sub)
     args = parser.parse_args(argv)
     prog = "sweep" if args.command.startswith("sweep-") else "experiments/report"  # the command the user ran
+    named_stdout()  # a full disk or a closed pipe on standard output: named, exit 1
     try:
-        return args.run(args)
+        status = args.run(args)
+        finish_stdout()
+        return status
     except OutputError as e:  # an output refused before anything was written: the command line's fault
         print("%s: %s" % (prog, shown(e, backslash=False)), file=sys.stderr)
         return 2
-    except (OSError, ValueError, KeyError, subprocess.CalledProcessError) as e:
+    except ValueError as e:
         print("%s: %s" % (prog, shown(e, backslash=False)), file=sys.stderr)
+        return 2 if args.command == "sweep-plan" else 1  # the sweep's command line, checked before any run
+    except (OSError, KeyError, subprocess.CalledProcessError) as e:
+        print("%s: %s" % (prog, shown(os_message(e), backslash=False)), file=sys.stderr)
         return 1

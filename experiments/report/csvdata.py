@@ -2,7 +2,7 @@
 import csv
 import io
 
-from output_files import read_text
+from output_files import read_text, shown
 
 
 class Table:
@@ -16,10 +16,20 @@ class Table:
     @classmethod
     def load(cls, path):
         """The table of the CSV file PATH; OSError or ValueError naming PATH when it is not a
-        regular file or not UTF-8 text."""
+        regular file or not UTF-8 text, and ValueError naming PATH and the line when the header
+        names a column twice or a row has more fields than the header."""
         reader = csv.DictReader(io.StringIO(read_text(path, "CSV"), newline=""))
-        rows = list(reader)
-        return cls(rows, list(reader.fieldnames or []), path)
+        columns = list(reader.fieldnames or [])
+        for i, name in enumerate(columns):  # the last of two would silently win
+            if name in columns[:i]:
+                raise ValueError("%s: line 1: the column '%s' is named twice" % (shown(path), shown(name)))
+        rows = []
+        for row in reader:
+            if None in row:  # more fields than the header: the extra ones would be dropped unseen
+                raise ValueError("%s: line %d: %d fields, the header has %d"
+                                 % (shown(path), reader.line_num, len(columns) + len(row[None]), len(columns)))
+            rows.append(row)
+        return cls(rows, columns, path)
 
     def where(self, ok_only=True, **match):
         """Rows whose columns equal the given values (compared as text); only status ok rows

@@ -15,7 +15,10 @@ import tomllib
 def from_report(report):
     """The (key, value) pairs of a report's machine, in --dump-config's order (config.option_order;
     keys it does not list after them, in the report's order)."""
-    options = report.get("config", {}).get("options")
+    config = report.get("config", {})
+    if not isinstance(config, dict):
+        raise ValueError("config: %s, not an object" % json.dumps(config))
+    options = config.get("options")
     if not isinstance(options, dict):
         raise ValueError("the report has no config.options (written by torusrt-sim 0.1.0 and later)")
     order = report["config"].get("option_order", [])
@@ -45,7 +48,10 @@ def toml_string(value):
 
 def tables_from_report(report):
     """{key: table} of a report's machine (config.option_tables); {} for a report without it."""
-    tables = report.get("config", {}).get("option_tables", {})
+    config = report.get("config", {})
+    if not isinstance(config, dict):
+        raise ValueError("config: %s, not an object" % json.dumps(config))
+    tables = config.get("option_tables", {})
     if not isinstance(tables, dict) or not all(isinstance(t, str) for t in tables.values()):
         raise ValueError("config.option_tables: not an object of table names")
     return tables

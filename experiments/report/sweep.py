@@ -12,7 +12,8 @@ import shlex
 import subprocess
 import sys
 
-from output_files import OUTPUT_OPTIONS, OutputSet, atomic, named_files, output_options, read_text, write_lines, write_text
+from output_files import (ANIMATION_OPTIONS, NO_RUN_OPTIONS, OUTPUT_OPTIONS, OutputSet, atomic, list_values,
+                          named_files, output_options, read_text, unusable_option, write_lines, write_text)
 
 from .plots import gnuplot, write_dat
 
@@ -43,14 +44,13 @@ def parse_axis(text):
     """'ips=1,2,4x2x2' -> ('ips', ['1', '2', '4x2x2'])."""
     name, sep, values = text.partition("=")
     name = name.lstrip("-")
-    items = values.split(",")
     if not sep or not re.fullmatch(r"[a-z0-9][a-z0-9-]*", name) or not values:
         raise ValueError("--axis '%s': expected OPTION=v1,v2,... (an option of torusrt-sim without its dashes)" % text)
-    if "" in items:
-        raise ValueError("--axis '%s': an empty value (value %d); write each value once, between commas"
-                         % (text, items.index("") + 1))
+    items = list_values("--axis", values, text)
     if "--" + name in OUTPUT_OPTIONS:
         raise ValueError("--axis '%s': --%s is an output; the sweep writes each point's files itself" % (text, name))
+    if "--" + name in NO_RUN_OPTIONS + ANIMATION_OPTIONS:
+        raise ValueError("--axis '%s': %s" % (text, UNSWEPT % ("--" + name)))
     return name, items
 
 
@@ -137,21 +137,26 @@ def point_files(out, name):
     return files
 
 
-def is_done(files, ident):
-    """True when the point's JSON is a report made by this identity; a JSON that is not a report,
-    or was made by another executable, scene, input or command line, is removed (with a message)
-    so that the point runs again."""
+def is_done(files, ident, series=False):
+    """True when the point's JSON is a report made by this identity and, unless it deadlocked
+    (a deadlock writes only the JSON), its image (and its series, with SERIES) is there; a JSON
+    that is not a report, was made by another executable, scene, input or command line, or lost
+    its image or series, is removed (with a message) so that the point runs again."""
     if not os.path.exists(files["json"]):
         return False
     why = None
     try:
-        read_report(files["json"])
+        report = read_report(files["json"])
         with open(files["id"]) as f:
             made = f.read().split()
+        kept = [files["png"]] + ([files["series"]] if series else [])
+        gone = [path for path in kept if not os.path.exists(path)] if report["status"] != "deadlock" else []
         if made[:1] != [ident]:
             why = "%s: made by another executable, scene, input file or command line" % files["json"]
         elif made[1:] != [file_hash(files["json"], {})]:
             why = "%s: not the JSON its run wrote (changed since)" % files["json"]
+        elif gone:
+            why = "%s: its run's %s is gone" % (files["json"], gone[0])
     except FileNotFoundError:
         why = "%s: made by another command (no identity file %s)" % (files["json"], files["id"])
     except ValueError as e:
@@ -170,13 +175,22 @@ def has_series(args):
     return any(w.partition("=")[0] == "--stats-interval" for w in args)
 
 
+# Why an option of NO_RUN_OPTIONS or ANIMATION_OPTIONS cannot be given to every point.
+UNSWEPT = ("%s: every point would fail (help, the version and --dump-config print and run nothing; an "
+           "animation's -o is a frame pattern, and a sweep point is one image)")
+
+
 def check_fixed(fixed):
-    """ValueError naming the first output option among the fixed options (-o, --stats,
-    --stats-series, --vcd, ...): every point would write it into one file."""
+    """ValueError naming the first output option among the fixed options (-o, -oFILE, --stats,
+    --stats-series, --vcd, ...): every point would write it into one file; or an option that
+    makes every point fail (--help, --version, --dump-config, an animation's)."""
     written = output_options(fixed)
     if written:
         raise ValueError("%s among the fixed options: every point would write it into one file; the sweep "
                          "writes each point's image, JSON and series itself (DIR/points/)" % written[0])
+    unusable = unusable_option(fixed, NO_RUN_OPTIONS + ANIMATION_OPTIONS)
+    if unusable:
+        raise ValueError("%s among the fixed options: %s" % (unusable, UNSWEPT % unusable))
 
 
 def plan(out, sim, scene, axes, fixed, listing):
@@ -202,14 +216,14 @@ def plan(out, sim, scene, axes, fixed, listing):
     for option, path in named_files(words):
         outs.add_input(option, path)
     files = [point_files(out, point_name(names, values)) for values in combos]
-    for name in (PLAN, "points.list", "sweep.csv", "sweep.png"):
-        outs.add("--out", os.path.join(out, name))
     points = os.path.join(out, "points")
-    if os.path.isdir(points):  # a new folder holds nothing to check
+    if os.path.isdir(out):  # a new folder holds nothing to check, and is made after the checks
+        for name in (PLAN, "points.list", "sweep.csv", "sweep.png", FACTS):
+            outs.add("--out", os.path.join(out, name))
+    if os.path.isdir(points):
         for f in files:
             for ext in ("json", "png", "log", "id", "series"):
                 f[ext] = outs.add("--out", f[ext])
-    outs.add("--out", os.path.join(out, FACTS))
     outs.check()
     dry_run(sim, scene, names, combos[0], fixed)
     os.makedirs(points, exist_ok=True)
@@ -222,24 +236,29 @@ def plan(out, sim, scene, axes, fixed, listing):
         for n, v in zip(names, values):
             args += ["--" + n, v]
         ident = identity(sim, args, cache)
-        if is_done(f, ident):
+        if is_done(f, ident, has_series(args)):
             done += 1
-        tmp = f["json"] + ".tmp"
+        # The temporaries end in .tmp.HOST.PID ($u, set by the point's shell): two sweeps into
+        # one --out, or a point run twice at once, never share one.
+        u = '"$u"'
+        t = shlex.quote(f["json"] + ".tmp") + u
         # A series torusrt-sim would name from --stats gets the point's own name instead (its
         # temporary renamed with the JSON), never one made from the temporary JSON's.
-        series = ["--stats-series", f["series"] + ".tmp"] if has_series(args) else []
-        run = shlex.join([sim] + args + ["-o", f["png"], "--stats", tmp] + series + ["-q"])
-        j, t, i = shlex.quote(f["json"]), shlex.quote(tmp), shlex.quote(f["id"])
-        st, sf = shlex.quote(f["series"] + ".tmp"), shlex.quote(f["series"])
+        st, sf = shlex.quote(f["series"] + ".tmp") + u, shlex.quote(f["series"])
+        series = " --stats-series " + st if has_series(args) else ""
+        run = shlex.join([sim] + args + ["-o", f["png"]]) + " --stats " + t + series + " -q"
+        j, i = shlex.quote(f["json"]), shlex.quote(f["id"])
+        it = shlex.quote(f["id"] + ".tmp") + u
         keep = "{ [ ! -e %s ] || mv %s %s; } && " % (st, st, sf) if series else ""
         drop = " " + st if series else ""
         progress = "echo >&3 %s" % shlex.quote("sweep: [%d/%d] %s" % (k, len(combos), name))
         lines.append(f["json"] + "\t" +
+                     "u=.$(hostname -s 2>/dev/null || echo host).$$; "
                      "{run} >{log} 2>&1; rc=$?; "
                      "if [ $rc -eq 0 ] || {{ [ $rc -eq 3 ] && [ -s {t} ]; }}; then "
-                     "echo {ident} $(sha256sum <{t} | cut -d' ' -f1) >{i}.tmp && mv {i}.tmp {i} && {keep}mv {t} {j}; {p}: "
+                     "echo {ident} $(sha256sum <{t} | cut -d' ' -f1) >{it} && mv {it} {i} && {keep}mv {t} {j}; {p}: "
                      "$([ $rc -eq 0 ] && echo ok || echo deadlock); else rm -f {t}{drop}; {p}: failed; exit $rc; fi".format(
-                         j=j, t=t, i=i, ident=ident, run=run, log=shlex.quote(f["log"]), p=progress,
+                         j=j, t=t, i=i, it=it, ident=ident, run=run, log=shlex.quote(f["log"]), p=progress,
                          keep=keep, drop=drop))
     table = io.StringIO()
     csv.writer(table, delimiter="\t", lineterminator="\n").writerows(rows)

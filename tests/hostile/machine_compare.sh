@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # machine_compare.sh - `experiments/report machine --compare` holds a report's machine against a
 # machine file as torusrt-sim reads it: `ips="2"` is the report's 2x1x1, a default written out or
-# left out is no difference, a real difference is named (exit 1); without a torusrt-sim
-# (--build with none) the keys are compared as written, with a note. File names holding a
+# left out is no difference, a real difference is named (exit 1); without a torusrt-sim in the
+# default build folder the keys are compared as written, with a note; a --build given without
+# one is refused (exit 2). File names holding a
 # newline or an escape are shown escaped, each message on one line.
 #
 # Usage (CTest runs it so): bash tests/hostile/machine_compare.sh BUILD_DIR SOURCE_DIR
@@ -40,7 +41,11 @@ check "another machine: cells named" grep -qxF "machine: cells: report '24x24x24
 check "another machine: two keys differ" grep -qE "other.toml: 2 keys differ$" "another machine.out"
 printf 'ips="0"\n' >bad.toml
 compares "a machine torusrt-sim refuses" 1 "^experiments/report: --compare 'bad.toml': torusrt-sim does not read it: .*--ips" bad.toml
-compares "no torusrt-sim" 1 "^machine: no torusrt-sim in $TMP/none \(--build\): keys compared as written" \
+# The default build folder ($TORUSRT_BUILD) without torusrt-sim: the keys as written, with a note;
+# a --build given that holds none is a command-line error.
+TORUSRT_BUILD=$TMP/none compares "no torusrt-sim" 1 \
+    "^machine: no torusrt-sim in $TMP/none \(--build\): keys compared as written" short.toml
+compares "a --build without torusrt-sim" 2 "^experiments/report: --build '$TMP/none': no torusrt-sim in it" \
     short.toml --build "$TMP/none"
 
 # Names with a newline or an escape: escaped, every message one line.

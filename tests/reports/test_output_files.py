@@ -210,6 +210,57 @@ class Refused(Base):
                          ["--vcd", "-o", "--stats"])
         self.assertEqual(of.output_options(["--size", "8x8", "--map-file", "m"]), [])
 
+    def test_glued_short_output_found(self):
+        # CLI11 reads -oFILE and -qoFILE as -o FILE: a refusal must see them too.
+        self.assertEqual(of.output_values(["-ox.png", "-qoy.png", "--stats=s.json", "-q", "--quantum", "1"]),
+                         [("-o", "x.png"), ("-o", "y.png"), ("--stats", "s.json")])
+        self.assertEqual(of.output_values(["--size", "8x8", "-o"]), [("-o", None)])
+
+    def test_options_that_run_nothing_found(self):
+        self.assertEqual(of.unusable_option(["--size", "8x8", "--dump-config"]), "--dump-config")
+        self.assertEqual(of.unusable_option(["--version=1"]), "--version")
+        self.assertEqual(of.unusable_option(["-qh"]), "-h")
+        self.assertIsNone(of.unusable_option(["-q", "--ips", "2", "--frames", "2"]))
+        self.assertEqual(of.unusable_option(["--frames", "2"], of.ANIMATION_OPTIONS), "--frames")
+
+    def test_list_values_checked(self):
+        self.assertEqual(of.list_values("--map", "block,cyclic"), ["block", "cyclic"])
+        for text, pattern in (("block,", "an empty value"), ("", "an empty value"), ("a,,b", "value 2"),
+                              ("block,block", "'block' is given twice")):
+            with self.assertRaisesRegex(ValueError, "--map '%s': .*%s" % (text, pattern)):
+                of.list_values("--map", text)
+
+    def test_empty_value_refused_by_argparse(self):
+        import argparse
+        parser = argparse.ArgumentParser()
+        parser.add_argument("--state", type=of.nonempty)
+        with contextlib.redirect_stderr(io.StringIO()) as err, self.assertRaises(SystemExit) as done:
+            parser.parse_args(["--state", ""])
+        self.assertEqual(done.exception.code, 2)
+        self.assertIn("--state: an empty value", err.getvalue())
+
+    def test_out_folder_that_is_a_file_refused(self):
+        scene = self.path("s.nff")
+        of.write_text(scene, "x")
+        with self.assertRaisesRegex(of.OutputError, "--out '.*s.nff': is the scene file .*s.nff, an input"):
+            of.out_folder("--out", scene, [("scene", scene)])
+        with self.assertRaisesRegex(of.OutputError, "is a file, not a folder"):
+            of.out_folder("--state", scene)
+        with self.assertRaisesRegex(of.OutputError, "an empty value"):
+            of.out_folder("--state", "")
+        self.assertEqual(of.out_folder("--out", self.path("new")), self.path("new"))
+        self.assertFalse(os.path.exists(self.path("new")))  # checked, not made
+
+    def test_standard_output_on_a_full_device_named(self):
+        done = subprocess.run([sys.executable, "-c", "import sys; sys.path.insert(0, %r)\n"
+                               "import output_files as of\nof.named_stdout()\n"
+                               "try:\n    print('x' * 100000)\n    of.finish_stdout()\n"
+                               "except OSError as e:\n    print(e, file=sys.stderr); sys.exit(1)"
+                               % os.path.join(REPO, "experiments")],
+                              stdout=open("/dev/full", "w"), stderr=subprocess.PIPE, text=True)
+        self.assertEqual(done.returncode, 1)
+        self.assertEqual(done.stderr, "standard output: cannot write: No space left on device\n")
+
     def test_refused_is_a_value_error(self):
         self.assertTrue(issubclass(of.OutputError, ValueError))
 
@@ -356,6 +407,22 @@ class SweepPoints(Base):
         files = self.point(json.dumps(REPORT), self.made(json.dumps(REPORT)))
         self.assertEqual(self.is_done(files, "abc"), (True, ""))
         self.assertTrue(os.path.exists(files["json"]))
+
+    def test_a_point_whose_image_or_series_is_gone_runs_again(self):
+        files = self.point(json.dumps(REPORT), self.made(json.dumps(REPORT)))
+        os.remove(files["png"])
+        done, said = self.is_done(files, "abc")
+        self.assertFalse(done)
+        self.assertIn(files["json"] + ": its run's " + files["png"] + " is gone", said)
+        self.assertFalse(os.path.exists(files["json"]))
+        files = self.point(json.dumps(REPORT), self.made(json.dumps(REPORT)))
+        with contextlib.redirect_stderr(io.StringIO()) as said:
+            self.assertFalse(sweep.is_done(files, "abc", series=True), "no series.csv")
+        self.assertIn(files["series"] + " is gone", said.getvalue())
+        stalled = dict(REPORT, status="deadlock")  # a deadlock writes only its JSON
+        files = self.point(json.dumps(stalled), self.made(json.dumps(stalled)))
+        os.remove(files["png"])
+        self.assertEqual(self.is_done(files, "abc"), (True, ""))
 
     def test_a_json_changed_after_its_run_runs_again(self):
         other = dict(REPORT, sim_time_s=0.97511)  # another point's report copied over this one's
