@@ -31,11 +31,25 @@ make_folder() {
     err=$(mkdir -p -- "$2" 2>&1) || die "$1 '$2': cannot make the folder: ${err##*: }"
 }
 
-# set_build DIR: make BUILD absolute and check the simulator is there.
+# set_build DIR [EXE...]: make BUILD absolute and check the executables are there (torusrt-sim
+# and each EXE), before any point runs: a folder without them would fail every point.
 set_build() {
-    [ -d "$1" ] || die "build folder '$1' does not exist (configure and build first, or pass --build / TORUSRT_BUILD)"
-    BUILD=$(cd "$1" && pwd)
+    local dir=$1 exe
+    shift
+    [ -n "$dir" ] || die "--build: an empty value (name the build folder)"
+    [ -d "$dir" ] || die "build folder '$dir' does not exist (configure and build first, or pass --build / TORUSRT_BUILD)"
+    BUILD=$(cd "$dir" && pwd)
     SIM=$BUILD/torusrt-sim
+    for exe in torusrt-sim "$@"; do
+        [ -x "$BUILD/$exe" ] || die "build folder '$dir' has no $exe (build it first, or pass --build / TORUSRT_BUILD)"
+    done
+}
+
+# need_value OPTION ARGS...: ends the command (exit 2) naming OPTION when ARGS (the words after
+# it) are none or start with an empty word: an empty value is never taken as the default.
+need_value() {
+    [ $# -ge 2 ] || die "$1 needs a value"
+    [ -n "$2" ] || die "$1: an empty value"
 }
 
 # abspath PATH: absolute form of a path whose parent exists (the path itself need not).
@@ -126,7 +140,8 @@ BACKEND_HELP='--backend local|ssh:HOSTFILE|slurm, -j N, --slurm-args "SBATCH OPT
 # --slurm-args is any number of sbatch options, quoted as one word when there are several.
 backend_option() {
     case $1 in
-        --backend|--slurm-args|--per-task|-j) [ $# -ge 2 ] || die "$1 needs a value" ;;
+        --backend|--slurm-args|--per-task|-j) need_value "$@" ;;
+        --backend=|--slurm-args=|--per-task=) die "${1%=}: an empty value" ;;
     esac
     SHIFT=2
     case $1 in
@@ -213,7 +228,7 @@ study_args() {
     while [ $# -gt 0 ]; do
         if backend_option "$@"; then shift "$SHIFT"; continue; fi
         case $1 in
-            --build) [ $# -ge 2 ] || die "--build needs a folder"; BUILD=$2; shift 2 ;;
+            --build) need_value "$@"; BUILD=$2; shift 2 ;;
             -h|--help) show_help '^set -euo' ;;
             -*) die "unknown option '$1' (see --help)" ;;
             *) positional+=("$1"); shift ;;
@@ -222,7 +237,7 @@ study_args() {
     [ ${#positional[@]} -le 2 ] || die "too many arguments: ${positional[*]} (see --help)"
     [ ${#positional[@]} -lt 1 ] || BUILD=${positional[0]}
     [ ${#positional[@]} -lt 2 ] || { check_jobs JOBS "${positional[1]}"; JOBS=${positional[1]}; }
-    set_build "$BUILD"
+    set_build "$BUILD" torusrt-render
 }
 
 # study_dirs NAME [PICTURES]: a study's folders: here (experiments/NAME), root, build, res

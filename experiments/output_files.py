@@ -395,6 +395,33 @@ def nonempty(text):
     return text
 
 
+def refuse_empty_values(parser):
+    """Gives every option and argument of PARSER (and of its subcommands) that takes a value, and
+    has no default of its own, nonempty() as its check: an empty value ('') is refused (exit 2,
+    the option named), never taken as the default. Options whose default is '' (nothing) keep
+    it; a REMAINDER (the fixed options passed on) is the executables' to check."""
+    import argparse
+    for action in parser._actions:
+        if isinstance(action, argparse._SubParsersAction):
+            for sub in set(action.choices.values()):
+                refuse_empty_values(sub)
+            continue
+        if action.nargs in (0, argparse.REMAINDER, argparse.PARSER) or action.default == "":
+            continue
+        if action.type is None:
+            action.type = nonempty
+        elif action.type is not nonempty:
+            action.type = _nonempty_then(action.type)
+
+
+def _nonempty_then(convert):
+    """An argparse type: nonempty(), then CONVERT; named as CONVERT for argparse's messages."""
+    def check(text):
+        return convert(nonempty(text))
+    check.__name__ = getattr(convert, "__name__", "value")
+    return check
+
+
 def list_values(option, text, given=None):
     """The comma-separated values of OPTION's TEXT ('block,cyclic'); ValueError naming OPTION and
     what was GIVEN (default TEXT) when TEXT is empty, a value is empty (',,' or a trailing comma)
@@ -493,6 +520,54 @@ def named_files(words):
     return found
 
 
+def divert_stderr():
+    """Points standard error at the terminal (/dev/tty) when there is one, else at /dev/null: for
+    when standard error is an input, so that no message is written into it (as the executables)."""
+    try:
+        fd = os.open("/dev/tty", os.O_WRONLY | os.O_NOCTTY)
+    except OSError:
+        fd = os.open(os.devnull, os.O_WRONLY)
+    if fd != 2:
+        os.dup2(fd, 2)
+        os.close(fd)
+
+
+def check_streams(prog, words):
+    """Ends the program (exit 2, before anything is written) when standard output or standard
+    error is redirected to a file one of WORDS names (named_files: the scene, a --config and the
+    files it names, a report), also through a hard link: `>> s.nff` would append to an input. The
+    message about standard error goes to the terminal (or nowhere), never into the file. Called
+    first by every tool, before its command line is parsed (a parse error is a message too)."""
+    import sys
+    streams = []
+    for fd, name in ((2, "standard error"), (1, "standard output")):
+        try:
+            st = os.fstat(fd)
+        except OSError:
+            continue
+        if stat.S_ISREG(st.st_mode):
+            streams.append((fd, name, (st.st_dev, st.st_ino)))
+    if not streams:
+        return
+    try:
+        named = named_files(list(words))
+    except (OSError, ValueError, RecursionError):
+        return
+    inputs = {}
+    for option, path in named:
+        inputs.setdefault(_identity(path), (option, path))
+    for fd, name, key in streams:
+        if key not in inputs:
+            continue
+        option, path = inputs[key]
+        what = "the file %s" % shown(path) if option == "argument" else "the %s file %s" % (option, shown(path))
+        if fd == 2:
+            divert_stderr()
+        sys.stderr.write("%s: %s is redirected to %s, an input\n" % (prog, name, what))
+        sys.stderr.flush()
+        raise SystemExit(2)
+
+
 def exit_on_signals():
     """SIGTERM and SIGHUP end the program as SystemExit(128 + the signal), so that an unfinished
     file's temporary is removed on the way out as on Ctrl-C; a signal the program was started
@@ -567,10 +642,14 @@ def copy_to_stdout(prog):
 def main(argv):
     """`python3 output_files.py FILE [OPTION]`: standard input into FILE under these rules, for
     the shell scripts (exit 2 when FILE is refused, naming OPTION; 1 when the write fails);
-    --check-outputs and --stdout: see check_outputs() and copy_to_stdout()."""
+    --check-outputs and --stdout: see check_outputs() and copy_to_stdout();
+    `--check-streams PROG -- WORDS...`: see check_streams() (exit 2 or 0)."""
     import sys
     if argv[:1] == ["--check-outputs"]:
         return check_outputs(argv[1:])
+    if argv[:1] == ["--check-streams"] and len(argv) >= 3 and argv[2] == "--":
+        check_streams(argv[1], argv[3:])
+        return 0
     if argv[:1] == ["--stdout"] and len(argv) == 2:
         return copy_to_stdout(argv[1])
     if len(argv) not in (1, 2):
