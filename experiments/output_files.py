@@ -576,7 +576,8 @@ def check_streams(prog, words):
         return
     inputs = {}
     for option, path in named:
-        inputs.setdefault(_identity(path), (option, path))
+        if not _through_stream(path):  # --out /dev/stdout names the stream itself (refused as an output)
+            inputs.setdefault(_identity(path), (option, path))
     for fd, name, key in streams:
         if key not in inputs:
             continue
