@@ -162,7 +162,8 @@ void reserve_frame_records(const RenderOptions &opt, const RenderOutputs &outs, 
     uint64_t name_bytes = 0;
     for (size_t k = 0; k < frames; k++) name_bytes += outs.set.path(outs.png + k).size();
     uint64_t bytes = frames * (kFrameRecordBytes + (report ? kFrameReportBytes : 0)) + (report ? 3 : 1) * name_bytes;
-    std::string what = "the records of " + std::to_string(frames) + " frames" + (report ? " and their JSON (--stats)" : "");
+    std::string what =
+        "the records of " + std::to_string(frames) + " frames" + (report ? " and their JSON (--stats)" : "");
     char msg[RT_MSG_LEN] = "";
     if (rt_budget_reserve(&budget, bytes, what.c_str(), msg, sizeof msg) != RT_OK) throw UserError(msg);
 }
