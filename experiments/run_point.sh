@@ -17,7 +17,10 @@
 # and --stats=FILE are seen too). T1.json must be a regular file of at most 64 MiB: a FIFO, a
 # device or a folder is refused (exit 2, naming --t1-from) before it is read; its sim_time_s
 # must be a number (else exit 3, as when it has none), and the command may not give --t1 too
-# (exit 2). An empty OUT.json or no command after -- is a usage error (exit 2).
+# (exit 2). An empty OUT.json or no command after -- is a usage error (exit 2). Standard output
+# or error redirected to a file the command line names (`2>> SCENE`) is refused (exit 2) before
+# anything is written. INT, TERM or HUP sent to this script alone stops the command too (TERM),
+# leaves no temporary and ends with 128 + the signal's number.
 set -uo pipefail
 usage="usage: run_point.sh OUT.json [--t1-from T1.json] -- COMMAND..."
 # Standard output or error redirected into a file of the command line (the scene, a --config):
@@ -103,7 +106,7 @@ stop() {
 trap 'stop 2' INT
 trap 'stop 15' TERM
 trap 'stop 1' HUP
-"$@" "${t1args[@]}" -q -o "$tmppng" --stats "$tmpjson" "${seriesargs[@]}" >"$tmplog" 2>&1 <&0 &
+"$@" "${t1args[@]}" -q -o "$tmppng" --stats "$tmpjson" "${seriesargs[@]}" >"$tmplog" 2>&1 &
 child=$!
 wait "$child"
 rc=$?
