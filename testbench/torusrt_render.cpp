@@ -168,6 +168,13 @@ void reserve_frame_records(const RenderOptions &opt, const RenderOutputs &outs, 
     if (rt_budget_reserve(&budget, bytes, what.c_str(), msg, sizeof msg) != RT_OK) throw UserError(msg);
 }
 
+// The report's text: a file name that is not UTF-8 has its bytes shown as U+FFFD, rather than
+// failing the run at its end.
+std::string json_text(const nlohmann::json &js)
+{
+    return js.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+}
+
 int run_single(const RenderOptions &opt, RenderSetup &setup, RenderOutputs &outs,
                std::chrono::steady_clock::time_point t0)
 {
@@ -185,7 +192,7 @@ int run_single(const RenderOptions &opt, RenderSetup &setup, RenderOutputs &outs
     set_run_stage("writing the outputs");
     write_png_file(outputs.staged(outs.png), opt.common.output, cam->width, cam->height, fr.rgb);
     if (outs.cost) cost.write(outputs.staged(*outs.cost));
-    if (outs.stats) write_text_file(outputs.staged(*outs.stats), opt.common.stats, js.dump(2) + "\n");
+    if (outs.stats) write_text_file(outputs.staged(*outs.stats), opt.common.stats, json_text(js));
     outputs.commit();
     if (!opt.common.quiet)
         std::printf("%s: %ux%u, %zu objects, %llu packets, T(1) %.3f s (%s timing), wall %.3f s\n",
@@ -279,7 +286,7 @@ int run_frames(const RenderOptions &opt, RenderSetup &setup, RenderOutputs &outs
         if (setup.motion) js["motion"] = motion_json(setup, moved);
         js["output_pattern"] = opt.common.output;
         js["frames"] = frames;
-        write_text_file(outputs.staged(*outs.stats), opt.common.stats, js.dump(2) + "\n");
+        write_text_file(outputs.staged(*outs.stats), opt.common.stats, json_text(js));
     }
     outputs.commit();
     if (!opt.common.quiet)
