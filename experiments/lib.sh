@@ -165,18 +165,35 @@ check_jobs() {
 
 # run_points STATE_DIR NAME LIST...: runs the point lists (DONE-FILE<TAB>COMMAND per line, one
 # list per phase, each phase after the one before) on the chosen backend; the exit status is
-# 1 if a point failed.
+# 1 if a point failed. The backend runs in the background so that INT, TERM or HUP sent to the
+# calling script alone reach it too: it is sent TERM (it stops its points), waited for, and the
+# script ends with 128 + the signal's number.
 run_points() {
-    local state=$1 name=$2
+    local state=$1 name=$2 rc=0
     shift 2
     local opts=(--state "$state" --backend "$BACKEND" --name "$name")
     [ -z "$JOBS" ] || opts+=(-j "$JOBS")
     # one word with "=": a value that starts with a dash is still the value
     [ -z "$SLURM_ARGS" ] || opts+=("--slurm-args=$SLURM_ARGS")
     [ -z "$PER_TASK" ] || opts+=(--per-task "$PER_TASK")
-    python3 "$EXP/backend" run "${opts[@]}" "${RUN_POINTS_OPTS[@]}" "$@"
+    python3 "$EXP/backend" run "${opts[@]}" "${RUN_POINTS_OPTS[@]}" "$@" &
+    RUN_POINTS_PID=$!
+    trap 'run_points_stop 2' INT
+    trap 'run_points_stop 15' TERM
+    trap 'run_points_stop 1' HUP
+    wait "$RUN_POINTS_PID" || rc=$?
+    trap - INT TERM HUP
+    RUN_POINTS_PID=""
+    return $rc
 }
-RUN_POINTS_OPTS=()
+RUN_POINTS_OPTS=() RUN_POINTS_PID=""
+# run_points_stop N: the backend stopped (TERM) and waited for; the script ends with 128 + N.
+run_points_stop() {
+    trap '' INT TERM HUP
+    [ -z "$RUN_POINTS_PID" ] || { kill -TERM "$RUN_POINTS_PID" 2>/dev/null; wait "$RUN_POINTS_PID" 2>/dev/null; }
+    echo "$(basename "$0"): stopped by signal $1; the same command runs the points not done" >&2
+    exit $((128 + $1))
+}
 
 # merge_joblogs STATE_DIR: STATE_DIR/joblog.phase1 and joblog.phase2 (GNU parallel backends) as
 # one STATE_DIR/joblog with one header, for a report's run facts.
