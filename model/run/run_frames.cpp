@@ -35,10 +35,11 @@ constexpr uint64_t kFrameRecordBytes = 2048;
 constexpr uint64_t kFrameReportBytes = 6144;
 
 // What a machine's modules take is asked for (and given back) before the first is built, per
-// processor: half of the 35 KiB a processor the run of 64x64 nodes at 16x16 pixels peaks at
-// (150 MB), so that a machine that cannot be built is refused before thousands of half-built
-// modules have to be destroyed with next to no memory left.
-constexpr size_t kMachineProbeBytesPerProcessor = 16 << 10;
+// processor: 32 KiB, under the 35 KiB a processor (resident; more of address space) the run of
+// 64x64 nodes at 16x16 pixels peaks at (150 MB), so that a machine that cannot be built is
+// refused before thousands of half-built modules have to be destroyed with next to no memory
+// left, and one whose run fits is never refused.
+constexpr size_t kMachineProbeBytesPerProcessor = 32 << 10;
 
 // Whether `bytes` can be allocated now (through a volatile pointer, so that the compiler keeps
 // the allocation; the pages are never touched).
