@@ -31,11 +31,25 @@ make_folder() {
     err=$(mkdir -p -- "$2" 2>&1) || die "$1 '$2': cannot make the folder: ${err##*: }"
 }
 
-# set_build DIR: make BUILD absolute and check the simulator is there.
+# set_build DIR [EXE...]: make BUILD absolute and check the executables are there (torusrt-sim
+# and each EXE), before any point runs: a folder without them would fail every point.
 set_build() {
-    [ -d "$1" ] || die "build folder '$1' does not exist (configure and build first, or pass --build / TORUSRT_BUILD)"
-    BUILD=$(cd "$1" && pwd)
+    local dir=$1 exe
+    shift
+    [ -n "$dir" ] || die "--build: an empty value (name the build folder)"
+    [ -d "$dir" ] || die "build folder '$dir' does not exist (configure and build first, or pass --build / TORUSRT_BUILD)"
+    BUILD=$(cd "$dir" && pwd)
     SIM=$BUILD/torusrt-sim
+    for exe in torusrt-sim "$@"; do
+        [ -x "$BUILD/$exe" ] || die "build folder '$dir' has no $exe (build it first, or pass --build / TORUSRT_BUILD)"
+    done
+}
+
+# need_value OPTION ARGS...: ends the command (exit 2) naming OPTION when ARGS (the words after
+# it) are none or start with an empty word: an empty value is never taken as the default.
+need_value() {
+    [ $# -ge 2 ] || die "$1 needs a value"
+    [ -n "$2" ] || die "$1: an empty value"
 }
 
 # abspath PATH: absolute form of a path whose parent exists (the path itself need not).
@@ -126,7 +140,8 @@ BACKEND_HELP='--backend local|ssh:HOSTFILE|slurm, -j N, --slurm-args "SBATCH OPT
 # --slurm-args is any number of sbatch options, quoted as one word when there are several.
 backend_option() {
     case $1 in
-        --backend|--slurm-args|--per-task|-j) [ $# -ge 2 ] || die "$1 needs a value" ;;
+        --backend|--slurm-args|--per-task|-j) need_value "$@" ;;
+        --backend=|--slurm-args=|--per-task=) die "${1%=}: an empty value" ;;
     esac
     SHIFT=2
     case $1 in
@@ -150,18 +165,35 @@ check_jobs() {
 
 # run_points STATE_DIR NAME LIST...: runs the point lists (DONE-FILE<TAB>COMMAND per line, one
 # list per phase, each phase after the one before) on the chosen backend; the exit status is
-# 1 if a point failed.
+# 1 if a point failed. The backend runs in the background so that INT, TERM or HUP sent to the
+# calling script alone reach it too: it is sent TERM (it stops its points), waited for, and the
+# script ends with 128 + the signal's number.
 run_points() {
-    local state=$1 name=$2
+    local state=$1 name=$2 rc=0
     shift 2
     local opts=(--state "$state" --backend "$BACKEND" --name "$name")
     [ -z "$JOBS" ] || opts+=(-j "$JOBS")
     # one word with "=": a value that starts with a dash is still the value
     [ -z "$SLURM_ARGS" ] || opts+=("--slurm-args=$SLURM_ARGS")
     [ -z "$PER_TASK" ] || opts+=(--per-task "$PER_TASK")
-    python3 "$EXP/backend" run "${opts[@]}" "${RUN_POINTS_OPTS[@]}" "$@"
+    python3 "$EXP/backend" run "${opts[@]}" "${RUN_POINTS_OPTS[@]}" "$@" &
+    RUN_POINTS_PID=$!
+    trap 'run_points_stop 2' INT
+    trap 'run_points_stop 15' TERM
+    trap 'run_points_stop 1' HUP
+    wait "$RUN_POINTS_PID" || rc=$?
+    trap - INT TERM HUP
+    RUN_POINTS_PID=""
+    return $rc
 }
-RUN_POINTS_OPTS=()
+RUN_POINTS_OPTS=() RUN_POINTS_PID=""
+# run_points_stop N: the backend stopped (TERM) and waited for; the script ends with 128 + N.
+run_points_stop() {
+    trap '' INT TERM HUP
+    [ -z "$RUN_POINTS_PID" ] || { kill -TERM "$RUN_POINTS_PID" 2>/dev/null; wait "$RUN_POINTS_PID" 2>/dev/null; }
+    echo "$(basename "$0"): stopped by signal $1; the same command runs the points not done" >&2
+    exit $((128 + $1))
+}
 
 # merge_joblogs STATE_DIR: STATE_DIR/joblog.phase1 and joblog.phase2 (GNU parallel backends) as
 # one STATE_DIR/joblog with one header, for a report's run facts.
@@ -213,7 +245,7 @@ study_args() {
     while [ $# -gt 0 ]; do
         if backend_option "$@"; then shift "$SHIFT"; continue; fi
         case $1 in
-            --build) [ $# -ge 2 ] || die "--build needs a folder"; BUILD=$2; shift 2 ;;
+            --build) need_value "$@"; BUILD=$2; shift 2 ;;
             -h|--help) show_help '^set -euo' ;;
             -*) die "unknown option '$1' (see --help)" ;;
             *) positional+=("$1"); shift ;;
@@ -222,7 +254,7 @@ study_args() {
     [ ${#positional[@]} -le 2 ] || die "too many arguments: ${positional[*]} (see --help)"
     [ ${#positional[@]} -lt 1 ] || BUILD=${positional[0]}
     [ ${#positional[@]} -lt 2 ] || { check_jobs JOBS "${positional[1]}"; JOBS=${positional[1]}; }
-    set_build "$BUILD"
+    set_build "$BUILD" torusrt-render
 }
 
 # study_dirs NAME [PICTURES]: a study's folders: here (experiments/NAME), root, build, res

@@ -32,6 +32,9 @@ import os
 import stat
 import tempfile
 
+from command_words import (ANIMATION_OPTIONS, NO_RUN_OPTIONS, OUTPUT_OPTIONS, list_values,  # noqa: F401
+                           nonempty, output_options, output_values, refuse_empty_values, unusable_option)
+
 
 class OutputError(ValueError):
     """An output refused before anything was written: its message names the option and the file."""
@@ -323,93 +326,6 @@ def read_text(path, what="input"):
         raise ValueError("%s '%s': not UTF-8 text (byte %d)" % (what, shown(path), e.start)) from None
 
 
-# The output options of torusrt-sim and torusrt-render: a tool that runs several commands with
-# the same fixed options would write each of them into one file from every command.
-OUTPUT_OPTIONS = ("-o", "--output", "--stats", "--stats-series", "--vcd", "--write-map", "--load-map",
-                  "--frames-csv", "--cost-image")
-
-
-def _short_output(word):
-    """The value of -o in a word of short options (-o, -oFILE, -qoFILE: CLI11 reads -o glued to
-    its value, after flags): '' when the value is the next word, None when WORD has no -o."""
-    if not word.startswith("-") or word.startswith("--") or len(word) < 2:
-        return None
-    cluster = word[1:]
-    flags = cluster.partition("o")[0]
-    if "o" not in cluster or any(c not in "qh" for c in flags):
-        return None
-    return cluster[len(flags) + 1:]
-
-
-def output_values(words):
-    """(option, file) of each output option among WORDS (OPTION FILE, OPTION=FILE, or -o glued
-    to its file as -oFILE), in order; FILE is None when OPTION is the last word."""
-    found = []
-    for i, word in enumerate(words):
-        option, eq, value = word.partition("=")
-        glued = _short_output(word)
-        if glued is not None:
-            option, eq, value = "-o", glued, glued
-        elif option not in OUTPUT_OPTIONS or not word.startswith("--"):
-            continue
-        if eq:
-            found.append((option, value))
-        else:
-            found.append((option, words[i + 1] if i + 1 < len(words) else None))
-    return found
-
-
-def output_options(words):
-    """The output options among WORDS (OPTION, OPTION=FILE or -oFILE), in order."""
-    return [option for option, _ in output_values(words)]
-
-
-# Options after which a command runs nothing a point can use: it prints and ends (help, version,
-# the machine file), so every point of a sweep or compare-mappings would fail alike.
-NO_RUN_OPTIONS = ("--help", "--version", "--dump-config")
-# Options that make a run an animation: its -o is a frame pattern and its report per frame, which
-# the sweep's and compare-mappings' one image per run cannot hold.
-ANIMATION_OPTIONS = ("--frames", "--orbit", "--camera-path", "--motion")
-
-
-def unusable_option(words, refused=NO_RUN_OPTIONS):
-    """The first of REFUSED (or -h, --help's short form, also among other short flags) among
-    WORDS as OPTION or OPTION=VALUE; None when there is none."""
-    for word in words:
-        option = word.partition("=")[0]
-        if option in refused and word.startswith("--"):
-            return option
-        if "--help" in refused and word.startswith("-") and not word.startswith("--"):
-            flags = word[1:].partition("o")[0]
-            if "h" in flags and all(c in "qh" for c in flags):
-                return "-h"
-    return None
-
-
-def nonempty(text):
-    """An argparse type: TEXT, refused (exit 2, the option named by argparse) when it is empty,
-    as the executables refuse an empty value."""
-    if text == "":
-        import argparse
-        raise argparse.ArgumentTypeError("an empty value")
-    return text
-
-
-def list_values(option, text, given=None):
-    """The comma-separated values of OPTION's TEXT ('block,cyclic'); ValueError naming OPTION and
-    what was GIVEN (default TEXT) when TEXT is empty, a value is empty (',,' or a trailing comma)
-    or a value is given twice."""
-    what = "%s '%s'" % (option, shown(text if given is None else given))
-    items = text.split(",")
-    if "" in items:
-        raise ValueError("%s: an empty value (value %d); write each value once, between commas"
-                         % (what, items.index("") + 1))
-    for i, item in enumerate(items):
-        if item in items[:i]:
-            raise ValueError("%s: '%s' is given twice; write each value once" % (what, shown(item)))
-    return items
-
-
 def out_folder(option, path, inputs=()):
     """Checks the folder PATH a command writes into (made if it does not exist) before anything is
     made: OutputError naming OPTION when PATH is empty, or exists and is not a folder (naming
@@ -437,14 +353,35 @@ class _Stdout(_Named):
         devnull = os.open(os.devnull, os.O_WRONLY)
         os.dup2(devnull, self._f.fileno())
         os.close(devnull)
+        if isinstance(self._f, _Closed):  # no file object to go on with: one on /dev/null
+            self._f = open(os.devnull, "w")
         return _cannot_write(self._shown, e)
 
 
+class _Closed:
+    """Standard output when the program was started with it closed (`>&-`): Python's sys.stdout
+    is None; every write fails as a write to a closed descriptor does."""
+
+    def _fail(self, *args):
+        import errno
+        raise OSError(errno.EBADF, os.strerror(errno.EBADF))
+
+    write = _fail
+
+    def flush(self):
+        """Nothing is held back: each write has failed already."""
+
+    def fileno(self):
+        return 1
+
+
 def named_stdout():
-    """Makes sys.stdout report a failed write (a full disk, a closed pipe) as an OSError
-    `standard output: cannot write: REASON`; call finish_stdout() before the exit status is
-    chosen so that a failure at the last flush is reported too."""
+    """Makes sys.stdout report a failed write (a full disk, a closed pipe, a closed descriptor)
+    as an OSError `standard output: cannot write: REASON`; call finish_stdout() before the exit
+    status is chosen so that a failure at the last flush is reported too."""
     import sys
+    if sys.stdout is None:
+        sys.stdout = _Closed()
     if not isinstance(sys.stdout, _Stdout):
         sys.stdout = _Stdout(sys.stdout)
 
@@ -491,6 +428,55 @@ def named_files(words):
         if option == "--config":
             found += machine_file_inputs(value)
     return found
+
+
+def divert_stderr():
+    """Points standard error at the terminal (/dev/tty) when there is one, else at /dev/null: for
+    when standard error is an input, so that no message is written into it (as the executables)."""
+    try:
+        fd = os.open("/dev/tty", os.O_WRONLY | os.O_NOCTTY)
+    except OSError:
+        fd = os.open(os.devnull, os.O_WRONLY)
+    if fd != 2:
+        os.dup2(fd, 2)
+        os.close(fd)
+
+
+def check_streams(prog, words):
+    """Ends the program (exit 2, before anything is written) when standard output or standard
+    error is redirected to a file one of WORDS names (named_files: the scene, a --config and the
+    files it names, a report), also through a hard link: `>> s.nff` would append to an input. The
+    message about standard error goes to the terminal (or nowhere), never into the file. Called
+    first by every tool, before its command line is parsed (a parse error is a message too)."""
+    import sys
+    streams = []
+    for fd, name in ((2, "standard error"), (1, "standard output")):
+        try:
+            st = os.fstat(fd)
+        except OSError:
+            continue
+        if stat.S_ISREG(st.st_mode):
+            streams.append((fd, name, (st.st_dev, st.st_ino)))
+    if not streams:
+        return
+    try:
+        named = named_files(list(words))
+    except (OSError, ValueError, RecursionError):
+        return
+    inputs = {}
+    for option, path in named:
+        if not _through_stream(path):  # --out /dev/stdout names the stream itself (refused as an output)
+            inputs.setdefault(_identity(path), (option, path))
+    for fd, name, key in streams:
+        if key not in inputs:
+            continue
+        option, path = inputs[key]
+        what = "the file %s" % shown(path) if option == "argument" else "the %s file %s" % (option, shown(path))
+        if fd == 2:
+            divert_stderr()
+        sys.stderr.write("%s: %s is redirected to %s, an input\n" % (prog, name, what))
+        sys.stderr.flush()
+        raise SystemExit(2)
 
 
 def exit_on_signals():
@@ -567,10 +553,14 @@ def copy_to_stdout(prog):
 def main(argv):
     """`python3 output_files.py FILE [OPTION]`: standard input into FILE under these rules, for
     the shell scripts (exit 2 when FILE is refused, naming OPTION; 1 when the write fails);
-    --check-outputs and --stdout: see check_outputs() and copy_to_stdout()."""
+    --check-outputs and --stdout: see check_outputs() and copy_to_stdout();
+    `--check-streams PROG -- WORDS...`: see check_streams() (exit 2 or 0)."""
     import sys
     if argv[:1] == ["--check-outputs"]:
         return check_outputs(argv[1:])
+    if argv[:1] == ["--check-streams"] and len(argv) >= 3 and argv[2] == "--":
+        check_streams(argv[1], argv[3:])
+        return 0
     if argv[:1] == ["--stdout"] and len(argv) == 2:
         return copy_to_stdout(argv[1])
     if len(argv) not in (1, 2):

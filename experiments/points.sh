@@ -23,6 +23,9 @@ source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
 phase=all tsv=0 build=$BUILD clusters=1 reading=${READINGS[0]}
 while [ $# -gt 0 ]; do
     case $1 in
+        --build|--phase|--reading) need_value "$@" ;;
+    esac
+    case $1 in
         --build) build=$2; shift 2 ;;
         --phase) phase=$2; shift 2 ;;
         --tsv) tsv=1; shift ;;

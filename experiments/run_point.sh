@@ -17,9 +17,17 @@
 # and --stats=FILE are seen too). T1.json must be a regular file of at most 64 MiB: a FIFO, a
 # device or a folder is refused (exit 2, naming --t1-from) before it is read; its sim_time_s
 # must be a number (else exit 3, as when it has none), and the command may not give --t1 too
-# (exit 2). An empty OUT.json or no command after -- is a usage error (exit 2).
+# (exit 2). An empty OUT.json or no command after -- is a usage error (exit 2). Standard output
+# or error redirected to a file the command line names (`2>> SCENE`) is refused (exit 2) before
+# anything is written. INT, TERM or HUP sent to this script alone stops the command too (TERM),
+# leaves no temporary and ends with 128 + the signal's number.
 set -uo pipefail
 usage="usage: run_point.sh OUT.json [--t1-from T1.json] -- COMMAND..."
+# Standard output or error redirected into a file of the command line (the scene, a --config):
+# refused (exit 2) before any message could be appended to it.
+if [ -f /dev/stdout ] || [ -f /dev/stderr ]; then
+    python3 "$(dirname "${BASH_SOURCE[0]}")/output_files.py" --check-streams run_point -- "$@" || exit 2
+fi
 [ $# -ge 1 ] && [ -n "$1" ] || { echo "run_point: $usage (OUT.json: not an empty value)" >&2; exit 2; }
 out=$1
 shift
@@ -86,8 +94,23 @@ for word in "$@"; do
     case $word in --stats-interval | --stats-interval=*) seriesargs=(--stats-series "$tmpseries") ;; esac
 done
 trap 'rm -f "$tmpjson" "$tmppng" "$tmplog" "$tmplog.full" "$tmpseries"' EXIT
-"$@" "${t1args[@]}" -q -o "$tmppng" --stats "$tmpjson" "${seriesargs[@]}" >"$tmplog" 2>&1
+# The command runs in the background so that INT, TERM or HUP sent to this script alone reach it:
+# the script stops it (TERM: a background command ignores INT), waits for it and leaves no
+# temporary (the EXIT trap), ending with 128 + the signal's number.
+child=""
+stop() {
+    trap '' INT TERM HUP
+    [ -z "$child" ] || { kill -TERM "$child" 2>/dev/null; wait "$child" 2>/dev/null; }
+    exit $((128 + $1))
+}
+trap 'stop 2' INT
+trap 'stop 15' TERM
+trap 'stop 1' HUP
+"$@" "${t1args[@]}" -q -o "$tmppng" --stats "$tmpjson" "${seriesargs[@]}" >"$tmplog" 2>&1 &
+child=$!
+wait "$child"
 rc=$?
+child=""
 if [ $rc -eq 0 ] && ! jq -e '.sim_time_s' "$tmpjson" >/dev/null 2>&1; then
     echo "torusrt-sim exited 0 but wrote no valid statistics" >>"$tmplog"
     rc=4

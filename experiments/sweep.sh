@@ -37,6 +37,9 @@ source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
 mode=full results="" build=$BUILD doc="" report=1 popt=()
 while [ $# -gt 0 ]; do
     case $1 in
+        --results|--sshloginfile|--build|--doc) need_value "$@" ;;
+    esac
+    case $1 in
         --quick) mode=quick; shift ;;
         --results) results=$2; shift 2 ;;
         --sshloginfile) BACKEND=ssh:$2; shift 2 ;;

@@ -31,6 +31,7 @@
  */
 #define _DEFAULT_SOURCE /* realpath, lstat, mkstemp, fchmod */
 #include <errno.h>
+#include <fcntl.h>
 #include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -454,8 +455,36 @@ static int stdout_written(void)
     return 1;
 }
 
+/* Whether standard output or error is redirected to a regular file a word of the command line
+ * names (`torusrt-genscenes s.nff 2>> s.nff`): the program then ends (exit 2) before any
+ * message could be appended to it, its own message about standard error going to the terminal
+ * (or nowhere). */
+static int stream_named(int argc, char **argv)
+{
+    for (int fd = 2; fd >= 1; --fd) {
+        struct stat so, st;
+        if (fstat(fd, &so) != 0 || !S_ISREG(so.st_mode)) continue;
+        for (int a = 1; a < argc; ++a) {
+            if (stat(argv[a], &st) != 0 || st.st_dev != so.st_dev || st.st_ino != so.st_ino) continue;
+            if (fd == 2) {
+                int tty = open("/dev/tty", O_WRONLY | O_NOCTTY);
+                if (tty < 0) tty = open("/dev/null", O_WRONLY);
+                if (tty >= 0 && tty != 2) {
+                    dup2(tty, 2);
+                    close(tty);
+                }
+            }
+            fprintf(stderr, "torusrt-genscenes: standard %s is redirected to '%s', a file the command line names\n",
+                    fd == 1 ? "output" : "error", shown(argv[a]));
+            return 1;
+        }
+    }
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
+    if (stream_named(argc, argv)) return 2;
     if (argc < 2) {
         usage(stderr);
         return 2;
@@ -473,6 +502,10 @@ int main(int argc, char **argv)
             usage(stderr);
             return 2;
         }
+        if (!*argv[4]) {
+            fprintf(stderr, "torusrt-genscenes: --variant OUTDIR: an empty value (name a folder, e.g. '.')\n");
+            return 2;
+        }
         return write_variant(argv[2], argv[3], argv[4], argv[5]);
     }
     if (argv[1][0] == '-') {
@@ -481,6 +514,10 @@ int main(int argc, char **argv)
         return 2;
     }
     const char *outdir = argv[1];
+    if (!*outdir) { /* not "the current folder": '' + "/NAME.nff" is the root folder */
+        fprintf(stderr, "torusrt-genscenes: OUTDIR: an empty value (name a folder, e.g. '.')\n");
+        return 2;
+    }
     for (int a = 2; a < argc; ++a) {
         if (find_scene(argv[a]) < 0) {
             fprintf(stderr, "torusrt-genscenes: unknown scene '%s' (see --list)\n", shown(argv[a]));

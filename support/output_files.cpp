@@ -99,18 +99,6 @@ mode_t new_file_mode()
     return mode;
 }
 
-// Points standard error at the terminal (/dev/tty) when the command has one, else at /dev/null:
-// called when standard error is an input, so that no message is written into it.
-void divert_stderr()
-{
-    int fd = open("/dev/tty", O_WRONLY | O_NOCTTY | O_CLOEXEC);
-    if (fd < 0) fd = open("/dev/null", O_WRONLY | O_CLOEXEC);
-    if (fd >= 0 && fd != STDERR_FILENO) {
-        dup2(fd, STDERR_FILENO);
-        close(fd);
-    }
-}
-
 // ".NAME.XXXXXX" beside PATH, NAME cut so that the temporary's name fits NAME_MAX.
 std::string temporary_pattern(const std::string &path)
 {
@@ -147,6 +135,67 @@ using NameKey = std::tuple<dev_t, ino_t, std::string>;
 using FileKey = std::pair<dev_t, ino_t>;
 
 }  // namespace
+
+void divert_stderr()
+{
+    int fd = open("/dev/tty", O_WRONLY | O_NOCTTY | O_CLOEXEC);
+    if (fd < 0) fd = open("/dev/null", O_WRONLY | O_CLOEXEC);
+    if (fd >= 0 && fd != STDERR_FILENO) {
+        dup2(fd, STDERR_FILENO);
+        close(fd);
+    }
+}
+
+namespace {
+
+// Whether `path`, its links followed one by one, is a stream the process holds open (a name
+// under /dev or /proc: /dev/stdout, /dev/fd/1, a link to one) rather than a file in a folder.
+bool names_a_stream(const std::string &path)
+{
+    std::string cur = path;
+    for (int hops = 0; hops < 40; hops++) {
+        if (cur.rfind("/dev/", 0) == 0 || cur.rfind("/proc/", 0) == 0) return true;
+        struct stat ls;
+        if (lstat(cur.c_str(), &ls) != 0 || !S_ISLNK(ls.st_mode)) return false;
+        char text[PATH_MAX];
+        ssize_t n = readlink(cur.c_str(), text, sizeof text - 1);
+        if (n <= 0) return false;
+        std::string next(text, static_cast<size_t>(n));
+        cur = next[0] == '/' ? next : folder_of(cur) + "/" + next;
+    }
+    return false;
+}
+
+}  // namespace
+
+void check_streams_before_parsing(int argc, char **argv, const std::vector<std::string> &output_options)
+{
+    for (int fd : {STDERR_FILENO, STDOUT_FILENO}) {
+        struct stat so;
+        if (fstat(fd, &so) != 0 || !S_ISREG(so.st_mode)) continue;
+        for (int i = 1; i < argc; i++) {
+            std::string word = argv[i], option = i > 1 ? argv[i - 1] : "";
+            size_t eq = word.find('=');
+            if (word.rfind("--", 0) == 0 && eq != std::string::npos) {
+                option = word.substr(0, eq);
+                word = word.substr(eq + 1);
+            } else if (word.size() > 2 && word[0] == '-' && word[1] == 'o') {
+                option = "-o";  // -oFILE
+                word = word.substr(2);
+            }
+            bool output = false;
+            for (const std::string &o : output_options) output = output || option == o;
+            struct stat st;
+            if (output || word.empty() || stat(word.c_str(), &st) != 0 || st.st_dev != so.st_dev ||
+                st.st_ino != so.st_ino || names_a_stream(word))
+                continue;
+            if (fd == STDERR_FILENO) divert_stderr();  // the message must not land in the file
+            throw UserError(std::string(stream_name(fd)) + " is redirected to '" + word +
+                                "', a file the command line names (an input)",
+                            2);
+        }
+    }
+}
 
 OutputSet::~OutputSet()
 {

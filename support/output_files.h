@@ -92,6 +92,15 @@ void write_stream_file(const std::string &write_path, const std::string &shown, 
 // names either (the shell's redirection keeps its position), else a new open of it (created
 // 0666 less the umask, truncated). -1 with errno set on failure.
 int open_output_fd(const std::string &write_path);
+// Points standard error at the terminal (/dev/tty) when the command has one, else at /dev/null:
+// called when standard error is an input, so that no message is written into it.
+void divert_stderr();
+// Throws UserError (exit 2) if standard output or error is redirected to a regular file that a
+// word of the command line names (the scene, --config FILE, --timing=FILE), other than the
+// value of one of `output_options` (written through the stream in place) or a name under /dev or
+// /proc: called before the parser, whose messages would be appended to that file. Standard
+// error is diverted (divert_stderr) before the throw.
+void check_streams_before_parsing(int argc, char **argv, const std::vector<std::string> &output_options);
 // Throws UserError (exit 2) if the folder of `path` does not exist, naming `option`.
 void check_output_folder(const std::string &option, const std::string &path);
 

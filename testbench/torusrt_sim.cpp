@@ -206,25 +206,36 @@ void check_config(const CommandLine &cl, SimRequest &request)
     validate(config);
 }
 
+// The files a run reads, each with the option that names it.
+std::vector<std::pair<std::string, std::string>> run_inputs(const CommandLine &cl, const SimConfig &config)
+{
+    return {{"scene", cl.common.scene},      {"--config", cl.config_file},           {"--timing", config.timing_file},
+            {"--map-file", config.map_file}, {"--camera-path", cl.anim.camera_path}, {"--motion", cl.anim.motion}};
+}
+
+// Refuses standard output or error redirected to one of the inputs (exit 2) before any warning
+// is printed; standard error that is an input is diverted first, so nothing is written into it.
+void check_streams(const CommandLine &cl, const SimConfig &config)
+{
+    OutputSet streams;
+    for (const auto &input : run_inputs(cl, config)) streams.add_input(input.first, input.second);
+    streams.check();
+}
+
 // --dump-config: the machine of the command line and --config, checked as a run would check
 // it, as TOML on stdout.
 int dump_config(const CommandLine &cl)
 {
     route_systemc_messages(cl.common.quiet);
     SimRequest request;
+    check_streams(cl, request.config);  // `--dump-config --config m.toml >> m.toml`: never into an input
     check_config(cl, request);
+    check_streams(cl, request.config);  // nor into a file the machine file names
     const SimConfig &config = request.config;
     std::vector<int32_t> owner;  // the table a run would read, checked as the run checks it
     if (config.mapping == RT_MAP_FILE) read_map_file(config, config.cells.data(), owner);
     std::fputs(machine_options_toml(config, cl.with_timing).c_str(), stdout);
     return 0;
-}
-
-// The files a run reads, each with the option that names it.
-std::vector<std::pair<std::string, std::string>> run_inputs(const CommandLine &cl, const SimConfig &config)
-{
-    return {{"scene", cl.common.scene},      {"--config", cl.config_file},           {"--timing", config.timing_file},
-            {"--map-file", config.map_file}, {"--camera-path", cl.anim.camera_path}, {"--motion", cl.anim.motion}};
 }
 
 // The rest of the request the command line describes: the frames and the files to write.
@@ -242,15 +253,6 @@ void fill_request(CommandLine &cl, SimRequest &r)
     r.image = cl.common.output;
     r.stats = cl.common.stats;
     r.inputs = run_inputs(cl, r.config);
-}
-
-// Refuses standard output or error redirected to one of the inputs (exit 2) before any warning
-// is printed; standard error that is an input is diverted first, so nothing is written into it.
-void check_streams(const CommandLine &cl, const SimConfig &config)
-{
-    OutputSet streams;
-    for (const auto &input : run_inputs(cl, config)) streams.add_input(input.first, input.second);
-    streams.check();
 }
 
 // --ips N (one number, 3 or more) builds a ring (a line on a mesh), which is easy to take for a

@@ -7,8 +7,9 @@ import signal
 import sys
 import time
 
-from output_files import (OutputError, OutputSet, WriteError, append_text, finish_stdout, input_file,  # noqa: E501
-                          named_stdout, nonempty, os_message, out_folder, write_lines)
+from output_files import (OutputError, OutputSet, WriteError, append_text, check_streams, finish_stdout,  # noqa: E501
+                          input_file, named_stdout, nonempty, os_message, out_folder, refuse_empty_values,
+                          write_lines)
 
 from . import local, points, slurm, task
 
@@ -126,6 +127,7 @@ def interrupted(signum, frame):
 
 
 def main(argv):
+    check_streams("experiments/backend", argv)  # `>> LIST`: refused before any message
     parser = argparse.ArgumentParser(prog="experiments/backend", description=__doc__)
     sub = parser.add_subparsers(dest="command", required=True)
     p = sub.add_parser("run", help="run point lists (one per phase, in order): DONE-FILE<TAB>COMMAND per line")
@@ -147,6 +149,7 @@ def main(argv):
     p.add_argument("per_task", type=int)
     p.add_argument("rcdir")
     p.set_defaults(run=lambda a: task.run(a.todo, a.per_task, a.rcdir))
+    refuse_empty_values(parser)
     args = parser.parse_args(argv)
     signal.signal(signal.SIGTERM, interrupted)
     signal.signal(signal.SIGINT, signal.default_int_handler)  # even where the shell started us ignoring it

@@ -16,7 +16,7 @@ JOBS=1 quick=0 build=$BUILD out=
 while [ $# -gt 0 ]; do
   if backend_option "$@"; then shift "$SHIFT"; continue; fi
   case $1 in
-    --build|--results) [ $# -ge 2 ] && [ -n "$2" ] || die "$1 needs a folder, not an empty name" ;;
+    --build|--results) need_value "$@" ;;
   esac
   case $1 in
     --quick) quick=1 ;;
@@ -27,7 +27,7 @@ while [ $# -gt 0 ]; do
   esac
   shift
 done
-set_build "$build"
+set_build "$build" torusrt-render
 here="$EXP/buffers"
 if [ "$quick" = 1 ]; then
   res=${out:-$here/results-quick}

@@ -39,11 +39,21 @@ fastest() { printf '%s\n' "$@" | sort -g | head -n 1; }
 
 # The helpers below serve the sweep scripts (quantum.sh, pruning.sh).
 
+# need_value OPTION ARGS...: dies (exit 2) naming OPTION when ARGS (the words after it) are none
+# or start with an empty word: an empty value is never taken as the default.
+need_value() {
+  [ $# -ge 2 ] || die "$1 needs a value"
+  [ -n "$2" ] || die "$1: an empty value"
+}
+
 # study_option ARGS...: the option at ARGS that every sweep takes (--build, --out, --scenes, --ips,
 # --size, --reps, -h/--help); sets SHIFT to the number of words it used; dies on any other option.
 # shellcheck disable=SC2034 # the variables are the calling script's
 study_option() {
   SHIFT=2
+  case $1 in
+    --build|--out|--scenes|--ips|--size|--reps) need_value "$@" ;;
+  esac
   case $1 in
     --build) BUILD=$2 ;;
     --out) OUT=$2 ;;

@@ -38,6 +38,9 @@ DEFAULT_DEPTH=8
 DEFAULT_WEIGHT=1/512
 while [ $# -gt 0 ]; do
   case $1 in
+    --depths|--weights) need_value "$@" ;;
+  esac
+  case $1 in
     --depths) DEPTHS=$2; shift 2 ;;
     --weights) WEIGHTS=$2; shift 2 ;;
     --no-beyond) BEYOND=0; shift ;;

@@ -33,6 +33,9 @@ MAX_ERR=20
 REPS=5
 while [ $# -gt 0 ]; do
   case $1 in
+    --quanta|--max-error) need_value "$@" ;;
+  esac
+  case $1 in
     --quanta) QUANTA=$2; shift 2 ;;
     --max-error) MAX_ERR=$2; shift 2 ;;
     *) study_option "$@"; shift "$SHIFT" ;;

@@ -37,6 +37,9 @@ JOBS=1
 while [ $# -gt 0 ]; do
   if backend_option "$@"; then shift "$SHIFT"; continue; fi
   case $1 in
+    --build|--results|--doc|--img-dir|--reps|--only) need_value "$@" ;;
+  esac
+  case $1 in
     --build) BUILD=$2; shift 2 ;;
     --results) RESULTS=$2; ARGS_SEEN+=(results); shift 2 ;;
     --doc) DOC=$2; ARGS_SEEN+=(doc); shift 2 ;;

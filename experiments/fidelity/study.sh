@@ -37,7 +37,7 @@ build=$BUILD JOBS=2 res=$here/results smoke="" only=""
 while [ $# -gt 0 ]; do
     if backend_option "$@"; then shift "$SHIFT"; continue; fi
     case $1 in
-        --build|--results|--stage) [ $# -ge 2 ] && [ -n "$2" ] || die "$1 needs a value (not an empty one)" ;;
+        --build|--results|--stage) need_value "$@" ;;
     esac
     case $1 in
         --build) build=$2; shift 2 ;;
@@ -48,7 +48,7 @@ while [ $# -gt 0 ]; do
         *) die "unknown argument '$1' (see --help)" ;;
     esac
 done
-set_build "$build"
+set_build "$build" torusrt-render torusrt-genscenes
 build=$BUILD jobs=${JOBS:-$BACKEND}
 sim=$build/torusrt-sim render=$build/torusrt-render gen=$build/torusrt-genscenes
 [ -x "$gen" ] || die "$gen not found (build torusrt-genscenes first)"

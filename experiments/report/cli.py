@@ -5,8 +5,8 @@ import os
 import subprocess
 import sys
 
-from output_files import (OutputError, OutputSet, exit_on_signals, finish_stdout, named_stdout, nonempty,
-                          os_message, out_folder, read_text, shown)
+from output_files import (OutputError, OutputSet, check_streams, exit_on_signals, finish_stdout, named_stdout,
+                          nonempty, os_message, out_folder, read_text, refuse_empty_values, shown)
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
@@ -148,6 +148,8 @@ def machine(args):
         tables = mf.tables_from_report(report)
     except ValueError as e:  # not JSON, or no machine in it: name the report
         raise ValueError("%s: %s" % (shown(args.report), e))
+    except RecursionError:  # a hand-made file nested thousands deep
+        raise ValueError("%s: not a JSON report (nested too deeply)" % shown(args.report)) from None
     if not args.compare:
         sys.stdout.write(mf.toml_text(pairs, tables))
         return 0
@@ -169,6 +171,7 @@ def machine(args):
 
 
 def main(argv):
+    check_streams("experiments/report", argv)  # `>> REPORT.json`: refused before any message
     exit_on_signals()  # a stopped run leaves no temporary
     parser = argparse.ArgumentParser(prog="experiments/report", description=__doc__)
     sub = parser.add_subparsers(dest="command", required=True)
@@ -222,6 +225,7 @@ def main(argv):
     p.set_defaults(run=machine)
     from . import fidelity
     fidelity.add_commands(sub)
+    refuse_empty_values(parser)  # '' is never "the default": --doc '' would rewrite docs/
     args = parser.parse_args(argv)
     prog = "sweep" if args.command.startswith("sweep-") else "experiments/report"  # the command the user ran
     named_stdout()  # a full disk or a closed pipe on standard output: named, exit 1

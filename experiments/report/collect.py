@@ -86,6 +86,8 @@ def point_row(res, point):
             report = json.loads(read_text(path, "point JSON"))
         except ValueError as e:
             raise ValueError("%s: not a JSON report (%s)" % (path, e)) from None
+        except RecursionError:  # a hand-made file nested thousands deep
+            raise ValueError("%s: not a JSON report (nested too deeply)" % path) from None
         if not isinstance(report, dict):
             raise ValueError("%s: not a JSON report (a %s, not an object)" % (path, type(report).__name__))
         row["status"] = "ok"

@@ -17,7 +17,7 @@ class Table:
     def load(cls, path):
         """The table of the CSV file PATH; OSError or ValueError naming PATH when it is not a
         regular file or not UTF-8 text, and ValueError naming PATH and the line when the header
-        names a column twice or a row has more fields than the header."""
+        names a column twice or a row has more or fewer fields than the header."""
         reader = csv.DictReader(io.StringIO(read_text(path, "CSV"), newline=""))
         columns = list(reader.fieldnames or [])
         for i, name in enumerate(columns):  # the last of two would silently win
@@ -28,6 +28,10 @@ class Table:
             if None in row:  # more fields than the header: the extra ones would be dropped unseen
                 raise ValueError("%s: line %d: %d fields, the header has %d"
                                  % (shown(path), reader.line_num, len(columns) + len(row[None]), len(columns)))
+            if any(value is None for value in row.values()):  # fewer fields (a cut file): None, not text
+                given = sum(value is not None for value in row.values())
+                raise ValueError("%s: line %d: %d fields, the header has %d"
+                                 % (shown(path), reader.line_num, given, len(columns)))
             rows.append(row)
         return cls(rows, columns, path)
 

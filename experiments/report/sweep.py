@@ -111,7 +111,15 @@ def _not_finite(value):
 
 def read_report(path):
     """A point's JSON report; ValueError naming PATH when it is not one (not a regular file, not
-    JSON, not an object, a number that is not finite, or without the keys every report has)."""
+    JSON, nested deeper than Python's recursion limit, not an object, a number that is not
+    finite, or without the keys every report has)."""
+    try:
+        return _read_report(path)
+    except RecursionError:  # a hand-made file nested thousands deep: no report's shape
+        raise ValueError("%s: not a JSON report (nested too deeply)" % path) from None
+
+
+def _read_report(path):
     try:
         report = json.loads(read_text(path, "point JSON"), parse_constant=_refuse_constant)
     except OSError as e:

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
+#include <new>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -15,6 +16,7 @@
 #include "rt_mapping.h"
 #include "run_frames.h"
 #include "run_report.h"
+#include "run_stage.h"
 #include "torus_system.h"
 #include "user_error.h"
 #include "wall_clock.h"
@@ -121,6 +123,9 @@ ModelOutcome run_model(const SimConfig &config, const rt_scene *scene, const rt_
 
 void print_summary_stdout(const RunReport &report) { print_summary(report, stdout); }
 
+// The T(1) run's exit status when memory ran out: the parent gives the run's out-of-memory message.
+constexpr int kT1OutOfMemory = 4;
+
 double one_processor_time(const SimConfig &config, const rt_scene *scene, const rt_grid *grid)
 {
     SimConfig one = config;
@@ -150,6 +155,8 @@ double one_processor_time(const SimConfig &config, const rt_scene *scene, const 
             ModelOutcome o = run_model(one, scene, grid, -1, "", wall_clock_s());
             if (o.deadlock) code = 3;
             else dprintf(fds[1], "%.17g\n", o.sim_time_s);
+        } catch (const std::bad_alloc &) {
+            code = kT1OutOfMemory;  // said by the parent, as every run's out-of-memory message
         } catch (const std::exception &e) {
             std::fprintf(stderr, "torusrt-sim: T(1) run: %s\n", e.what());
             code = 1;
@@ -164,6 +171,10 @@ double one_processor_time(const SimConfig &config, const rt_scene *scene, const 
     close(fds[0]);
     int status = 0;
     waitpid(pid, &status, 0);
+    if (WIFEXITED(status) && WEXITSTATUS(status) == kT1OutOfMemory) {
+        set_run_stage("simulating the one-processor run for T(1)");
+        throw std::bad_alloc();  // cli_main's out-of-memory message
+    }
     if (n <= 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
         throw UserError("the one-processor run for T(1) failed");
     return std::strtod(buf, nullptr);

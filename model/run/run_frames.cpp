@@ -2,12 +2,14 @@
 #include "run_frames.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <memory>
 #include <new>
 #include <string>
 
 #include "elaboration_mark.h"
 #include "kernel_handles.h"
+#include "memory_reserve.h"
 #include "model_run.h"
 #include "motion_update.h"
 #include "progress.h"
@@ -31,6 +33,23 @@ namespace {
 // --stats), rounded up; the file names are counted apart.
 constexpr uint64_t kFrameRecordBytes = 2048;
 constexpr uint64_t kFrameReportBytes = 6144;
+
+// What a machine's modules take is asked for (and given back) before the first is built, per
+// processor: 32 KiB, under the 35 KiB a processor (resident; more of address space) the run of
+// 64x64 nodes at 16x16 pixels peaks at (150 MB), so that a machine that cannot be built is
+// refused before thousands of half-built modules have to be destroyed with next to no memory
+// left, and one whose run fits is never refused.
+constexpr size_t kMachineProbeBytesPerProcessor = 32 << 10;
+
+// Whether `bytes` can be allocated now (through a volatile pointer, so that the compiler keeps
+// the allocation; the pages are never touched).
+bool room_for(size_t bytes)
+{
+    void *(*volatile allocate)(size_t) = std::malloc;
+    void *probe = allocate(bytes);
+    std::free(probe);
+    return probe != nullptr;
+}
 
 rt_vec3 box_centre(const rt_box &b) { return rt_vec_scale(rt_vec_add(b.lo, b.hi), 0.5); }
 
@@ -241,6 +260,9 @@ void elaborate(const SimConfig &config, const rt_scene *scene, const rt_grid *gr
         tlm::tlm_global_quantum::instance().set(sc_core::sc_time(config.quantum_us, sc_core::SC_US));
     m.elaboration_start_s = wall_clock_s();
     set_run_stage(machine_stage(config));
+    keep_memory_reserve();  // whole again: a failure while the modules are built unwinds through them
+    size_t processors = static_cast<size_t>(config.node_count()) * static_cast<size_t>(std::max(config.cluster, 1));
+    if (!room_for(processors * kMachineProbeBytesPerProcessor)) throw std::bad_alloc();  // cli_main's message
     rt_replicas replicas = config.replica_table();
     m.top = &keep_until_exit(std::make_unique<TorusSystem>("top", config, scene, grid, m.owner.data(), m.ledger,
                                                            m.fb.get(), HandOverTiming::at_once,

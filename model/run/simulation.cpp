@@ -94,7 +94,9 @@ void report_deadlock(const SimConfig &config, double sim_time_s, const std::stri
 void write_stats(StagedOutputs &outputs, const SimRequest &r, const RunReport &report)
 {
     if (!outputs.stats) return;
-    std::string text = to_json(report).dump(2);  // the tree is freed before the file is written
+    // The tree is freed before the file is written. A file name that is not UTF-8 has its bytes
+    // shown as U+FFFD, rather than failing the run at its end.
+    std::string text = to_json(report).dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
     text += '\n';
     write_text_file(outputs.set.staged(*outputs.stats), r.stats, text);
 }

@@ -9,11 +9,14 @@
 #include <sstream>
 #include <string>
 #include <system_error>
+#include <vector>
 
 #include "machine_file_reader.h"
 #include "memory_reserve.h"
 #include "option_parsing.h"
 #include "option_registration.h"
+#include "option_spec.h"
+#include "output_files.h"
 #include "run_stage.h"
 #include "signal_cleanup.h"
 #include "user_error.h"
@@ -129,6 +132,19 @@ int print_help_or_version(const char *program, CLI::App &app, const CLI::ParseEr
     return 1;
 }
 
+// The names of the options of the "Outputs" group (-o, --output, --stats, --vcd, ...): a file
+// one names may be the one standard output is redirected to, and is then written through it.
+std::vector<std::string> output_option_names(const CLI::App &app)
+{
+    std::vector<std::string> names;
+    for (const CLI::Option *o : app.get_options()) {
+        if (o->get_group() != group_title(OptionGroup::outputs)) continue;
+        for (const std::string &n : o->get_lnames()) names.push_back("--" + n);
+        for (const std::string &n : o->get_snames()) names.push_back("-" + n);
+    }
+    return names;
+}
+
 }  // namespace
 
 int run_cli(const char *program, CLI::App &app, int argc, char **argv, const std::function<int()> &body,
@@ -144,6 +160,12 @@ int run_cli(const char *program, CLI::App &app, int argc, char **argv, const std
                extra_exit_statuses +
                "  128+N stopped by signal N: INT 130, TERM 143, HUP 129, QUIT 131, USR1 138, USR2 140,\n"
                "        ALRM 142, PIPE 141 (no output left behind)\n");
+    try {  // before any message: `2>> SCENE` or `--config m.toml >> m.toml` would append it to an input
+        check_streams_before_parsing(argc, argv, output_option_names(app));
+    } catch (const UserError &e) {
+        std::fprintf(stderr, "%s: %s\n", program, printable(e.what()).c_str());
+        return e.exit_code();
+    }
     std::string empty = empty_value_option(app, argc, argv);
     if (!empty.empty()) {
         std::fprintf(stderr, "%s: %s: an empty value\nRun with --help for more information.\n", program, empty.c_str());

@@ -7,12 +7,12 @@
 # interval, not "more than 1000000"; an interval of 1 ps (0.001ns) stops at 1,000,000 intervals,
 # and `1ps` is refused, as docs/cli.md says (units ns, us, ms, s); the per-pixel latency figures
 # are held from the budget before the run, and so are an animation's frame records and their
-# JSON (refused before the first frame when they cannot fit).
+# JSON, in torusrt-sim and torusrt-render (refused before the first frame when they cannot fit).
 #
 # Usage (CTest runs it so): bash tests/hostile/budget_needs.sh BUILD_DIR SOURCE_DIR
 set -u
 source "$(dirname "$0")/../cli/common.bash" "$@"
-need_exe torusrt-sim
+need_exe torusrt-sim torusrt-render
 command -v jq >/dev/null || { echo "$TEST_NAME: jq is not installed; skipped"; exit 77; }
 time_limit 100
 f=$(source_scene paper-image1) || exit 1
@@ -85,5 +85,25 @@ fails "frame records" 1 "memory budget exceeded: the records of 20000 frames and
 "${run_limited[@]}" "${sim[@]}" --size 1x1 -o 'r%d.png' --frames 100 --orbit 360 --memory-budget 8M \
     --stats r.json </dev/null
 check "100 frames in 8M: exit $?, 100 records" [ "$(jq '.frames | length' r.json)" = 100 ]
+# The same in torusrt-render (it took 396 MB for 40000 frames when they were not counted), with
+# and without --stats.
+render=("$BUILD/torusrt-render" "$f" -q)
+rm -rf out && mkdir out
+"${run_limited[@]}" "${render[@]}" --size 1x1 -o 'out/f%d.png' --frames 20000 --orbit 360 --memory-budget 8M \
+    --stats out/f.json >/dev/null 2>render.err </dev/null
+rc=$?
+check "render frame records: exit $rc, expected 1: $(head -c 300 render.err)" [ "$rc" -eq 1 ]
+check "render frame records: the message: $(head -c 300 render.err)" \
+    grep -q "^torusrt-render: memory budget exceeded: the records of 20000 frames and their JSON" render.err
+check "render frame records: nothing written: $(ls -A out | head -c 100)" [ -z "$(ls -A out)" ]
+"${run_limited[@]}" "${render[@]}" --size 1x1 -o 'out/f%d.png' --frames 20000 --orbit 360 --memory-budget 8M \
+    >/dev/null 2>render.err </dev/null
+rc=$?
+check "render frame records without --stats: exit $rc, expected 1" [ "$rc" -eq 1 ]
+check "render frame records without --stats: the message: $(head -c 300 render.err)" \
+    grep -q "^torusrt-render: memory budget exceeded: the records of 20000 frames would take" render.err
+"${run_limited[@]}" "${render[@]}" --size 1x1 -o 'rr%d.png' --frames 100 --orbit 360 --memory-budget 8M \
+    --stats rr.json </dev/null
+check "render: 100 frames in 8M: exit $?, 100 records" [ "$(jq '.frames | length' rr.json)" = 100 ]
 
 finish

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # out_of_memory.sh - the system refusing memory (ulimit -v) while a 4096-node machine is being
 # built: the run says what it was building and names --memory-budget, exits 1 (no abort), and
-# leaves no output and no temporary (its VCD's and save file's, and the trace's FIFO folder); and
+# leaves no output and no temporary (its VCD's and save file's, and the trace's FIFO folder), also
+# when the limit falls among its modules (no abort as they are destroyed); and
 # the same when memory runs out later in the run; Scotch short of memory (--map cost) and a
 # --stats-interval series growing past the limit end so too, with the run's message once.
 #
@@ -24,6 +25,27 @@ check "4096 nodes under ulimit -v: the message names --memory-budget" grep -q --
 check "4096 nodes under ulimit -v: no abort message" bash -c '! grep -q "terminate called" err.txt'
 check "4096 nodes under ulimit -v: nothing left: $(ls -A out; ls -A tmpdir)" \
     [ -z "$(ls -A out)$(ls -A tmpdir)" ]
+# A limit that fails one of the machine's modules half built: the modules built so far are
+# destroyed with next to no memory left (SystemC's destructors allocate): exit 1 with an
+# out-of-memory message (the machine's, the T(1) run's, or the scene's where the limit falls
+# earlier), never "terminate called" (exit 134), over limits and runs (the address space's
+# layout changes from run to run).
+aborts=0 other=0
+for limit in 25000 30000 35000 40000 45000 50000 55000 60000; do
+    for _ in 1 2 3; do
+        ("${run_limited[@]}" bash -c 'ulimit -v "$0" && exec "$@"' "$limit" "$BUILD/torusrt-sim" "$f" -q -o out/o.png \
+            --size 16x16 --ips 64x64 >/dev/null 2>err.txt </dev/null)
+        rc=$?
+        if [ "$rc" -ge 128 ] || grep -q "terminate called" err.txt; then aborts=$((aborts + 1));
+        elif [ "$rc" -ne 1 ] || ! grep -q "^torusrt-sim: .*out of memory" err.txt; then
+            other=$((other + 1))
+            echo "ulimit -v $limit: exit $rc: $(head -c 300 err.txt)"
+        fi
+    done
+done
+check "64x64 nodes under ulimit -v 25000..60000: runs that aborted: $aborts of 24" [ "$aborts" -eq 0 ]
+check "64x64 nodes under ulimit -v 25000..60000: runs without the out-of-memory message: $other" [ "$other" -eq 0 ]
+check "64x64 nodes under ulimit -v: nothing left: $(ls -A out)" [ -z "$(ls -A out)" ]
 # Memory running out later in the run (here: the trace's copy thread, then the simulation): exit 0
 # or 1, never an abort, and on failure nothing left, the FIFO folder included.
 aborts=0 left=0

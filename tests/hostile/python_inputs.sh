@@ -185,8 +185,8 @@ fi
 
 # ---- a study's --results -------------------------------------------------------------------
 cp -r "$EXP" copy
-refused "buffers --results ''" "--results needs a folder" bash copy/buffers/study.sh --quick --results ''
-refused "buffers --results with no value" "--results needs a folder" bash copy/buffers/study.sh --quick --results
+refused "buffers --results ''" "--results: an empty value" bash copy/buffers/study.sh --quick --results ''
+refused "buffers --results with no value" "--results needs a value" bash copy/buffers/study.sh --quick --results
 check "buffers --results '': nothing written" [ ! -e copy/buffers/results-quick ]
 
 finish

@@ -1,0 +1,124 @@
+#!/usr/bin/env bash
+# python_streams.sh - the Python and shell tools of experiments/ never write into their inputs
+# through their own standard output or error, read a hand-made point JSON without a traceback,
+# and leave no command running when run_point.sh alone is stopped:
+# - `>> INPUT` and `2>> INPUT` (the scene, a file after --, a --compare machine file, a point
+#   list) for compare-mappings, the sweep, report machine, run_point.sh and the backend: exit 2
+#   before anything runs, the input unchanged (also when the command line is wrong, and so would
+#   give a usage message);
+# - a point JSON nested 100000 deep: the sweep's resume runs the point again, report machine
+#   names the file as not a report (exit 1), no RecursionError traceback;
+# - TERM or HUP sent to run_point.sh's shell alone: its command is stopped too, the script ends
+#   with 128 + the signal, and no temporary (.NAME.tmp.HOST.PID.*) stays.
+#
+# Usage (CTest runs it so): bash tests/hostile/python_streams.sh BUILD_DIR SOURCE_DIR
+set -u
+source "$(dirname "$0")/../cli/common.bash" "$@"
+need_exe torusrt-sim
+for tool in python3 parallel gnuplot jq; do
+    command -v "$tool" >/dev/null || { echo "$TEST_NAME: $tool is not installed; skipped"; exit 77; }
+done
+time_limit 60
+EXP=$SRC/experiments
+export TORUSRT_BUILD=$BUILD
+scene1=$(source_scene paper-image1) || exit 1
+cd "$TMP" || exit 1
+small=(--size 8x8)
+cp "$scene1" keep.nff
+"$BUILD/torusrt-sim" keep.nff -q -o a.png "${small[@]}" --stats a.json </dev/null
+"$BUILD/torusrt-sim" --dump-config --ips 2 >keep.toml </dev/null
+printf '%s\ttrue\n' "$TMP/done.json" >keep.list
+
+# into STREAM NAME INPUT COMMAND...: COMMAND with standard output (STREAM 1) or error (2)
+# appended to INPUT (a copy of keep.EXT put in place first): exit 2 and INPUT unchanged; with
+# standard output, the message on standard error names it.
+into() {
+    local stream=$1 name=$2 input=$3 f=$TMP/${2//[\/ \']/_}
+    shift 3
+    cp "keep.${input##*.}" "$input"
+    if [ "$stream" = 1 ]; then
+        "${run_limited[@]}" "$@" >>"$input" 2>"$f.err" </dev/null
+    else
+        "${run_limited[@]}" "$@" 2>>"$input" >"$f.out" </dev/null
+    fi
+    local rc=$?
+    check "$name: exit $rc, expected 2" [ "$rc" -eq 2 ]
+    check "$name: $input changed: $(cmp "keep.${input##*.}" "$input" 2>&1 | head -c 200)" \
+        cmp -s "keep.${input##*.}" "$input"
+    [ "$stream" = 2 ] || check "$name: the message names it: $(head -c 300 "$f.err")" \
+        grep -q "standard output is redirected to .*$input, an input" "$f.err"
+}
+cm=("$EXP/compare-mappings" --build "$BUILD" --map block,cyclic --out c.png)
+into 1 "cm >> scene" s.nff "${cm[@]}" s.nff -- --ips 2 "${small[@]}"
+into 2 "cm 2>> scene" s.nff "${cm[@]}" s.nff --frobnicate
+into 1 "cm >> --config after --" m.toml "${cm[@]}" keep.nff -- --config m.toml "${small[@]}"
+check "cm: no image written by a refused run" [ ! -e c.png ]
+into 1 "sweep >> scene" s.nff "$EXP/sweep" --build "$BUILD" s.nff --axis ips=1 --out sw -- "${small[@]}"
+into 2 "sweep 2>> scene" s.nff "$EXP/sweep" --build "$BUILD" s.nff --axis ips=1 --out sw -- "${small[@]}"
+into 2 "sweep 2>> scene, unknown option" s.nff "$EXP/sweep" --build "$BUILD" s.nff --frobnicate
+check "sweep: no --out folder made by a refused run" [ ! -e sw ]
+into 1 "report machine --compare >> it" m.toml python3 "$EXP/report" machine a.json --compare m.toml
+into 2 "report machine 2>> it, bad option" m.toml python3 "$EXP/report" machine a.json --compare m.toml --frob
+into 2 "run_point 2>> scene" s.nff "$EXP/run_point.sh" rp/p.json -- "$BUILD/torusrt-sim" s.nff --ips zz
+into 1 "run_point >> scene" s.nff "$EXP/run_point.sh" rp/p.json -- "$BUILD/torusrt-sim" s.nff "${small[@]}"
+check "run_point: nothing written by a refused run" [ ! -e rp/p.json ] && [ ! -e rp/p.log ]
+into 1 "backend >> its list" l.list python3 "$EXP/backend" run --state st l.list
+check "backend: no --state folder made by a refused run" [ ! -e st ]
+
+# ---- a point JSON nested 100000 deep ------------------------------------------------------
+deep() { python3 -c "print('{\"a\":' * 100000 + '1' + '}' * 100000)"; }
+"${run_limited[@]}" "$EXP/sweep" --build "$BUILD" keep.nff --axis ips=1 --out dj -- "${small[@]}" \
+    >/dev/null 2>dj.err </dev/null
+check "deep JSON: the first sweep: exit $?: $(head -c 300 dj.err)" [ -s dj/points/ips_1.json ]
+deep >dj/points/ips_1.json
+"${run_limited[@]}" "$EXP/sweep" --build "$BUILD" keep.nff --axis ips=1 --out dj -- "${small[@]}" \
+    >/dev/null 2>dj.err </dev/null
+rc=$?
+check "deep JSON: the sweep's resume: exit $rc: $(grep -v gnuplot dj.err | head -c 300)" [ "$rc" -eq 0 ]
+check "deep JSON: the sweep's resume: no traceback" test "$(grep -c 'Traceback\|RecursionError' dj.err)" -eq 0
+check "deep JSON: the sweep's resume names the file as not a report: $(head -c 300 dj.err)" \
+    grep -q "ips_1.json: not a JSON report" dj.err
+check "deep JSON: the point run again" jq -e .sim_time_s dj/points/ips_1.json >/dev/null
+deep >deep.json
+python3 "$EXP/report" machine deep.json >/dev/null 2>deep.err </dev/null
+rc=$?
+check "deep JSON: report machine: exit $rc, expected 1" [ "$rc" -eq 1 ]
+check "deep JSON: report machine names it: $(head -c 300 deep.err)" grep -q "deep.json: not a JSON report" deep.err
+check "deep JSON: report machine: no traceback" test "$(grep -c 'Traceback\|RecursionError' deep.err)" -eq 0
+
+# ---- run_point.sh stopped alone: its command stops too, no temporary stays -------------------
+# A command that makes the temporaries run_point.sh names (-o and --stats), notes its process id
+# and waits: what a long torusrt-sim run does until it commits.
+cat >slow.sh <<'EOF'
+#!/usr/bin/env bash
+while [ $# -gt 0 ]; do
+    case $1 in -o|--stats) : >"$2"; shift ;; esac
+    shift
+done
+echo $$ >"$PIDFILE"
+exec sleep 60
+EOF
+chmod +x slow.sh
+for sig in TERM HUP; do
+    rm -rf "sig$sig" && mkdir "sig$sig"
+    export PIDFILE=$TMP/sig$sig.pid
+    rm -f "$PIDFILE"
+    "$EXP/run_point.sh" "sig$sig/p.json" -- ./slow.sh keep.nff </dev/null >/dev/null 2>&1 &
+    rp=$!
+    for _ in $(seq 200); do [ -s "$PIDFILE" ] && break; sleep 0.1; done
+    check "run_point $sig: the command started" [ -s "$PIDFILE" ]
+    kill -s "$sig" "$rp"
+    wait "$rp"
+    rc=$?
+    code=$((128 + $(kill -l "$sig")))
+    check "run_point $sig: exit $rc, expected $code" [ "$rc" -eq "$code" ]
+    child=$(cat "$PIDFILE" 2>/dev/null)
+    alive=0
+    if [ -n "$child" ]; then
+        for _ in $(seq 50); do kill -0 "$child" 2>/dev/null || break; sleep 0.1; done
+        if kill -0 "$child" 2>/dev/null; then alive=1; kill "$child"; fi
+    fi
+    check "run_point $sig: its command still runs" [ "$alive" -eq 0 ]
+    check "run_point $sig: files left: $(ls -A "sig$sig" | tr '\n' ' ')" [ -z "$(ls -A "sig$sig")" ]
+done
+finish

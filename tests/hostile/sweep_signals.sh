@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# sweep_signals.sh - TERM or HUP sent to the sweep's shell alone (not to its process group) while
+# its points run stops the backend and the points too: the sweep says so and ends with 128 + the
+# signal's number, and no process of its --out folder runs on.
+#
+# Usage (CTest runs it so): bash tests/hostile/sweep_signals.sh BUILD_DIR SOURCE_DIR
+set -u
+source "$(dirname "$0")/../cli/common.bash" "$@"
+need_exe torusrt-sim
+for tool in python3 parallel gnuplot jq pgrep; do
+    command -v "$tool" >/dev/null || { echo "$TEST_NAME: $tool is not installed; skipped"; exit 77; }
+done
+EXP=$SRC/experiments
+export TORUSRT_BUILD=$BUILD
+scene1=$(source_scene paper-image1) || exit 1
+cd "$TMP" || exit 1
+cp "$scene1" s.nff
+for sig in TERM HUP; do
+    out=$TMP/sw$sig
+    # Points of some seconds each, so that the signal comes while one runs.
+    "$EXP/sweep" --build "$BUILD" s.nff --axis ips=4x4,2x2,1 --out "$out" -- --size 1200x1200 \
+        >/dev/null 2>"err$sig.txt" </dev/null &
+    sweep=$!
+    for _ in $(seq 300); do pgrep -f "$out/points" >/dev/null && break; sleep 0.1; done
+    check "sweep $sig: a point started" pgrep -f "$out/points" >/dev/null
+    kill -s "$sig" "$sweep"
+    wait "$sweep"
+    rc=$?
+    code=$((128 + $(kill -l "$sig")))
+    check "sweep $sig: exit $rc, expected $code" [ "$rc" -eq "$code" ]
+    check "sweep $sig: the message: $(head -c 200 "err$sig.txt")" grep -q "sweep: stopped by signal" "err$sig.txt"
+    for _ in $(seq 50); do pgrep -f "$out" >/dev/null || break; sleep 0.1; done
+    left=$(pgrep -f "$out" | tr '\n' ' ')
+    check "sweep $sig: processes left running: $left" [ -z "$left" ]
+    for pid in $left; do kill "$pid" 2>/dev/null; done
+done
+finish
