@@ -272,7 +272,7 @@ def reading_line(x, default):
     """One reading's settings, read from its runs."""
     f = x.facts
     return ("**%s**%s, %s: timing profile `%s` (%s us a hand-over, %s us a cell step), image 1 `scenes/%s`, "
-            "image 2 `scenes/%s`, 16 nodes as `%s`, `--route-ties %s`, the load-balancing points on `--map %s`;"
+            "image 2 `scenes/%s`, 16 nodes as `%s`, `--route-ties %s`, the load-balancing points on `--map %s`"
             % (x.profile, " (the default)" if default else "", READING_WHAT.get(x.profile, "a reading"),
                f.timing_profile, f.hop_us, f.cell_step_us, f.image1_scene, f.image2_scene, f.shape16,
                f.route_ties, f.lb_map))
@@ -290,7 +290,7 @@ def intro(run_cmd, r, all_r):
         "How to run it on one machine, over ssh or as a Slurm job array: `experiments/README.md`.",
         "",
         "Every point runs under each reading of the paper's unknowns ([readings.md](readings.md)):",
-    ] + ["- " + reading_line(x, i == 0) for i, x in enumerate(all_r)] + [
+    ] + ["- " + reading_line(x, i == 0) + (";" if i + 1 < len(all_r) else ".") for i, x in enumerate(all_r)] + [
         "",
         "Claims are judged under the %s reading; the others' figures and verdicts stand beside them." % r.profile,
         "The load-balancing points are labelled *cyclic* in every table and plot. Efficiency is",
