@@ -57,40 +57,54 @@ abspath() { local d; d=$(cd "$(dirname "$1")" && pwd) || return 1; echo "$d/$(ba
 
 # The readings of the paper's unknowns a sweep runs under (docs/fidelity.md), each from the
 # environment, the reading's (use_reading, below) when unset:
-#   TORUSRT_SHAPE16        the arrangement of 16 nodes, flat and clustered (default 4x2x2)
+#   TORUSRT_SHAPE16        the arrangement of 16 nodes, flat and clustered
 #   TORUSRT_LB_MAP         what the load-balancing ("cyclic") points run
 #   TORUSRT_SCENE_IMAGE1/2 the scene files of image 1 and image 2
-#   TORUSRT_POINT_ARGS     more torusrt-sim arguments for every point, split at spaces
+#   TORUSRT_POINT_ARGS     more torusrt-sim arguments for every point, split at spaces (after the
+#                          reading's own)
 #   TORUSRT_MAPS           the full mode's mappings (default "block cyclic bc2 bc3")
-SHAPE16=${TORUSRT_SHAPE16:-4x2x2}
 read -r -a POINT_ARGS <<<"${TORUSRT_POINT_ARGS:-}"
-# The paper's 3D torus shapes for each IP count.
-declare -A SHAPE=([1]=1x1x1 [2]=2x1x1 [4]=2x2x1 [8]=2x2x2 [16]=$SHAPE16 [32]=4x4x2 [64]=4x4x4
+# The paper's 3D torus shapes for each IP count (16: the reading's arrangement, use_reading).
+declare -A SHAPE=([1]=1x1x1 [2]=2x1x1 [4]=2x2x1 [8]=2x2x2 [16]=4x2x2 [32]=4x4x2 [64]=4x4x4
                   [128]=8x4x4 [256]=8x8x4 [512]=8x8x8)
 # Mapping short names (used in point names and CSVs) and torusrt-sim arguments.
 declare -A MAPARG=([block]=block [cyclic]=cyclic [bc2]=block-cyclic:2 [bc3]=block-cyclic:3)
-# The cluster study: 16 clusters on a 4x2x2 torus, load-balancing mapping at the cluster level.
-CLUSTER_SHAPE=$SHAPE16
+# The cluster study: 16 clusters arranged as the flat 16 are, load-balancing mapping at the
+# cluster level.
 CLUSTER_NODES=16
 # The readings swept, the default first: each has its own results folder RESULTS/READING with the
 # same points, CSVs and plots (docs/readings.md).
-#   fitted      --timing-profile fitted, image 1 scenes/paper-image1-planar-z.nff, the load-balancing
-#               mapping block-cyclic:3: the fit of round one (experiments/fidelity/protocol.md)
-#   calibrated  --timing-profile calibrated, image 1 scenes/paper-image1-planar.nff, cyclic: the
-#               reading before the fit
-#   literal     --timing-profile literal, the planar image 1, cyclic
-# Image 2 is scenes/paper-image2-floor.nff under each (IMAGE2).
-READINGS=(fitted calibrated literal)
+#   fitted      the fit (docs/fidelity.md): --timing-profile fitted, scenes/paper-image1.nff and
+#               paper-image2.nff, cyclic, 16 nodes as a ring of 16, units counted per plane,
+#               memory counted 0 / 4 / 36 bytes (the machine files' settings)
+#   calibrated  --timing-profile calibrated, image 1 scenes/paper-image1-planar.nff, cyclic, 4x2x2:
+#               the reading before the fits
+#   literal     --timing-profile literal, the planar image 1, cyclic, 4x2x2
+#   round-one   the first fit: --timing-profile round-one, image 1 scenes/paper-image1-planar-z.nff,
+#               block-cyclic:3, ties on even rings all the + way (--route-ties plus), 4x2x2
+# Image 2 is scenes/paper-image2-floor.nff under each but the fitted.
+READINGS=(fitted calibrated literal round-one)
 
-# use_reading NAME: PROFILE, IMAGE1 (a file in scenes/) and the load-balancing mapping of reading
-# NAME; TORUSRT_SCENE_IMAGE1 and TORUSRT_LB_MAP still win.
+# use_reading NAME: PROFILE, IMAGE1 and IMAGE2 (files in scenes/), the arrangement of 16, the
+# load-balancing mapping and the reading's own arguments (READING_ARGS) of reading NAME; the
+# TORUSRT_ variables above still win.
 use_reading() {
+    local shape16=4x2x2
+    READING_ARGS=() IMAGE2=paper-image2-floor.nff
     case $1 in
-        fitted) PROFILE=fitted IMAGE1=paper-image1-planar-z.nff MAPARG[cyclic]=block-cyclic:3 ;;
+        fitted)
+            PROFILE=fitted IMAGE1=paper-image1.nff IMAGE2=paper-image2.nff MAPARG[cyclic]=cyclic shape16=16
+            READING_ARGS=(--preprocess-count per-plane --cell-header-bytes 0 --list-entry-bytes 4
+                          --object-record-bytes 36) ;;
+        round-one)
+            PROFILE=round-one IMAGE1=paper-image1-planar-z.nff MAPARG[cyclic]=block-cyclic:3
+            READING_ARGS=(--route-ties plus) ;;
         calibrated|literal) PROFILE=$1 IMAGE1=paper-image1-planar.nff MAPARG[cyclic]=cyclic ;;
         *) die "the reading must be one of: ${READINGS[*]}, not '$1'" ;;
     esac
     MAPARG[cyclic]=${TORUSRT_LB_MAP:-${MAPARG[cyclic]}}
+    SHAPE16=${TORUSRT_SHAPE16:-$shape16}
+    SHAPE[16]=$SHAPE16 CLUSTER_SHAPE=$SHAPE16
 }
 
 # Sweep definition per mode: image size, scenes, IP counts, mappings, processors per cluster.
@@ -123,7 +137,7 @@ define_mode() {
 scene_file() {
     case $1 in
         image1) echo "${TORUSRT_SCENE_IMAGE1:-$REPO/scenes/${IMAGE1:-paper-image1.nff}}" ;;
-        image2) echo "${TORUSRT_SCENE_IMAGE2:-$REPO/scenes/${IMAGE2:-paper-image2-floor.nff}}" ;;
+        image2) echo "${TORUSRT_SCENE_IMAGE2:-$REPO/scenes/${IMAGE2:-paper-image2.nff}}" ;;
         *) echo "$REPO/scenes/paper-$1.nff" ;;
     esac
 }

@@ -52,7 +52,7 @@ emit() {
     local json=$RES/$fig/$name.json cmd
     cmd=$(printf '%q ' "$EXP/run_point.sh" "$json")
     [ -n "$t1" ] && cmd+=$(printf '%q ' --t1-from "$t1")
-    cmd+=$(printf '%q ' -- "$SIM" "$(scene_file "$scene")" --size "$SIZE" --timing-profile "$PROFILE" "${POINT_ARGS[@]}" "$@")
+    cmd+=$(printf '%q ' -- "$SIM" "$(scene_file "$scene")" --size "$SIZE" --timing-profile "$PROFILE" "${READING_ARGS[@]}" "${POINT_ARGS[@]}" "$@")
     cmd=${cmd% }
     if [ "$tsv" = 1 ]; then
         printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$fig" "$name" "$scene" "$map" "$n" "$shape" "$m" "$data" "$json" "$cmd"

@@ -45,15 +45,16 @@ typedef struct rt_timing {
     double handover_send_us;    /* sending IP: hand a packet on to the next cell's owner */
     double handover_receive_us; /* receiving IP: take up a packet another IP handed over */
     double preprocess_unit_us;  /* one half-space test of a moving scene's cell-list update (340) */
-    double cell_step_packet_us; /* packet work on every move into the next cell, T(1) included (0) */
+    double cell_step_packet_us; /* packet work on every move into the next cell, T(1) included (580) */
 } rt_timing;
 
 void rt_timing_defaults(rt_timing *timing);
 
 /* A named profile (the files in timing/): "literal" (a hand-over costs a packet
  * creation plus an analysis), "calibrated" (the hand-over cost the calibration
- * study supports) or "fitted" (calibrated with the bus and memory timing the fidelity
- * study fitted; the defaults). RT_ERR_INVALID naming an unknown profile. */
+ * study supports), "fitted" (calibrated with the packet cost per cell step and the bus
+ * and memory timing the fidelity study fitted; the defaults) or "round-one" (calibrated
+ * with the first fit's bus and memory timing). RT_ERR_INVALID naming an unknown profile. */
 rt_status rt_timing_profile(const char *name, rt_timing *timing, char *msg, size_t msg_len);
 
 /* Number of built-in profiles and the i-th one's name (NULL past the end). */

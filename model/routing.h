@@ -18,7 +18,7 @@ const char *direction_name(int dir);
 // one link would. Either keeps a route minimal and in one direction per ring, which is what the
 // dateline argument of flow_control.h needs.
 enum class RouteTies { split, plus };
-constexpr RouteTies kDefaultRouteTies = RouteTies::plus;  // the rule the fitted reading was made under
+constexpr RouteTies kDefaultRouteTies = RouteTies::split;  // two links in a ring of two (docs/flow-control.md)
 
 class Routing {
   public:

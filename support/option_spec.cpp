@@ -49,7 +49,7 @@ std::vector<OptionSpec> common_option_specs(const std::string &output_help)
         {"--min-weight", "W", K::text, "1/512", 0, 0, "", "smallest ray weight, e.g. 0.002 or 1/512", G::machine,
          "min-weight"},
         {"--timing-profile", "NAME", K::text, rt_timing_default_profile(), 0, 0, "",
-         "timing profile: calibrated, literal or fitted; --timing FILE overrides single keys on top", G::machine,
+         "timing profile: calibrated, literal, fitted or round-one; --timing FILE overrides single keys on top", G::machine,
          "timing-profile"},
         {"--timing", "FILE", K::file, "", 0, 0, "", "timing file overriding single keys of the profile", G::machine,
          "timing"},

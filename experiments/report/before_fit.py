@@ -3,7 +3,7 @@ findings from that reading's runs, kept beside the study's results as `before-fi
 after the page's own findings so that the two readings stand side by side."""
 import os
 
-HEADING = "## Under the reading before the fit"
+HEADING = "## Under the reading before the fits"
 
 
 def section(results_dir):
@@ -20,7 +20,8 @@ def section(results_dir):
         body.pop()
     rel = os.path.relpath(path, os.path.join(os.path.dirname(__file__), "..", ".."))
     return [HEADING, "",
-            "The same study under the reading before the fit: timing profile `calibrated` (bus cycle and",
-            "memory access 0.5 us) and image 1 with its nine flakes in the plane z = 0",
-            "(`scenes/paper-image1-planar.nff`). Its findings, as this page's writer made them from that",
-            "reading's runs (`%s`):" % rel, ""] + body + [""]
+            "The same study under the reading before the fits: timing profile `calibrated` (bus cycle and",
+            "memory access 0.5 us, nothing charged per cell step), image 1 with its nine flakes in the",
+            "plane z = 0 (`scenes/paper-image1-planar.nff`), image 2 `scenes/paper-image2-floor.nff`, and",
+            "every tie on an even ring sent the + way (`--route-ties plus`). Its findings, as this page's",
+            "writer made them from that reading's runs (`%s`):" % rel, ""] + body + [""]

@@ -259,6 +259,25 @@ def figure_sections(all_r, img):
     return out
 
 
+READING_WHAT = {
+    "fitted": "the values the fidelity study fitted ([fidelity.md](fidelity.md)), as the machine files hold them",
+    "round-one": "the first fit, made without the work window",
+    "calibrated": "the reading before the fits",
+    "literal": "the calibrated reading with the paper's table read literally (a hand-over is a packet "
+               "creation and an analysis)",
+}
+
+
+def reading_line(x, default):
+    """One reading's settings, read from its runs."""
+    f = x.facts
+    return ("**%s**%s, %s: timing profile `%s` (%s us a hand-over, %s us a cell step), image 1 `scenes/%s`, "
+            "image 2 `scenes/%s`, 16 nodes as `%s`, `--route-ties %s`, the load-balancing points on `--map %s`"
+            % (x.profile, " (the default)" if default else "", READING_WHAT.get(x.profile, "a reading"),
+               f.timing_profile, f.hop_us, f.cell_step_us, f.image1_scene, f.image2_scene, f.shape16,
+               f.route_ties, f.lb_map))
+
+
 def intro(run_cmd, r, all_r):
     """How the page is made and the readings it is judged under."""
     return [
@@ -271,14 +290,8 @@ def intro(run_cmd, r, all_r):
         "How to run it on one machine, over ssh or as a Slurm job array: `experiments/README.md`.",
         "",
         "Every point runs under each reading of the paper's unknowns ([readings.md](readings.md)):",
-        "**%s**, the default: the values the fidelity study fitted ([fidelity.md](fidelity.md)): timing" % r.profile,
-        "profile `%s`, image 1 `scenes/%s` (its nine flakes in three columns at z = -5, 0, +5)," % (
-            r.facts.timing_profile, r.facts.image1_scene),
-        "and the load-balancing points run `--map %s`, as the machine files do;" % r.facts.lb_map,
-        "**calibrated**, the reading before the fit (timing profile `calibrated`, image 1 in the plane",
-        "z = 0, `scenes/paper-image1-planar.nff`, cyclic mapping); and **literal**, the same with the",
-        "paper's operation table read literally (a hand-over is a packet creation and an analysis, %s us)."
-        % (all_r[-1].facts.hop_us if len(all_r) > 1 else "?"),
+    ] + ["- " + reading_line(x, i == 0) + (";" if i + 1 < len(all_r) else ".") for i, x in enumerate(all_r)] + [
+        "",
         "Claims are judged under the %s reading; the others' figures and verdicts stand beside them." % r.profile,
         "The load-balancing points are labelled *cyclic* in every table and plot. Efficiency is",
         "T(1) / (n T(n)) throughout; busy time / (n T(n)) is shown as *load balance*.",
@@ -325,7 +338,7 @@ def document(res, all_r, doc_dir, drawn):
         "",
         WHAT_IS_COMPARED.format(creation=paper.TIMING_US["packet_creation"],
                                 analysis=paper.TIMING_US["packet_analysis"], handover=paper.HANDOVER_US),
-        "  missed intersection test, in the literal reading; nothing in the fitted and calibrated ones.",
+        "  missed intersection test, in the literal reading; nothing in the others.",
         "  With the cyclic mapping nearly every cell crossing changes IP." + "".join(efficiency_note(x) for x in all_r),
         "",
         "## Claims",
@@ -361,16 +374,16 @@ WHAT_IS_COMPARED = """## What is compared, and what differs from the paper
 
 - **The machine** is the paper's: 24 x 24 x 24 cells, 144 x 144 pixels, the V30/8087 operation
   times of section 6 (docs/design.md section 6), 50 us a packet on a link, a 3D torus
-  (1 = 1x1x1, 2 = 2x1x1, 4 = 2x2x1, 8 = 2x2x2, 16 = 4x2x2, 32 = 4x4x2, 64 = 4x4x4, 128 = 8x4x4,
-  256 = 8x8x4, 512 = 8x8x8), no host injection cost.
+  (1 = 1x1x1, 2 = 2x1x1, 4 = 2x2x1, 8 = 2x2x2, 16 = the reading's arrangement (above), 32 = 4x4x2,
+  64 = 4x4x4, 128 = 8x4x4, 256 = 8x8x4, 512 = 8x8x8), no host injection cost.
 - **The scenes are not the paper's.** The paper describes its two images in one sentence each;
   `scenes/paper-image1.nff` and `paper-image2.nff` are reconstructions (scenes/README.md):
   369 recursively defined diffuse spheres, and a glass and a mirror sphere before 121 small
   spheres. Sizes, positions, camera, lights and material coefficients are ours. Every absolute
   figure (seconds, units, bytes) depends on them; ratios and directions much less.
 - **Mappings**: block, cyclic (the paper's load-balancing mapping: block size 1, or blocks of 3
-  cells in the fitted reading) and block-cyclic with blocks of 2 and 3 cells, which lie in between.
-- **Clusters** (figures 10-12): 16 clusters on a 4x2x2 torus, the load-balancing mapping between
+  cells in round one's reading) and block-cyclic with blocks of 2 and 3 cells, which lie in between.
+- **Clusters** (figures 10-12): 16 clusters arranged as the flat 16, the load-balancing mapping between
   clusters, m processors per cluster on one bus. The paper's times are for m = 64, i.e.
   **16 x 64 = 1024 processors**; efficiencies are over all 16 m processors.
 - **Verdicts**: *holds* when our number satisfies the paper's statement; for the paper's

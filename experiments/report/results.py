@@ -12,7 +12,7 @@ FIGURES = ("fig5_6", "fig7", "fig8", "fig10_12")
 FACTS_FILE = "run_facts.csv"
 # The readings a sweep runs (experiments/lib.sh READINGS), the default first: each has its
 # results folder RESULTS/READING.
-PROFILES = ("fitted", "calibrated", "literal")
+PROFILES = ("fitted", "calibrated", "literal", "round-one")
 
 
 def profile_results(res):
@@ -37,7 +37,7 @@ class Facts:
 
     KEYS = ("image_size", "cells", "hop_us", "t1_runs", "joblog_points", "joblog_span_s", "timing_profile",
             "image1_scene", "lb_map", "cell_step_us", "cell_header_bytes", "list_entry_bytes",
-            "object_record_bytes")
+            "object_record_bytes", "image2_scene", "shape16", "route_ties")
 
     def __init__(self, res):
         path = os.path.join(res, FACTS_FILE)
@@ -61,6 +61,9 @@ class Facts:
         self.timing_profile = values["timing_profile"] or "?"
         self.image1_scene = values["image1_scene"] or "?"
         self.lb_map = values["lb_map"] or "?"
+        self.image2_scene = values["image2_scene"] or "?"
+        self.shape16 = values["shape16"] or "4x2x2"  # the arrangement of 16 nodes, flat and clustered
+        self.route_ties = values["route_ties"] or "?"
         self.cell_step_us = values["cell_step_us"] or "0"  # a table without the key charged nothing
         # The memory accounting the points ran under (docs/memory.md; a record of 0 is the natural size).
         self.cell_header_bytes = int(values["cell_header_bytes"] or 4)
@@ -85,17 +88,22 @@ class Facts:
             found["t1_runs"] = str(len(t1))
             found["timing_profile"] = report["config"]["timing_profile"]
         for path in t1:
-            if os.path.basename(path) == "image1.json":
+            name = os.path.basename(path)
+            if name in ("image1.json", "image2.json"):
                 with open(path) as f:
-                    found["image1_scene"] = os.path.basename(json.load(f)["scene"])
+                    found[name[:-5] + "_scene"] = os.path.basename(json.load(f)["scene"])
         lb = sorted(glob.glob(os.path.join(res, "fig5_6", "*-cyclic-n*.json")))
         if lb:
             with open(lb[0]) as f:
                 options = json.load(f)["config"]["options"]
             found["lb_map"] = options["map"]
-            for key in ("cell_header_bytes", "list_entry_bytes", "object_record_bytes"):
+            for key in ("cell_header_bytes", "list_entry_bytes", "object_record_bytes", "route_ties"):
                 if key.replace("_", "-") in options:
                     found[key] = options[key.replace("_", "-")]
+        n16 = sorted(glob.glob(os.path.join(res, "fig5_6", "*-cyclic-n16.json")))
+        if n16:
+            with open(n16[0]) as f:
+                found["shape16"] = json.load(f)["config"]["options"].get("ips", "")
         joblog = _own_or_parent(res, "joblog")
         if os.path.exists(joblog) and os.path.getsize(joblog) > 0:
             with open(joblog, newline="") as f:

@@ -166,8 +166,8 @@ def order_findings(runs, scenes, ns):
 
 
 def planar_findings(res):
-    """paper-image1 at 512 IPs in the reading before the fit (planar-512.tsv): the target of 80 %
-    efficiency was set on that reading's figures (cost 68 %, cyclic 30 %)."""
+    """paper-image1 at 512 IPs with the calibrated reading's image 1 (planar-512.tsv), under the
+    default timing: the same machines on a scene with more work per sphere."""
     path = os.path.join(res, "planar-512.tsv")
     if not os.path.exists(path):
         return []
@@ -177,8 +177,8 @@ def planar_findings(res):
         return []
     cyc, cost, best = get["flat-cyclic"], get["flat-cost"], get["flat-scatter-rf"]
     ok = all(r["image_identical"] == "1" and r["conserved"] == "true" for r in get.values())
-    return [f"- paper-image1 at 512 IPs in the reading before the fit (`scenes/paper-image1-planar.nff`; on a "
-            f"flat torus its `calibrated` profile gives the fitted times): cyclic {t(cyc):.3g} s "
+    return [f"- paper-image1 at 512 IPs with the calibrated reading's image 1 (`scenes/paper-image1-planar.nff`: "
+            f"the flakes at full size, two lights), under the default timing: cyclic {t(cyc):.3g} s "
             f"({100 * float(cyc['efficiency']):.1f} %), cost {t(cost):.3g} s ({100 * float(cost['efficiency']):.1f} %), "
             f"scatter under rays-first {t(best):.3g} s ({t(cyc) / t(best):.2f}x flat cyclic, efficiency "
             f"{100 * float(best['efficiency']):.1f} %); images equal to the renderer's and packets conserved: "

@@ -43,8 +43,8 @@ point() { # SCENE MACHINE NODES_SHAPE M DATA MAP REPLICATE [QUEUE_ORDER]
   mv -f "$work/$tag.part.json" "$work/$tag.json"
 }
 study_script "$work" "ref point" "build root work"
-# The reading before the fit's image 1 (its flakes in one plane; on a flat torus the calibrated
-# and fitted profiles give the same times) at 512 IPs: cyclic, cost and scatter under rays-first.
+# The calibrated reading's image 1 (its flakes in one plane at full size), under the default
+# timing, at 512 IPs: cyclic, cost and scatter under rays-first.
 planar=paper-image1-planar
 printf 'ref\t%s\n' "${scenes[@]}" "$planar" | study_list "$work" "$work/phase1.list"
 declare -A NODES=([4]=2x2x1 [8]=2x2x2 [16]=4x2x2 [32]=4x4x2 [64]=4x4x4 [128]=8x4x4 [256]=8x8x4

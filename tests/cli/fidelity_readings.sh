@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # fidelity_readings.sh - the readings of the paper's unknowns (docs/fidelity.md) as settings:
 # the counting rules in both executables, the scene variants against the reference renderer,
-# the memory accounting, and the paper's machine files with their timing file beside them.
+# the memory accounting, the paper's machine files with their timing file beside them, and round
+# one's reading by name (machines/round-one/).
 #
 # Usage: bash tests/cli/fidelity_readings.sh BUILD_DIR SOURCE_DIR
 set -u
@@ -82,8 +83,30 @@ check "a relative timing path is read beside the machine file" [ "$(json "$TMP/r
 (cd "$TMP/m" && "$sim" --dump-config --config slow.toml --timing "$SRC/timing/literal.timing" >"$TMP/cl.dump")
 check "--timing on the command line is taken as given" \
     grep -qx "timing=\"$SRC/timing/literal.timing\"" "$TMP/cl.dump"
-sim_ok paper-16 "$img1" --size 16x16 --config "$SRC/machines/paper-16.toml" -o "$TMP/p16.png"
+sim_ok paper-16 "$img1" --size 16x16 --config "$SRC/machines/paper-16.toml" -o "$TMP/p16.png" --stats "$TMP/p16.json"
 "${run_limited[@]}" "$render" "$img1" --size 16x16 -q -o "$TMP/p16-ref.png"
 check "paper-16.toml renders the reference image" cmp -s "$TMP/p16.png" "$TMP/p16-ref.png"
+
+# 5. Round one's reading stays selectable by name: its machine files run its profile, interleave
+#    and tie rule on its scenes, and equal the same run spelt out as options.
+for m in "$SRC"/machines/round-one/*.toml; do
+    [ -e "$m" ] || { fail "no machine files in $SRC/machines/round-one"; break; }
+    name=round-one-$(basename "$m" .toml)
+    (cd "$TMP" && "$sim" --dump-config --config "$m" >"$TMP/$name.dump" 2>"$TMP/$name.err")
+    check "$name loads ($(head -c 200 "$TMP/$name.err"))" [ $? -eq 0 ]
+    check "$name: profile round-one" grep -qx 'timing-profile="round-one"' "$TMP/$name.dump"
+    check "$name: block-cyclic:3" grep -qx 'map="block-cyclic:3"' "$TMP/$name.dump"
+    check "$name: ties plus" grep -qx 'route-ties="plus"' "$TMP/$name.dump"
+done
+old1=$SRC/scenes/paper-image1-planar-z.nff
+sim_ok round-one "$old1" --size 16x16 --config "$SRC/machines/round-one/paper-16.toml" -o "$TMP/r1.png" --stats "$TMP/r1.json"
+sim_ok round-one-spelt "$old1" --size 16x16 --ips 4x2x2 --map block-cyclic:3 --route-ties plus \
+    --timing-profile round-one -o "$TMP/r1s.png" --stats "$TMP/r1s.json"
+check "round one's machine file = its options spelt out" \
+    [ "$(json "$TMP/r1.json" .sim_time_s)" = "$(json "$TMP/r1s.json" .sim_time_s)" ]
+check "round one's machine file differs from the fitted one" \
+    [ "$(json "$TMP/r1.json" .sim_time_s)" != "$(json "$TMP/p16.json" .sim_time_s 2>/dev/null)" ]
+"${run_limited[@]}" "$render" "$old1" --size 16x16 -q -o "$TMP/r1-ref.png"
+check "round one's machine renders the reference image" cmp -s "$TMP/r1.png" "$TMP/r1-ref.png"
 
 finish

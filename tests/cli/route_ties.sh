@@ -4,6 +4,7 @@
 #   torusrt-render's and packets are conserved, on the flat torus, with finite buffers under flow
 #   classes, loosely timed and with clusters;
 # - plus: every ym and zm link carries no packet, and the y and z + links carry them all;
+# - without --route-ties the rule is split;
 # - both rules give the same image; split's busiest link is less used, and with slow links (where
 #   the links bound the time) split finishes sooner; the same run twice gives the same time; the JSON and the summary name the rule; --dump-config writes it and a machine
 #   file holding it gives the same image time;
@@ -45,6 +46,13 @@ for m in "${machines[@]}"; do
         done
     fi
 done
+# The default rule is split: without --route-ties the ym and zm links carry packets.
+if sim_ok default "${common[@]}" -o "$TMP/default.png" --stats "$TMP/default.json"; then
+    check "default: the rule is split" test "$(json "$TMP/default.json" .config.route_ties)" = split
+    for dir in ym zm; do
+        check "default: the $dir links carry packets" test "$(dir_packets "$TMP/default.json" "$dir")" -gt 0
+    done
+fi
 if [ -f "$TMP/split.json" ] && [ -f "$TMP/plus.json" ]; then
     check "plus: the yp links carry the y traffic of split" test "$(dir_packets "$TMP/plus.json" yp)" -gt 0
     check "split: the busiest link is less used than under plus" test "$(jq -s \

@@ -2,14 +2,17 @@
 # Shared data can finish before replicated data: a list-scheduling effect of the round-robin
 # dispatcher (docs/cluster.md, "Shared against replicated data"), on a case small enough to work
 # by hand. Three pixels, eight spheres, one node of two processors (--ips 1 --cluster 2), three
-# cells along x, the fitted profile. Objects are dealt by index to the node's processors (even to
-# 0, odd to 1); spheres 1 and 3 lie in the left cell, 5 and 7 in the centre cell, all four held by
-# processor 1; the others lie in the right cell, off every ray's path but the right pixel's.
+# cells along x, round one's profile named explicitly (--timing-profile round-one: a 2 us bus
+# cycle and memory access, nothing charged per cell step), on which every figure below relies.
+# Objects are dealt by index to the node's processors (even to 0, odd to 1); spheres 1 and 3 lie
+# in the left cell, 5 and 7 in the centre cell, all four held by processor 1; the others lie in
+# the right cell, off every ray's path but the right pixel's.
 #
 # Step work (us): P0 and P1, the left and centre primaries: a miss 1300 + a hit 1750 + shading
 # 4600 + one shadow packet 1600 + analysis 580 + the shadow's start cell 340 = 10170; P2, the
 # right primary: 4 misses = 6120 (with its analysis and DDA steps); shadow A (from P0) 3520,
-# shadow B (from P1) 6460. A packet over the bus takes 28.25 us, an object read 22.25 us.
+# shadow B (from P1) 6460. A packet over the bus takes 28.25 us, an object read 22.25 us
+# (round-one; the default profile, fitted, makes them 56.25 and 40.75 us).
 # The round-robin dispatcher sends P0 to processor 0, P1 to 1, P2 to 0, then the next packet to 1.
 #
 # Replicated: P0 ends at 10198.25 us, P1 at 10226.5, so A reaches the dispatcher first and goes
@@ -43,7 +46,7 @@ s 3.8 -1.5 -1.5 0.7
 s 0 1.5 0 0.7
 NFF
 render_ok ref "$TMP/swap.nff" "$TMP/ref.png" || { finish; exit 1; }
-machine=(--ips 1 --cluster 2 --cells 3x1x1 --timing-profile fitted --dispatch round-robin --t1 1)
+machine=(--ips 1 --cluster 2 --cells 3x1x1 --timing-profile round-one --dispatch round-robin --t1 1)
 # near A B: |A - B| < 1e-9 (seconds).
 near() { awk -v a="$1" -v b="$2" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(d < 1e-9) }'; }
 for data in replicated shared; do

@@ -24,6 +24,13 @@ six() { awk '{ printf "%.6f", $1 }'; }
 # The summary's figures: 4 significant digits, no exponent.
 sig4() { python3 -c 'import math, sys; v = float(sys.argv[1]); d = 3 - math.floor(math.log10(abs(v))) if v else 0; print("%.*f" % (max(d, 0), v))' "$(cat)"; }
 check "status ok" test "$(json "$j" '.status')" = ok
+# The first line counts the scene's objects and lights in words that agree with the counts.
+check "summary: objects and lights counted as the JSON has them" \
+    test "$(head -n 1 "$TMP/sum" | sed 's/.*(32x32, //')" = \
+    "$(json "$j" '"\(.objects) object\(if .objects == 1 then "" else "s" end), \(.lights) light\(if .lights == 1 then "" else "s" end))"')"
+printf 'v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 30\nhither 0.01\nresolution 8 8\nl 1 1 5\nf 1 1 1 1 0 0 0 1\ns 0 0 0 1\n' >"$TMP/one.nff"
+"${run_limited[@]}" "$BUILD/torusrt-sim" "$TMP/one.nff" -o "$TMP/one.png" --t1 1 >"$TMP/one.sum" || fail "one-light run"
+check "summary: one object and one light in the singular" grep -q '(8x8, 1 object, 1 light)' "$TMP/one.sum"
 check "summary image time = sim_time_s" \
     test "$(line 'image time' | awk '{ print $3 }')" = "$(json "$j" '.sim_time_s' | sig4)"
 check "summary efficiency = efficiency" \

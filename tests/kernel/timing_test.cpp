@@ -62,12 +62,13 @@ TEST(Timing, Defaults)
     EXPECT_EQ(t.packet_bytes, 28);
     EXPECT_EQ(t.host_inject_us, 0);
     EXPECT_EQ(t.bus_width_bytes, 2);
-    EXPECT_EQ(t.bus_cycle_us, 2.0) << "the fitted profile";
+    EXPECT_EQ(t.bus_cycle_us, 4.0) << "the fitted profile";
     EXPECT_EQ(t.bus_arbitration_us, 0.25);
-    EXPECT_EQ(t.memory_access_us, 2.0);
+    EXPECT_EQ(t.memory_access_us, 0.5);
     EXPECT_EQ(t.handover_send_us, 0);
     EXPECT_EQ(t.handover_receive_us, 0);
     EXPECT_EQ(t.preprocess_unit_us, 340) << "a next-cell determination's time";
+    EXPECT_EQ(t.cell_step_packet_us, 580) << "the packet analysis at every cell step";
 }
 
 TEST(Timing, KeysNameEveryField)
@@ -212,16 +213,20 @@ TEST(Timing, HandOversHaveTheirOwnKeys)
     EXPECT_EQ(rt_timing_step_us(&t, &ops), 314.0 + t.packet_creation_us);
 }
 
-TEST(Timing, CellStepPacketCostIsItsOwnKeyAndZeroInEveryProfile)
+TEST(Timing, CellStepPacketCostIsItsOwnKeyAndZeroOutsideTheFit)
 {
     rt_timing t;
     rt_timing_defaults(&t);
-    EXPECT_EQ(t.cell_step_packet_us, 0.0);
     for (size_t i = 0; i < rt_timing_profile_count(); i++) {
         rt_timing p;
-        ASSERT_EQ(rt_timing_profile(rt_timing_profile_name(i), &p, nullptr, 0), RT_OK);
-        EXPECT_EQ(p.cell_step_packet_us, 0.0) << rt_timing_profile_name(i);
+        const std::string name = rt_timing_profile_name(i);
+        ASSERT_EQ(rt_timing_profile(name.c_str(), &p, nullptr, 0), RT_OK);
+        EXPECT_EQ(p.cell_step_packet_us, name == "fitted" ? 580.0 : 0.0) << name;
     }
+    ASSERT_EQ(rt_timing_set(&t, "cell_step_packet", 0, nullptr, 0), RT_OK);
+    rt_op_counts none{};
+    none.cell_steps = 4;
+    EXPECT_EQ(rt_timing_step_us(&t, &none), 0.0) << "set to 0, a cell step costs nothing";
     ASSERT_EQ(rt_timing_set(&t, "cell_step_packet", 580, nullptr, 0), RT_OK);
     rt_op_counts ops{};
     ops.cell_steps = 4;
@@ -252,19 +257,27 @@ TEST(Timing, ProfilesDifferOnlyInTheHandOver)
     EXPECT_NE(std::string(msg).find("nonesuch"), std::string::npos) << msg;
 }
 
-// The fitted profile is the calibrated one with the fidelity study's bus and memory timing.
-TEST(Timing, FittedIsCalibratedWithSlowerBusAndMemory)
+// The fitted profile is the calibrated one with the fidelity study's packet cost per cell step
+// (the table's packet analysis) and bus and memory timing; round one's fit, the calibrated one
+// with a 2 us bus cycle and memory access and nothing per cell step.
+TEST(Timing, FittedProfilesAreCalibratedWithTheirFits)
 {
-    rt_timing fit, cal;
+    rt_timing fit, one, cal;
     char msg[RT_MSG_LEN] = "";
     ASSERT_EQ(rt_timing_profile("fitted", &fit, msg, sizeof msg), RT_OK) << msg;
+    ASSERT_EQ(rt_timing_profile("round-one", &one, msg, sizeof msg), RT_OK) << msg;
     ASSERT_EQ(rt_timing_profile("calibrated", &cal, msg, sizeof msg), RT_OK) << msg;
-    EXPECT_EQ(fit.bus_cycle_us, 2.0);
-    EXPECT_EQ(fit.memory_access_us, 2.0);
+    EXPECT_EQ(fit.bus_cycle_us, 4.0);
+    EXPECT_EQ(fit.memory_access_us, 0.5);
+    EXPECT_EQ(fit.cell_step_packet_us, fit.packet_analysis_us) << "the packet analysis at every cell step";
+    EXPECT_EQ(one.bus_cycle_us, 2.0);
+    EXPECT_EQ(one.memory_access_us, 2.0);
+    EXPECT_EQ(one.cell_step_packet_us, 0.0);
     for (size_t i = 0; i < rt_timing_key_count(); i++) {
         std::string k = rt_timing_key_name(i);
-        if (k == "bus_cycle" || k == "memory_access") continue;
+        if (k == "bus_cycle" || k == "memory_access" || k == "cell_step_packet") continue;
         EXPECT_EQ(rt_timing_get(&fit, i), rt_timing_get(&cal, i)) << k;
+        EXPECT_EQ(rt_timing_get(&one, i), rt_timing_get(&cal, i)) << k;
     }
 }
 
@@ -272,8 +285,8 @@ TEST(Timing, FittedIsCalibratedWithSlowerBusAndMemory)
 // files' timing file is the fitted profile.
 TEST(Timing, ProfileFilesHoldTheProfiles)
 {
-    ASSERT_EQ(rt_timing_profile_count(), 3u);
-    EXPECT_EQ(rt_timing_profile_name(3), nullptr);
+    ASSERT_EQ(rt_timing_profile_count(), 4u);
+    EXPECT_EQ(rt_timing_profile_name(4), nullptr);
     const std::string src = TORUSRT_SOURCE_DIR;
     std::vector<std::pair<std::string, std::string>> pairs;
     for (size_t p = 0; p < rt_timing_profile_count(); p++)

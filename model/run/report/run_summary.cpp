@@ -132,8 +132,9 @@ void print_summary(const RunReport &r, std::FILE *out)
     const RunFacts &f = r.facts;
     double T = r.sim_time_s;
     int n = c.processor_count();
-    std::fprintf(out, "torusrt-sim: %s (%ux%u, %llu objects, %llu lights)\n", c.scene_path.c_str(), r.width, r.height,
-                 static_cast<unsigned long long>(r.objects), static_cast<unsigned long long>(r.lights));
+    std::fprintf(out, "torusrt-sim: %s (%ux%u, %llu object%s, %llu light%s)\n", c.scene_path.c_str(), r.width, r.height,
+                 static_cast<unsigned long long>(r.objects), r.objects == 1 ? "" : "s",
+                 static_cast<unsigned long long>(r.lights), r.lights == 1 ? "" : "s");
     std::fprintf(out,
                  "  system       %s, %s mapping, %s,\n"
                  "               %s\n",
