@@ -9,10 +9,10 @@ source "$(dirname "$0")/common.bash" "$@"
 need_exe torusrt-render
 render="$BUILD/torusrt-render"
 time_limit 120
-scene=$(source_scene paper-image1) || exit 1
+scene=$(source_scene paper-image1-planar-z) || exit 1
 size=(--size 40x40)
 
-# The scene's own camera (paper-image1: from 4 5 30, at 0 0 0, up 0 1 0, angle 36.5).
+# The scene's own camera (paper-image1-planar-z: from 4 5 30, at 0 0 0, up 0 1 0, angle 36.5).
 view=$(awk '$1 == "from" || $1 == "at" || $1 == "up" || $1 == "angle" { $1 = ""; printf "%s", $0 }' "$scene")
 check "the scene's view is the one this test computes by hand" \
     [ "$(echo $view)" = "4 5 30 0 0 0 0 1 0 36.5" ]

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Packet and pixel latency on a case worked by hand: one pixel, two IPs (--ips 2), two cells
-# along x (cell 0 owned by IP 0, cell 1 by IP 1), the fitted profile (hand-overs cost nothing
-# beyond the link, a link takes 50 us a packet). The primary ray runs along +x; sphere A, off
+# along x (cell 0 owned by IP 0, cell 1 by IP 1), the calibrated profile (hand-overs and cell
+# steps cost nothing beyond the link, a link takes 50 us a packet). The primary ray runs along +x; sphere A, off
 # the axis, lies in cell 0; sphere B, on the axis, in cell 1; one light, behind the camera and
 # above the scene's thin slab in z, so the shadow packet leaves the object space in cell 1.
 #
@@ -36,9 +36,9 @@ s -3 2 0 0.5
 s 3 0 0 0.5
 NFF
 render_ok ref "$TMP/one.nff" "$TMP/ref.png" || { finish; exit 1; }
-sim_ok run "$TMP/one.nff" --ips 2 --cells 2x1x1 --timing-profile fitted --t1 1 -o "$TMP/o.png" --stats "$TMP/o.json" ||
+sim_ok run "$TMP/one.nff" --ips 2 --cells 2x1x1 --timing-profile calibrated --t1 1 -o "$TMP/o.png" --stats "$TMP/o.json" ||
     { finish; exit 1; }
-"$BUILD/torusrt-sim" "$TMP/one.nff" --ips 2 --cells 2x1x1 --timing-profile fitted --t1 1 -o "$TMP/s.png" > "$TMP/sum" \
+"$BUILD/torusrt-sim" "$TMP/one.nff" --ips 2 --cells 2x1x1 --timing-profile calibrated --t1 1 -o "$TMP/s.png" > "$TMP/sum" \
     2> /dev/null
 check "the renderer's image" cmp -s "$TMP/ref.png" "$TMP/o.png"
 # is PATH VALUE: the JSON's number at PATH equals VALUE (to a picosecond, in us or s).

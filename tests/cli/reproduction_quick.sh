@@ -6,9 +6,10 @@
 # directions of the paper's claims hold: cyclic load_balance >= block at 16 IPs, memory at 16
 # IPs below pixel-partitioned, preprocessing units fall with P, replicated time falls with m,
 # shared memory below replicated at the largest m. Every image equals the one-processor image.
-# The three readings are swept, each into RESULTS/READING (fitted, the default; calibrated and
+# The four readings are swept, each into RESULTS/READING (fitted, the default; calibrated and
 # literal, which share image 1's planar layout: their one-IP times are equal, one IP hands nothing
-# over). Under fitted the load-balancing points run block-cyclic:3.
+# over; round-one). Under fitted 16 nodes are a ring of 16 and the load-balancing points run
+# cyclic; under round-one, 4x2x2 and block-cyclic:3.
 # Run: bash reproduction_quick.sh BUILD_DIR SOURCE_DIR
 source "$(dirname "$0")/common.bash" "$@"
 EXP=$SRC/experiments
@@ -26,11 +27,12 @@ if ! "$BUILD/torusrt-sim" "$SRC/scenes/one-pixel.nff" -o "$TMP/probe.png" --stat
     clusters=(--no-clusters); have_clusters=0
 fi
 
-# 1. A sweep in which one point fails (a stand-in simulator refuses block-cyclic on 16 IPs).
+# 1. A sweep in which one point fails (a stand-in simulator refuses block-cyclic:2 on 16 IPs, a
+#    ring of 16 under fitted, 4x2x2 under the others).
 mkdir -p "$TMP/fakebuild"
 cat >"$TMP/fakebuild/torusrt-sim" <<EOF
 #!/usr/bin/env bash
-case " \$* " in *" --ips 4x2x2 --map block-cyclic:2 "*) echo "injected failure" >&2; exit 7 ;; esac
+case " \$* " in *" --ips 4x2x2 --map block-cyclic:2 "*|*" --ips 16 --map block-cyclic:2 "*) echo "injected failure" >&2; exit 7 ;; esac
 exec "$BUILD/torusrt-sim" "\$@"
 EOF
 chmod +x "$TMP/fakebuild/torusrt-sim"
@@ -39,7 +41,7 @@ TORUSRT_BUILD=$TMP/fakebuild bash "$EXP/sweep.sh" --quick "${clusters[@]}" --res
 rc=$?
 check "sweep with a failing point exits non-zero (got $rc)" test "$rc" -ne 0
 check "the failed point's command line is reported" grep -q 'exit 7 .*--map block-cyclic:2' "$TMP/sweep1.err"
-for P in fitted calibrated literal; do
+for P in fitted calibrated literal round-one; do
     check "$P: the failed point is a 'failed' row of fig5_6.csv" \
         test "$(awk -F, '$2 == "bc2" && $3 == 16 && $6 == "failed"' "$RES/$P/fig5_6.csv" | wc -l)" -eq 2
     check "$P: the failed point's messages are kept" grep -q 'injected failure' "$RES/$P/fig5_6/image1-bc2-n16.log"
@@ -52,7 +54,7 @@ TORUSRT_BUILD=$BUILD bash "$EXP/sweep.sh" --quick "${clusters[@]}" --results "$R
 rc=$?
 echo "quick sweep re-run: $(( $(date +%s) - start )) s"
 check "re-run exits 0 (got $rc; $(tail -n 3 "$TMP/sweep2.err" | tr '\n' ' '))" test "$rc" -eq 0
-check "re-run computes only the 6 missing points" test "$(tail -n 1 "$RES/runs.tsv" | cut -f7)" = 6
+check "re-run computes only the 8 missing points" test "$(tail -n 1 "$RES/runs.tsv" | cut -f7)" = 8
 check "no failed points left" test ! -s "$RES/failed.tsv"
 
 # 3. The CSVs: every expected row, all ok, identical images.
@@ -93,11 +95,16 @@ for f in "${figs[@]}"; do
     check "report embeds fig$f" grep -q "(img/reproduction-fig$f.png)" "$RES/reproduction.md"
     check "embedded fig$f exists" ispng "$RES/img/reproduction-fig$f.png"
 done
-check "report has the claims table" grep -q '^| # | claim (paper section) | paper | ours, fitted | verdict, fitted | ours, calibrated | verdict, calibrated | ours, literal | verdict, literal | notes (fitted) |' "$RES/reproduction.md"
-check "the fitted reading ran image 1 from paper-image1-planar-z.nff" grep -q '^image1_scene,paper-image1-planar-z.nff$' "$RES/fitted/run_facts.csv"
+check "report has the claims table" grep -q '^| # | claim (paper section) | paper | ours, fitted | verdict, fitted | ours, calibrated | verdict, calibrated | ours, literal | verdict, literal | ours, round-one | verdict, round-one | notes (fitted) |' "$RES/reproduction.md"
+check "the fitted reading ran image 1 from paper-image1.nff" grep -q '^image1_scene,paper-image1.nff$' "$RES/fitted/run_facts.csv"
+check "the fitted reading ran its 16 nodes as a ring" grep -q '^shape16,16x1x1$' "$RES/fitted/run_facts.csv"
+check "round one's reading ran image 1 from paper-image1-planar-z.nff" \
+    grep -q '^image1_scene,paper-image1-planar-z.nff$' "$RES/round-one/run_facts.csv"
+check "round one's reading ran ties the + way" grep -q '^route_ties,plus$' "$RES/round-one/run_facts.csv"
 check "the calibrated reading ran image 1 from paper-image1-planar.nff" \
     grep -q '^image1_scene,paper-image1-planar.nff$' "$RES/calibrated/run_facts.csv"
-check "the fitted reading's load-balancing points ran block-cyclic:3" grep -q '^lb_map,block-cyclic:3$' "$RES/fitted/run_facts.csv"
+check "the fitted reading's load-balancing points ran cyclic" grep -q '^lb_map,cyclic$' "$RES/fitted/run_facts.csv"
+check "round one's load-balancing points ran block-cyclic:3" grep -q '^lb_map,block-cyclic:3$' "$RES/round-one/run_facts.csv"
 check "report has a row per claim" test "$(grep -c '^| [0-9][0-9]* | ' "$RES/reproduction.md")" -ge 17
 check "report gives the wall time" grep -q 'wall time of the points | \*\*[0-9.]* s\*\*' "$RES/reproduction.md"
 

@@ -64,7 +64,8 @@ check "oracle: migration is free" [ "$(sum "$j" '.frames[].migration_time_s')" =
 
 # A frame's image time equals a single run with that frame's camera (the half turn of
 # paper-image1's view: from 4 5 30 -> -4 5 -30) under the same mapping.
-printf '4 5 30 0 0 0 0 1 0 36.5\n-4 5 -30 0 0 0 0 1 0 36.5\n' >"$TMP/two.txt"
+angle1=$(awk '$1 == "angle" { print $2 }' "$scene1")  # the scene's own view angle
+printf '4 5 30 0 0 0 0 1 0 %s\n-4 5 -30 0 0 0 0 1 0 %s\n' "$angle1" "$angle1" >"$TMP/two.txt"
 sed 's/^from 4 5 30/from -4 5 -30/' "$scene1" >"$TMP/half.nff"
 check "premise: the half-turn scene differs in its view" differs "$scene1" "$TMP/half.nff"
 sim_ok two "$scene1" "${size[@]}" --ips 4x2x2 --camera-path "$TMP/two.txt" -o "$TMP/two_%d.png" \

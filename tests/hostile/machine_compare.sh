@@ -33,7 +33,7 @@ printf 'ips="2x1x1"\n' >full.toml
 compares "ips 2x1x1, the rest left out" 0 "r.json and full.toml: the same [0-9]+ keys" full.toml
 printf 'ips="2"\n' >short.toml
 compares "ips 2 for 2x1x1" 0 "the same [0-9]+ keys" short.toml
-printf 'ips="2"\nmap="cyclic"\ncells="24"\nroute-ties="plus"\n' >defaults.toml
+printf 'ips="2"\nmap="cyclic"\ncells="24"\nroute-ties="split"\n' >defaults.toml
 compares "defaults written out" 0 "the same [0-9]+ keys" defaults.toml
 printf 'ips="4"\ncells="24x24x12"\n' >other.toml
 compares "another machine" 1 "^machine: ips: report '2x1x1', file '4x1x1'$" other.toml

@@ -44,7 +44,7 @@ rc=$?
 ends 1 "sweep >&-" "sweep: standard output: cannot write: Bad file descriptor"
 
 # ---- Ctrl-C while a run goes on ----------------------------------------------------------
-timeout --preserve-status -s INT 2 "${cm[@]}" s.nff --out big.png -- --ips 4x4 --size 600x600 \
+timeout --preserve-status -s INT 2 "${cm[@]}" s.nff --out big.png -- --ips 4x4 --size 1200x1200 \
     >/dev/null 2>err.txt </dev/null
 rc=$?
 ends 130 "cm stopped by SIGINT" "compare-mappings: interrupted"

@@ -14,7 +14,7 @@ set -u
 source "$(dirname "$0")/../cli/common.bash" "$@"
 need_exe torusrt-render torusrt-sim
 time_limit 100
-f=$(source_scene paper-image1) || exit 1
+f=$(source_scene paper-image1-planar-z) || exit 1
 sim=("$BUILD/torusrt-sim" -q --t1 1 --size 8x8)
 sim_anim=("$BUILD/torusrt-sim" -q --size 8x8)  # an animation takes no --t1
 cd "$TMP" || exit 1

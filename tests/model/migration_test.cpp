@@ -100,17 +100,32 @@ TEST(Migration, OneCellOneHop)
 
 TEST(Migration, TwoCellsShareTheBusiestLink)
 {
-    // On a ring of 4: cell 0 goes 0 -> 2 (0 -> 1 -> 2, a tie goes +), cell 1 goes 1 -> 3
-    // (1 -> 2 -> 3). Both cross link 1 -> 2, which sends the two back to back.
+    // On a ring of 4 with every tie the + way (--route-ties plus): cell 0 goes 0 -> 2
+    // (0 -> 1 -> 2), cell 1 goes 1 -> 3 (1 -> 2 -> 3). Both cross link 1 -> 2, which sends the
+    // two back to back.
     OnePerCell s;
+    const Routing ring4_plus({4, 1, 1}, true, torusrt::RouteTies::plus);
     const uint64_t each = 8 + rt_scene_object_bytes(s.scene, 0);
-    MigrationCost two = migration_cost(s.scene, s.grid, ring4, 4, s.timing, {0, 1}, {2, 3});
+    MigrationCost two = migration_cost(s.scene, s.grid, ring4_plus, 4, s.timing, {0, 1}, {2, 3});
     EXPECT_EQ(two.cells, 2u);
     EXPECT_EQ(two.bytes(), 2 * each) << "two cells, each 8 + a record";
     EXPECT_EQ(two.max_hops, 2);
     EXPECT_EQ(two.byte_hops, 4 * each) << "two hops each";
     EXPECT_EQ(two.busiest_link_bytes, 2 * each) << "link 1 -> 2 carries both";
     EXPECT_NEAR(two.time_s, std::ceil(2.0 * each / 28.0) * 50e-6, 1e-12) << "time of the shared link";
+}
+
+TEST(Migration, SplitTiesSendTwoCellsOppositeWays)
+{
+    // The same moves with ties split by the cell's index (the default): cell 0 (even) goes the +
+    // way, 0 -> 1 -> 2; cell 1 (odd) the - way, 1 -> 0 -> 3. No link carries both, so the
+    // busiest carries one cell and the move takes one cell's time.
+    OnePerCell s;
+    const uint64_t each = 8 + rt_scene_object_bytes(s.scene, 0);
+    MigrationCost two = migration_cost(s.scene, s.grid, ring4, 4, s.timing, {0, 1}, {2, 3});
+    EXPECT_EQ(two.byte_hops, 4 * each) << "two hops each";
+    EXPECT_EQ(two.busiest_link_bytes, each) << "no link carries both";
+    EXPECT_NEAR(two.time_s, std::ceil(static_cast<double>(each) / 28.0) * 50e-6, 1e-12);
 }
 
 TEST(Migration, HeldObjectsAreNotSentAgain)
