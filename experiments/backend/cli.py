@@ -123,6 +123,11 @@ def run(args):
 
 
 def interrupted(signum, frame):
+    """The first stopping signal interrupts the run; the ones after it (a sweep's shell passing
+    the same stop on as TERM) are ignored, so that the clean-up, cancelling what Slurm holds,
+    runs to its end."""
+    for s in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP):
+        signal.signal(s, signal.SIG_IGN)
     raise KeyboardInterrupt
 
 
@@ -151,8 +156,8 @@ def main(argv):
     p.set_defaults(run=lambda a: task.run(a.todo, a.per_task, a.rcdir))
     refuse_empty_values(parser)
     args = parser.parse_args(argv)
-    signal.signal(signal.SIGTERM, interrupted)
-    signal.signal(signal.SIGINT, signal.default_int_handler)  # even where the shell started us ignoring it
+    for s in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP):  # INT even where the shell started us ignoring it
+        signal.signal(s, interrupted)
     named_stdout()  # a full disk or a closed pipe on standard output: named, exit 1
     try:
         status = args.run(args)
