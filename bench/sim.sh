@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Benchmark (not a test): the simulator's cost per packet hop. Image 1 in its planar layout
-# (paper-image1-planar: a fixed workload, so figures of different builds compare) at 144x144 on 24^3
+# (paper-image1-planar) under the timing profile `calibrated` with a ring's ties on the + link (a fixed
+# workload whatever the defaults, so figures of different builds compare; a build without
+# --route-ties sends ties that way) at 144x144 on 24^3
 # cells with 16, 64, 512 and 4096 IPs (the same work at every size), and the 512-IP run on 64^3 cells at
 # 1024x1024; cyclic mapping. Per row: simulated image time, wall time of the simulation (sc_start,
 # after elaboration), that of the elaboration before it (building and binding the modules: a cost
@@ -28,6 +30,8 @@ configs=("144x144 24 4x2x2" "144x144 24 4x4x4" "144x144 24 8x8x8" "144x144 24 16
 small=3 # rows run round by round; the rest, each a quarter of a gigabyte, after them
 [ "${BENCH_BIG:-1}" = 0 ] || configs+=("1024x1024 64 8x8x8")
 declare -a best walls
+reading=(--timing-profile calibrated)
+[[ $("$build/torusrt-sim" --help) != *--route-ties* ]] || reading+=(--route-ties plus)
 run_row() { # one run of row $1 (and of the renderer on its scene, size and grid)
   local i=$1 size cells ips wall
   read -r size cells ips <<<"${configs[$i]}"
@@ -36,7 +40,7 @@ run_row() { # one run of row $1 (and of the renderer on its scene, size and grid
     mv "$tmp/render.json" "$tmp/r$i.json"
   fi
   /usr/bin/time -v -o "$tmp/run-time.txt" "$build/torusrt-sim" "$scene" --size "$size" --cells "$cells" --ips "$ips" \
-    --t1 1 -o "$tmp/s.png" --stats "$tmp/run.json" -q
+    "${reading[@]}" --t1 1 -o "$tmp/s.png" --stats "$tmp/run.json" -q
   wall=$(jq .sim_wall_s "$tmp/run.json")
   walls[i]="${walls[i]:-} $wall"
   if [ -z "${best[i]:-}" ] || [ "$(jq -n "$wall < ${best[i]}")" = true ]; then
