@@ -34,7 +34,9 @@ std::string not_decimal(const std::string &text)
         return "decimal only (hexadecimal is not accepted)";
     if (text.size() > i + 1 && text[i] == '0' && is_digit(text[i + 1])) {
         size_t first = text.find_first_not_of('0', i);  // the value without its leading zeros
-        if (first == std::string::npos || !is_digit(text[first])) first--;
+        // One zero kept before a point or an exponent, or where only zeros follow ("00": "0").
+        if (first == std::string::npos || !is_digit(text[first]))
+            first = (first == std::string::npos ? text.size() : first) - 1;
         std::string plain = text.substr(0, i) + text.substr(first);
         return "decimal only (a leading zero could be read as octal: write '" + shown_text(plain) + "')";
     }
