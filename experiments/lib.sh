@@ -152,6 +152,12 @@ check_jobs() {
 # list per phase, each phase after the one before) on the chosen backend; the exit status is
 # 1 if a point failed.
 run_points() {
+    backend_command "$@"
+    "${BACKEND_CMD[@]}"
+}
+# backend_command STATE_DIR NAME LIST...: sets BACKEND_CMD to run_points' command (for a caller
+# that needs the process itself, to signal it).
+backend_command() {
     local state=$1 name=$2
     shift 2
     local opts=(--state "$state" --backend "$BACKEND" --name "$name")
@@ -159,7 +165,7 @@ run_points() {
     # one word with "=": a value that starts with a dash is still the value
     [ -z "$SLURM_ARGS" ] || opts+=("--slurm-args=$SLURM_ARGS")
     [ -z "$PER_TASK" ] || opts+=(--per-task "$PER_TASK")
-    python3 "$EXP/backend" run "${opts[@]}" "${RUN_POINTS_OPTS[@]}" "$@"
+    BACKEND_CMD=(python3 "$EXP/backend" run "${opts[@]}" "${RUN_POINTS_OPTS[@]}" "$@")
 }
 RUN_POINTS_OPTS=()
 

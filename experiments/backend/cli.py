@@ -3,12 +3,11 @@ import argparse
 import datetime
 import os
 import resource
-import signal
 import sys
 import time
 
-from output_files import (OutputError, OutputSet, WriteError, append_text, finish_stdout, input_file,  # noqa: E501
-                          named_stdout, nonempty, os_message, out_folder, write_lines)
+from output_files import (OutputError, OutputSet, WriteError, append_text, exit_on_signals, finish_stdout,  # noqa: E501
+                          input_file, named_stdout, nonempty, os_message, out_folder, write_lines)
 
 from . import local, points, slurm, task
 
@@ -121,10 +120,6 @@ def run(args):
     return 1 if failed else 0
 
 
-def interrupted(signum, frame):
-    raise KeyboardInterrupt
-
-
 def main(argv):
     parser = argparse.ArgumentParser(prog="experiments/backend", description=__doc__)
     sub = parser.add_subparsers(dest="command", required=True)
@@ -148,16 +143,13 @@ def main(argv):
     p.add_argument("rcdir")
     p.set_defaults(run=lambda a: task.run(a.todo, a.per_task, a.rcdir))
     args = parser.parse_args(argv)
-    signal.signal(signal.SIGTERM, interrupted)
-    signal.signal(signal.SIGINT, signal.default_int_handler)  # even where the shell started us ignoring it
-    named_stdout()  # a full disk or a closed pipe on standard output: named, exit 1
+    # Ctrl-C even where a shell started the backend in the background (a sweep does), ignoring it
+    exit_on_signals("experiments/backend", even_ignored=("SIGINT", "SIGQUIT"))
     try:
+        named_stdout()  # a full disk, a closed pipe or a closed standard output: named, exit 1
         status = args.run(args)
         finish_stdout()
         return status
-    except KeyboardInterrupt:
-        print("experiments/backend: interrupted", file=sys.stderr)
-        return 130
     except OutputError as e:
         print("experiments/backend: %s" % e, file=sys.stderr)
         return 2

@@ -17,8 +17,9 @@ class Table:
     def load(cls, path):
         """The table of the CSV file PATH; OSError or ValueError naming PATH when it is not a
         regular file or not UTF-8 text, and ValueError naming PATH and the line when the header
-        names a column twice or a row has more fields than the header."""
-        reader = csv.DictReader(io.StringIO(read_text(path, "CSV"), newline=""))
+        names a column twice or a row has more or fewer fields than the header."""
+        missing = object()  # a field a short row lacks: told apart from an empty one
+        reader = csv.DictReader(io.StringIO(read_text(path, "CSV"), newline=""), restval=missing)
         columns = list(reader.fieldnames or [])
         for i, name in enumerate(columns):  # the last of two would silently win
             if name in columns[:i]:
@@ -28,6 +29,10 @@ class Table:
             if None in row:  # more fields than the header: the extra ones would be dropped unseen
                 raise ValueError("%s: line %d: %d fields, the header has %d"
                                  % (shown(path), reader.line_num, len(columns) + len(row[None]), len(columns)))
+            if any(value is missing for value in row.values()):  # a cut row: its last columns would be None
+                raise ValueError("%s: line %d: %d fields, the header has %d"
+                                 % (shown(path), reader.line_num, sum(v is not missing for v in row.values()),
+                                    len(columns)))
             rows.append(row)
         return cls(rows, columns, path)
 
