@@ -42,8 +42,8 @@ for s in (signal.SIGINT, signal.SIGQUIT):
 os.execvp(sys.argv[1], sys.argv[1:])')
 # wait_for_sim PATTERN: until a torusrt-sim whose command line matches PATTERN runs (20 s at most).
 wait_for_sim() {
-    local i
-    for i in $(seq 200); do
+    local _
+    for _ in $(seq 200); do
         pgrep -f "torusrt-sim.*$1" >/dev/null && return 0
         sleep 0.1
     done
@@ -51,8 +51,8 @@ wait_for_sim() {
 }
 # sims_gone PATTERN: no torusrt-sim whose command line matches PATTERN runs (10 s at most).
 sims_gone() {
-    local i
-    for i in $(seq 100); do
+    local _
+    for _ in $(seq 100); do
         pgrep -f "torusrt-sim.*$1" >/dev/null || return 0
         sleep 0.1
     done
@@ -70,7 +70,8 @@ for sig in INT QUIT USR1 TERM; do
     rc=$?
     ends $((128 + $(kill -l "$sig"))) "cm $sig" "compare-mappings: stopped by SIG$sig" "cm-$sig.err" "$rc"
     check "cm $sig: no temporary folder left: $(ls -A "$TMPDIR")" test -z "$(ls -A "$TMPDIR")"
-    check "cm $sig: no image, no temporary beside it: $(ls -A | grep "c-$sig")" test -z "$(ls -A | grep "c-$sig")"
+    made=$(compgen -G "*c-$sig.png*")
+    check "cm $sig: no image, no temporary beside it: $made" test -z "$made"
     sims_gone "$TMPDIR/compare-mappings" || fail "cm $sig: its run goes on"
 done
 
@@ -83,7 +84,10 @@ kill -TERM "$pid"
 wait "$pid"
 ends 143 "sweep TERM" "sweep: stopped by SIGTERM" swstop.err $?
 check "sweep TERM: its points stopped" sims_gone "$TMP/work/swstop/points"
-left=$(ls -A swstop/points | grep -v '\.log$')
+left=""
+for f in swstop/points/* swstop/points/.[!.]*; do  # a point's temporary starts with '.'
+    if [ -e "$f" ] && [ "${f%.log}" = "$f" ]; then left+="$f "; fi
+done
 check "sweep TERM: no point's file left but its log: $left" test -z "$left"
 
 # ---- standard output closed ------------------------------------------------------------------
