@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # python_crashes.sh - the Python tools of experiments/ end with a message, never a traceback, on:
 # - a stopping signal (INT, QUIT, USR1, TERM, ...): `PROGRAM: stopped by SIGNAME`, 128 + N, no
-#   temporary folder or file left (compare-mappings); a stopped sweep stops its points too;
+#   temporary folder or file left (compare-mappings); a sweep stopped by TERM or INT stops its
+#   points too;
 # - standard output closed (>&-): `standard output: cannot write: Bad file descriptor`, exit 1
 #   (compare-mappings, the sweep, report machine, report compare, the backend), nothing made;
 # - a byte that is not UTF-8 in torusrt-sim's message (a scene's name): shown as \xNN;
@@ -75,20 +76,23 @@ for sig in INT QUIT USR1 TERM; do
     sims_gone "$TMPDIR/compare-mappings" || fail "cm $sig: its run goes on"
 done
 
-# ---- a sweep stopped by TERM stops its points ------------------------------------------------
-"${default_signals[@]}" "$EXP/sweep" s.nff --axis ips=4x4,2x2 --out swstop -j 2 -- --size 600x600 \
-    >swstop.out 2>swstop.err </dev/null &
-pid=$!
-check "sweep TERM: its points started" wait_for_sim "$TMP/work/swstop/points"
-kill -TERM "$pid"
-wait "$pid"
-ends 143 "sweep TERM" "sweep: stopped by SIGTERM" swstop.err $?
-check "sweep TERM: its points stopped" sims_gone "$TMP/work/swstop/points"
-left=""
-for f in swstop/points/* swstop/points/.[!.]*; do  # a point's temporary starts with '.'
-    if [ -e "$f" ] && [ "${f%.log}" = "$f" ]; then left+="$f "; fi
+# ---- a sweep stopped by TERM or Ctrl-C stops its points -------------------------------------
+for sig in TERM INT; do
+    "${default_signals[@]}" "$EXP/sweep" s.nff --axis ips=4x4,2x2 --out "sw$sig" -j 2 -- --size 600x600 \
+        >"sw$sig.out" 2>"sw$sig.err" </dev/null &
+    pid=$!
+    check "sweep $sig: its points started" wait_for_sim "$TMP/work/sw$sig/points"
+    kill -s "$sig" "$pid"
+    wait "$pid"
+    rc=$?
+    ends $((128 + $(kill -l "$sig"))) "sweep $sig" "sweep: stopped by SIG$sig" "sw$sig.err" "$rc"
+    check "sweep $sig: its points stopped" sims_gone "$TMP/work/sw$sig/points"
+    left=""
+    for f in "sw$sig"/points/* "sw$sig"/points/.[!.]*; do  # a point's temporary starts with '.'
+        if [ -e "$f" ] && [ "${f%.log}" = "$f" ]; then left+="$f "; fi
+    done
+    check "sweep $sig: no point's file left but its log: $left" test -z "$left"
 done
-check "sweep TERM: no point's file left but its log: $left" test -z "$left"
 
 # ---- standard output closed ------------------------------------------------------------------
 "$BUILD/torusrt-sim" s.nff -q -o a.png "${small[@]}" --stats a.json </dev/null
