@@ -354,26 +354,7 @@ class _Stdout(_Named):
         devnull = os.open(os.devnull, os.O_WRONLY)
         os.dup2(devnull, self._f.fileno())
         os.close(devnull)
-        if isinstance(self._f, _Closed):  # no file object to go on with: one on /dev/null
-            self._f = open(os.devnull, "w")
         return _cannot_write(self._shown, e)
-
-
-class _Closed:
-    """Standard output when the program was started with it closed (`>&-`): Python's sys.stdout
-    is None; every write fails as a write to a closed descriptor does."""
-
-    def _fail(self, *args):
-        import errno
-        raise OSError(errno.EBADF, os.strerror(errno.EBADF))
-
-    write = _fail
-
-    def flush(self):
-        """Nothing is held back: each write has failed already."""
-
-    def fileno(self):
-        return 1
 
 
 def named_stdout():
@@ -381,8 +362,9 @@ def named_stdout():
     as an OSError `standard output: cannot write: REASON`; call finish_stdout() before the exit
     status is chosen so that a failure at the last flush is reported too."""
     import sys
-    if sys.stdout is None:
-        sys.stdout = _Closed()
+    if sys.stdout is None:  # started with standard output closed (>&-): refused before anything is made
+        import errno
+        raise WriteError("standard output: cannot write: %s" % os.strerror(errno.EBADF))
     if not isinstance(sys.stdout, _Stdout):
         sys.stdout = _Stdout(sys.stdout)
 

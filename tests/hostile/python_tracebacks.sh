@@ -69,5 +69,5 @@ ends 1 "report compare, a cut row" "cb/fig7.csv: line 2: 1 fields, the header ha
 jq '.config.option_order = null' a.json >n.json
 "${run_limited[@]}" python3 "$EXP/report" machine n.json >/dev/null 2>err.txt </dev/null
 rc=$?
-ends 1 "report machine, option_order null" "n.json: config.option_order: null, not a list of keys"
+ends 1 "report machine, option_order null" "n.json: config.option_order: null, not a list of option names"
 finish
