@@ -179,34 +179,51 @@ check_jobs() {
 
 # run_points STATE_DIR NAME LIST...: runs the point lists (DONE-FILE<TAB>COMMAND per line, one
 # list per phase, each phase after the one before) on the chosen backend; the exit status is
-# 1 if a point failed. The backend runs in the background so that INT, TERM or HUP sent to the
-# calling script alone reach it too: it is sent TERM (it stops its points), waited for, and the
-# script ends with 128 + the signal's number.
+# 1 if a point failed. The backend runs as in_child's child, so that a stopping signal sent to
+# the calling script alone stops its points too.
 run_points() {
-    local state=$1 name=$2 rc=0
+    backend_command "$@"
+    in_child "${BACKEND_CMD[@]}"
+}
+# backend_command STATE_DIR NAME LIST...: sets BACKEND_CMD to run_points' command.
+backend_command() {
+    local state=$1 name=$2
     shift 2
     local opts=(--state "$state" --backend "$BACKEND" --name "$name")
     [ -z "$JOBS" ] || opts+=(-j "$JOBS")
     # one word with "=": a value that starts with a dash is still the value
     [ -z "$SLURM_ARGS" ] || opts+=("--slurm-args=$SLURM_ARGS")
     [ -z "$PER_TASK" ] || opts+=(--per-task "$PER_TASK")
-    python3 "$EXP/backend" run "${opts[@]}" "${RUN_POINTS_OPTS[@]}" "$@" &
-    RUN_POINTS_PID=$!
-    trap 'run_points_stop 2' INT
-    trap 'run_points_stop 15' TERM
-    trap 'run_points_stop 1' HUP
-    wait "$RUN_POINTS_PID" || rc=$?
-    trap - INT TERM HUP
-    RUN_POINTS_PID=""
+    BACKEND_CMD=(python3 "$EXP/backend" run "${opts[@]}" "${RUN_POINTS_OPTS[@]}" "$@")
+}
+RUN_POINTS_OPTS=()
+# The signals that stop torusrt-sim but PIPE (support/signal_cleanup.cpp), NAME:NUMBER.
+STOP_SIGNALS=(INT:2 TERM:15 HUP:1 QUIT:3 USR1:10 USR2:12 ALRM:14)
+STOP_CHILD=""
+# in_child COMMAND...: COMMAND in the background, waited for, its exit status. A stopping signal
+# sent to the script meanwhile (to it alone, not to its process group) reaches COMMAND as TERM
+# (a shell starts a background child ignoring INT and QUIT; the backend then stops its points),
+# COMMAND is waited for, and the script ends with a message and 128 + the signal's number.
+in_child() {
+    local sig rc=0
+    for sig in "${STOP_SIGNALS[@]}"; do
+        # shellcheck disable=SC2064  # the signal's name and number, set now
+        trap "stop_script ${sig%:*} ${sig#*:}" "${sig%:*}"
+    done
+    "$@" &
+    STOP_CHILD=$!
+    wait "$STOP_CHILD" || rc=$?
+    STOP_CHILD=""
+    for sig in "${STOP_SIGNALS[@]}"; do trap - "${sig%:*}"; done
     return $rc
 }
-RUN_POINTS_OPTS=() RUN_POINTS_PID=""
-# run_points_stop N: the backend stopped (TERM) and waited for; the script ends with 128 + N.
-run_points_stop() {
-    trap '' INT TERM HUP
-    [ -z "$RUN_POINTS_PID" ] || { kill -TERM "$RUN_POINTS_PID" 2>/dev/null; wait "$RUN_POINTS_PID" 2>/dev/null; }
-    echo "$(basename "$0"): stopped by signal $1; the same command runs the points not done" >&2
-    exit $((128 + $1))
+# stop_script NAME NUMBER: in_child's signal handler.
+stop_script() {
+    local sig
+    for sig in "${STOP_SIGNALS[@]}"; do trap '' "${sig%:*}"; done
+    [ -z "$STOP_CHILD" ] || { kill -TERM "$STOP_CHILD" 2>/dev/null; wait "$STOP_CHILD" 2>/dev/null; }
+    echo "$(basename "$0"): stopped by SIG$1; the same command runs the points not done" >&2
+    exit $((128 + $2))
 }
 
 # merge_joblogs STATE_DIR: STATE_DIR/joblog.phase1 and joblog.phase2 (GNU parallel backends) as

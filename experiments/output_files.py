@@ -3,8 +3,8 @@ backend, compare-mappings, report) goes through here, under the rules of the exe
 outputs (support/output_files.cpp; docs/cli.md, "Input and output files"):
 
 - a file is written to a temporary `.NAME.XXXXXX` in its own folder and renamed onto its name
-  only when it is complete; on any error, or an interrupt (Ctrl-C; SIGTERM and SIGHUP after
-  exit_on_signals()), the temporary is removed and the old file stays as it was;
+  only when it is complete; on any error, or a stopping signal after exit_on_signals()
+  (Ctrl-C, SIGTERM, SIGHUP, ...), the temporary is removed and the old file stays as it was;
 - a name that is a symbolic link is followed to the file it names (the temporary goes beside
   that file and is renamed onto it), so the link itself is never replaced;
 - a folder, a FIFO, a device or a socket is refused as an output, before anything is written,
@@ -34,6 +34,7 @@ import tempfile
 
 from command_words import (ANIMATION_OPTIONS, NO_RUN_OPTIONS, OUTPUT_OPTIONS, list_values,  # noqa: F401
                            nonempty, output_options, output_values, refuse_empty_values, unusable_option)
+from stop_signals import exit_on_signals  # noqa: F401  (the tools take it from here, with the rest)
 
 
 class OutputError(ValueError):
@@ -353,26 +354,7 @@ class _Stdout(_Named):
         devnull = os.open(os.devnull, os.O_WRONLY)
         os.dup2(devnull, self._f.fileno())
         os.close(devnull)
-        if isinstance(self._f, _Closed):  # no file object to go on with: one on /dev/null
-            self._f = open(os.devnull, "w")
         return _cannot_write(self._shown, e)
-
-
-class _Closed:
-    """Standard output when the program was started with it closed (`>&-`): Python's sys.stdout
-    is None; every write fails as a write to a closed descriptor does."""
-
-    def _fail(self, *args):
-        import errno
-        raise OSError(errno.EBADF, os.strerror(errno.EBADF))
-
-    write = _fail
-
-    def flush(self):
-        """Nothing is held back: each write has failed already."""
-
-    def fileno(self):
-        return 1
 
 
 def named_stdout():
@@ -380,8 +362,9 @@ def named_stdout():
     as an OSError `standard output: cannot write: REASON`; call finish_stdout() before the exit
     status is chosen so that a failure at the last flush is reported too."""
     import sys
-    if sys.stdout is None:
-        sys.stdout = _Closed()
+    if sys.stdout is None:  # started with standard output closed (>&-): refused before anything is made
+        import errno
+        raise WriteError("standard output: cannot write: %s" % os.strerror(errno.EBADF))
     if not isinstance(sys.stdout, _Stdout):
         sys.stdout = _Stdout(sys.stdout)
 
@@ -479,19 +462,6 @@ def check_streams(prog, words):
         raise SystemExit(2)
 
 
-def exit_on_signals():
-    """SIGTERM and SIGHUP end the program as SystemExit(128 + the signal), so that an unfinished
-    file's temporary is removed on the way out as on Ctrl-C; a signal the program was started
-    ignoring (nohup) stays ignored."""
-    import signal
-
-    def leave(signum, frame):
-        raise SystemExit(128 + signum)
-    for sig in (signal.SIGTERM, signal.SIGHUP):
-        if signal.getsignal(sig) != signal.SIG_IGN:
-            signal.signal(sig, leave)
-
-
 # The outputs run_point.sh gives each command itself.
 POINT_OPTIONS = ("-o", "--output", "--stats")
 
@@ -540,8 +510,8 @@ def copy_to_stdout(prog):
     """`output_files.py --stdout PROG`: standard input onto standard output, for the shell tools'
     --help: exit 1 with `PROG: standard output: cannot write: REASON` when it cannot be written."""
     import sys
-    named_stdout()
     try:
+        named_stdout()
         sys.stdout.write(sys.stdin.read())
         finish_stdout()
     except OSError as e:

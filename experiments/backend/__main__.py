@@ -4,6 +4,12 @@ import sys
 
 if __package__ in (None, ""):
     sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from stop_signals import exit_on_signals  # noqa: E402
+
+# before the imports below: a signal there is named too; Ctrl-C even where a shell started the
+# backend in the background (a sweep does), ignoring it
+exit_on_signals("experiments/backend", even_ignored=("SIGINT", "SIGQUIT"))
+if __package__ in (None, ""):
     from backend.cli import main
 else:
     from .cli import main

@@ -3,11 +3,10 @@ import argparse
 import datetime
 import os
 import resource
-import signal
 import sys
 import time
 
-from output_files import (OutputError, OutputSet, WriteError, append_text, check_streams, finish_stdout,  # noqa: E501
+from output_files import (OutputError, OutputSet, WriteError, append_text, check_streams, exit_on_signals, finish_stdout,  # noqa: E501
                           input_file, named_stdout, nonempty, os_message, out_folder, refuse_empty_values,
                           write_lines)
 
@@ -122,15 +121,6 @@ def run(args):
     return 1 if failed else 0
 
 
-def interrupted(signum, frame):
-    """The first stopping signal interrupts the run; the ones after it (a sweep's shell passing
-    the same stop on as TERM) are ignored, so that the clean-up, cancelling what Slurm holds,
-    runs to its end."""
-    for s in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP):
-        signal.signal(s, signal.SIG_IGN)
-    raise KeyboardInterrupt
-
-
 def main(argv):
     check_streams("experiments/backend", argv)  # `>> LIST`: refused before any message
     parser = argparse.ArgumentParser(prog="experiments/backend", description=__doc__)
@@ -156,16 +146,13 @@ def main(argv):
     p.set_defaults(run=lambda a: task.run(a.todo, a.per_task, a.rcdir))
     refuse_empty_values(parser)
     args = parser.parse_args(argv)
-    for s in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP):  # INT even where the shell started us ignoring it
-        signal.signal(s, interrupted)
-    named_stdout()  # a full disk or a closed pipe on standard output: named, exit 1
+    # Ctrl-C even where a shell started the backend in the background (a sweep does), ignoring it
+    exit_on_signals("experiments/backend", even_ignored=("SIGINT", "SIGQUIT"))
     try:
+        named_stdout()  # a full disk, a closed pipe or a closed standard output: named, exit 1
         status = args.run(args)
         finish_stdout()
         return status
-    except KeyboardInterrupt:
-        print("experiments/backend: interrupted", file=sys.stderr)
-        return 130
     except OutputError as e:
         print("experiments/backend: %s" % e, file=sys.stderr)
         return 2

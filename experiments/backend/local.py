@@ -41,7 +41,7 @@ def run(phases, state, jobs, sshloginfile=None, say=print):
             proc = subprocess.Popen(cmd, stdin=stdin)  # the points' progress lines pass through
             try:
                 proc.wait()
-            except KeyboardInterrupt:  # parallel may have had the same Ctrl-C; a TERM ends it otherwise
+            except BaseException:  # a stopping signal: parallel may have had it too; its TERM stops the points
                 proc.terminate()
                 proc.wait()
                 raise

@@ -5,8 +5,8 @@ import os
 import subprocess
 import sys
 
-from output_files import (OutputError, OutputSet, check_streams, exit_on_signals, finish_stdout, named_stdout,
-                          nonempty, os_message, out_folder, read_text, refuse_empty_values, shown)
+from output_files import (OutputError, OutputSet, check_streams, exit_on_signals, finish_stdout, list_values,
+                          named_stdout, nonempty, os_message, out_folder, read_text, refuse_empty_values, shown)
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
@@ -88,8 +88,10 @@ def sweep_plan(args):
         raise ValueError("each --axis option may be given once")
     fixed = args.fixed[1:] if args.fixed[:1] == ["--"] else args.fixed
     sweep.check_fixed(fixed)  # before --out is made
+    columns = list_values("--columns", args.columns) if args.columns else sweep.DEFAULT_COLUMNS
     out = out_folder("--out", args.out, [("scene", args.scene)] + sweep.named_files(fixed))
-    total, done = sweep.plan(out, args.sim, args.scene, axes, fixed, os.path.join(out, "points.list"))
+    total, done = sweep.plan(out, args.sim, args.scene, axes, fixed, os.path.join(out, "points.list"), columns,
+                             args.y)
     print("sweep: %d points (%d done before), results in %s" % (total, done, out))
     return 0
 
@@ -106,7 +108,6 @@ def sweep_collect(args):
 
 
 def compare(args):
-    from output_files import list_values
     from . import compare as comparelib
     columns = list_values("--columns", args.columns) if args.columns else None
     rows, diffs = comparelib.compare(os.path.abspath(args.old), os.path.abspath(args.new), columns)
@@ -172,7 +173,6 @@ def machine(args):
 
 def main(argv):
     check_streams("experiments/report", argv)  # `>> REPORT.json`: refused before any message
-    exit_on_signals()  # a stopped run leaves no temporary
     parser = argparse.ArgumentParser(prog="experiments/report", description=__doc__)
     sub = parser.add_subparsers(dest="command", required=True)
     p = sub.add_parser("reproduction", help="write the comparison with the paper from a sweep's CSVs")
@@ -201,6 +201,8 @@ def main(argv):
     p.add_argument("--sim", required=True)
     p.add_argument("--scene", required=True)
     p.add_argument("--axis", action="append", required=True)
+    p.add_argument("--columns", default="", help="checked before any point runs, as --y")
+    p.add_argument("--y", default="sim_time_s")
     p.add_argument("fixed", nargs=argparse.REMAINDER)
     p.set_defaults(run=sweep_plan)
     p = sub.add_parser("sweep-collect", help="(experiments/sweep) OUT/sweep.csv and OUT/sweep.png from the points")
@@ -228,8 +230,9 @@ def main(argv):
     refuse_empty_values(parser)  # '' is never "the default": --doc '' would rewrite docs/
     args = parser.parse_args(argv)
     prog = "sweep" if args.command.startswith("sweep-") else "experiments/report"  # the command the user ran
-    named_stdout()  # a full disk or a closed pipe on standard output: named, exit 1
+    exit_on_signals(prog)
     try:
+        named_stdout()  # a full disk, a closed pipe or a closed standard output: named, exit 1
         status = args.run(args)
         finish_stdout()
         return status

@@ -23,7 +23,7 @@ def from_report(report):
         raise ValueError("the report has no config.options (written by torusrt-sim 0.1.0 and later)")
     order = report["config"].get("option_order", [])
     if not isinstance(order, list) or not all(isinstance(key, str) for key in order):
-        raise ValueError("config.option_order: %s, not a list of keys" % json.dumps(order)[:80])
+        raise ValueError("config.option_order: %s, not a list of option names" % json.dumps(order)[:80])
     rank = {key: i for i, key in enumerate(order)}
     keys = sorted(options, key=lambda k: rank.get(k, len(order)))
     for key in keys:  # torusrt-sim writes every value as a string, every key in option_order

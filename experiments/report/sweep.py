@@ -64,10 +64,52 @@ def dry_run(sim, scene, names, values, fixed):
     args = [sim, scene, "--dump-config"] + list(fixed)
     for n, v in zip(names, values):
         args += ["--" + n, v]
-    done = subprocess.run(args, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    # a name's bytes that are not UTF-8 kept as they came (the message shows them as \xNN)
+    done = subprocess.run(args, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True,
+                          errors="surrogateescape")
     if done.returncode != 0:
         raise ValueError("the first point's options do not check out (no point was run): %s"
                          % done.stderr.strip())
+
+
+def without_size(words):
+    """WORDS without their --size option (--size WxH or --size=WxH)."""
+    out, skip = [], False
+    for word in words:
+        if skip:
+            skip = False
+        elif word == "--size":
+            skip = True
+        elif not word.startswith("--size="):
+            out.append(word)
+    return out
+
+
+def check_fields(sim, scene, names, combos, fixed, columns, y):
+    """Checks the fields of --columns and --y against the reports of the points run at 1x1
+    pixels, one point after the other until each field is found, so that a misspelt field stops
+    the sweep before any point runs (nothing to run for the default columns, in every report)."""
+    wanted = [] if columns == ["all"] else [c for c in columns if c not in DEFAULT_COLUMNS]
+    wanted += [y] if y not in DEFAULT_COLUMNS + wanted else []
+    if not wanted:
+        return
+    import tempfile
+    with tempfile.TemporaryDirectory(prefix="sweep-fields.") as work:
+        stats = os.path.join(work, "r.json")
+        for values in combos:
+            args = [sim, scene, "-q", "-o", os.path.join(work, "r.png"), "--stats", stats]
+            args += without_size(list(fixed))
+            for n, v in zip(names, values):
+                args += ["--" + n, v] if n != "size" else []
+            done = subprocess.run(args + ["--size", "1x1"], stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
+                                  stderr=subprocess.PIPE, text=True, errors="surrogateescape")
+            if done.returncode == 0:
+                fields = flatten(read_report(stats))
+                wanted = [c for c in wanted if c not in fields]
+            if not wanted:
+                return
+    raise ValueError("no such JSON field in the points' reports (each point run at 1x1 pixels, no point of the "
+                     "sweep was run): %s (scalars by dotted name, e.g. links.utilisation.mean)" % ", ".join(wanted))
 
 
 def file_hash(path, cache):
@@ -201,7 +243,7 @@ def check_fixed(fixed):
         raise ValueError("%s among the fixed options: %s" % (unusable, UNSWEPT % unusable))
 
 
-def plan(out, sim, scene, axes, fixed, listing):
+def plan(out, sim, scene, axes, fixed, listing, columns=(), y=DEFAULT_COLUMNS[0]):
     """Writes OUT/points.tsv (name and axis values per point) and the point list LISTING
     (experiments/backend): the point's JSON, a tab and its shell command line. A point is done
     when its JSON is a report and its identity file (NAME.id) holds this command's identity()
@@ -234,6 +276,7 @@ def plan(out, sim, scene, axes, fixed, listing):
                 f[ext] = outs.add("--out", f[ext])
     outs.check()
     dry_run(sim, scene, names, combos[0], fixed)
+    check_fields(sim, scene, names, combos, fixed, list(columns), y)
     os.makedirs(points, exist_ok=True)
     write_text(os.path.join(out, FACTS), json.dumps({"scene": scene, "fixed": list(fixed)}) + "\n", "--out")
     cache, rows, lines, done = {}, [["name"] + names], [], 0
@@ -320,7 +363,7 @@ def collect(out, columns, y):
     elif y not in columns:
         columns = columns + [y]  # the plotted field is in the CSV too
     present = [f for f in flat if f]
-    unknown = [c for c in columns + [y] if present and all(c not in f for f in present)]
+    unknown = [c for c in dict.fromkeys(columns + [y]) if present and all(c not in f for f in present)]
     if unknown:
         raise ValueError("no such JSON field in the reports: %s (scalars by dotted name, e.g. links.utilisation.mean)"
                          % ", ".join(unknown))

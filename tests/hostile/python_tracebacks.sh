@@ -47,7 +47,7 @@ ends 1 "sweep >&-" "sweep: standard output: cannot write: Bad file descriptor"
 timeout --preserve-status -s INT 2 "${cm[@]}" s.nff --out big.png -- --ips 4x4 --size 1200x1200 \
     >/dev/null 2>err.txt </dev/null
 rc=$?
-ends 130 "cm stopped by SIGINT" "compare-mappings: interrupted"
+ends 130 "cm stopped by SIGINT" "compare-mappings: stopped by SIGINT"
 check "cm stopped by SIGINT: no image" [ ! -e big.png ]
 
 # ---- a scene name that is not UTF-8, its run failing ----------------------------------------
@@ -69,5 +69,5 @@ ends 1 "report compare, a cut row" "cb/fig7.csv: line 2: 1 fields, the header ha
 jq '.config.option_order = null' a.json >n.json
 "${run_limited[@]}" python3 "$EXP/report" machine n.json >/dev/null 2>err.txt </dev/null
 rc=$?
-ends 1 "report machine, option_order null" "n.json: config.option_order: null, not a list of keys"
+ends 1 "report machine, option_order null" "n.json: config.option_order: null, not a list of option names"
 finish

@@ -28,7 +28,7 @@ for sig in TERM HUP; do
     rc=$?
     code=$((128 + $(kill -l "$sig")))
     check "sweep $sig: exit $rc, expected $code" [ "$rc" -eq "$code" ]
-    check "sweep $sig: the message: $(head -c 200 "err$sig.txt")" grep -q "sweep: stopped by signal" "err$sig.txt"
+    check "sweep $sig: the message: $(head -c 200 "err$sig.txt")" grep -q "sweep: stopped by SIG$sig; the same command runs the points not done" "err$sig.txt"
     for _ in $(seq 50); do pgrep -f "$out" >/dev/null || break; sleep 0.1; done
     left=$(pgrep -f "$out" | tr '\n' ' ')
     check "sweep $sig: processes left running: $left" [ -z "$left" ]

@@ -108,22 +108,3 @@ class Slurm(unittest.TestCase):
 if __name__ == "__main__":
     unittest.main()
 
-
-class Stopping(unittest.TestCase):
-    """The first stopping signal interrupts the run; one after it (a sweep's shell passing the
-    same stop on as TERM) must not cut short the clean-up that cancels what Slurm holds."""
-
-    def test_first_signal_interrupts_and_the_next_are_ignored(self):
-        import signal
-        from backend import cli
-        saved = {s: signal.getsignal(s) for s in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP)}
-        try:
-            for s in saved:
-                signal.signal(s, cli.interrupted)
-            with self.assertRaises(KeyboardInterrupt):
-                cli.interrupted(signal.SIGINT, None)
-            for s in saved:
-                self.assertEqual(signal.getsignal(s), signal.SIG_IGN, s)
-        finally:
-            for s, h in saved.items():
-                signal.signal(s, h)

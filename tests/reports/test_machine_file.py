@@ -32,6 +32,12 @@ class MachineFile(unittest.TestCase):
                           "timing: report 'a\"b.timing', file (none)"])
         self.assertEqual(mf.differences(pairs, dict(pairs)), [])
 
+    def test_an_option_order_that_is_not_a_list_of_names_is_named(self):
+        for order in (None, 3, "ips", [["ips"]], {"ips": 0}):
+            report = {"config": {"options": {"ips": "2"}, "option_order": order}}
+            with self.assertRaisesRegex(ValueError, "^config.option_order: .*not a list of option names"):
+                mf.from_report(report)
+
     def test_bad_input(self):
         with self.assertRaises(ValueError):
             mf.from_report({"config": {"ips": [1, 1, 1]}})
