@@ -9,12 +9,13 @@
 // one used, so the packets in flight stay in few, warm cache lines. Slots live in fixed chunks: a packet never moves
 // while it is in the pool. A slot starts with what a hop uses: the credit, the node the packet is heading for (its
 // cell's owner, found once when it enters the pool: the cell does not change on the way) and the packet's hop fields
-// (timed_packet.h), 32 bytes that share a cache line in three slots of four, then the hop count and the latency fields;
-// the kernel's packet behind them is read again only at the owner. Slots are 16-byte aligned, not cache-line aligned:
-// with thousands of packets waiting in the queues of a big run, 224 bytes a slot instead of 256 is what keeps its peak
-// memory down.
+// (timed_packet.h, the hop count among them), 32 bytes; then the latency fields and the kernel's packet, read again
+// only at the owner. Slots are 32-byte aligned and 224 bytes long, so each starts at 0 or 32 bytes into a cache line
+// and what a hop touches lies in one line; not cache-line aligned: with thousands of packets waiting in the queues of a
+// big run, 224 bytes a slot instead of 256 is what keeps its peak memory down.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -74,11 +75,13 @@ class PacketPool {
     static constexpr uint64_t bytes_per_packet() { return sizeof(Slot) + 3 * sizeof(uint32_t); }
 
   private:
-    struct alignas(16) Slot {
+    struct alignas(32) Slot {
         BufferSpace *credit = nullptr;
         int32_t owner = -1;
         TimedPacket item;
     };
+    static_assert(sizeof(Slot) % 32 == 0 && offsetof(Slot, item) + offsetof(TimedPacket, worked_ns) <= 32,
+                  "what a hop touches (the slot's first 32 bytes) lies in one cache line");
     static constexpr uint32_t kChunkBits = 8, kChunk = 1u << kChunkBits;
     Slot &slot(uint32_t h) { return m_chunks[h >> kChunkBits][h & (kChunk - 1)]; }
     std::vector<std::unique_ptr<Slot[]>> m_chunks;

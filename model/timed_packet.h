@@ -15,23 +15,26 @@ class PacketPool;
 // The fields a hop reads and writes come first, the kernel's packet (read only by processors)
 // last, so a packet crossing the network touches its first cache line only (packet_pool.h).
 struct TimedPacket {
-    TimedPacket() = default;
-    TimedPacket(const rt_packet &p, const sc_core::sc_time &sent = sc_core::SC_ZERO_TIME) : stamp(sent), packet(p) {}
+    TimedPacket() : vc(0), reserved(0), from_host(0) {}
+    TimedPacket(const rt_packet &p, const sc_core::sc_time &sent = sc_core::SC_ZERO_TIME)
+        : stamp(sent), vc(0), reserved(0), from_host(0), packet(p)
+    {
+    }
 
     sc_core::sc_time stamp;  // send time; after a link, arrival time (loosely-timed runs use it)
     // Flow control (flow_control.h): the packet's class, its virtual channel on the link it is
-    // on, the direction of the last link it crossed (-1: none since it left a processor), and
-    // whether its slot in the next buffer was already taken when its processor took up its
-    // parent (then the next buffer does not take one again).
+    // on (0 or 1), whether its slot in the next buffer was already taken when its processor took
+    // up its parent (then the next buffer does not take one again), and the direction of the
+    // last link it crossed (-1: none since it left a processor). Bit fields, so that the hop
+    // count fits beside them: these 16 bytes are all a hop touches (packet_pool.h).
     uint32_t cls = 0;
-    uint8_t vc = 0;
+    uint8_t vc : 6;
+    uint8_t reserved : 1;
+    uint8_t from_host : 1;  // a primary packet from the host, not yet in any buffer
     int8_t last_dir = -1;
-    bool reserved = false;
-    bool from_host = false;  // a primary packet from the host, not yet in any buffer
-    // Latency statistics (packet_latency.h), 16 bytes: the links crossed since the packet was
-    // made, the steps that handed it on so far (nanoseconds, at most 2^32 - 1, about 4.3 s) and
-    // when it was made (a primary: its first step); only links write `hops`, only processors the
-    // others.
+    // Latency statistics (packet_latency.h): the links crossed since the packet was made (only
+    // links write it), then the steps that handed it on so far (nanoseconds, at most 2^32 - 1,
+    // about 4.3 s) and when it was made (a primary: its first step), which only processors write.
     uint16_t hops = 0;
     uint32_t worked_ns = 0;
     sc_core::sc_time born;
