@@ -6,6 +6,8 @@ import json
 import os
 from collections import OrderedDict
 
+from output_files import shown
+
 from . import fidelity_score as fs
 
 # The candidates, the unfitted value first (section 2 of the protocol).
@@ -164,6 +166,14 @@ def stage2(res, name="stage2.tsv"):
         figures = {"penalty_" + s: m[(s, "shared")]["time"] / m[(s, "replicated")]["time"] for s in ("image1", "image2")}
         moved = (bus != "0.5") + (mem != "0.5")
         cands.append((i, figures, moved, {"bus": bus, "memory": mem}, m))
+    return _best(cands, res, name)
+
+
+def _best(cands, res, name):
+    """(the best candidate's choice, every candidate ranked best first); ValueError naming the
+    table when it holds no run (a results folder whose stage did not run)."""
+    if not cands:
+        raise ValueError("%s: no runs (the stage has not run)" % shown(os.path.join(res, name)))
     ranked = sorted(cands, key=lambda x: fs.rank(x[0], x[1], x[2]))
     return ranked[0][3], ranked
 
@@ -179,8 +189,7 @@ def stage3(res, name="stage3.tsv"):
         figures = {"time_" + s: m[s]["time"] for s in ("image1", "image2")}
         moved = (shape != "4x2x2") + (h != "0")
         cands.append((i, figures, moved, {"shape": shape, "handover": h}, m))
-    ranked = sorted(cands, key=lambda x: fs.rank(x[0], x[1], x[2]))
-    return ranked[0][3], ranked
+    return _best(cands, res, name)
 
 
 # ---- stage 4: memory accounting (F4) --------------------------------------------------------
@@ -198,8 +207,7 @@ def stage4(res):
         got.setdefault((h, e, r), {})["memory_" + image] = memory_ratio(path)
     cands = [(i, figures, (k[0] != "4") + (k[1] != "4") + (k[2] != "0"), {"header": k[0], "entry": k[1], "record": k[2]},
               None) for i, (k, figures) in enumerate(got.items())]
-    ranked = sorted(cands, key=lambda x: fs.rank(x[0], x[1], x[2]))
-    return ranked[0][3], ranked
+    return _best(cands, res, "stage4.tsv")
 
 
 # ---- stage 5: residuals on the written machine files ----------------------------------------

@@ -123,6 +123,12 @@ class Stages(unittest.TestCase):
         write_json(p, data)
         return p
 
+    def test_a_stage_without_runs_is_named(self):
+        # A results folder whose stage has not run: a message naming its table, not an IndexError.
+        for stage, table in ((st.stage2, "stage2.tsv"), (st.stage3, "stage3.tsv"), (st.stage4, "stage4.tsv")):
+            with self.assertRaisesRegex(ValueError, "%s: no runs" % table):
+                stage(self.res)
+
     def test_stage1_picks_the_cost_that_puts_t1_in_the_window(self):
         # Smoke lists: image 1 planar / planar-z, rules sequential / per-plane, one image 2 variant.
         units = []
