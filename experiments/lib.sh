@@ -221,7 +221,10 @@ in_child() {
 stop_script() {
     local sig
     for sig in "${STOP_SIGNALS[@]}"; do trap '' "${sig%:*}"; done
-    [ -z "$STOP_CHILD" ] || { kill -TERM "$STOP_CHILD" 2>/dev/null; wait "$STOP_CHILD" 2>/dev/null; }
+    if [ -n "$STOP_CHILD" ]; then  # `|| true`: a study runs under set -e, and wait gives the child's status
+        kill -TERM "$STOP_CHILD" 2>/dev/null || true
+        wait "$STOP_CHILD" 2>/dev/null || true
+    fi
     echo "$(basename "$0"): stopped by SIG$1; the same command runs the points not done" >&2
     exit $((128 + $2))
 }

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # sweep_signals.sh - TERM or HUP sent to the sweep's shell alone (not to its process group) while
 # its points run stops the backend and the points too: the sweep says so and ends with 128 + the
-# signal's number, and no process of its --out folder runs on.
+# signal's number, and no process of its --out folder runs on. A study's script (set -e) waiting
+# in lib.sh's in_child does the same for every stopping signal.
 #
 # Usage (CTest runs it so): bash tests/hostile/sweep_signals.sh BUILD_DIR SOURCE_DIR
 set -u
@@ -33,5 +34,21 @@ for sig in TERM HUP; do
     left=$(pgrep -f "$out" | tr '\n' ' ')
     check "sweep $sig: processes left running: $left" [ -z "$left" ]
     for pid in $left; do kill "$pid" 2>/dev/null; done
+done
+# A study's way of running its points: under set -euo pipefail, through lib.sh's in_child.
+printf '%s\n' '#!/usr/bin/env bash' 'set -euo pipefail' "source '$EXP/lib.sh'" 'in_child sleep 30' >study.sh
+for sig in TERM HUP INT QUIT USR1 USR2 ALRM; do
+    env --default-signal=INT,QUIT bash study.sh 2>"study$sig.txt" </dev/null &  # not ignoring INT, QUIT as a background job would
+    study=$!
+    for _ in $(seq 100); do pgrep -P "$study" sleep >/dev/null && break; sleep 0.1; done
+    child=$(pgrep -P "$study" sleep)
+    kill -s "$sig" "$study"
+    wait "$study"
+    rc=$?
+    code=$((128 + $(kill -l "$sig")))
+    check "study $sig: exit $rc, expected $code" [ "$rc" -eq "$code" ]
+    check "study $sig: the message: $(head -c 200 "study$sig.txt")" \
+        grep -q "study.sh: stopped by SIG$sig; the same command runs the points not done" "study$sig.txt"
+    check "study $sig: its child stopped" bash -c "! kill -0 $child 2>/dev/null"
 done
 finish
