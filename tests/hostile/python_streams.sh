@@ -5,7 +5,9 @@
 # - `>> INPUT` and `2>> INPUT` (the scene, a file after --, a --compare machine file, a point
 #   list) for compare-mappings, the sweep, report machine, run_point.sh and the backend: exit 2
 #   before anything runs, the input unchanged (also when the command line is wrong, and so would
-#   give a usage message);
+#   give a usage message); and `>> FILE` or `2>> FILE` for a file inside a folder the command
+#   names (report compare's CSVs, a sweep's point JSON and id, sweep-collect's points.tsv), but
+#   a .log there;
 # - a point JSON nested 100000 deep: the sweep's resume runs the point again, report machine
 #   names the file as not a report (exit 1), no RecursionError traceback;
 # - TERM or HUP sent to run_point.sh's shell alone: its command is stopped too, the script ends
@@ -64,6 +66,43 @@ into 1 "run_point >> scene" s.nff "$EXP/run_point.sh" rp/p.json -- "$BUILD/torus
 check "run_point: nothing written by a refused run" [ ! -e rp/p.json ] && [ ! -e rp/p.log ]
 into 1 "backend >> its list" l.list python3 "$EXP/backend" run --state st l.list
 check "backend: no --state folder made by a refused run" [ ! -e st ]
+
+# ---- a file inside a folder the command works on (a results folder, a sweep's --out) ---------
+# in_folder STREAM NAME FILE COMMAND...: COMMAND with standard output (1) or error (2) appended
+# to FILE, which lies in a folder COMMAND names: exit 2 and FILE unchanged.
+in_folder() {
+    local stream=$1 name=$2 file=$3 f=$TMP/${2//[\/ \']/_}
+    shift 3
+    cp "$file" "$f.keep"
+    if [ "$stream" = 1 ]; then
+        "${run_limited[@]}" "$@" >>"$file" 2>"$f.err" </dev/null
+    else
+        "${run_limited[@]}" "$@" 2>>"$file" >"$f.out" </dev/null
+    fi
+    local rc=$?
+    check "$name: exit $rc, expected 2" [ "$rc" -eq 2 ]
+    check "$name: $file changed: $(cmp "$f.keep" "$file" 2>&1 | head -c 200)" cmp -s "$f.keep" "$file"
+    [ "$stream" = 2 ] || check "$name: the message names it: $(head -c 300 "$f.err")" \
+        grep -q "standard output is redirected to .*$file, in the .*folder" "$f.err"
+}
+mkdir A B
+printf 'scene,n,status,sim_time_s\na,1,ok,1\n' >A/fig7.csv
+printf 'scene,n,status,sim_time_s\na,1,ok,2\n' >B/fig7.csv
+in_folder 1 "report compare >> a CSV it reads" A/fig7.csv python3 "$EXP/report" compare A B
+in_folder 2 "report compare 2>> a CSV it reads" B/fig7.csv python3 "$EXP/report" compare A B
+python3 "$EXP/report" compare A B >>A/compare.log 2>&1 </dev/null
+check "report compare >> a .log in the folder: exit $?, expected 1 (the figures differ)" [ "$(tail -n 1 A/compare.log | grep -c differences)" -eq 1 ]
+"${run_limited[@]}" "$EXP/sweep" --build "$BUILD" keep.nff --axis ips=1,2 --out R -- "${small[@]}" \
+    >/dev/null 2>R.err </dev/null
+check "sweep into R: exit $?: $(head -c 300 R.err)" [ -s R/points/ips_1.json ]
+for stream in 1 2; do
+    in_folder "$stream" "sweep $stream>> a point's JSON" R/points/ips_1.json \
+        "$EXP/sweep" --build "$BUILD" keep.nff --axis ips=1,2 --out R -- "${small[@]}"
+    in_folder "$stream" "sweep $stream>> a point's id" R/points/ips_1.id \
+        "$EXP/sweep" --build "$BUILD" keep.nff --axis ips=1,2 --out R -- "${small[@]}"
+done
+in_folder 1 "report sweep-collect >> its points.tsv" R/points.tsv \
+    python3 "$EXP/report" sweep-collect --out R --columns "" --y sim_time_s
 
 # ---- a point JSON nested 100000 deep ------------------------------------------------------
 deep() { python3 -c "print('{\"a\":' * 100000 + '1' + '}' * 100000)"; }
