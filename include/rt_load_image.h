@@ -26,6 +26,8 @@ extern "C" {
 
 rt_status rt_cost_image_write(FILE *fp, const char *name, uint32_t width, uint32_t height, const double *cost_us,
                               char *msg, size_t msg_len);
+/* The bytes rt_cost_image_write draws the picture of a width x height image in (its canvas). */
+uint64_t rt_cost_image_canvas_bytes(uint32_t width, uint32_t height);
 
 rt_status rt_load_map_write(FILE *fp, const char *name, const int dims[3], const double *work_us, const int32_t *owner,
                             int nodes, char *msg, size_t msg_len);

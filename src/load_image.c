@@ -26,10 +26,20 @@ static double max_of(const double *v, size_t n)
     return m;
 }
 
+/* The cost image's pixel scale: small images are enlarged. */
+static uint32_t cost_image_scale(uint32_t h) { return h < 256 ? (256 + h - 1) / h : 1; }
+
+uint64_t rt_cost_image_canvas_bytes(uint32_t w, uint32_t h)
+{
+    uint32_t s = cost_image_scale(h);
+    uint64_t height = (uint64_t)h * s > 120 ? (uint64_t)h * s : 120;
+    return ((uint64_t)w * s + 150) * height * 3;
+}
+
 rt_status rt_cost_image_write(FILE *fp, const char *name, uint32_t w, uint32_t h, const double *cost, char *msg,
                               size_t msg_len)
 {
-    int s = h < 256 ? (int)((256 + h - 1) / h) : 1; /* small images are enlarged */
+    int s = (int)cost_image_scale(h);
     double hi = max_of(cost, (size_t)w * h);
     rt_canvas *c = rt_canvas_new(w * (uint32_t)s + 150, h * (uint32_t)s > 120 ? h * (uint32_t)s : 120);
     if (c) {

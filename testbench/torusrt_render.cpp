@@ -180,6 +180,14 @@ int run_single(const RenderOptions &opt, RenderSetup &setup, RenderOutputs &outs
 {
     OutputSet &outputs = outs.set;
     const rt_camera *cam = rt_scene_camera(setup.scene);
+    if (!opt.cost_image.empty()) {  // from what the frame buffer and cell lists left (docs/memory.md)
+        std::string what =
+            "the --cost-image of " + std::to_string(cam->width) + "x" + std::to_string(cam->height) + " pixels";
+        char msg[RT_MSG_LEN] = "";
+        if (rt_budget_reserve(&setup.budget, CostImage::bytes(cam->width, cam->height), what.c_str(), msg,
+                              sizeof msg) != RT_OK)
+            throw UserError(msg);
+    }
     CostImage cost(opt.cost_image, cam->width, cam->height, &setup.settings.timing);
     set_run_stage("rendering the image");
     FrameResult fr = render_frame(setup, "torusrt-render", opt, &cost);

@@ -19,6 +19,7 @@
 #include "output_files.h"
 #include "run_stage.h"
 #include "signal_cleanup.h"
+#include "startup_memory.h"
 #include "user_error.h"
 
 namespace torusrt {
@@ -150,6 +151,7 @@ std::vector<std::string> output_option_names(const CLI::App &app)
 int run_cli(const char *program, CLI::App &app, int argc, char **argv, const std::function<int()> &body,
             const char *extra_exit_statuses)
 {
+    startup_done();
     stop_on_signals(program);
     keep_memory_reserve();
     app.set_version_flag("--version", std::string(program) + " " + TORUSRT_VERSION, "print the version and exit")

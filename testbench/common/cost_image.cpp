@@ -16,6 +16,11 @@ CostImage::CostImage(const std::string &path, unsigned width, unsigned height, c
     if (!m_path.empty()) m_us.assign(static_cast<size_t>(width) * height, 0.0);
 }
 
+uint64_t CostImage::bytes(unsigned width, unsigned height)
+{
+    return static_cast<uint64_t>(width) * height * sizeof(double) + rt_cost_image_canvas_bytes(width, height);
+}
+
 void CostImage::on_step(void *ctx, uint32_t, const rt_packet *p, const rt_step_result *r)
 {
     auto *self = static_cast<CostImage *>(ctx);

@@ -14,6 +14,9 @@ class CostImage {
   public:
     // An empty path switches it off (attach, write and json then do nothing).
     CostImage(const std::string &path, unsigned width, unsigned height, const rt_timing *timing);
+    // Memory a cost image of width x height pixels takes: its sums (8 bytes a pixel) and the
+    // canvas its picture is drawn in (the memory budget holds it).
+    static uint64_t bytes(unsigned width, unsigned height);
     void attach(rt_render_options *options);
     // Writes the PNG to `write_path` (the output set's name for it; UserError on failure).
     void write(const std::string &write_path) const;

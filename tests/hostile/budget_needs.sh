@@ -7,7 +7,8 @@
 # interval, not "more than 1000000"; an interval of 1 ps (0.001ns) stops at 1,000,000 intervals,
 # and `1ps` is refused, as docs/cli.md says (units ns, us, ms, s); the per-pixel latency figures
 # are held from the budget before the run, and so are an animation's frame records and their
-# JSON, in torusrt-sim and torusrt-render (refused before the first frame when they cannot fit).
+# JSON, in torusrt-sim and torusrt-render (refused before the first frame when they cannot fit),
+# and torusrt-render's --cost-image.
 #
 # Usage (CTest runs it so): bash tests/hostile/budget_needs.sh BUILD_DIR SOURCE_DIR
 set -u
@@ -105,5 +106,17 @@ check "render frame records without --stats: the message: $(head -c 300 render.e
 "${run_limited[@]}" "${render[@]}" --size 1x1 -o 'rr%d.png' --frames 100 --orbit 360 --memory-budget 8M \
     --stats rr.json </dev/null
 check "render: 100 frames in 8M: exit $?, 100 records" [ "$(jq '.frames | length' rr.json)" = 100 ]
+# torusrt-render's --cost-image (8 bytes a pixel and its picture's canvas) is held from the
+# budget too: 1000x1000 fits in 30M (a 27 MB frame buffer), with the cost image it does not.
+rm -rf out && mkdir out
+"${run_limited[@]}" "${render[@]}" --size 1000x1000 -o out/c.png --cost-image out/cost.png --memory-budget 30M \
+    >/dev/null 2>cost.err </dev/null
+rc=$?
+check "render --cost-image past the budget: exit $rc, expected 1: $(head -c 300 cost.err)" [ "$rc" -eq 1 ]
+check "render --cost-image past the budget: the message: $(head -c 300 cost.err)" \
+    grep -q "^torusrt-render: memory budget exceeded: the --cost-image of 1000x1000 pixels" cost.err
+check "render --cost-image past the budget: nothing written: $(ls -A out | head -c 100)" [ -z "$(ls -A out)" ]
+"${run_limited[@]}" "${render[@]}" --size 1000x1000 -o out/c.png --memory-budget 30M </dev/null
+check "render 1000x1000 in 30M without --cost-image: exit $?" [ -s out/c.png ]
 
 finish

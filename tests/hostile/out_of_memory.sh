@@ -25,6 +25,26 @@ check "4096 nodes under ulimit -v: the message names --memory-budget" grep -q --
 check "4096 nodes under ulimit -v: no abort message" bash -c '! grep -q "terminate called" err.txt'
 check "4096 nodes under ulimit -v: nothing left: $(ls -A out; ls -A tmpdir)" \
     [ -z "$(ls -A out)$(ls -A tmpdir)" ]
+# A limit too small for the libraries' own start-up (SystemC's static constructors, before main):
+# exit 1 with a message, never an abort; smaller still, the system's loader refuses (127).
+aborts=0 other=0
+for limit in 9000 10000 11000 12000 13000 14000 15000 16000 18000 20000; do
+    for args in "--version" "$f -q -o out/v.png --size 8x8"; do
+        # shellcheck disable=SC2086  # the arguments split at their spaces
+        ("${run_limited[@]}" bash -c 'ulimit -v "$0" && exec "$@"' "$limit" "$BUILD/torusrt-sim" $args >/dev/null \
+            2>err.txt </dev/null)
+        rc=$?
+        if [ "$rc" -ge 128 ] || grep -q "terminate called" err.txt; then aborts=$((aborts + 1));
+        elif [ "$rc" -eq 127 ] && grep -q "error while loading shared libraries" err.txt; then :;
+        elif [ "$rc" -ne 0 ] && ! grep -q "^torusrt-sim: out of memory" err.txt; then
+            other=$((other + 1))
+            echo "ulimit -v $limit, $args: exit $rc: $(head -c 300 err.txt)"
+        fi
+    done
+done
+check "ulimit -v 9000..20000: runs that aborted: $aborts of 20" [ "$aborts" -eq 0 ]
+check "ulimit -v 9000..20000: failed runs without the out-of-memory message: $other" [ "$other" -eq 0 ]
+rm -f out/v.png
 # A limit that fails one of the machine's modules half built: the modules built so far are
 # destroyed with next to no memory left (SystemC's destructors allocate): exit 1 with an
 # out-of-memory message (the machine's, the T(1) run's, or the scene's where the limit falls
