@@ -6,9 +6,10 @@ import resource
 import sys
 import time
 
-from output_files import (OutputError, OutputSet, WriteError, append_text, check_streams, exit_on_signals, finish_stdout,  # noqa: E501
+from output_files import (OutputError, OutputSet, WriteError, append_text, exit_on_signals, finish_stdout,  # noqa: E501
                           input_file, named_stdout, nonempty, os_message, out_folder, refuse_empty_values,
                           write_lines)
+from stream_checks import check_streams
 
 from . import local, points, slurm, task
 

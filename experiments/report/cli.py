@@ -5,8 +5,9 @@ import os
 import subprocess
 import sys
 
-from output_files import (OutputError, OutputSet, check_streams, exit_on_signals, finish_stdout, list_values,
+from output_files import (OutputError, OutputSet, exit_on_signals, finish_stdout, list_values,
                           named_stdout, nonempty, os_message, out_folder, read_text, refuse_empty_values, shown)
+from stream_checks import check_streams
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 

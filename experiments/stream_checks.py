@@ -1,0 +1,103 @@
+"""stream_checks - a tool's own standard output and standard error checked against its inputs
+before it writes anything (docs/experiments.md, the output rules of the Python tools): `>>
+s.nff` or `>> RESULTS/fig7.csv` would append to a file the command reads."""
+import os
+import stat
+
+from output_files import _identity, _through_stream, named_files, shown
+
+
+def divert_stderr():
+    """Points standard error at the terminal (/dev/tty) when there is one, else at /dev/null: for
+    when standard error is an input, so that no message is written into it (as the executables)."""
+    try:
+        fd = os.open("/dev/tty", os.O_WRONLY | os.O_NOCTTY)
+    except OSError:
+        fd = os.open(os.devnull, os.O_WRONLY)
+    if fd != 2:
+        os.dup2(fd, 2)
+        os.close(fd)
+
+
+def check_streams(prog, words):
+    """Ends the program (exit 2, before anything is written) when standard output or standard
+    error is redirected to a file one of WORDS names (named_files: the scene, a --config and the
+    files it names, a report), also through a hard link: `>> s.nff` would append to an input; or
+    to a file inside a folder one of WORDS names (a results folder, a sweep's --out), at any
+    depth, unless its name ends in LOG_SUFFIXES: `>> RESULTS/fig7.csv` would too. The
+    message about standard error goes to the terminal (or nowhere), never into the file. Called
+    first by every tool, before its command line is parsed (a parse error is a message too)."""
+    import sys
+    streams = []
+    for fd, name in ((2, "standard error"), (1, "standard output")):
+        try:
+            st = os.fstat(fd)
+        except OSError:
+            continue
+        if stat.S_ISREG(st.st_mode):
+            streams.append((fd, name, (st.st_dev, st.st_ino)))
+    if not streams:
+        return
+    try:
+        named = named_files(list(words))
+    except (OSError, ValueError, RecursionError):
+        return
+    inputs = {}
+    for option, path in named:
+        if not _through_stream(path):  # --out /dev/stdout names the stream itself (refused as an output)
+            inputs.setdefault(_identity(path), (option, path))
+    folders = named_folders(list(words))
+    for fd, name, key in streams:
+        if key in inputs:
+            option, path = inputs[key]
+            what = "the file %s" % shown(path) if option == "argument" else "the %s file %s" % (option, shown(path))
+            why = "%s: %s is redirected to %s, an input\n" % (prog, name, what)
+        else:
+            inside = _stream_in_folder(fd, folders)
+            if inside is None:
+                continue
+            path, option, folder = inside
+            what = "the folder %s" % shown(folder) if option == "argument" else "the %s folder %s" % (option, shown(folder))
+            why = ("%s: %s is redirected to %s, in %s, whose files the command reads (a file there whose name ends "
+                   "in %s is allowed)\n" % (prog, name, shown(path), what, ", ".join(LOG_SUFFIXES)))
+        if fd == 2:
+            divert_stderr()
+        sys.stderr.write(why)
+        sys.stderr.flush()
+        raise SystemExit(2)
+
+
+# Files in a folder a command works on that no tool reads: a log there may take its streams.
+LOG_SUFFIXES = (".log", ".txt", ".out", ".err")
+
+
+def named_folders(words):
+    """(option, path) of each word of a command line that names an existing folder (as
+    named_files names files): the folders whose files a command reads (a results folder, a
+    sweep's --out, a backend's --state)."""
+    found = []
+    for i, word in enumerate(words):
+        option, eq, value = word.partition("=")
+        if word.startswith("--") and eq and os.path.isdir(value):
+            found.append((option, value))
+        elif os.path.isdir(word) and not word.startswith("-"):
+            before = words[i - 1] if i > 0 else ""
+            found.append((before if before.startswith("-") else "argument", word))
+    return found
+
+
+def _stream_in_folder(fd, folders):
+    """(the stream's path, option, folder) when descriptor FD is a file inside one of FOLDERS
+    (at any depth) whose name does not end in LOG_SUFFIXES, else None."""
+    try:
+        path = os.readlink("/proc/self/fd/%d" % fd)
+    except OSError:
+        return None
+    if not path.startswith(os.sep) or path.endswith(LOG_SUFFIXES):
+        return None
+    real = os.path.realpath(path)
+    for option, folder in folders:
+        top = os.path.realpath(folder)
+        if real.startswith(top.rstrip(os.sep) + os.sep):
+            return path, option, folder
+    return None
