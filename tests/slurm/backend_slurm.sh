@@ -79,6 +79,11 @@ check "the cancelled task is listed with its state and output" grep -q "^backend
 check "the points without a result are listed as failed" test "$(grep -c '^backend: FAILED .*ips_1-map_' "$out")" -eq 2
 check "their CSV rows say failed" test "$(awk -F, '$1 == "1" { print $3 }' "$TMP/slurm/sweep.csv" | sort -u)" = failed
 check "the other 6 points are done" test "$(ls "$TMP/slurm/points/"*.json | wc -l)" -eq 6
+if [ "$FAILED" -gt 0 ]; then  # what the sweep said and left, for reading a failure
+    echo "--- $out (last 25 lines):"; tail -n 25 "$out"
+    echo "--- points: $(cd "$TMP/slurm/points" && ls | tr '\n' ' ')"
+    echo "--- task outputs:"; tail -n 5 "$TMP/slurm/run/slurm/"*.out
+fi
 
 at "the cancelled sweep done"
 # 3. The same command again (the stand-in, no longer slow) computes the two missing points only.
