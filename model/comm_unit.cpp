@@ -87,7 +87,7 @@ CommUnit::Hop CommUnit::next_hop(TimedPacket &p, int owner)
 {
     if (owner == m_node) return {m_local_sink, true, -1};
     // A tie on an even ring goes by the pixel's checkerboard: neighbouring pixels take opposite ways.
-    int dir = m_routing.next_direction(m_node, owner, p.packet.x + p.packet.y);
+    int dir = m_routing.next_direction_by(m_node, owner, [&p] { return p.packet.x + p.packet.y; });
     PacketSinkIf *way = dir < 0 ? nullptr : m_ways.sink(dir);
     if (!way) SC_REPORT_FATAL(name(), "no link toward the packet's owner");
     p.vc = link_channel(m_flow, m_routing, p, m_node, dir);

@@ -184,7 +184,6 @@ class IntersectionProcessor : public sc_core::sc_module,
     // read the ports for them.
     PacketSinkIf *m_out = nullptr;
     tlm::tlm_fw_transport_if<> *m_fb = nullptr;
-    TimeSeries *m_series = nullptr;   // --stats-interval's series (null: none)
     sc_core::sc_time m_delay, m_due;  // the owed wait and when it ends
     const MachineConfig &m_config;
     const rt_scene *m_scene;
@@ -196,9 +195,7 @@ class IntersectionProcessor : public sc_core::sc_module,
     TimeKeeper m_time;
     sc_core::sc_time m_before, m_start, m_handed_at;
     sc_core::sc_time m_busy = sc_core::SC_ZERO_TIME;
-    // Idle time waiting for room or to hand over; a wait for room for the outputs of a packet in
-    // the queue began at m_room_from.
-    sc_core::sc_time m_blocked, m_room_from;
+    TimeSeries *m_series = nullptr;  // --stats-interval's series (null: none), asked at each step's end
     size_t m_next_out = 0;  // the next output to hand over
     uint64_t m_packets_in = 0, m_packets_out = 0;
     bool m_busy_flag = false;
@@ -208,6 +205,9 @@ class IntersectionProcessor : public sc_core::sc_module,
     std::vector<TimedPacket> m_outputs;
     PacketQueue m_queue;
     TimedPacket m_current;                // the packet taken up (after its step), when taken up by copy
+    // Idle time waiting for room or to hand over; a wait for room for the outputs of a packet in
+    // the queue began at m_room_from.
+    sc_core::sc_time m_blocked, m_room_from;
     std::vector<uint32_t> m_tested;       // objects tested in the current step (shared data only)
     tlm::tlm_generic_payload m_fb_trans;  // a member, not a thread local: freed with the module
     // On the calendar's path (a flat machine with a positive link time) no event is touched per

@@ -37,21 +37,6 @@ int Routing::neighbour(int n, int dir) const
     return node(c);
 }
 
-int Routing::next_direction(int from, int to, uint32_t tie_key) const
-{
-    const std::array<int, 3> &a = m_coords[static_cast<size_t>(from)], &b = m_coords[static_cast<size_t>(to)];
-    for (int axis = 0; axis < 3; axis++) {
-        if (a[axis] == b[axis]) continue;
-        if (!m_torus) return direction(axis, b[axis] > a[axis]);
-        int p = m_dims[axis];
-        int forward = b[axis] - a[axis];
-        if (forward < 0) forward += p;  // the hops going + round the ring
-        if (forward != p - forward) return direction(axis, forward < p - forward);
-        return direction(axis, m_ties == RouteTies::plus || tie_key % 2 == 0);
-    }
-    return -1;
-}
-
 bool Routing::wraps(int n, int dir) const
 {
     int axis = dir / 2;

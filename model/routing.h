@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -31,7 +32,26 @@ class Routing {
     // Direction of the first hop from `from` toward `to` (x, then y, then z; on a ring the
     // shorter way, a tie by the RouteTies rule on `tie_key`), or -1 if from == to. A tie can
     // only arise at a packet's first hop on an axis, so the key decides the whole ring's way.
-    int next_direction(int from, int to, uint32_t tie_key) const;
+    int next_direction(int from, int to, uint32_t tie_key) const
+    {
+        return next_direction_by(from, to, [tie_key] { return tie_key; });
+    }
+    // The same with the key from `tie_key()`, called only when a tie arises: a hop then reads no
+    // more of its packet than it needs.
+    template <class TieKey> int next_direction_by(int from, int to, TieKey tie_key) const
+    {
+        const std::array<int, 3> &a = m_coords[static_cast<size_t>(from)], &b = m_coords[static_cast<size_t>(to)];
+        for (int axis = 0; axis < 3; axis++) {
+            if (a[axis] == b[axis]) continue;
+            if (!m_torus) return direction(axis, b[axis] > a[axis]);
+            int p = m_dims[axis];
+            int forward = b[axis] - a[axis];
+            if (forward < 0) forward += p;  // the hops going + round the ring
+            if (forward != p - forward) return direction(axis, forward < p - forward);
+            return direction(axis, m_ties == RouteTies::plus || tie_key() % 2 == 0);
+        }
+        return -1;
+    }
     RouteTies ties() const { return m_ties; }
     // Whether the link leaving `node` in direction `dir` is its ring's wrap-around link (from
     // the last coordinate to 0 going +, from 0 to the last going -): the dateline.
