@@ -25,9 +25,13 @@ def exit_on_signals(program=None, even_ignored=()):
     (names: a shell starts a command in the background ignoring SIGINT and SIGQUIT)."""
     name = program or os.path.basename(sys.argv[0] or "python3")
 
+    def ignore(signum, frame):
+        """A signal after the first: nothing (SIG_IGN itself would make a signal already pending
+        end in CPython's "ignored due to race condition" traceback)."""
+
     def leave(signum, frame):
         for sig in STOP_SIGNALS:
-            signal.signal(getattr(signal, sig), signal.SIG_IGN)
+            signal.signal(getattr(signal, sig), ignore)
         with contextlib.suppress(OSError):
             os.write(2, ("%s: stopped by %s\n" % (name, signal.Signals(signum).name)).encode(errors="surrogateescape"))
         raise Stopped(128 + signum)

@@ -28,6 +28,23 @@ with of.atomic(sys.argv[2]) as f:
 """ % EXP
 
 
+# Two signals pending at once; then, as a child's terminate() on the way out does, a call that
+# has the interpreter look at its signals again.
+TWO_AT_ONCE = """import os, signal, sys
+sys.path.insert(0, %r)
+from stop_signals import exit_on_signals
+exit_on_signals("tool")
+both = {signal.SIGUSR1, signal.SIGUSR2}
+signal.pthread_sigmask(signal.SIG_BLOCK, both)
+os.kill(os.getpid(), signal.SIGUSR1)
+os.kill(os.getpid(), signal.SIGUSR2)
+try:
+    signal.pthread_sigmask(signal.SIG_UNBLOCK, both)
+finally:
+    os.kill(os.getpid(), 0)
+""" % EXP
+
+
 class StopSignals(unittest.TestCase):
     def setUp(self):
         self.dir = tempfile.mkdtemp()
@@ -54,6 +71,11 @@ class StopSignals(unittest.TestCase):
         self.assertEqual(done.returncode, 128 + signal.SIGUSR1)
         self.assertEqual(done.stderr, "tool: stopped by SIGUSR1\n")
         self.assertEqual(os.listdir(self.dir), [])
+
+    def test_two_signals_at_once_stop_once_without_a_traceback(self):
+        done = subprocess.run([sys.executable, "-c", TWO_AT_ONCE], stderr=subprocess.PIPE, text=True)
+        self.assertEqual(done.returncode, 128 + signal.SIGUSR1)
+        self.assertEqual(done.stderr, "tool: stopped by SIGUSR1\n")
 
     def test_a_signal_ignored_from_the_start_stays_ignored(self):
         done = self.run_program("SIGHUP", ignored=signal.SIGHUP)
