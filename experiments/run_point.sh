@@ -23,10 +23,13 @@
 # leaves no temporary and ends with 128 + the signal's number.
 set -uo pipefail
 usage="usage: run_point.sh OUT.json [--t1-from T1.json] -- COMMAND..."
-# Standard output or error redirected into a file of the command line (the scene, a --config):
+# Standard output or error redirected into a file of the command line (the scene, a --config) or
+# into one of the point's own files (OUT.log, OUT.png, OUT.series.csv, which the run replaces):
 # refused (exit 2) before any message could be appended to it.
 if [ -f /dev/stdout ] || [ -f /dev/stderr ]; then
-    python3 "$(dirname "${BASH_SOURCE[0]}")/output_files.py" --check-streams run_point -- "$@" || exit 2
+    own=()
+    [ -z "${1:-}" ] || { stem=${1%.json}; own=("$stem.log" "$stem.png" "$stem.series.csv"); }
+    python3 "$(dirname "${BASH_SOURCE[0]}")/output_files.py" --check-streams run_point -- "$@" "${own[@]}" || exit 2
 fi
 [ $# -ge 1 ] && [ -n "$1" ] || { echo "run_point: $usage (OUT.json: not an empty value)" >&2; exit 2; }
 out=$1

@@ -24,7 +24,8 @@ def check_streams(prog, words):
     error is redirected to a file one of WORDS names (named_files: the scene, a --config and the
     files it names, a report), also through a hard link: `>> s.nff` would append to an input; or
     to a file inside a folder one of WORDS names (a results folder, a sweep's --out), at any
-    depth, unless its name ends in LOG_SUFFIXES: `>> RESULTS/fig7.csv` would too. The
+    depth, which the command may read or replace (a point's log among them): `>> RESULTS/fig7.csv`
+    would append to it too. The
     message about standard error goes to the terminal (or nowhere), never into the file. Called
     first by every tool, before its command line is parsed (a parse error is a message too)."""
     import sys
@@ -58,17 +59,13 @@ def check_streams(prog, words):
                 continue
             path, option, folder = inside
             what = "the folder %s" % shown(folder) if option == "argument" else "the %s folder %s" % (option, shown(folder))
-            why = ("%s: %s is redirected to %s, in %s, whose files the command reads (a file there whose name ends "
-                   "in %s is allowed)\n" % (prog, name, shown(path), what, ", ".join(LOG_SUFFIXES)))
+            why = "%s: %s is redirected to %s, in %s, whose files the command reads and writes\n" % (
+                prog, name, shown(path), what)
         if fd == 2:
             divert_stderr()
         sys.stderr.write(why)
         sys.stderr.flush()
         raise SystemExit(2)
-
-
-# Files in a folder a command works on that no tool reads: a log there may take its streams.
-LOG_SUFFIXES = (".log", ".txt", ".out", ".err")
 
 
 def named_folders(words):
@@ -88,12 +85,12 @@ def named_folders(words):
 
 def _stream_in_folder(fd, folders):
     """(the stream's path, option, folder) when descriptor FD is a file inside one of FOLDERS
-    (at any depth) whose name does not end in LOG_SUFFIXES, else None."""
+    (at any depth), else None."""
     try:
         path = os.readlink("/proc/self/fd/%d" % fd)
     except OSError:
         return None
-    if not path.startswith(os.sep) or path.endswith(LOG_SUFFIXES):
+    if not path.startswith(os.sep):
         return None
     real = os.path.realpath(path)
     for option, folder in folders:

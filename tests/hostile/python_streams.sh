@@ -6,8 +6,8 @@
 #   list) for compare-mappings, the sweep, report machine, run_point.sh and the backend: exit 2
 #   before anything runs, the input unchanged (also when the command line is wrong, and so would
 #   give a usage message); and `>> FILE` or `2>> FILE` for a file inside a folder the command
-#   names (report compare's CSVs, a sweep's point JSON and id, sweep-collect's points.tsv), but
-#   a .log there;
+#   names (report compare's CSVs and a log beside them, a sweep's point JSON, id and a new
+#   point's log, sweep-collect's points.tsv), and run_point.sh's own OUT.log;
 # - a point JSON nested 100000 deep: the sweep's resume runs the point again, report machine
 #   names the file as not a report (exit 1), no RecursionError traceback;
 # - TERM or HUP sent to run_point.sh's shell alone: its command is stopped too, the script ends
@@ -90,8 +90,8 @@ printf 'scene,n,status,sim_time_s\na,1,ok,1\n' >A/fig7.csv
 printf 'scene,n,status,sim_time_s\na,1,ok,2\n' >B/fig7.csv
 in_folder 1 "report compare >> a CSV it reads" A/fig7.csv python3 "$EXP/report" compare A B
 in_folder 2 "report compare 2>> a CSV it reads" B/fig7.csv python3 "$EXP/report" compare A B
-python3 "$EXP/report" compare A B >>A/compare.log 2>&1 </dev/null
-check "report compare >> a .log in the folder: exit $?, expected 1 (the figures differ)" [ "$(tail -n 1 A/compare.log | grep -c differences)" -eq 1 ]
+echo "my notes" >A/notes.log
+in_folder 1 "report compare >> a log in the folder" A/notes.log python3 "$EXP/report" compare A B
 "${run_limited[@]}" "$EXP/sweep" --build "$BUILD" keep.nff --axis ips=1,2 --out R -- "${small[@]}" \
     >/dev/null 2>R.err </dev/null
 check "sweep into R: exit $?: $(head -c 300 R.err)" [ -s R/points/ips_1.json ]
@@ -103,6 +103,19 @@ for stream in 1 2; do
 done
 in_folder 1 "report sweep-collect >> its points.tsv" R/points.tsv \
     python3 "$EXP/report" sweep-collect --out R --columns "" --y sim_time_s
+# A point's own log, which its run replaces: a new point's in a sweep, run_point.sh's.
+echo "my notes" >R/points/ips_4.log
+in_folder 1 "sweep >> a new point's log" R/points/ips_4.log \
+    "$EXP/sweep" --build "$BUILD" keep.nff --axis ips=1,2,4 --out R -- "${small[@]}"
+mkdir -p rp && echo "my notes" >rp/g.log
+into_own() {  # run_point.sh's refusal names the file (an input of its check), exit 2, the file kept
+    "${run_limited[@]}" "$EXP/run_point.sh" rp/g.json -- "$BUILD/torusrt-sim" keep.nff "${small[@]}" >>rp/g.log \
+        2>rp.err </dev/null
+    local rc=$?
+    check "run_point >> the point's own log: exit $rc, expected 2" [ "$rc" -eq 2 ]
+    check "run_point >> the point's own log: kept" [ "$(cat rp/g.log)" = "my notes" ]
+}
+into_own
 
 # ---- a point JSON nested 100000 deep ------------------------------------------------------
 deep() { python3 -c "print('{\"a\":' * 100000 + '1' + '}' * 100000)"; }
