@@ -47,6 +47,10 @@ rt_status rt_budget_parse(const char *text, uint64_t *bytes, char *msg, size_t m
         if (rt_number_real(number, n, &v) != RT_NUMBER_OK) break;
         double b = floor(v * units[i].scale);
         if (!(b < 18446744073709551616.0)) break;
+        if (b == 0 && v > 0) { /* 0 is no limit: a size under a byte is not taken as one */
+            if (msg && msg_len) snprintf(msg, msg_len, "less than one byte (0 means no limit)");
+            return RT_ERR_INVALID;
+        }
         *bytes = (uint64_t)b;
         return RT_OK;
     }

@@ -93,8 +93,16 @@ scene() {
     [ -s "$f" ] || "$gen" --variant "paper-image$1" "$2" "$res/scenes" "$(stem "$1" "$2")" >/dev/null
     echo "$f"
 }
-# timing NAME KEY=VALUE...: RES/timing/NAME.timing, the calibrated table with the keys set.
-timing() { local f=$res/timing/$1.timing; shift; fit timing "$@" | write_file "$f"; echo "$f"; }
+# timing NAME KEY=VALUE...: RES/timing/NAME.timing, the calibrated table with the keys set. Called
+# as t=$(timing ...): a failed step returns its status (a command substitution does not inherit
+# set -e), and nothing is written then.
+timing() {
+    local f=$res/timing/$1.timing text
+    shift
+    text=$(fit timing "$@") || return
+    printf '%s\n' "$text" | write_file "$f" || return
+    echo "$f"
+}
 common=(--size "$size" --map cyclic --route-ties split)
 
 source "$here/fit_scenes.sh"     # stage 1: sets spec1 rule spec2 c, image1 image2, t1json1 t1json2

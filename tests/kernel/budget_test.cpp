@@ -33,6 +33,14 @@ TEST(Budget, ParsesSizesWithBinaryUnits)
         EXPECT_EQ(b, 7u) << bad;
         EXPECT_NE(std::string(msg).find("512M"), std::string::npos) << msg;
     }
+    // Under one byte is not "no limit" (0): refused, not rounded down to 0.
+    for (const char *tiny : {"0.5", "0.9999", "0.0000001K"}) {
+        uint64_t b = 7;
+        char msg[RT_MSG_LEN] = "";
+        EXPECT_EQ(rt_budget_parse(tiny, &b, msg, sizeof msg), RT_ERR_INVALID) << tiny;
+        EXPECT_EQ(b, 7u) << tiny;
+        EXPECT_NE(std::string(msg).find("less than one byte"), std::string::npos) << msg;
+    }
 }
 
 TEST(Budget, ReserveTakesFromWhatIsLeftAndNamesTheOverrun)
