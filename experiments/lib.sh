@@ -200,24 +200,22 @@ RUN_POINTS_OPTS=()
 # The signals that stop torusrt-sim but PIPE (support/signal_cleanup.cpp), NAME:NUMBER.
 STOP_SIGNALS=(INT:2 TERM:15 HUP:1 QUIT:3 USR1:10 USR2:12 ALRM:14)
 STOP_CHILD=""
-# in_child COMMAND...: COMMAND in the background, waited for, its exit status. A stopping signal
-# sent to the script meanwhile (to it alone, not to its process group) reaches COMMAND as TERM
-# (a shell starts a background child ignoring INT and QUIT; the backend then stops its points),
-# COMMAND is waited for, and the script ends with a message and 128 + the signal's number.
+# in_child COMMAND...: COMMAND in the background, waited for, its exit status: a stopping signal
+# sent to the script meanwhile (to it alone, not to its process group) is taken at once rather
+# than after COMMAND ends, and reaches COMMAND as TERM (a shell starts a background child ignoring
+# INT and QUIT; the backend then stops its points).
 in_child() {
-    local sig rc=0
-    for sig in "${STOP_SIGNALS[@]}"; do
-        # shellcheck disable=SC2064  # the signal's name and number, set now
-        trap "stop_script ${sig%:*} ${sig#*:}" "${sig%:*}"
-    done
+    local rc=0
     "$@" &
     STOP_CHILD=$!
     wait "$STOP_CHILD" || rc=$?
     STOP_CHILD=""
-    for sig in "${STOP_SIGNALS[@]}"; do trap - "${sig%:*}"; done
     return $rc
 }
-# stop_script NAME NUMBER: in_child's signal handler.
+# stop_script NAME NUMBER: the handler of the stopping signals in every script that sources this
+# file (set below), whenever the signal comes: in_child's child is stopped and waited for, and
+# the script ends with a message and 128 + the signal's number. A signal the script was started
+# ignoring (INT and QUIT for a shell's background job) stays ignored, as bash keeps it.
 stop_script() {
     local sig
     for sig in "${STOP_SIGNALS[@]}"; do trap '' "${sig%:*}"; done
@@ -228,6 +226,11 @@ stop_script() {
     echo "$(basename "$0"): stopped by SIG$1; the same command runs the points not done" >&2
     exit $((128 + $2))
 }
+for stop_sig in "${STOP_SIGNALS[@]}"; do
+    # shellcheck disable=SC2064  # the signal's name and number, set now
+    trap "stop_script ${stop_sig%:*} ${stop_sig#*:}" "${stop_sig%:*}"
+done
+unset stop_sig
 
 # merge_joblogs STATE_DIR: STATE_DIR/joblog.phase1 and joblog.phase2 (GNU parallel backends) as
 # one STATE_DIR/joblog with one header, for a report's run facts.

@@ -2,7 +2,7 @@
 # sweep_signals.sh - TERM or HUP sent to the sweep's shell alone (not to its process group) while
 # its points run stops the backend and the points too: the sweep says so and ends with 128 + the
 # signal's number, and no process of its --out folder runs on. A study's script (set -e) waiting
-# in lib.sh's in_child does the same for every stopping signal.
+# in lib.sh's in_child does the same for every stopping signal, and so it does between its runs.
 #
 # Usage (CTest runs it so): bash tests/hostile/sweep_signals.sh BUILD_DIR SOURCE_DIR
 set -u
@@ -50,5 +50,21 @@ for sig in TERM HUP INT QUIT USR1 USR2 ALRM; do
     check "study $sig: the message: $(head -c 200 "study$sig.txt")" \
         grep -q "study.sh: stopped by SIG$sig; the same command runs the points not done" "study$sig.txt"
     check "study $sig: its child stopped" bash -c "! kill -0 $child 2>/dev/null"
+done
+# The same between its runs: the signal comes while a command of its own runs in the foreground.
+printf '%s\n' '#!/usr/bin/env bash' 'set -euo pipefail' "source '$EXP/lib.sh'" 'sleep 2' 'touch never' \
+    'in_child sleep 30' >between.sh
+for sig in TERM USR1; do
+    env --default-signal=INT,QUIT bash between.sh 2>"between$sig.txt" </dev/null &
+    study=$!
+    for _ in $(seq 100); do pgrep -P "$study" sleep >/dev/null && break; sleep 0.1; done
+    kill -s "$sig" "$study"
+    wait "$study"
+    rc=$?
+    code=$((128 + $(kill -l "$sig")))
+    check "between runs, $sig: exit $rc, expected $code" [ "$rc" -eq "$code" ]
+    check "between runs, $sig: the message: $(head -c 200 "between$sig.txt")" \
+        grep -q "between.sh: stopped by SIG$sig" "between$sig.txt"
+    check "between runs, $sig: nothing after the signal ran" [ ! -e never ]
 done
 finish
