@@ -89,6 +89,8 @@ def check_fields(sim, scene, names, combos, fixed, columns, y):
     """Checks the fields of --columns and --y against the reports of the points run at 1x1
     pixels, one point after the other until each field is found, so that a misspelt field stops
     the sweep before any point runs (nothing to run for the default columns, in every report)."""
+    if y == "status":  # the CSV's own column: ok, deadlock or failed
+        raise ValueError("--y status: the points' status is text, not a number to plot")
     wanted = [] if columns == ["all"] else [c for c in columns if c not in DEFAULT_COLUMNS]
     wanted += [y] if y not in DEFAULT_COLUMNS + wanted else []
     if not wanted:
@@ -105,11 +107,19 @@ def check_fields(sim, scene, names, combos, fixed, columns, y):
                                   stderr=subprocess.PIPE, text=True, errors="surrogateescape")
             if done.returncode == 0:
                 fields = flatten(read_report(stats))
+                if y in wanted and y in fields and not is_number(fields[y]):
+                    raise ValueError("--y %s: %s in the points' reports, not a number to plot"
+                                     % (y, json.dumps(fields[y])[:40]))
                 wanted = [c for c in wanted if c not in fields]
             if not wanted:
                 return
     raise ValueError("no such JSON field in the points' reports (each point run at 1x1 pixels, no point of the "
                      "sweep was run): %s (scalars by dotted name, e.g. links.utilisation.mean)" % ", ".join(wanted))
+
+
+def is_number(value):
+    """A JSON number (true and false are not)."""
+    return isinstance(value, (int, float)) and not isinstance(value, bool)
 
 
 def file_hash(path, cache):

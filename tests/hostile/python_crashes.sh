@@ -8,8 +8,8 @@
 # - a byte that is not UTF-8 in torusrt-sim's message (a scene's name): shown as \xNN;
 # - a CSV row with fewer fields than its header (report compare, report reproduction), and a
 #   report whose config.option_order is null (report machine): the file, line or field named;
-# - the sweep's options in the --opt=value form, and a --y field no report has: refused before
-#   any point runs, no --out made.
+# - the sweep's options in the --opt=value form, and a --y field no report has or one that is
+#   not a number: refused before any point runs, no --out made.
 #
 # Usage (CTest runs it so): bash tests/hostile/python_crashes.sh BUILD_DIR SOURCE_DIR
 set -u
@@ -150,6 +150,12 @@ check "sweep --columns=t1_s --y=efficiency_t1: the CSV's columns: $(head -1 sweq
 ends 2 "sweep --y nosuch" "no such JSON field .*: nosuch " swy.err $?
 check "sweep --y nosuch: named once: $(cat swy.err)" [ "$(grep -o nosuch swy.err | wc -l)" -eq 1 ]
 check "sweep --y nosuch: no point run, no --out made" [ ! -e swy ]
+for y in status scene config.mapping; do  # fields that are not numbers: nothing to plot
+    "${run_limited[@]}" "$EXP/sweep" s.nff --axis ips=1,2 --out "swy$y" --y "$y" -- "${small[@]}" \
+        >/dev/null 2>"swy$y.err" </dev/null
+    ends 2 "sweep --y $y" "--y $y: .*not a number to plot" "swy$y.err" $?
+    check "sweep --y $y: no point run, no --out made" [ ! -e "swy$y" ]
+done
 "${run_limited[@]}" "$EXP/sweep" s.nff --axis ips=1,2 --out swy --columns t1_s,t1_s -- "${small[@]}" \
     >swy.out 2>swy.err </dev/null
 ends 2 "sweep --columns given twice" "'t1_s' is given twice" swy.err $?
