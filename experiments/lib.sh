@@ -10,6 +10,14 @@ BUILD=${TORUSRT_BUILD:-$REPO/build}
 
 die() { echo "$(basename "$0"): $*" >&2; exit 2; }
 
+# A script's standard output or error appended to a file it reads or writes (a scene, a machine
+# or timing file, a page of docs/, a file of a results folder, or one its command line names, a
+# folder given included): refused before anything is written (exit 2; stream_checks.py).
+if [ -f /dev/stdout ] || [ -f /dev/stderr ]; then
+    python3 "$EXP/output_files.py" --check-streams "$(basename "$0")" -- "$@" "$REPO/scenes" "$REPO/machines" \
+        "$REPO/timing" "$REPO/docs" "$EXP/results" "$EXP"/*/results || exit 2
+fi
+
 # write_file FILE [OPTION]: standard input into FILE under the output rules of the Python tools
 # (output_files.py: through a temporary renamed into place, a link followed, a folder, FIFO or
 # device refused naming OPTION, exit 2).

@@ -7,7 +7,8 @@
 #   before anything runs, the input unchanged (also when the command line is wrong, and so would
 #   give a usage message); and `>> FILE` or `2>> FILE` for a file inside a folder the command
 #   names (report compare's CSVs and a log beside them, a sweep's point JSON, id and a new
-#   point's log, sweep-collect's points.tsv), and run_point.sh's own OUT.log;
+#   point's log, sweep-collect's points.tsv), run_point.sh's own OUT.log, and a study's scene or
+#   a file of its --results folder;
 # - a point JSON nested 100000 deep: the sweep's resume runs the point again, report machine
 #   names the file as not a report (exit 1), no RecursionError traceback;
 # - TERM or HUP sent to run_point.sh's shell alone: its command is stopped too, the script ends
@@ -116,6 +117,16 @@ into_own() {  # run_point.sh's refusal names the file (an input of its check), e
     check "run_point >> the point's own log: kept" [ "$(cat rp/g.log)" = "my notes" ]
 }
 into_own
+
+# ---- a study's streams: a scene it reads, a file of the results folder it is given ------------
+# (a copy of the tree: a failed check must not touch the source's scenes)
+mkdir -p tree && cp -r "$SRC/experiments" "$SRC/scenes" tree/
+mkdir -p Rq && echo '{}' >Rq/f.json
+in_folder 1 "study >> a scene it reads" tree/scenes/paper-image1.nff \
+    bash tree/experiments/buffers/study.sh --quick --build "$BUILD" --results "$TMP/Rq"
+in_folder 2 "study 2>> a file of its results folder" Rq/f.json \
+    bash tree/experiments/buffers/study.sh --quick --build "$BUILD" --results "$TMP/Rq"
+check "the refused studies ran nothing: $(ls -A Rq | tr '\n' ' ')" [ "$(ls -A Rq)" = f.json ]
 
 # ---- a point JSON nested 100000 deep ------------------------------------------------------
 deep() { python3 -c "print('{\"a\":' * 100000 + '1' + '}' * 100000)"; }
