@@ -506,5 +506,6 @@ def main(argv):
 
 if __name__ == "__main__":
     import sys
+    from memory_exit import run
     exit_on_signals()
-    sys.exit(main(sys.argv[1:]))
+    sys.exit(run(os.path.basename(sys.argv[0]), lambda: main, sys.argv[1:]))

@@ -9,9 +9,15 @@ from stop_signals import exit_on_signals  # noqa: E402
 # before the imports below: a signal there is named too; Ctrl-C even where a shell started the
 # backend in the background (a sweep does), ignoring it
 exit_on_signals("experiments/backend", even_ignored=("SIGINT", "SIGQUIT"))
-if __package__ in (None, ""):
-    from backend.cli import main
-else:
-    from .cli import main
+from memory_exit import run  # noqa: E402
 
-sys.exit(main(sys.argv[1:]))
+
+def load_main():
+    if __package__ in (None, ""):
+        from backend.cli import main
+    else:
+        from .cli import main
+    return main
+
+
+sys.exit(run("experiments/backend", load_main, sys.argv[1:]))

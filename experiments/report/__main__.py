@@ -6,10 +6,17 @@ if __package__ in (None, ""):
     sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 from stop_signals import exit_on_signals  # noqa: E402
 
-exit_on_signals("experiments/report")  # before the imports below: a signal there is named too
-if __package__ in (None, ""):
-    from report.cli import main
-else:
-    from .cli import main
+from memory_exit import run  # noqa: E402
 
-sys.exit(main(sys.argv[1:]))
+exit_on_signals("experiments/report")  # before the imports below: a signal there is named too
+
+
+def load_main():
+    if __package__ in (None, ""):
+        from report.cli import main
+    else:
+        from .cli import main
+    return main
+
+
+sys.exit(run("experiments/report", load_main, sys.argv[1:]))

@@ -161,4 +161,19 @@ done
 ends 2 "sweep --columns given twice" "'t1_s' is given twice" swy.err $?
 check "sweep --columns given twice: no --out made" [ ! -e swy ]
 
+# ---- memory the system refuses (ulimit -v): a message and exit 1, never a MemoryError traceback --
+mkdir -p MA MB && printf 'scene,n,status,sim_time_s\na,1,ok,1\n' >MA/fig7.csv && cp MA/fig7.csv MB/
+tracebacks=0
+for limit in 18000 20000 22000 24000 28000 32000; do
+    for tool in "python3 $EXP/report compare MA MB" "python3 $EXP/backend run --state mst nosuch.list" \
+        "$EXP/compare-mappings s.nff --map block --out mcm.png -- --size 8x8"; do
+        # shellcheck disable=SC2086  # the command splits at its spaces
+        (ulimit -v "$limit" && exec $tool) >/dev/null 2>mem.err </dev/null
+        if grep -q "Traceback" mem.err; then
+            tracebacks=$((tracebacks + 1))
+            echo "ulimit -v $limit: $tool: $(tail -n 2 mem.err | tr '\n' ' ' | head -c 200)"
+        fi
+    done
+done
+check "Python tools under ulimit -v 18-32 MB: runs that ended in a traceback: $tracebacks of 18" [ "$tracebacks" -eq 0 ]
 finish
