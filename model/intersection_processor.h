@@ -196,7 +196,7 @@ class IntersectionProcessor : public sc_core::sc_module,
     sc_core::sc_time m_before, m_start, m_handed_at;
     sc_core::sc_time m_busy = sc_core::SC_ZERO_TIME;
     TimeSeries *m_series = nullptr;  // --stats-interval's series (null: none), asked at each step's end
-    size_t m_next_out = 0;  // the next output to hand over
+    size_t m_next_out = 0;           // the next output to hand over
     uint64_t m_packets_in = 0, m_packets_out = 0;
     bool m_busy_flag = false;
     rt_op_counts m_ops{};
@@ -204,7 +204,7 @@ class IntersectionProcessor : public sc_core::sc_module,
     // The current step's created packets, then the forwarded one (by copy).
     std::vector<TimedPacket> m_outputs;
     PacketQueue m_queue;
-    TimedPacket m_current;                // the packet taken up (after its step), when taken up by copy
+    TimedPacket m_current;  // the packet taken up (after its step), when taken up by copy
     // Idle time waiting for room or to hand over; a wait for room for the outputs of a packet in
     // the queue began at m_room_from.
     sc_core::sc_time m_blocked, m_room_from;
