@@ -32,24 +32,27 @@ cp "$scene1" keep.nff
 "$BUILD/torusrt-sim" --dump-config --ips 2 >keep.toml </dev/null
 printf '%s\ttrue\n' "$TMP/done.json" >keep.list
 
-# into STREAM NAME INPUT COMMAND...: COMMAND with standard output (STREAM 1) or error (2)
-# appended to INPUT (a copy of keep.EXT put in place first): exit 2 and INPUT unchanged; with
-# standard output, the message on standard error names it.
-into() {
-    local stream=$1 name=$2 input=$3 f=$TMP/${2//[\/ \']/_}
-    shift 3
-    cp "keep.${input##*.}" "$input"
+# appended STREAM NAME FILE KEEP PATTERN COMMAND...: COMMAND with standard output (STREAM 1) or
+# error (2) appended to FILE: exit 2, FILE still equal to KEEP and, with standard output, the
+# message on standard error matching PATTERN.
+appended() {
+    local stream=$1 name=$2 file=$3 keep=$4 pattern=$5 f=$TMP/${2//[\/ \']/_}
+    shift 5
     if [ "$stream" = 1 ]; then
-        "${run_limited[@]}" "$@" >>"$input" 2>"$f.err" </dev/null
+        "${run_limited[@]}" "$@" >>"$file" 2>"$f.err" </dev/null
     else
-        "${run_limited[@]}" "$@" 2>>"$input" >"$f.out" </dev/null
+        "${run_limited[@]}" "$@" 2>>"$file" >"$f.out" </dev/null
     fi
     local rc=$?
     check "$name: exit $rc, expected 2" [ "$rc" -eq 2 ]
-    check "$name: $input changed: $(cmp "keep.${input##*.}" "$input" 2>&1 | head -c 200)" \
-        cmp -s "keep.${input##*.}" "$input"
-    [ "$stream" = 2 ] || check "$name: the message names it: $(head -c 300 "$f.err")" \
-        grep -q "standard output is redirected to .*$input, an input" "$f.err"
+    check "$name: $file changed: $(cmp "$keep" "$file" 2>&1 | head -c 200)" cmp -s "$keep" "$file"
+    [ "$stream" = 2 ] || check "$name: the message names it: $(head -c 300 "$f.err")" grep -q "$pattern" "$f.err"
+}
+# into STREAM NAME INPUT COMMAND...: appended to INPUT, a copy of keep.EXT put in place first.
+into() {
+    local input=$3
+    cp "keep.${input##*.}" "$input"
+    appended "$1" "$2" "$input" "keep.${input##*.}" "standard output is redirected to .*$input, an input" "${@:4}"
 }
 cm=("$EXP/compare-mappings" --build "$BUILD" --map block,cyclic --out c.png)
 into 1 "cm >> scene" s.nff "${cm[@]}" s.nff -- --ips 2 "${small[@]}"
@@ -69,22 +72,11 @@ into 1 "backend >> its list" l.list python3 "$EXP/backend" run --state st l.list
 check "backend: no --state folder made by a refused run" [ ! -e st ]
 
 # ---- a file inside a folder the command works on (a results folder, a sweep's --out) ---------
-# in_folder STREAM NAME FILE COMMAND...: COMMAND with standard output (1) or error (2) appended
-# to FILE, which lies in a folder COMMAND names: exit 2 and FILE unchanged.
+# in_folder STREAM NAME FILE COMMAND...: appended to FILE, which lies in a folder COMMAND names.
 in_folder() {
-    local stream=$1 name=$2 file=$3 f=$TMP/${2//[\/ \']/_}
-    shift 3
-    cp "$file" "$f.keep"
-    if [ "$stream" = 1 ]; then
-        "${run_limited[@]}" "$@" >>"$file" 2>"$f.err" </dev/null
-    else
-        "${run_limited[@]}" "$@" 2>>"$file" >"$f.out" </dev/null
-    fi
-    local rc=$?
-    check "$name: exit $rc, expected 2" [ "$rc" -eq 2 ]
-    check "$name: $file changed: $(cmp "$f.keep" "$file" 2>&1 | head -c 200)" cmp -s "$f.keep" "$file"
-    [ "$stream" = 2 ] || check "$name: the message names it: $(head -c 300 "$f.err")" \
-        grep -q "standard output is redirected to .*$file, in the .*folder" "$f.err"
+    local keep=$TMP/${2//[\/ \']/_}.keep
+    cp "$3" "$keep"
+    appended "$1" "$2" "$3" "$keep" "standard output is redirected to .*$3, in the .*folder" "${@:4}"
 }
 mkdir A B
 printf 'scene,n,status,sim_time_s\na,1,ok,1\n' >A/fig7.csv
