@@ -48,7 +48,7 @@ double read_real(const std::string &option, const std::string &text)
 {
     double v = 0;
     switch (rt_number_real(text.data(), text.size(), &v)) {
-    case RT_NUMBER_OK: return v;
+    case RT_NUMBER_OK: return v == 0 ? 0.0 : v;  // -0 is 0 (and is written so in a dump)
     case RT_NUMBER_HEX:
     case RT_NUMBER_LEADING_ZERO: bad(option, text, not_decimal(text));
     case RT_NUMBER_TOO_LARGE: bad(option, text, "too large");

@@ -68,6 +68,15 @@ check "a bare time names the file, line, key and rule ($(head -1 "$TMP/err"))" \
 bad_option "--link-us" "--link-us 1000001" --link-us 1000001
 check "--link-us 1000001: no 1e+06 ($(head -c 200 "$TMP/bad.stderr"))" \
     grep -q "'1000001': must be at most 1000000 us" "$TMP/bad.stderr"
+# Times: each option's maximum holds however the number is spelled (a huge integer, 1e307).
+for args in "--stats-interval 1e308 --stats-series $TMP/bad/s.csv" "--trace-from 99999999999999999999 --vcd $TMP/bad/t.vcd" \
+    "--trace-to 2e7 --vcd $TMP/bad/t.vcd" "--t1 1e8" "--time-limit 1e307"; do
+    # shellcheck disable=SC2086
+    bad_option "${args%% *}" "$args" $args
+    check "$args: names the maximum ($(head -c 200 "$TMP/bad.stderr"))" grep -q "must be at most 10000000 s" "$TMP/bad.stderr"
+done
+d=$("$sim" --dump-config --link-us -0 | grep '^link-us=')
+check "--link-us -0 is written 0 ($d)" [ "$d" = 'link-us="0"' ]
 bad_option "--queue" "control bytes" --queue $'\e]0;owned\a'
 check "control bytes are escaped ($(head -c 200 "$TMP/bad.stderr" | od -c | head -2))" \
     sh -c "! grep -q \$(printf '\\033') '$TMP/bad.stderr' && grep -qF '\\x1b]0;owned\\x07' '$TMP/bad.stderr'"

@@ -14,9 +14,20 @@ namespace {
 using G = OptionGroup;
 using K = ValueKind;
 
-// A time in microseconds (a bare number is seconds).
-double time_us(const OptionSpec &s, const std::string &text) { return parse_time(s.long_name(), text, 0, -6); }
-double time_s(const OptionSpec &s, const std::string &text) { return parse_time(s.long_name(), text, 0, 0); }
+// A time in seconds (a bare number is seconds), at most the option's maximum (seconds).
+double time_s(const OptionSpec &s, const std::string &text)
+{
+    double v = parse_time(s.long_name(), text, 0, 0);
+    if (s.max > 0 && v > s.max)
+        bad(s.long_name() + " '" + shown_text(text) + "': must be at most " + number_text(s.max) + " s");
+    return v;
+}
+// The same in microseconds, read as such (a unit's power of ten applied once, exactly).
+double time_us(const OptionSpec &s, const std::string &text)
+{
+    time_s(s, text);
+    return parse_time(s.long_name(), text, 0, -6);
+}
 double real(const OptionSpec &s, const std::string &text) { return parse_real(s.long_name(), text, s.min, s.max); }
 
 // --stats-interval: at least 1 ps, SystemC's resolution.
@@ -29,8 +40,6 @@ void read_stats_interval(const OptionSpec &s, const std::string &t, SimRequest &
 void read_progress_every(const OptionSpec &s, const std::string &t, SimRequest &r)
 {
     r.config.progress_every_s = time_s(s, t);
-    if (r.config.progress_every_s > s.max)
-        bad(s.long_name() + " '" + shown_text(t) + "': must be at most " + number_text(s.max) + " s");
 }
 
 std::vector<RunOption> make_table()
