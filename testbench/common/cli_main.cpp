@@ -95,6 +95,16 @@ std::string with_suggestion(const CLI::App &app, const CLI::ParseError &e, const
     return what + hints;
 }
 
+// CLI11's count words in the project's: "--output: At Most 1 required but received 2" is an
+// option given twice.
+std::string reworded(const std::string &what)
+{
+    const std::string words = ": At Most 1 required but received ";
+    size_t at = what.find(words);
+    if (at == std::string::npos) return what;
+    return what.substr(0, at) + ": given " + what.substr(at + words.size()) + " times; give it once";
+}
+
 // The message for an allocation the system refused: what the run was doing, and what bounds the
 // memory a run takes. Built without allocating.
 void report_out_of_memory(const char *program, const char *what)
@@ -186,7 +196,7 @@ int run_cli(const char *program, CLI::App &app, int argc, char **argv, const std
         app.parse(argc, argv);
     } catch (const CLI::ParseError &e) {
         if (e.get_exit_code() == 0) return print_help_or_version(program, app, e);
-        std::string what = with_suggestion(app, e, e.what());
+        std::string what = with_suggestion(app, e, reworded(e.what()));
         const CLI::Option *config = app.get_config_ptr();  // name the --config file its errors come from
         if (dynamic_cast<const CLI::ConfigError *>(&e) && config != nullptr && config->count() > 0) {
             const std::string unknown = "INI was not able to parse ";  // CLI11's words for an unknown key

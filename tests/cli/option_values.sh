@@ -75,6 +75,9 @@ for args in "--stats-interval 1e308 --stats-series $TMP/bad/s.csv" "--trace-from
     bad_option "${args%% *}" "$args" $args
     check "$args: names the maximum ($(head -c 200 "$TMP/bad.stderr"))" grep -q "must be at most 10000000 s" "$TMP/bad.stderr"
 done
+# An option given twice is named with its count, in plain words.
+bad_option "--max-depth" "--max-depth twice" --max-depth 2 --max-depth 3
+check "--max-depth twice: given 2 times ($(head -c 200 "$TMP/bad.stderr"))" grep -q -- "--max-depth: given 2 times; give it once" "$TMP/bad.stderr"
 d=$("$sim" --dump-config --link-us -0 | grep '^link-us=')
 check "--link-us -0 is written 0 ($d)" [ "$d" = 'link-us="0"' ]
 bad_option "--queue" "control bytes" --queue $'\e]0;owned\a'
