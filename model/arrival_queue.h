@@ -24,6 +24,9 @@ class ArrivalQueue {
     void push(const sc_core::sc_time &when, int source, uint32_t packet);
     bool empty() const { return m_heap.empty(); }
     sc_core::sc_time next_time() const { return sc_core::sc_time::from_value(m_heap.front().when); }
+    // The same as a time value (picoseconds): compared as such on the unit's path, where building
+    // an sc_time (a library call) for each comparison cost 0.8 % of a run's instructions.
+    sc_dt::uint64 next_value() const { return m_heap.front().when; }
     // Whether the earliest arrival was pushed in the current delta cycle (sequence numbers grow
     // with every push: this delta's pushes are those from the first one it made).
     bool next_is_new() const

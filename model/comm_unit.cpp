@@ -168,7 +168,7 @@ void CommUnit::from_processor(uint32_t packet)
     // time any more). Bound for this node's own processor, it waits for that delta, so the
     // processor takes up its next packet before this one joins its queue.
     if (m_route_at_once && stamp <= now && m_pool->owner(packet) != m_node &&
-        (m_arrivals.empty() || m_arrivals.next_time() > now)) {
+        (m_arrivals.empty() || m_arrivals.next_value() > now.value())) {
         if (forward(packet)) return;  // unbounded buffers: it always moves on (no credit held)
     }
     enqueue(packet, stamp, processor_source(), nullptr);
@@ -242,8 +242,8 @@ void CommUnit::deliver()
 
 void CommUnit::deliver_due()
 {
-    sc_core::sc_time now = sim_now();
-    while (!m_arrivals.empty() && m_arrivals.next_time() <= now) {
+    const sc_dt::uint64 now = sim_now().value();
+    while (!m_arrivals.empty() && m_arrivals.next_value() <= now) {
         if (m_arrivals.next_is_new()) {  // sent in this delta: next delta (already notified)
             m_run.notify(sc_core::SC_ZERO_TIME);
             return;

@@ -119,7 +119,7 @@ class CommUnit final : public sc_core::sc_module,
     void connect_link(int dir, sc_core::sc_export<PacketSinkIf> &in, tlm::tlm_initiator_socket<> &socket,
                       CommUnit &receiver);
 
-    bool arrival_due() const override { return !m_arrivals.empty() && m_arrivals.next_time() <= sim_now(); }
+    bool arrival_due() const override { return !m_arrivals.empty() && m_arrivals.next_value() <= sim_now().value(); }
     bool run_after_delivery(ActivationQueue::Client &client) override
     {
         if (!m_delivering) return false;
