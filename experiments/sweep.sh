@@ -56,6 +56,9 @@ set_build "$build"
 [ -x "$SIM" ] || die "$SIM not found: build it first (cmake --build BUILD --target torusrt-sim)"
 command -v jq >/dev/null || die "jq is required"
 [ -n "$results" ] || results=$EXP/results$([ "$mode" = quick ] && echo -quick)
+places=(--results --results "$results")
+[ -z "$doc" ] || places+=(--page --doc "$doc" --images "--doc (its img/ folder)" "$(dirname "$doc")/img")
+check_places "${places[@]}"
 make_folder --results "$results"
 RES=$(cd "$results" && pwd)
 if [ -z "$doc" ]; then
