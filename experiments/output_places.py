@@ -65,12 +65,14 @@ def _own_place(path, results, is_page):
 
 def _page_place(option, path, kept, images, inputs):
     """Why the page (or, with INPUTS None, the plots' folder) PATH may not be written, or None:
-    inside a folder of KEPT ((what, folder) pairs: the tree's and the results folder, but for
-    _own_place) or of IMAGES, the file of an input (INPUTS: identity -> (option, path)), or a hard
-    link to a file of KEPT."""
+    inside a folder of KEPT ((what, folder, is-the-results-folder): the tree's and the results
+    folder; a place the results folder keeps, _own_place, is allowed wherever that lies) or of
+    IMAGES, the file of an input (INPUTS: identity -> (option, path)), or a hard link to a file
+    of KEPT."""
     is_page = inputs is not None
+    own = any(results and _own_place(path, folder, is_page) for _, folder, results in kept)
     for what, folder, results in kept + [(o, f, False) for o, f in (images if is_page else [])]:
-        if inside(path, folder) and not (results and _own_place(path, folder, is_page)):
+        if inside(path, folder) and not own:
             where = "the folder %s" % shown(folder) if what is None else "the %s folder %s" % (what, shown(folder))
             return "%s '%s': is inside %s, whose files the run reads or writes" % (option, shown(path), where)
     if not is_page:

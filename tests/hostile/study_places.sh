@@ -71,6 +71,13 @@ refused "sweep --doc its sshlogin file" hosts "--doc 'hosts': is the --sshloginf
 cp keep.nff mine.nff
 refused "sweep --doc TORUSRT_SCENE_IMAGE1" mine.nff "--doc 'mine.nff': is the file .*mine.nff, an input" \
     env TORUSRT_SCENE_IMAGE1="$TMP/mine.nff" "${sweep[@]}" --results "$TMP/sd" --doc mine.nff
+# allowed: a page in docs/, and RESULTS/NAME.md (the quick sweep's own place): the run gets as
+# far as its backend (here one that does not exist, refused without running a point)
+for doc in "$T/docs/x.md" "$TMP/ok/reproduction.md"; do
+    "${run_limited[@]}" "${sweep[@]}" --no-report --backend none --results "$TMP/ok" --doc "$doc" >ok.out 2>ok.err \
+        </dev/null
+    check "sweep --doc $doc: allowed: $(head -c 300 ok.err)" grep -q "backend must be" ok.err
+done
 refused "error study --doc a scene" "$T/scenes/paper-image2.nff" "--doc '.*paper-image2.nff': is inside the folder" \
     "${evr[@]}" --results "$TMP/ed" --doc "$T/scenes/paper-image2.nff" --img-dir "$TMP/eimg"
 refused "error study --img-dir scenes/" "" "--img-dir '.*scenes': is inside the folder" \
