@@ -10,7 +10,9 @@
 #                 [--backend local|ssh:HOSTFILE|slurm] [-j JOBS] [--slurm-args "..."] [--per-task K]
 #   --build DIR     folder with torusrt-sim and torusrt-render (default $TORUSRT_BUILD, else REPO/build)
 #   --results DIR   where the CSVs go (default experiments/error_vs_runtime/results)
-#   --doc FILE      the document (default docs/error-vs-runtime.md); --img-dir its plots (docs/img)
+#   --doc FILE      the document (default docs/error-vs-runtime.md); --img-dir its plots (docs/img);
+#                   neither in scenes/, machines/, timing/, experiments/ or RESULTS (but
+#                   RESULTS/NAME.md and RESULTS/img), nor the page a file the run reads: exit 2
 #   --reps N        timed repetitions per point (default: 5 for the quantum study, 3 for pruning)
 #   --only STEP     run one step (report: regenerate the document from the existing CSVs)
 #   --quick         a smoke run: paper-image2 at 48x48 on 4x2x2 only, one repetition, a few
