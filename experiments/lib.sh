@@ -10,13 +10,8 @@ BUILD=${TORUSRT_BUILD:-$REPO/build}
 
 die() { echo "$(basename "$0"): $*" >&2; exit 2; }
 
-# A script's standard output or error appended to a file it reads or writes (a scene, a machine
-# or timing file, a page of docs/, a file of a results folder, or one its command line names, a
-# folder given included): refused before anything is written (exit 2; stream_checks.py).
-if [ -f /dev/stdout ] || [ -f /dev/stderr ]; then
-    python3 "$EXP/output_files.py" --check-streams "$(basename "$0")" -- "$@" "$REPO/scenes" "$REPO/machines" \
-        "$REPO/timing" "$REPO/docs" "$EXP/results" "$EXP"/*/results || exit 2
-fi
+# The script's command line, for check_places (the scripts take their options off "$@").
+SCRIPT_ARGS=("$@")
 
 # write_file FILE [OPTION]: standard input into FILE under the output rules of the Python tools
 # (output_files.py: through a temporary renamed into place, a link followed, a folder, FIFO or
@@ -239,6 +234,40 @@ for stop_sig in "${STOP_SIGNALS[@]}"; do
     trap "stop_script ${stop_sig%:*} ${stop_sig#*:}" "${stop_sig%:*}"
 done
 unset stop_sig
+
+# A script's standard output or error appended to a file it reads or writes (a scene, a machine
+# or timing file, a page of docs/, a file of a results folder, also through a hard link, or one
+# its command line names, a folder given included): refused before anything is written (exit 2;
+# stream_checks.py). A stopping signal that comes meanwhile is taken once the check has passed
+# (with its message, exit 128 + N): before, the message could go into such a file.
+if [ -f /dev/stdout ] || [ -f /dev/stderr ]; then
+    stop_pending=""
+    for stop_sig in "${STOP_SIGNALS[@]}"; do
+        # shellcheck disable=SC2064  # the signal's name and number, set now
+        trap "stop_pending='${stop_sig%:*} ${stop_sig#*:}'" "${stop_sig%:*}"
+    done
+    python3 "$EXP/output_files.py" --check-streams "$(basename "$0")" --folders "$REPO/scenes" "$REPO/machines" \
+        "$REPO/timing" "$REPO/docs" "$EXP/results" "$EXP"/*/results -- "$@" || exit 2
+    for stop_sig in "${STOP_SIGNALS[@]}"; do
+        # shellcheck disable=SC2064
+        trap "stop_script ${stop_sig%:*} ${stop_sig#*:}" "${stop_sig%:*}"
+    done
+    unset stop_sig
+    # shellcheck disable=SC2086  # NAME NUMBER
+    [ -z "$stop_pending" ] || stop_script $stop_pending
+fi
+
+# check_places [--results OPTION DIR] [--page OPTION FILE]... [--images OPTION DIR]...: the
+# results folder, the pages and the plots' folders a script writes, checked before anything is
+# made (output_files.py check_places): none in scenes/, machines/, timing/ or experiments/ (a
+# results folder there only in a results* folder), no results folder in docs/, no page or plots
+# in the results folder, and no page that is a file the command line (or TORUSRT_SCENE_IMAGE1/2,
+# TORUSRT_POINT_ARGS) names; exit 2 naming the option and the file.
+check_places() {
+    python3 "$EXP/output_files.py" --check-places "$(basename "$0")" "$REPO" "$@" -- "${SCRIPT_ARGS[@]}" \
+        environment ${TORUSRT_SCENE_IMAGE1:+"$TORUSRT_SCENE_IMAGE1"} ${TORUSRT_SCENE_IMAGE2:+"$TORUSRT_SCENE_IMAGE2"} \
+        "${POINT_ARGS[@]}" || exit 2
+}
 
 # merge_joblogs STATE_DIR: STATE_DIR/joblog.phase1 and joblog.phase2 (GNU parallel backends) as
 # one STATE_DIR/joblog with one header, for a report's run facts.

@@ -475,14 +475,25 @@ def main(argv):
     """`python3 output_files.py FILE [OPTION]`: standard input into FILE under these rules, for
     the shell scripts (exit 2 when FILE is refused, naming OPTION; 1 when the write fails);
     --check-outputs and --stdout: see check_outputs() and copy_to_stdout();
-    `--check-streams PROG -- WORDS...`: see check_streams() (exit 2 or 0)."""
+    `--check-streams PROG [--folders DIR...] [--own FILE...] -- WORDS...`: see check_streams()
+    (exit 2 or 0); `--check-places`: see output_places.check_places()."""
     import sys
     if argv[:1] == ["--check-outputs"]:
         return check_outputs(argv[1:])
-    if argv[:1] == ["--check-streams"] and len(argv) >= 3 and argv[2] == "--":
+    if argv[:1] == ["--check-streams"] and len(argv) >= 3 and "--" in argv[2:]:
         from stream_checks import check_streams
-        check_streams(argv[1], argv[3:])
+        split = argv.index("--", 2)
+        extra, kind = {"--folders": [], "--own": []}, None
+        for word in argv[2:split]:
+            if word in extra:
+                kind = word
+            elif kind is not None:
+                extra[kind].append(word)
+        check_streams(argv[1], argv[split + 1:], extra["--folders"], extra["--own"])
         return 0
+    if argv[:1] == ["--check-places"] and len(argv) >= 3:
+        from output_places import check_places
+        return check_places(argv[1], argv[2], argv[3:])
     if argv[:1] == ["--stdout"] and len(argv) == 2:
         return copy_to_stdout(argv[1])
     if len(argv) not in (1, 2):

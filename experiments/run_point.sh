@@ -24,12 +24,12 @@
 set -uo pipefail
 usage="usage: run_point.sh OUT.json [--t1-from T1.json] -- COMMAND..."
 # Standard output or error redirected into a file of the command line (the scene, a --config) or
-# into one of the point's own files (OUT.log, OUT.png, OUT.series.csv, which the run replaces):
+# into one of the point's own files (OUT.json, OUT.log, OUT.png, OUT.series.csv, which the run writes):
 # refused (exit 2) before any message could be appended to it.
 if [ -f /dev/stdout ] || [ -f /dev/stderr ]; then
     own=()
-    [ -z "${1:-}" ] || { stem=${1%.json}; own=("$stem.log" "$stem.png" "$stem.series.csv"); }
-    python3 "$(dirname "${BASH_SOURCE[0]}")/output_files.py" --check-streams run_point -- "$@" "${own[@]}" || exit 2
+    [ -z "${1:-}" ] || { stem=${1%.json}; own=("$1" "$stem.log" "$stem.png" "$stem.series.csv"); }
+    python3 "$(dirname "${BASH_SOURCE[0]}")/output_files.py" --check-streams run_point --own "${own[@]}" -- "$@" || exit 2
 fi
 [ $# -ge 1 ] && [ -n "$1" ] || { echo "run_point: $usage (OUT.json: not an empty value)" >&2; exit 2; }
 out=$1

@@ -5,6 +5,7 @@ import os
 import stat
 
 from output_files import _identity, _through_stream, named_files, shown
+from output_places import linked_into
 
 
 def divert_stderr():
@@ -19,13 +20,15 @@ def divert_stderr():
         os.close(fd)
 
 
-def check_streams(prog, words):
+def check_streams(prog, words, folders=(), own=()):
     """Ends the program (exit 2, before anything is written) when standard output or standard
     error is redirected to a file one of WORDS names (named_files: the scene, a --config and the
     files it names, a report), also through a hard link: `>> s.nff` would append to an input; or
     to a file inside a folder one of WORDS names (a results folder, a sweep's --out), at any
     depth, which the command may read or replace (a point's log among them): `>> RESULTS/fig7.csv`
-    would append to it too. The
+    would append to it too. FOLDERS are more folders checked so (a study's scenes/, machines/,
+    ...), named as themselves, and OWN the files the command writes (run_point.sh's OUT.log). A
+    hard link made outside a folder to a file in it is found too (linked_into). The
     message about standard error goes to the terminal (or nowhere), never into the file. Called
     first by every tool, before its command line is parsed (a parse error is a message too)."""
     import sys
@@ -43,13 +46,18 @@ def check_streams(prog, words):
         named = named_files(list(words))
     except (OSError, ValueError, RecursionError):
         return
-    inputs = {}
+    inputs, mine = {}, {}
     for option, path in named:
         if not _through_stream(path):  # --out /dev/stdout names the stream itself (refused as an output)
             inputs.setdefault(_identity(path), (option, path))
-    folders = named_folders(list(words))
+    for path in own:
+        if _identity(path) is not None:
+            mine.setdefault(_identity(path), path)
+    folders = named_folders(list(words)) + [("argument", folder) for folder in folders if os.path.isdir(folder)]
     for fd, name, key in streams:
-        if key in inputs:
+        if key in mine:
+            why = "%s: %s is redirected to %s, a file the command writes\n" % (prog, name, shown(mine[key]))
+        elif key in inputs:
             option, path = inputs[key]
             what = "the file %s" % shown(path) if option == "argument" else "the %s file %s" % (option, shown(path))
             why = "%s: %s is redirected to %s, an input\n" % (prog, name, what)
@@ -85,16 +93,21 @@ def named_folders(words):
 
 def _stream_in_folder(fd, folders):
     """(the stream's path, option, folder) when descriptor FD is a file inside one of FOLDERS
-    (at any depth), else None."""
+    (at any depth), by its path or, for a file with more than one link, as a hard link to a
+    file there; else None."""
     try:
         path = os.readlink("/proc/self/fd/%d" % fd)
     except OSError:
         return None
-    if not path.startswith(os.sep):
+    if path.startswith(os.sep):
+        real = os.path.realpath(path)
+        for option, folder in folders:
+            top = os.path.realpath(folder)
+            if real.startswith(top.rstrip(os.sep) + os.sep):
+                return path, option, folder
+    try:
+        st = os.fstat(fd)
+    except OSError:
         return None
-    real = os.path.realpath(path)
-    for option, folder in folders:
-        top = os.path.realpath(folder)
-        if real.startswith(top.rstrip(os.sep) + os.sep):
-            return path, option, folder
-    return None
+    linked = linked_into(st, folders)
+    return None if linked is None else (path, linked[0], linked[1])

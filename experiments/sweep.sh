@@ -21,7 +21,9 @@
 #   --per-task K         points per Slurm array task (default 4)
 #   --build DIR          build folder holding torusrt-sim (default $TORUSRT_BUILD, else build/)
 #   --doc FILE           the report to write (default docs/reproduction.md for the full sweep,
-#                        RESULTS/reproduction.md for --quick); plots are copied beside it in img/
+#                        RESULTS/reproduction.md for --quick); plots are copied beside it in img/;
+#                        not in scenes/, machines/, timing/, experiments/ or RESULTS (but
+#                        RESULTS/NAME.md), nor a file the run reads: exit 2
 #   --no-report          run the points only
 #   --no-clusters        leave out figures 10-12 (for builds without the cluster model)
 #
@@ -56,6 +58,9 @@ set_build "$build"
 [ -x "$SIM" ] || die "$SIM not found: build it first (cmake --build BUILD --target torusrt-sim)"
 command -v jq >/dev/null || die "jq is required"
 [ -n "$results" ] || results=$EXP/results$([ "$mode" = quick ] && echo -quick)
+places=(--results --results "$results")
+[ -z "$doc" ] || places+=(--page --doc "$doc" --images "--doc (its img/ folder)" "$(dirname "$doc")/img")
+check_places "${places[@]}"
 make_folder --results "$results"
 RES=$(cd "$results" && pwd)
 if [ -z "$doc" ]; then

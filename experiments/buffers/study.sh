@@ -29,12 +29,14 @@ while [ $# -gt 0 ]; do
 done
 set_build "$build" torusrt-render
 here="$EXP/buffers"
+res=${out:-$here/results$([ "$quick" = 1 ] && echo -quick)}
+check_places --results --results "$res"
+make_folder --results "$res"
+res=$(cd "$res" && pwd)  # the points' done files are absolute paths
 if [ "$quick" = 1 ]; then
-  res=${out:-$here/results-quick}
   size=32x32 caps=(1 4 0) doc="$res/buffers.md" pics="$res/buffers"
 else
-  size=128x128 caps=(1 2 4 8 16 32 64 0) res=${out:-$here/results} doc="$REPO/docs/buffers.md"
-  pics="$REPO/docs/buffers"
+  size=128x128 caps=(1 2 4 8 16 32 64 0) doc="$REPO/docs/buffers.md" pics="$REPO/docs/buffers"
 fi
 work="$res/points"
 mkdir -p "$work" "$pics"

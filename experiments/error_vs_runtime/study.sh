@@ -10,11 +10,15 @@
 #                 [--backend local|ssh:HOSTFILE|slurm] [-j JOBS] [--slurm-args "..."] [--per-task K]
 #   --build DIR     folder with torusrt-sim and torusrt-render (default $TORUSRT_BUILD, else REPO/build)
 #   --results DIR   where the CSVs go (default experiments/error_vs_runtime/results)
-#   --doc FILE      the document (default docs/error-vs-runtime.md); --img-dir its plots (docs/img)
+#   --doc FILE      the document (default docs/error-vs-runtime.md); --img-dir its plots (docs/img);
+#                   neither in scenes/, machines/, timing/, experiments/ or RESULTS (but
+#                   RESULTS/NAME.md and RESULTS/img), nor the page a file the run reads: exit 2
 #   --reps N        timed repetitions per point (default: 5 for the quantum study, 3 for pruning)
 #   --only STEP     run one step (report: regenerate the document from the existing CSVs)
 #   --quick         a smoke run: paper-image2 at 48x48 on 4x2x2 only, one repetition, a few
-#                   quanta; results into a temporary folder unless --results/--doc are given
+#                   quanta; never docs/: the CSVs, the page (error-vs-runtime.md) and its plots
+#                   (img/) go into --results DIR, or a temporary folder removed at the end, unless
+#                   --doc / --img-dir name other places
 #   --backend ...   where the points run (experiments/backend; docs/cluster-runs.md): a point
 #                   is one scene and torus size of quantum.sh, or one scene of pruning.sh, its
 #                   CSV in RESULTS/points/ (done when it is there, so a re-run resumes; delete
@@ -56,14 +60,22 @@ export TORUSRT_BUILD=$BUILD
 
 qargs=() pargs=() SCENES="paper-image1 paper-image2" IPS="4x2x2 4x4x4"
 command_line="experiments/error_vs_runtime/study.sh"
+seen() { [[ " ${ARGS_SEEN[*]-} " == *" $1 "* ]]; }
+places=()  # a quick run's own temporary results folder needs no check
+[ "$QUICK" = 1 ] && ! seen results || places+=(--results --results "$RESULTS")
+! seen doc || places+=(--page --doc "$DOC")
+! seen img || places+=(--images --img-dir "$IMG")
+check_places "${places[@]}"
 if [ "$QUICK" = 1 ]; then
-  if [[ " ${ARGS_SEEN[*]-} " != *" results "* ]]; then
+  # A smoke run never writes docs/: its page and plots go into its results folder (a temporary
+  # one, removed at the end, without --results) unless --doc / --img-dir name other places.
+  if ! seen results; then
     QTMP=$(mktemp -d)
     trap 'rm -rf "$QTMP"' EXIT
     RESULTS=$QTMP/results
-    [[ " ${ARGS_SEEN[*]-} " == *" doc "* ]] || DOC=$QTMP/doc/error-vs-runtime.md
-    [[ " ${ARGS_SEEN[*]-} " == *" img "* ]] || IMG=$QTMP/doc/img
   fi
+  seen doc || DOC=$RESULTS/error-vs-runtime.md
+  seen img || IMG=$RESULTS/img
   SCENES=paper-image2 IPS=4x2x2
   qargs=(--size 48x48 --quanta "0 1ms 100ms 1s 100s" --reps "${REPS:-1}")
   pargs=(--size 48x48 --depths "0 2 4 8" --weights "1/512 1/64 1/8" --reps "${REPS:-1}")
@@ -72,6 +84,8 @@ else
   [ -n "$REPS" ] && qargs=(--reps "$REPS") && pargs=(--reps "$REPS")
 fi
 make_folder --results "$RESULTS" && mkdir -p "$RESULTS/points"
+[ "$DOC" != "$RESULTS/error-vs-runtime.md" ] || DOC=$(cd "$RESULTS" && pwd)/error-vs-runtime.md
+[ "$IMG" != "$RESULTS/img" ] || IMG=$(cd "$RESULTS" && pwd)/img
 RESULTS=$(cd "$RESULTS" && pwd)
 work=$RESULTS/points
 # point_line STEP CSV ARGS...: one line of a point list: done when CSV exists.

@@ -55,6 +55,7 @@ sim=$build/torusrt-sim render=$build/torusrt-render gen=$build/torusrt-genscenes
 cap=${TORUSRT_STUDY_CAP_S:-1800}
 [[ $cap =~ ^[0-9]+$ ]] || die "TORUSRT_STUDY_CAP_S must be a whole number of seconds, not '$cap'"
 [ -z "$smoke" ] || [ "$res" != "$here/results" ] || res=$here/results-smoke
+check_places --results --results "$res"
 make_folder --results "$res"
 res=$(cd "$res" && pwd) runs=$res/runs
 # A results folder holds one mode's runs (their sizes differ under the same names).
