@@ -9,10 +9,10 @@ under efficiency = T(1) / (n T(n)) and compares the 16-cluster x 64 machine with
 import csv
 import math
 import os
-import subprocess
 import sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 from output_files import atomic, exit_on_signals, staged  # noqa: E402
+from stop_signals import run_child  # noqa: E402
 from report import before_fit  # noqa: E402
 
 SCENES = ["paper-image1", "paper-image2"]
@@ -68,7 +68,7 @@ def plot(plot_dir, gp_dir, name, title, header, rows):
     with staged(png) as tmp:
         cmd = ["gnuplot", "-e", f"data='{data}'; out='{tmp}'; ttl='{title}'; ncol={len(header)}",
                os.path.join(gp_dir, "efficiency.gp")]
-        subprocess.run(cmd, check=True)
+        run_child(cmd, check=True)
     return os.path.basename(png)
 
 

@@ -8,10 +8,10 @@ plots (drawn with ../calibration/efficiency.gp) and the load-map pictures.
 """
 import csv
 import os
-import subprocess
 import sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 from output_files import atomic, exit_on_signals, staged  # noqa: E402
+from stop_signals import run_child  # noqa: E402
 from report import before_fit  # noqa: E402
 
 MAPS = ["block", "cyclic", "block-cyclic:2", "block-cyclic:3", "cost"]
@@ -36,8 +36,8 @@ def plot(plot_dir, gp, name, title, rows):
             f.write(" ".join(str(x) for x in row) + "\n")
     png = os.path.join(plot_dir, name + ".png")
     with staged(png) as tmp:
-        subprocess.run(["gnuplot", "-e", f"data='{data}'; out='{tmp}'; ttl='{title}'; ncol={len(MAPS) + 1}; "
-                        "keyt='mapping'", gp], check=True)
+        run_child(["gnuplot", "-e", f"data='{data}'; out='{tmp}'; ttl='{title}'; ncol={len(MAPS) + 1}; "
+                   "keyt='mapping'", gp], check=True)
     return os.path.basename(png)
 
 

@@ -4,10 +4,10 @@ Usage: python3 experiments/report/animation.py RESULTS_DIR OUT_MD PICS_DIR PLOT_
 """
 import csv
 import os
-import subprocess
 import sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 from output_files import atomic, exit_on_signals, staged  # noqa: E402
+from stop_signals import run_child  # noqa: E402
 from report import before_fit  # noqa: E402
 
 POLICIES = ["cyclic", "cost", "every-frame", "adaptive", "preview", "oracle"]
@@ -63,8 +63,8 @@ def plot(frames, keys, pics, gp):
         panels.append(panel)
     png = os.path.join(pics, "image-time-per-frame.png")
     with staged(png) as tmp:
-        subprocess.run(["gnuplot", "-e", f"dat='{dat}'; out='{tmp}'; panels='{' '.join(panels)}'; "
-                        f"policies='{' '.join(POLICIES)}'", gp], check=True)
+        run_child(["gnuplot", "-e", f"dat='{dat}'; out='{tmp}'; panels='{' '.join(panels)}'; "
+                   f"policies='{' '.join(POLICIES)}'", gp], check=True)
     return os.path.basename(png)
 
 

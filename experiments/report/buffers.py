@@ -7,10 +7,10 @@ Standard library only.
 import argparse
 import csv
 import os
-import subprocess
 import sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 from output_files import atomic, exit_on_signals, staged  # noqa: E402
+from stop_signals import run_child  # noqa: E402
 from report import before_fit  # noqa: E402
 
 UNBOUNDED = 0
@@ -82,7 +82,7 @@ def write_plot_data(data, dat_dir):
 def run_gnuplot(gp, dat_dir, names, png):
     with staged(png) as tmp:
         cmd = ["gnuplot", "-e", "dat='%s'; out='%s'; series='%s'" % (dat_dir, tmp, " ".join(names)), gp]
-        subprocess.run(cmd, check=True)
+        run_child(cmd, check=True)
 
 
 def detail_table(scene, machine, flows):

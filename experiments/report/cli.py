@@ -7,6 +7,7 @@ import sys
 
 from output_files import (OutputError, OutputSet, exit_on_signals, finish_stdout, list_values,
                           named_stdout, nonempty, os_message, out_folder, read_text, refuse_empty_values, shown)
+from stop_signals import run_child
 from stream_checks import check_streams
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -130,8 +131,8 @@ def machine_as_run_reads_it(path, build, given):
             raise OutputError("--build '%s': no torusrt-sim in it (build first, or name the build folder)"
                               % shown(build))
         return None
-    done = subprocess.run([sim, "--dump-config", "--config", path], stdin=subprocess.DEVNULL,
-                          capture_output=True, text=True, errors="replace")
+    done = run_child([sim, "--dump-config", "--config", path], stdin=subprocess.DEVNULL,
+                     capture_output=True, text=True, errors="replace")
     if done.returncode != 0:
         raise ValueError("--compare '%s': torusrt-sim does not read it: %s"
                          % (shown(path), shown(done.stderr.strip(), backslash=False)))
