@@ -27,14 +27,28 @@ is an OSError naming the file: `PATH: cannot write: REASON`.
         run_gnuplot(tmp)
     write_text(csv_path, text, "--out")
 """
-import contextlib
 import os
-import stat
-import tempfile
+import sys
 
-from command_words import (ANIMATION_OPTIONS, NO_RUN_OPTIONS, OUTPUT_OPTIONS, list_values,  # noqa: F401
-                           nonempty, output_options, output_values, refuse_empty_values, unusable_option)
-from stop_signals import exit_on_signals  # noqa: F401  (the tools take it from here, with the rest)
+if __name__ == "__main__":  # a program (a study's stream check): memory refused at start-up named too
+    try:
+        import memory_exit
+    except (MemoryError, OSError, ImportError):
+        os.write(2, b"output_files.py: out of memory: the system refused the memory the tool asked for "
+                 b"(ulimit -v?)\n")
+        os._exit(1)
+try:
+    import contextlib
+    import stat
+    import tempfile
+
+    from command_words import (ANIMATION_OPTIONS, NO_RUN_OPTIONS, OUTPUT_OPTIONS, list_values,  # noqa: F401
+                               nonempty, output_options, output_values, refuse_empty_values, unusable_option)
+    from stop_signals import exit_on_signals  # noqa: F401  (the tools take it from here, with the rest)
+except Exception as e:
+    if __name__ == "__main__":
+        memory_exit.leave_if_out_of_memory(os.path.basename(sys.argv[0]), e)
+    raise
 
 
 class OutputError(ValueError):
@@ -505,7 +519,5 @@ def main(argv):
 
 
 if __name__ == "__main__":
-    import sys
-    from memory_exit import run
     exit_on_signals()
-    sys.exit(run(os.path.basename(sys.argv[0]), lambda: main, sys.argv[1:]))
+    sys.exit(memory_exit.run(os.path.basename(sys.argv[0]), lambda: main, sys.argv[1:]))

@@ -6,6 +6,7 @@ import resource
 import sys
 import time
 
+from memory_exit import leave_if_out_of_memory
 from output_files import (OutputError, OutputSet, WriteError, append_text, exit_on_signals, finish_stdout,  # noqa: E501
                           input_file, named_stdout, nonempty, os_message, out_folder, refuse_empty_values,
                           write_lines)
@@ -161,5 +162,6 @@ def main(argv):
         print("experiments/backend: %s" % e, file=sys.stderr)
         return 1
     except (OSError, ValueError, RuntimeError) as e:
+        leave_if_out_of_memory("experiments/backend", e)  # ENOMEM: the out-of-memory message, exit 1
         print("experiments/backend: %s" % os_message(e), file=sys.stderr)
         return 2

@@ -5,6 +5,7 @@ import os
 import subprocess
 import sys
 
+from memory_exit import leave_if_out_of_memory
 from output_files import (OutputError, OutputSet, exit_on_signals, finish_stdout, list_values,
                           named_stdout, nonempty, os_message, out_folder, read_text, refuse_empty_values, shown)
 from stop_signals import run_child
@@ -245,5 +246,6 @@ def main(argv):
         print("%s: %s" % (prog, shown(e, backslash=False)), file=sys.stderr)
         return 2 if args.command == "sweep-plan" else 1  # the sweep's command line, checked before any run
     except (OSError, KeyError, subprocess.CalledProcessError) as e:
+        leave_if_out_of_memory(prog, e)  # ENOMEM: the tools' out-of-memory message, as a MemoryError
         print("%s: %s" % (prog, shown(os_message(e), backslash=False)), file=sys.stderr)
         return 1
