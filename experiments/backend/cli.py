@@ -93,9 +93,21 @@ def run(args):
     os.makedirs(os.path.join(state, "logs"), exist_ok=True)
     phases = [points.read(os.path.abspath(f)) for f in args.lists]
     points.assign_logs(phases, os.path.join(state, "logs"))
-    todo = []
+    todo, cache, made = [], {}, {}
     for number, phase in enumerate(phases, 1):
-        pending = [p for p in phase if not p.is_done()]
+        pending = []
+        for p in phase:
+            points.identify(p, cache, made)
+            if p.is_done():
+                why = points.changed(p)
+                if why is None:
+                    continue
+                say("backend: %s: made by another command or from other inputs (%s); running it again"
+                    % (p.done, why))
+                for old in (p.done, p.record()):
+                    if os.path.lexists(old):
+                        os.remove(old)
+            pending.append(p)
         path = os.path.join(state, "phase%d.todo" % number)
         points.write_todo(path, pending)
         todo.append((path, pending))
