@@ -51,6 +51,14 @@ def positive(text):
     return value
 
 
+class Parser(argparse.ArgumentParser):
+    """A command-line error in one line, `experiments/backend run: MESSAGE`, exit 2, as every
+    other refusal of the backend (not the usage block)."""
+
+    def error(self, message):
+        self.exit(2, "%s: %s (%s --help for the options)\n" % (self.prog, message, self.prog))
+
+
 def say(text):
     print(text, flush=True)
 
@@ -137,7 +145,7 @@ def run(args):
 
 def main(argv):
     check_streams("experiments/backend", argv)  # `>> LIST`: refused before any message
-    parser = argparse.ArgumentParser(prog="experiments/backend", description=__doc__)
+    parser = Parser(prog="experiments/backend", description=__doc__)
     sub = parser.add_subparsers(dest="command", required=True)
     p = sub.add_parser("run", help="run point lists (one per phase, in order): DONE-FILE<TAB>COMMAND per line")
     p.add_argument("lists", nargs="+", metavar="LIST", type=nonempty)
