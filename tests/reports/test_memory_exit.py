@@ -44,7 +44,7 @@ TOOLS = [
     ("compare-mappings", "compare-mappings", ["s.nff"],
      ["memory_exit", "stop_signals", "compare_mappings", "subprocess", "_posixsubprocess", "output_files"]),
     ("output_files.py", "output_files.py", ["--check-streams", "sweep", "--"],
-     ["memory_exit", "command_words", "tempfile", "stream_checks"]),
+     ["memory_exit", "output_rules", "command_words", "tempfile", "stream_checks"]),
     ("experiments/report/buffers.py", "report/buffers.py", ["r.tsv", "d.md", "p", "b.gp"],
      ["memory_exit", "_csv", "output_files", "argparse"]),
     ("experiments/report/animation.py", "report/animation.py", ["r", "d.md", "p", "g", "1", "1"],
