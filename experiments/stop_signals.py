@@ -39,3 +39,60 @@ def exit_on_signals(program=None, even_ignored=()):
         number = getattr(signal, sig)
         if signal.getsignal(number) != signal.SIG_IGN or sig in even_ignored:
             signal.signal(number, leave)
+
+
+def _no_signal_pending():
+    """Nothing; a Python call, at whose start the interpreter runs the handler of a signal that
+    came before the mask was set, before any child is started."""
+
+
+def _child_start(mask, handled):
+    """In the child, before exec: the handled stopping signals to their default action (a signal
+    that lands now stops the child, not Python code run in it), then the parent's mask back."""
+    def start():
+        for number in handled:
+            signal.signal(number, signal.SIG_DFL)
+        signal.pthread_sigmask(signal.SIG_SETMASK, mask)
+    return start
+
+
+def run_child(args, input=None, check=False, stop="kill", **popen):
+    """subprocess.run(ARGS, input=INPUT, check=CHECK, **POPEN) that leaves no child behind: the
+    stopping signals are blocked while Popen starts the child (a signal landing there, before a
+    Popen object exists, would leave the child running, writing a temporary after its clean-up),
+    unblocked in the child before exec and in the parent once the Popen object exists; any
+    exception from then on (Stopped, a failed read) kills the child (STOP "terminate": sends it
+    SIGTERM, for a child that stops its own children on it) and waits for it. Returns the
+    subprocess.CompletedProcess."""
+    import subprocess  # here: the tools' start-up, a signal's handler, do not load it
+    numbers = [getattr(signal, sig) for sig in STOP_SIGNALS]
+    if input is not None:
+        popen["stdin"] = subprocess.PIPE
+    if popen.pop("capture_output", False):
+        popen["stdout"] = popen["stderr"] = subprocess.PIPE
+    mask = signal.pthread_sigmask(signal.SIG_BLOCK, numbers)
+    try:
+        _no_signal_pending()
+        handled = [n for n in numbers if signal.getsignal(n) not in (signal.SIG_IGN, signal.SIG_DFL)]
+        proc = subprocess.Popen(args, preexec_fn=_child_start(mask, handled), **popen)
+    except BaseException:
+        signal.pthread_sigmask(signal.SIG_SETMASK, mask)
+        raise
+    try:
+        with proc:
+            try:
+                signal.pthread_sigmask(signal.SIG_SETMASK, mask)  # a signal pending since the start: here
+                out, err = proc.communicate(input)
+            except BaseException:
+                if stop == "terminate":
+                    proc.terminate()
+                else:
+                    proc.kill()
+                proc.wait()
+                raise
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, mask)
+    done = subprocess.CompletedProcess(args, proc.returncode, out, err)
+    if check:
+        done.check_returncode()
+    return done

@@ -2,14 +2,23 @@
 import os
 import sys
 
-if __package__ in (None, ""):
-    sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-from stop_signals import exit_on_signals  # noqa: E402
+try:  # first: under a small ulimit -v loading a module is what fails, this one too (memory_exit.py)
+    if __package__ in (None, ""):
+        sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+    import memory_exit
+except (MemoryError, OSError, ImportError):
+    os.write(2, b"experiments/backend: out of memory: the system refused the memory the tool "
+             b"asked for (ulimit -v?)\n")
+    os._exit(1)
+try:
+    from stop_signals import exit_on_signals
+except Exception as e:
+    memory_exit.leave_if_out_of_memory("experiments/backend", e)
+    raise
 
 # before the imports below: a signal there is named too; Ctrl-C even where a shell started the
 # backend in the background (a sweep does), ignoring it
 exit_on_signals("experiments/backend", even_ignored=("SIGINT", "SIGQUIT"))
-from memory_exit import run  # noqa: E402
 
 
 def load_main():
@@ -20,4 +29,4 @@ def load_main():
     return main
 
 
-sys.exit(run("experiments/backend", load_main, sys.argv[1:]))
+sys.exit(memory_exit.run("experiments/backend", load_main, sys.argv[1:]))

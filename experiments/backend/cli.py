@@ -6,6 +6,7 @@ import resource
 import sys
 import time
 
+from memory_exit import leave_if_out_of_memory
 from output_files import (OutputError, OutputSet, WriteError, append_text, exit_on_signals, finish_stdout,  # noqa: E501
                           input_file, named_stdout, nonempty, os_message, out_folder, refuse_empty_values,
                           write_lines)
@@ -50,6 +51,14 @@ def positive(text):
     return value
 
 
+class Parser(argparse.ArgumentParser):
+    """A command-line error in one line, `experiments/backend run: MESSAGE`, exit 2, as every
+    other refusal of the backend (not the usage block)."""
+
+    def error(self, message):
+        self.exit(2, "%s: %s (%s --help for the options)\n" % (self.prog, message, self.prog))
+
+
 def say(text):
     print(text, flush=True)
 
@@ -92,9 +101,21 @@ def run(args):
     os.makedirs(os.path.join(state, "logs"), exist_ok=True)
     phases = [points.read(os.path.abspath(f)) for f in args.lists]
     points.assign_logs(phases, os.path.join(state, "logs"))
-    todo = []
+    todo, cache, made = [], {}, {}
     for number, phase in enumerate(phases, 1):
-        pending = [p for p in phase if not p.is_done()]
+        pending = []
+        for p in phase:
+            points.identify(p, cache, made)
+            if p.is_done():
+                why = points.changed(p)
+                if why is None:
+                    continue
+                say("backend: %s: made by another command or from other inputs (%s); running it again"
+                    % (p.done, why))
+                for old in (p.done, p.record()):
+                    if os.path.lexists(old):
+                        os.remove(old)
+            pending.append(p)
         path = os.path.join(state, "phase%d.todo" % number)
         points.write_todo(path, pending)
         todo.append((path, pending))
@@ -124,7 +145,7 @@ def run(args):
 
 def main(argv):
     check_streams("experiments/backend", argv)  # `>> LIST`: refused before any message
-    parser = argparse.ArgumentParser(prog="experiments/backend", description=__doc__)
+    parser = Parser(prog="experiments/backend", description=__doc__)
     sub = parser.add_subparsers(dest="command", required=True)
     p = sub.add_parser("run", help="run point lists (one per phase, in order): DONE-FILE<TAB>COMMAND per line")
     p.add_argument("lists", nargs="+", metavar="LIST", type=nonempty)
@@ -161,5 +182,6 @@ def main(argv):
         print("experiments/backend: %s" % e, file=sys.stderr)
         return 1
     except (OSError, ValueError, RuntimeError) as e:
+        leave_if_out_of_memory("experiments/backend", e)  # ENOMEM: the out-of-memory message, exit 1
         print("experiments/backend: %s" % os_message(e), file=sys.stderr)
         return 2

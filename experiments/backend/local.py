@@ -2,7 +2,8 @@
 import csv
 import os
 import shlex
-import subprocess
+
+from stop_signals import run_child
 
 
 def parallel_command(jobs, joblog, sshloginfile=None):
@@ -38,13 +39,9 @@ def run(phases, state, jobs, sshloginfile=None, say=print):
         cmd = parallel_command(jobs, joblog, sshloginfile)
         say("backend: phase %d, %d points: %s < %s" % (number, len(points), shlex.join(cmd), todo))
         with open(todo) as stdin:
-            proc = subprocess.Popen(cmd, stdin=stdin)  # the points' progress lines pass through
-            try:
-                proc.wait()
-            except BaseException:  # a stopping signal: parallel may have had it too; its TERM stops the points
-                proc.terminate()
-                proc.wait()
-                raise
+            # the points' progress lines pass through; on a stopping signal parallel may have had
+            # it too, and its TERM stops the points
+            run_child(cmd, stdin=stdin, stop="terminate")
         for line, (rc, sig) in read_joblog(joblog).items():
             if (rc or sig) and 0 < line <= len(points):
                 failed[points[line - 1]] = "exit %d signal %d" % (rc, sig)

@@ -1,9 +1,17 @@
-"""Point lists and the state of a run: which points are done (their result file exists), which
-are to run, where each one's output goes, and what the last run left failed."""
+"""Point lists and the state of a run: which points are done (their result file exists, made
+by the same command from the same input files), which are to run, where each one's output goes,
+and what the last run left failed."""
+import hashlib
+import json
 import os
+import re
 import shlex
 
 from output_files import read_text, write_lines
+
+# The tools' own folder: its scripts (run_point.sh, output_files.py) are how a point runs, not
+# what it computes from.
+TOOLS = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
 class Point:
@@ -14,6 +22,7 @@ class Point:
         self.command = command
         self.source = source  # "FILE:LINE", for messages
         self.log = None
+        self.identity = None  # what made it: set by identify()
 
     def is_done(self):
         try:
@@ -21,10 +30,20 @@ class Point:
         except OSError:
             return False
 
+    def record(self):
+        """The file beside the result that holds the identity it was made with (DONE.id)."""
+        return self.done + ".id"
+
     def wrapped(self):
         """The command line the backends run: the point's command, its output into its log; its
-        file descriptor 3 is the backend's own output, for a point's progress line."""
-        return "( %s ) 3>&1 >%s 2>&1" % (self.command, shlex.quote(self.log))
+        file descriptor 3 is the backend's own output, for a point's progress line. Once the
+        command succeeds, its identity is recorded beside its result."""
+        line = "( %s ) 3>&1 >%s 2>&1" % (self.command, shlex.quote(self.log))
+        if self.identity is None:
+            return line
+        tmp = shlex.quote(self.record() + ".tmp") + ".$$"
+        return "%s && { printf '%%s\\n' %s >%s && mv -f %s %s; }" % (
+            line, shlex.quote(json.dumps(self.identity, sort_keys=True)), tmp, tmp, shlex.quote(self.record()))
 
 
 def read(path):
@@ -70,3 +89,87 @@ def log_tail(path, lines=3):
     except OSError:
         return "(no log)"
     return " | ".join(text[-lines:]) if text else "(empty log)"
+
+
+def file_hash(path, cache):
+    """The SHA-256 of a file's content (once per file and run)."""
+    if path not in cache:
+        digest = hashlib.sha256()
+        with open(path, "rb") as f:
+            for chunk in iter(lambda: f.read(1 << 20), b""):
+                digest.update(chunk)
+        cache[path] = digest.hexdigest()
+    return cache[path]
+
+
+def _words(text):
+    """The words of a command line, and the value of each NAME=VALUE and --option=VALUE word."""
+    try:
+        words = shlex.split(text)
+    except ValueError:  # an unbalanced quote: the words as they stand
+        words = text.split()
+    return words + [w.partition("=")[2] for w in words if "=" in w]
+
+
+def _inputs(point, words, cwd, made):
+    """The files WORDS name (relative to CWD) that the point reads: the result of another point
+    of the run (a key of MADE, there or not yet), or a regular file but the point's own outputs
+    (its result and every file named after it: DONE.png, DONE.log, ...) and the tools' own
+    scripts."""
+    own = os.path.splitext(point.done)[0]
+    found = set()
+    for word in words:
+        if not word or "\0" in word:
+            continue
+        path = os.path.normpath(os.path.join(cwd, word))
+        if path == point.done or path.startswith(own + "."):
+            continue
+        if path in made or (not path.startswith(TOOLS + os.sep) and os.path.isfile(path)):
+            found.add(path)
+    return found
+
+
+def identify(point, cache, made, cwd=None):
+    """Sets POINT.identity, what the point is made from: its command line and, for every file it
+    reads, the content's SHA-256 (the executable, the scene, a timing or machine file, a study's
+    point script, and every file such a script names by an absolute path: the executable and the
+    inputs a study's point function reads) or, for the result of a point of an earlier phase
+    (a T(1) report), that point's own identity; MADE maps the results of the points identified
+    so far to their identities' SHA-256, and gets this point's."""
+    cwd = cwd or os.getcwd()
+    files = _inputs(point, _words(point.command), cwd, made)
+    for path in sorted(files):
+        if path.endswith(".sh") and path not in made:
+            try:
+                with open(path, errors="replace") as f:
+                    text = f.read(1 << 22)
+            except OSError:
+                continue
+            files |= _inputs(point, re.findall(r"/[^\s'\"=;:()<>|&$`]+", text), cwd, made)
+    point.identity = {"command": point.command,
+                      "inputs": {path: "point " + made[path] if path in made else file_hash(path, cache)
+                                 for path in sorted(files)}}
+    made[point.done] = hashlib.sha256(json.dumps(point.identity, sort_keys=True).encode()).hexdigest()
+
+
+def changed(point):
+    """Why POINT's result was made by another command or from other inputs, else None: its
+    identity record (DONE.id) missing, or another command line, or an input file changed, added
+    or gone."""
+    try:
+        with open(point.record()) as f:
+            made = json.loads(f.read())
+        if not isinstance(made, dict) or not isinstance(made.get("inputs"), dict):
+            raise ValueError("not an identity record")
+    except FileNotFoundError:
+        return "no record of what it was made from (%s)" % point.record()
+    except (OSError, ValueError) as e:
+        return "%s: %s" % (point.record(), e)
+    if made.get("command") != point.command:
+        return "its command line changed"
+    now, then = point.identity["inputs"], made["inputs"]
+    for path in sorted(set(now) | set(then)):
+        if now.get(path) != then.get(path):
+            return "%s %s since it was made" % (path, "changed" if path in now and path in then else
+                                                 "is new" if path in now else "is no longer named")
+    return None

@@ -11,6 +11,7 @@ import sys
 import time
 
 from output_files import append_text
+from stop_signals import run_child
 
 BACKEND = os.path.dirname(os.path.abspath(__file__))
 MAX_TASKS = 1000  # below Slurm's default MaxArraySize (1001)
@@ -50,8 +51,8 @@ def submit(phases, state, per_task, jobs, slurm_args, name, say):
         line = shlex.join(cmd)
         say("backend: phase %d, %d points in %d tasks of %d: %s" % (number, len(points), tasks, k, line))
         append_text(os.path.join(state, "submitted"), line + "\n", "--state")
-        out = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                             errors="replace")
+        out = run_child(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                        errors="replace")
         if out.returncode != 0:
             raise RuntimeError("sbatch failed (exit %d): %s" % (out.returncode, out.stderr.strip()))
         job = out.stdout.strip().split(";")[0]
@@ -79,8 +80,8 @@ def count_tasks(spec):
 def queued(jobs):
     """{job id: array tasks still pending, running or completing} from squeue."""
     ids = ",".join(j for j, _, _, _ in jobs)
-    out = subprocess.run(["squeue", "-h", "-r", "-j", ids, "-o", "%i %T"], stdout=subprocess.PIPE,
-                         stderr=subprocess.PIPE, text=True, errors="replace")
+    out = run_child(["squeue", "-h", "-r", "-j", ids, "-o", "%i %T"], stdout=subprocess.PIPE,
+                    stderr=subprocess.PIPE, text=True, errors="replace")
     if out.returncode != 0:
         if "Invalid job id" in out.stderr:  # every job has ended and left the controller's memory
             return {}
@@ -143,17 +144,17 @@ def sacct_rows(jobs):
     accounting is off (a cluster without slurmdbd) from scontrol, which keeps ended jobs for
     MinJobAge seconds."""
     ids = ",".join(j for j, _, _, _ in jobs)
-    out = subprocess.run(["sacct", "-n", "-P", "-X", "-j", ids, "-o", "JobID,State,ExitCode,ElapsedRaw,AllocCPUS"],
-                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                         errors="replace")
+    out = run_child(["sacct", "-n", "-P", "-X", "-j", ids, "-o", "JobID,State,ExitCode,ElapsedRaw,AllocCPUS"],
+                    stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                    errors="replace")
     rows = [line.split("|")[:3] + [None, core_seconds(*line.split("|")[3:5])]
             for line in out.stdout.splitlines() if line.count("|") >= 4]
     if out.returncode == 0 and rows:
         return rows, "sacct"
     rows = []
     for job in ids.split(","):
-        shown = subprocess.run(["scontrol", "-o", "show", "job", job], stdout=subprocess.PIPE,
-                               stderr=subprocess.PIPE, text=True, errors="replace")
+        shown = run_child(["scontrol", "-o", "show", "job", job], stdout=subprocess.PIPE,
+                          stderr=subprocess.PIPE, text=True, errors="replace")
         for line in shown.stdout.splitlines():
             f = dict(w.partition("=")[::2] for w in line.split() if "=" in w)
             if "ArrayTaskId" in f:
@@ -206,7 +207,7 @@ def cancel(say):
     if SUBMITTED:
         cmd = ["scancel"] + SUBMITTED
         say("backend: interrupted: %s" % shlex.join(cmd))
-        subprocess.run(cmd)
+        run_child(cmd)
 
 
 def run(phases, state, per_task, jobs, slurm_args, name, say=print):

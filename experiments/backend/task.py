@@ -5,10 +5,10 @@ import datetime
 import os
 import resource
 import socket
-import subprocess
 import sys
 
 from output_files import write_text
+from stop_signals import run_child
 
 
 def run(todo, per_task, rcdir):
@@ -25,7 +25,7 @@ def run(todo, per_task, rcdir):
         stamp = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ")
         print("[%s %s] point %d: %s" % (stamp, socket.gethostname(), number, line), flush=True)
         before = resource.getrusage(resource.RUSAGE_CHILDREN)
-        rc = subprocess.call(["bash", "-c", line])
+        rc = run_child(["bash", "-c", line]).returncode
         after = resource.getrusage(resource.RUSAGE_CHILDREN)
         cpu = after.ru_utime - before.ru_utime + after.ru_stime - before.ru_stime
         print("point %d: exit %d, %.2f s CPU" % (number, rc, cpu), flush=True)

@@ -6,14 +6,25 @@ For every hand-over cost and load-balancing mapping it checks the paper's flat-t
 under efficiency = T(1) / (n T(n)) and compares the 16-cluster x 64 machine with the paper's
 0.62 s / 1.34 s, then names the best-supported (cost, mapping) pair.
 """
-import csv
-import math
 import os
-import subprocess
 import sys
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-from output_files import atomic, exit_on_signals, staged  # noqa: E402
-from report import before_fit  # noqa: E402
+
+try:  # first: under a small ulimit -v loading a module is what fails, this one too (memory_exit.py)
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+    import memory_exit
+except (MemoryError, OSError, ImportError):
+    os.write(2, b"experiments/calibration/report.py: out of memory: the system refused the memory the tool "
+             b"asked for (ulimit -v?)\n")
+    os._exit(1)
+try:
+    import csv
+    import math
+    from output_files import atomic, exit_on_signals, staged
+    from stop_signals import run_child
+    from report import before_fit
+except Exception as e:
+    memory_exit.leave_if_out_of_memory("experiments/calibration/report.py", e)
+    raise
 
 SCENES = ["paper-image1", "paper-image2"]
 PAPER_CLUSTER = {"paper-image1": 0.62, "paper-image2": 1.34}
@@ -68,7 +79,7 @@ def plot(plot_dir, gp_dir, name, title, header, rows):
     with staged(png) as tmp:
         cmd = ["gnuplot", "-e", f"data='{data}'; out='{tmp}'; ttl='{title}'; ncol={len(header)}",
                os.path.join(gp_dir, "efficiency.gp")]
-        subprocess.run(cmd, check=True)
+        run_child(cmd, check=True)
     return os.path.basename(png)
 
 
@@ -180,4 +191,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(memory_exit.run("experiments/calibration/report.py", lambda: lambda _argv: main(), sys.argv))

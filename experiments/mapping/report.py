@@ -6,13 +6,24 @@ Tables of image time and efficiency T(1)/(n T(n)) per scene, profile, mapping an
 of the best static mapping's image time to cost's; pilot and Scotch wall times; efficiency
 plots (drawn with ../calibration/efficiency.gp) and the load-map pictures.
 """
-import csv
 import os
-import subprocess
 import sys
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-from output_files import atomic, exit_on_signals, staged  # noqa: E402
-from report import before_fit  # noqa: E402
+
+try:  # first: under a small ulimit -v loading a module is what fails, this one too (memory_exit.py)
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+    import memory_exit
+except (MemoryError, OSError, ImportError):
+    os.write(2, b"experiments/mapping/report.py: out of memory: the system refused the memory the tool "
+             b"asked for (ulimit -v?)\n")
+    os._exit(1)
+try:
+    import csv
+    from output_files import atomic, exit_on_signals, staged
+    from stop_signals import run_child
+    from report import before_fit
+except Exception as e:
+    memory_exit.leave_if_out_of_memory("experiments/mapping/report.py", e)
+    raise
 
 MAPS = ["block", "cyclic", "block-cyclic:2", "block-cyclic:3", "cost"]
 STATIC = MAPS[:4]
@@ -36,8 +47,8 @@ def plot(plot_dir, gp, name, title, rows):
             f.write(" ".join(str(x) for x in row) + "\n")
     png = os.path.join(plot_dir, name + ".png")
     with staged(png) as tmp:
-        subprocess.run(["gnuplot", "-e", f"data='{data}'; out='{tmp}'; ttl='{title}'; ncol={len(MAPS) + 1}; "
-                        "keyt='mapping'", gp], check=True)
+        run_child(["gnuplot", "-e", f"data='{data}'; out='{tmp}'; ttl='{title}'; ncol={len(MAPS) + 1}; "
+                   "keyt='mapping'", gp], check=True)
     return os.path.basename(png)
 
 
@@ -116,4 +127,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(memory_exit.run("experiments/mapping/report.py", lambda: lambda _argv: main(), sys.argv))

@@ -8,13 +8,24 @@ the strip is drawn only when those frames exist). Per case (scene, nodes): each 
 against the targets, the cell-list update against a rebuild of every list, the update and its
 transfers against the render time, and migration bytes; a per-frame time plot per case.
 """
-import csv
 import os
 import sys
-import tempfile
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-from output_files import atomic, exit_on_signals  # noqa: E402
-from report.plots import gnuplot_kind  # noqa: E402
+
+try:  # first: under a small ulimit -v loading a module is what fails, this one too (memory_exit.py)
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+    import memory_exit
+except (MemoryError, OSError, ImportError):
+    os.write(2, b"experiments/motion/report.py: out of memory: the system refused the memory the tool "
+             b"asked for (ulimit -v?)\n")
+    os._exit(1)
+try:
+    import csv
+    import tempfile
+    from output_files import atomic, exit_on_signals
+    from report.plots import gnuplot_kind
+except Exception as e:
+    memory_exit.leave_if_out_of_memory("experiments/motion/report.py", e)
+    raise
 
 POLICIES = ["adaptive", "every-frame", "oracle", "static", "cyclic"]
 ORACLE_WITHIN = 0.10   # adaptive within this fraction of oracle's total
@@ -258,4 +269,4 @@ def main(argv):
 
 
 if __name__ == "__main__":
-    main(sys.argv)
+    sys.exit(memory_exit.run("experiments/motion/report.py", lambda: main, sys.argv))

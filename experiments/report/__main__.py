@@ -2,11 +2,19 @@
 import os
 import sys
 
-if __package__ in (None, ""):
-    sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-from stop_signals import exit_on_signals  # noqa: E402
-
-from memory_exit import run  # noqa: E402
+try:  # first: under a small ulimit -v loading a module is what fails, this one too (memory_exit.py)
+    if __package__ in (None, ""):
+        sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+    import memory_exit
+except (MemoryError, OSError, ImportError):
+    os.write(2, b"experiments/report: out of memory: the system refused the memory the tool "
+             b"asked for (ulimit -v?)\n")
+    os._exit(1)
+try:
+    from stop_signals import exit_on_signals
+except Exception as e:
+    memory_exit.leave_if_out_of_memory("experiments/report", e)
+    raise
 
 exit_on_signals("experiments/report")  # before the imports below: a signal there is named too
 
@@ -19,4 +27,4 @@ def load_main():
     return main
 
 
-sys.exit(run("experiments/report", load_main, sys.argv[1:]))
+sys.exit(memory_exit.run("experiments/report", load_main, sys.argv[1:]))

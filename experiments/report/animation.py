@@ -2,13 +2,24 @@
 
 Usage: python3 experiments/report/animation.py RESULTS_DIR OUT_MD PICS_DIR PLOT_GP JOBS ELAPSED_S
 """
-import csv
 import os
-import subprocess
 import sys
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-from output_files import atomic, exit_on_signals, staged  # noqa: E402
-from report import before_fit  # noqa: E402
+
+try:  # first: under a small ulimit -v loading a module is what fails, this one too (memory_exit.py)
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+    import memory_exit
+except (MemoryError, OSError, ImportError):
+    os.write(2, b"experiments/report/animation.py: out of memory: the system refused the memory the tool "
+             b"asked for (ulimit -v?)\n")
+    os._exit(1)
+try:
+    import csv
+    from output_files import atomic, exit_on_signals, staged
+    from stop_signals import run_child
+    from report import before_fit
+except Exception as e:
+    memory_exit.leave_if_out_of_memory("experiments/report/animation.py", e)
+    raise
 
 POLICIES = ["cyclic", "cost", "every-frame", "adaptive", "preview", "oracle"]
 POLICY_TEXT = {
@@ -63,8 +74,8 @@ def plot(frames, keys, pics, gp):
         panels.append(panel)
     png = os.path.join(pics, "image-time-per-frame.png")
     with staged(png) as tmp:
-        subprocess.run(["gnuplot", "-e", f"dat='{dat}'; out='{tmp}'; panels='{' '.join(panels)}'; "
-                        f"policies='{' '.join(POLICIES)}'", gp], check=True)
+        run_child(["gnuplot", "-e", f"dat='{dat}'; out='{tmp}'; panels='{' '.join(panels)}'; "
+                   f"policies='{' '.join(POLICIES)}'", gp], check=True)
     return os.path.basename(png)
 
 
@@ -558,4 +569,4 @@ def main(argv):
 
 
 if __name__ == "__main__":
-    main(sys.argv)
+    sys.exit(memory_exit.run("experiments/report/animation.py", lambda: main, sys.argv))

@@ -4,14 +4,25 @@
 Usage: python3 experiments/report/buffers.py RUNS.tsv DOC.md PICS_DIR PLOT.gp --size WxH --wall S --jobs N
 Standard library only.
 """
-import argparse
-import csv
 import os
-import subprocess
 import sys
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-from output_files import atomic, exit_on_signals, staged  # noqa: E402
-from report import before_fit  # noqa: E402
+
+try:  # first: under a small ulimit -v loading a module is what fails, this one too (memory_exit.py)
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+    import memory_exit
+except (MemoryError, OSError, ImportError):
+    os.write(2, b"experiments/report/buffers.py: out of memory: the system refused the memory the tool "
+             b"asked for (ulimit -v?)\n")
+    os._exit(1)
+try:
+    import argparse
+    import csv
+    from output_files import atomic, exit_on_signals, staged
+    from stop_signals import run_child
+    from report import before_fit
+except Exception as e:
+    memory_exit.leave_if_out_of_memory("experiments/report/buffers.py", e)
+    raise
 
 UNBOUNDED = 0
 WITHIN = 0.05  # "within 5 % of unbounded"
@@ -82,7 +93,7 @@ def write_plot_data(data, dat_dir):
 def run_gnuplot(gp, dat_dir, names, png):
     with staged(png) as tmp:
         cmd = ["gnuplot", "-e", "dat='%s'; out='%s'; series='%s'" % (dat_dir, tmp, " ".join(names)), gp]
-        subprocess.run(cmd, check=True)
+        run_child(cmd, check=True)
 
 
 def detail_table(scene, machine, flows):
@@ -210,4 +221,4 @@ def main(argv):
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))
+    sys.exit(memory_exit.run("experiments/report/buffers.py", lambda: main, sys.argv[1:]))

@@ -5,8 +5,10 @@ import os
 import subprocess
 import sys
 
+from memory_exit import leave_if_out_of_memory
 from output_files import (OutputError, OutputSet, exit_on_signals, finish_stdout, list_values,
                           named_stdout, nonempty, os_message, out_folder, read_text, refuse_empty_values, shown)
+from stop_signals import run_child
 from stream_checks import check_streams
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -130,8 +132,8 @@ def machine_as_run_reads_it(path, build, given):
             raise OutputError("--build '%s': no torusrt-sim in it (build first, or name the build folder)"
                               % shown(build))
         return None
-    done = subprocess.run([sim, "--dump-config", "--config", path], stdin=subprocess.DEVNULL,
-                          capture_output=True, text=True, errors="replace")
+    done = run_child([sim, "--dump-config", "--config", path], stdin=subprocess.DEVNULL,
+                     capture_output=True, text=True, errors="replace")
     if done.returncode != 0:
         raise ValueError("--compare '%s': torusrt-sim does not read it: %s"
                          % (shown(path), shown(done.stderr.strip(), backslash=False)))
@@ -244,5 +246,6 @@ def main(argv):
         print("%s: %s" % (prog, shown(e, backslash=False)), file=sys.stderr)
         return 2 if args.command == "sweep-plan" else 1  # the sweep's command line, checked before any run
     except (OSError, KeyError, subprocess.CalledProcessError) as e:
+        leave_if_out_of_memory(prog, e)  # ENOMEM: the tools' out-of-memory message, as a MemoryError
         print("%s: %s" % (prog, shown(os_message(e), backslash=False)), file=sys.stderr)
         return 1

@@ -12,6 +12,7 @@ import os
 from output_files import atomic, read_text
 
 from . import paper
+from .results import save_facts
 
 POINT_COLUMNS = ["fig", "name", "scene", "mapping", "n", "torus", "m", "data", "json"]
 
@@ -164,6 +165,7 @@ def collect(res):
               lambda r: (r["scene"], float(r["n"])))
     write_csv(os.path.join(res, "fig10_12.csv"), CSVS["fig10_12"], clusters,
               lambda r: (r["scene"], r["data"], float(r["m"])))
+    save_facts(res, points)  # from these points only, never another JSON lying in RES
     bad = sum(1 for r in rows if r["status"] != "ok")
     differ = sum(1 for r in rows if r["status"] == "ok" and r["image_identical"] != "yes")
     return len(rows), bad, differ

@@ -2,6 +2,7 @@
 commands study.sh calls between its stages (the candidate lists, each stage's choice, the T(1)
 identity's check, the fitted machine's files) and the claims' roles and three counts. The scores
 are fidelity_score's, the stages' tables fidelity_stages', the page fidelity_page's."""
+import math
 import os
 import sys
 
@@ -111,6 +112,10 @@ def allowed(args):
 def identity(args):
     """Exit 0 when every real run at c > 0 (identity.tsv: image, spec, c, JSON) is within 0.1 %
     of T(1)|0 + c x cell_steps; 1, naming the run, when one is not."""
+    table = os.path.join(args.results, "identity.tsv")
+    if not os.path.isfile(table) or not st.rows(args.results, "identity.tsv"):
+        raise ValueError("%s: no identity runs to check (%s)" % (
+            table, "no such results folder" if not os.path.isdir(args.results) else "run stage 1 first"))
     zero, _ = st.t1_table(args.results)
     ok = True
     for image, spec, cost, path in st.rows(args.results, "identity.tsv"):
@@ -132,7 +137,25 @@ def handover_lines(h):
 def timing_cmd(args):
     """A timing file on stdout: the calibrated table with the given keys replaced (every key, so
     the file stands on its own)."""
-    values = dict(kv.split("=", 1) for kv in args.set)
+    values = {}
+    for word in args.set:
+        key, eq, value = word.partition("=")
+        if not eq or not key:
+            print("fidelity timing: %s: not KEY=VALUE" % word, file=sys.stderr)
+            return 2
+        if key == "handover" and value not in [str(h) for h in fs.HANDOVER_KEYS]:
+            print("fidelity timing: %s: the hand-over is one of %s" % (word, ", ".join(map(str, fs.HANDOVER_KEYS))),
+                  file=sys.stderr)
+            return 2
+        try:
+            number = float(value)
+        except ValueError:
+            number = math.nan
+        if not (math.isfinite(number) and number >= 0) or value != value.strip():
+            print("fidelity timing: %s: not a time in microseconds (a finite number, 0 or more)" % word,
+                  file=sys.stderr)
+            return 2
+        values[key] = value
     if "handover" in values:
         for line in handover_lines(values.pop("handover")):
             k, v = line.split()

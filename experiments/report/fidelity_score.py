@@ -87,7 +87,10 @@ HANDOVER_KEYS = {0: (0, 0), 580: (0, 580), 1600: (1600, 0), 2180: (1600, 580)}
 def allowed_handovers(cell_step):
     """The hand-over costs (us) allowed beside a per-step cost: none {0, 580, 2180}, analysis
     {0, 1600}, creation {0, 580}, both {0}."""
-    c = int(cell_step)
+    try:
+        c = int(cell_step)
+    except ValueError:  # 1e999, 1.5, x: no cost of the study
+        c = None
     if c not in CELL_STEP_COSTS:
         raise ValueError("cell_step_packet %r is not one of %s" % (cell_step, CELL_STEP_COSTS))
     return {0: (0, 580, 2180), 580: (0, 1600), 1600: (0, 580), 2180: (0,)}[c]

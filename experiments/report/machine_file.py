@@ -11,6 +11,8 @@ import re
 import subprocess
 import tomllib
 
+from stop_signals import run_child
+
 
 def from_report(report):
     """The (key, value) pairs of a report's machine, in --dump-config's order (config.option_order;
@@ -87,8 +89,8 @@ def tables_from_dump(text):
 
 def option_tables(sim):
     """{key: table} of every machine option, from `SIM --dump-config` (torusrt-sim's option table)."""
-    done = subprocess.run([sim, "--dump-config"], stdin=subprocess.DEVNULL, capture_output=True, text=True,
-                          errors="replace")
+    done = run_child([sim, "--dump-config"], stdin=subprocess.DEVNULL, capture_output=True, text=True,
+                     errors="replace")
     if done.returncode != 0:
         raise ValueError("%s --dump-config: exit %d: %s" % (sim, done.returncode, done.stderr.strip()))
     return tables_from_dump(done.stdout)

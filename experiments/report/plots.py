@@ -1,9 +1,9 @@
 """Data files for the checked-in gnuplot scripts (experiments/plots/*.gp), and running them."""
 import contextlib
 import os
-import subprocess
 
 from output_files import staged, write_text
+from stop_signals import run_child
 
 from . import paper
 from .results import profile_results
@@ -24,8 +24,8 @@ def gnuplot_kind(gp, kind, data, png, title, ncol=0):
     """Runs the study script GP for one plot KIND of the data file DATA into PNG; returns the
     PNG's file name (the studies' pages link it beside themselves)."""
     with staged(png) as tmp:
-        subprocess.run(["gnuplot", "-e", f"kind='{kind}'; data='{data}'; out='{tmp}'; ttl='{title}'; ncol={ncol}", gp],
-                       check=True)
+        run_child(["gnuplot", "-e", f"kind='{kind}'; data='{data}'; out='{tmp}'; ttl='{title}'; ncol={ncol}", gp],
+                  check=True)
     return os.path.basename(png)
 
 
@@ -41,7 +41,7 @@ def run_gnuplot(script, variables):
     assigns = ["plotdir='%s'" % PLOT_DIR]
     for name, value in variables.items():
         assigns.append("%s=%s" % (name, value if isinstance(value, (int, float)) else "'%s'" % value))
-    subprocess.run(["gnuplot", "-e", "; ".join(assigns), os.path.join(PLOT_DIR, script)], check=True)
+    run_child(["gnuplot", "-e", "; ".join(assigns), os.path.join(PLOT_DIR, script)], check=True)
 
 
 def flat_data(all_r, dat):

@@ -14,6 +14,7 @@ import sys
 
 from output_files import (ANIMATION_OPTIONS, NO_RUN_OPTIONS, OUTPUT_OPTIONS, OutputSet, atomic, list_values,
                           named_files, output_options, read_text, unusable_option, write_lines, write_text)
+from stop_signals import run_child
 
 from .plots import gnuplot, write_dat
 
@@ -65,8 +66,8 @@ def dry_run(sim, scene, names, values, fixed):
     for n, v in zip(names, values):
         args += ["--" + n, v]
     # a name's bytes that are not UTF-8 kept as they came (the message shows them as \xNN)
-    done = subprocess.run(args, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True,
-                          errors="surrogateescape")
+    done = run_child(args, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True,
+                     errors="surrogateescape")
     if done.returncode != 0:
         raise ValueError("the first point's options do not check out (no point was run): %s"
                          % done.stderr.strip())
@@ -103,8 +104,8 @@ def check_fields(sim, scene, names, combos, fixed, columns, y):
             args += without_size(list(fixed))
             for n, v in zip(names, values):
                 args += ["--" + n, v] if n != "size" else []
-            done = subprocess.run(args + ["--size", "1x1"], stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
-                                  stderr=subprocess.PIPE, text=True, errors="surrogateescape")
+            done = run_child(args + ["--size", "1x1"], stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
+                             stderr=subprocess.PIPE, text=True, errors="surrogateescape")
             if done.returncode == 0:
                 fields = flatten(read_report(stats))
                 if y in wanted and y in fields and not is_number(fields[y]):

@@ -9,13 +9,24 @@ cyclic mapping's total data memory at the same n); the efficiency at the largest
 its measured factors; plots of time against n, time against memory, and busy time per node
 before and after replication.
 """
-import csv
 import os
 import sys
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-from output_files import atomic, exit_on_signals  # noqa: E402
-from report import before_fit  # noqa: E402
-from report.plots import gnuplot_kind  # noqa: E402
+
+try:  # first: under a small ulimit -v loading a module is what fails, this one too (memory_exit.py)
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+    import memory_exit
+except (MemoryError, OSError, ImportError):
+    os.write(2, b"experiments/scaling/report.py: out of memory: the system refused the memory the tool "
+             b"asked for (ulimit -v?)\n")
+    os._exit(1)
+try:
+    import csv
+    from output_files import atomic, exit_on_signals
+    from report import before_fit
+    from report.plots import gnuplot_kind
+except Exception as e:
+    memory_exit.leave_if_out_of_memory("experiments/scaling/report.py", e)
+    raise
 
 BUDGET = 2.0  # memory budget: this many times the flat cyclic mapping's total data memory
 FLAT = ["flat-cyclic", "flat-cost", "flat-cost-r0.5", "flat-cost-r1.0", "flat-scatter", "flat-scatter-r0.5",
@@ -329,4 +340,4 @@ def main(argv):
 
 
 if __name__ == "__main__":
-    main(sys.argv)
+    sys.exit(memory_exit.run("experiments/scaling/report.py", lambda: main, sys.argv))

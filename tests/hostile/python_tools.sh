@@ -146,6 +146,11 @@ mkdir be
 printf '%s\t%s\n' "$TMP/be/a.json" "echo {} >$TMP/be/a.json" "$TMP/be/b.json" "echo {} >$TMP/be/b.json" >be/list
 backend=(python3 "$EXP/backend" run --state be/state)
 refused "backend -j 0" "-j/--jobs: must be a whole number" "${backend[@]}" -j 0 be/list
+refused "backend --per-task 0" "--per-task: must be a whole number" "${backend[@]}" --per-task 0 be/list
+refused "backend --state ''" "--state: an empty value" python3 "$EXP/backend" run --state '' be/list
+for name in "backend -j 0" "backend --per-task 0" "backend --state ''"; do
+    check "$name: one line, not the usage: $(head -c 300 "$name.err")" [ "$(wc -l <"$name.err")" -eq 1 ]
+done
 refused "backend -j abc" "-j/--jobs: must be a whole number" "${backend[@]}" -j abc be/list
 mkfifo be/runs.tsv
 refused "backend --runs a FIFO" "--runs 'be/runs.tsv': is a FIFO" "${backend[@]}" --runs be/runs.tsv be/list

@@ -45,6 +45,37 @@ finally:
 """ % EXP
 
 
+# A signal landing inside Popen, after the child is made and before the Popen object exists: the
+# child's start (Popen._execute_child) sends it to the program; the child's process id is kept in
+# a file. The child is a stand-in gnuplot that sleeps, started as `report plots` starts gnuplot.
+IN_POPEN = """import os, signal, subprocess, sys
+sys.path.insert(0, %r)
+from stop_signals import exit_on_signals
+exit_on_signals("tool")
+start = subprocess.Popen._execute_child
+
+
+def landing(self, *args, **kwargs):
+    start(self, *args, **kwargs)
+    with open(sys.argv[1], "w") as f:
+        f.write(str(self.pid))
+    os.kill(os.getpid(), signal.SIGTERM)
+
+
+subprocess.Popen._execute_child = landing
+from report import plots
+plots.gnuplot_kind("x.gp", "k", "d.dat", os.path.join(sys.argv[2], "p.png"), "t")
+""" % EXP
+
+
+def alive(pid):
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    return True
+
+
 class StopSignals(unittest.TestCase):
     def setUp(self):
         self.dir = tempfile.mkdtemp()
@@ -82,6 +113,54 @@ class StopSignals(unittest.TestCase):
         self.assertEqual(done.returncode, 0, done.stderr)
         with open(os.path.join(self.dir, "a.csv")) as f:
             self.assertEqual(f.read(), "halfnever")
+
+    def test_a_signal_inside_a_childs_start_stops_the_child_too(self):
+        bindir, out = os.path.join(self.dir, "bin"), os.path.join(self.dir, "out")
+        os.mkdir(bindir)
+        os.mkdir(out)
+        with open(os.path.join(bindir, "gnuplot"), "w") as f:
+            f.write("#!/bin/sh\nexec sleep 60\n")
+        os.chmod(os.path.join(bindir, "gnuplot"), 0o755)
+        pidfile = os.path.join(self.dir, "child.pid")
+        env = dict(os.environ, PATH=bindir + os.pathsep + os.environ["PATH"])
+        done = subprocess.run([sys.executable, "-c", IN_POPEN, pidfile, out], stderr=subprocess.PIPE, text=True,
+                              env=env)
+        with open(pidfile) as f:
+            pid = int(f.read())
+        left = alive(pid)
+        if left:
+            os.kill(pid, signal.SIGKILL)
+        self.assertEqual(done.returncode, 128 + signal.SIGTERM, done.stderr)
+        self.assertEqual(done.stderr, "tool: stopped by SIGTERM\n")
+        self.assertFalse(left, "the child started when the signal landed is still running")
+        self.assertEqual(os.listdir(out), [])
+
+    def test_run_child_keeps_what_subprocess_run_gives(self):
+        sys.path.insert(0, EXP)
+        from stop_signals import run_child
+        done = run_child(["sh", "-c", "cat; echo err >&2; exit 3"], input="in", capture_output=True, text=True)
+        self.assertEqual((done.returncode, done.stdout, done.stderr), (3, "in", "err\n"))
+        with self.assertRaises(subprocess.CalledProcessError):
+            run_child(["false"], check=True)
+        self.assertEqual(signal.pthread_sigmask(signal.SIG_BLOCK, []), set())
+
+    def test_every_child_of_the_python_tools_is_started_by_run_child(self):
+        """The stopping signals are blocked while a child starts only through run_child."""
+        starts = ("subprocess.run(", "subprocess.Popen(", "subprocess.call(", "subprocess.check_", "os.system(",
+                  "os.popen(", "os.spawn", "os.posix_spawn", "os.fork(", "os.exec")
+        found = []
+        for root, _, names in os.walk(EXP):
+            for name in names:
+                path = os.path.join(root, name)
+                if name == "stop_signals.py" or "results" in path.split(os.sep):
+                    continue
+                with open(path, "rb") as f:
+                    head = f.read()
+                if not (name.endswith(".py") or head.startswith(b"#!/usr/bin/env python3")):
+                    continue
+                text = head.decode(errors="replace")
+                found += ["%s: %s" % (os.path.relpath(path, REPO), s) for s in starts if s in text]
+        self.assertEqual(found, [])
 
 
 if __name__ == "__main__":

@@ -1,0 +1,94 @@
+"""A point of the backend (experiments/backend run) is done when its result is there and was
+made by the same command line from the same input files (its identity, recorded beside the
+result as DONE.id when the point succeeds): a point whose input file changed, whose command
+changed, or whose result has no record runs again, and the backend says why; a point of a later
+phase that reads the result of one that runs again runs again too; an unchanged point does not."""
+import os
+import shlex
+import shutil
+import subprocess
+import sys
+import tempfile
+import unittest
+
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+BACKEND = os.path.join(REPO, "experiments", "backend")
+
+
+def write(path, text):
+    with open(path, "w") as f:
+        f.write(text)
+
+
+def read(path):
+    with open(path) as f:
+        return f.read()
+
+
+@unittest.skipUnless(shutil.which("parallel"), "GNU parallel is not installed")
+class PointIdentity(unittest.TestCase):
+    def setUp(self):
+        self.dir = tempfile.mkdtemp()
+        d = self.dir
+        self.input, self.t1, self.point = (os.path.join(d, n) for n in ("in.timing", "t1.json", "p.json"))
+        write(self.input, "test_hit 1750\n")
+        # phase 1 copies the input; phase 2 reads phase 1's result and the input
+        write(os.path.join(d, "phase1.list"), "%s\tcp %s %s\n" % (self.t1, shlex.quote(self.input),
+                                                                  shlex.quote(self.t1)))
+        write(os.path.join(d, "phase2.list"), "%s\tcat %s %s > %s\n" % (
+            self.point, shlex.quote(self.t1), shlex.quote(self.input), shlex.quote(self.point)))
+
+    def tearDown(self):
+        shutil.rmtree(self.dir)
+
+    def backend(self):
+        d = self.dir
+        done = subprocess.run([sys.executable, BACKEND, "run", "--state", os.path.join(d, "st"), "-j", "1",
+                               os.path.join(d, "phase1.list"), os.path.join(d, "phase2.list")],
+                              stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+        self.assertEqual(done.returncode, 0, done.stdout)
+        return done.stdout
+
+    def test_a_changed_input_runs_its_points_again_and_says_why(self):
+        self.backend()
+        self.assertEqual(read(self.point), "test_hit 1750\ntest_hit 1750\n")
+        self.assertIn("2 points in 2 phase(s), 2 already done, 0 to run", self.backend())
+        write(self.input, "test_hit 3500\n")
+        out = self.backend()
+        self.assertIn("%s: made by another command or from other inputs (%s changed since it was made); "
+                      "running it again" % (self.t1, self.input), out)
+        self.assertIn("0 already done, 2 to run", out)
+        self.assertEqual(read(self.point), "test_hit 3500\ntest_hit 3500\n")
+        self.assertIn("2 already done, 0 to run", self.backend())
+
+    def test_a_point_reading_a_result_that_runs_again_runs_again(self):
+        write(os.path.join(self.dir, "phase2.list"), "%s\tcat %s > %s\n" % (
+            self.point, shlex.quote(self.t1), shlex.quote(self.point)))  # phase 1's result only
+        self.backend()
+        write(self.input, "test_hit 3500\n")
+        out = self.backend()
+        self.assertIn("%s: made by another command or from other inputs (%s changed since it was made)"
+                      % (self.point, self.t1), out)
+        self.assertIn("0 already done, 2 to run", out)
+        self.assertEqual(read(self.point), "test_hit 3500\n")
+        self.assertIn("2 already done, 0 to run", self.backend())
+
+    def test_a_result_without_its_record_runs_again(self):
+        self.backend()
+        os.remove(self.point + ".id")
+        out = self.backend()
+        self.assertIn("%s: made by another command or from other inputs (no record of what it was made from "
+                      "(%s.id))" % (self.point, self.point), out)
+        self.assertIn("1 already done, 1 to run", out)
+
+    def test_a_changed_command_runs_again(self):
+        self.backend()
+        write(os.path.join(self.dir, "phase2.list"), "%s\tcat %s > %s\n" % (
+            self.point, shlex.quote(self.input), shlex.quote(self.point)))
+        out = self.backend()
+        self.assertIn("%s: made by another command or from other inputs (its command line changed)" % self.point, out)
+        self.assertEqual(read(self.point), "test_hit 1750\n")
+
+
+if __name__ == "__main__":
+    unittest.main()
