@@ -17,6 +17,9 @@
 # reports the run with the least simulation wall time and the median of the N (default 1).
 # A last line gives the cost of a hop at 512 IPs over that at 16 (the same work): at best, at the
 # medians, and the median of the ratios within each round.
+# BENCH_BASE=DIR compares two builds in one sitting: every run of a row is made by DIR's torusrt-sim
+# and then by BUILD_DIR's, so a slow spell of the machine falls on both alike; the table is
+# BUILD_DIR's, and a last block gives DIR's medians and each row's change at the median.
 # Usage: bash bench/sim.sh [BUILD_DIR]   (BENCH_BIG=0 skips the 1024x1024 run)
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -29,15 +32,25 @@ printf '%-10s %5s %6s %10s %9s %9s %7s %7s %8s %10s %11s %11s %10s %8s\n' \
 configs=("144x144 24 4x2x2" "144x144 24 4x4x4" "144x144 24 8x8x8" "144x144 24 16x16x16")
 small=3 # rows run round by round; the rest, each a quarter of a gigabyte, after them
 [ "${BENCH_BIG:-1}" = 0 ] || configs+=("1024x1024 64 8x8x8")
-declare -a best walls
+declare -a best walls base_walls
+base=${BENCH_BASE:-}
 reading=(--timing-profile calibrated)
 [[ $("$build/torusrt-sim" --help) != *--route-ties* ]] || reading+=(--route-ties plus)
+if [ -n "$base" ]; then
+  base_reading=(--timing-profile calibrated)
+  [[ $("$base/torusrt-sim" --help) != *--route-ties* ]] || base_reading+=(--route-ties plus)
+fi
 run_row() { # one run of row $1 (and of the renderer on its scene, size and grid)
   local i=$1 size cells ips wall
   read -r size cells ips <<<"${configs[$i]}"
   "$build/torusrt-render" "$scene" --size "$size" --cells "$cells" -o "$tmp/r.png" --stats "$tmp/render.json" -q
   if [ ! -e "$tmp/r$i.json" ] || [ "$(jq ".wall_s < $(jq .wall_s "$tmp/r$i.json")" "$tmp/render.json")" = true ]; then
     mv "$tmp/render.json" "$tmp/r$i.json"
+  fi
+  if [ -n "$base" ]; then  # the base's run first, then the build's: alternated run by run
+    "$base/torusrt-sim" "$scene" --size "$size" --cells "$cells" --ips "$ips" "${base_reading[@]}" --t1 1 \
+      -o "$tmp/b.png" --stats "$tmp/base.json" -q
+    base_walls[i]="${base_walls[i]:-} $(jq .sim_wall_s "$tmp/base.json")"
   fi
   /usr/bin/time -v -o "$tmp/run-time.txt" "$build/torusrt-sim" "$scene" --size "$size" --cells "$cells" --ips "$ips" \
     "${reading[@]}" --t1 1 -o "$tmp/s.png" --stats "$tmp/run.json" -q
@@ -80,3 +93,14 @@ rounds=$(paste -d' ' <(tr ' ' '\n' <<<"${walls[0]}" | sed '/^$/d') <(tr ' ' '\n'
   while read -r w16 w512; do ratio "$w16" "$w512"; done | tr '\n' ' ')
 printf '512 vs 16 IPs, wall per hop: %.2fx at best, %.2fx at the medians, %.2fx the median of the rounds'"'"' ratios\n' \
   "$(ratio "${best[0]}" "${best[2]}")" "$(ratio "$(med "${walls[0]}")" "$(med "${walls[2]}")")" "$(med "$rounds")"
+# Against BENCH_BASE: its median per row and the build's change at the median.
+if [ -n "$base" ]; then
+  echo "against BENCH_BASE=$base (median of its runs, alternated with this build's):"
+  for i in "${!configs[@]}"; do
+    read -r size cells ips <<<"${configs[$i]}"
+    bm=$(med "${base_walls[i]}")
+    m=$(med "${walls[i]}")
+    printf '%-10s %5s %8s  base %9.3f  build %9.3f  change %+6.1f %%\n' "$size" "$cells" "$ips" "$bm" "$m" \
+      "$(jq -n "($m / $bm - 1) * 100")"
+  done
+fi
