@@ -54,8 +54,20 @@ def kb(v):
     return "%.0f KB" % (float(v) / 1000.0) if v not in ("", None) else ""
 
 
+def base_time(classes):
+    """The unbounded run's image time under the class scheme, what the others are compared with;
+    None when that run failed or is missing."""
+    r = classes.get(UNBOUNDED)
+    return float(r["sim_time_s"]) if r is not None and r["status"] == "ok" else None
+
+
+def comparable(data):
+    """The groups whose unbounded run finished (the others have nothing to be compared with)."""
+    return {k: flows for k, flows in data.items() if base_time(flows.get("classes", {})) is not None}
+
+
 def smallest_within(classes):
-    base = float(classes[UNBOUNDED]["sim_time_s"])
+    base = base_time(classes)
     for c in ordered_caps(classes):
         r = classes[c]
         if c != UNBOUNDED and r["status"] == "ok" and float(r["sim_time_s"]) <= base * (1 + WITHIN):
@@ -77,9 +89,9 @@ def write_plot_data(data, dat_dir):
     names = []
     for (scene, machine), flows in data.items():
         classes = flows.get("classes", {})
-        if UNBOUNDED not in classes:
+        base = base_time(classes)
+        if base is None:
             continue
-        base = float(classes[UNBOUNDED]["sim_time_s"])
         name = "%s-%s" % (scene, machine.replace(" ", "_"))
         with atomic(os.path.join(dat_dir, name + ".dat")) as f:
             f.write("# capacity (unbounded plotted at 128) time/unbounded\n")
@@ -98,10 +110,15 @@ def run_gnuplot(gp, dat_dir, names, png):
 
 def detail_table(scene, machine, flows):
     classes, none = flows.get("classes", {}), flows.get("none", {})
-    base = float(classes[UNBOUNDED]["sim_time_s"])
-    lines = ["", "### %s, %s processors" % (scene, machine), "",
-             "| capacity | image time (classes) | vs unbounded | packet memory per processor | image | --flow none |",
-             "| --- | --- | --- | --- | --- | --- |"]
+    base = base_time(classes)
+    lines = ["", "### %s, %s processors" % (scene, machine), ""]
+    if base is None:
+        r = classes.get(UNBOUNDED)
+        lines += ["The unbounded run under the class scheme %s: nothing to compare with." %
+                  ("is missing" if r is None else "did not finish (%s)" % r["status"]), ""]
+    lines += [
+              "| capacity | image time (classes) | vs unbounded | packet memory per processor | image | --flow none |",
+              "| --- | --- | --- | --- | --- | --- |"]
     for c in ordered_caps(classes):
         r = classes[c]
         if r["status"] != "ok":
@@ -111,8 +128,9 @@ def detail_table(scene, machine, flows):
         n = none.get(c)
         none_text = "" if n is None else (n["status"] if n["status"] != "ok" else "%.4f s" % float(n["sim_time_s"]))
         mem = "unbounded" if c == UNBOUNDED else "%s (%s classes)" % (kb(r["bytes_per_ip_used"]), r["classes_used"])
-        lines.append("| %s | %.4f s | %+.1f %% | %s | %s | %s |" % (
-            cap_label(c), t, 100.0 * (t / base - 1), mem,
+        vs = "%+.1f %%" % (100.0 * (t / base - 1)) if base else ""
+        lines.append("| %s | %.4f s | %s | %s | %s | %s |" % (
+            cap_label(c), t, vs, mem,
             "identical" if r["image_identical"] == "1" else "DIFFERS", none_text))
     return lines
 
@@ -122,9 +140,10 @@ def summary_table(data):
              "| --- | --- | --- | --- | --- | --- | --- |"]
     for (scene, machine), flows in data.items():
         classes, none = flows.get("classes", {}), flows.get("none", {})
-        base = float(classes[UNBOUNDED]["sim_time_s"])
+        base = base_time(classes)
         one = classes.get(1)
-        one_text = "%.4f s (%+.1f %%)" % (float(one["sim_time_s"]), 100 * (float(one["sim_time_s"]) / base - 1)) if one else ""
+        one_text = ("%.4f s (%+.1f %%)" % (float(one["sim_time_s"]), 100 * (float(one["sim_time_s"]) / base - 1))
+                    if one and one["status"] == "ok" else one["status"] if one else "")
         s = smallest_within(classes)
         mem = classes[s]["bytes_per_ip_used"] if s != UNBOUNDED else ""
         fin = [c for c in ordered_caps(none) if none[c]["status"] == "ok"]
@@ -134,12 +153,14 @@ def summary_table(data):
     return lines
 
 
-def findings(data, bad, over):
-    """The page's opening: what the class scheme costs and guarantees, and what one class does."""
+def findings(everything, bad, over):
+    """The page's opening: what the class scheme costs and guarantees, and what one class does,
+    over the machines whose unbounded run finished."""
+    data = comparable(everything)
     costs, within, mems, none_bounded = [], [], [], 0
     for flows in data.values():
         classes, none = flows.get("classes", {}), flows.get("none", {})
-        base = float(classes[UNBOUNDED]["sim_time_s"])
+        base = base_time(classes)
         if 1 in classes and classes[1]["status"] == "ok":
             costs.append(100 * (float(classes[1]["sim_time_s"]) / base - 1))
         s = smallest_within(classes)
@@ -162,6 +183,9 @@ def findings(data, bad, over):
                        min(bounded), max(bounded), kb(min(mems)), kb(max(mems)),
                        "" if len(bounded) == len(within) else "; %d machine(s) need unbounded buffers"
                        % (len(within) - len(bounded))))
+    if len(data) < len(everything):
+        out.append("- %d of %d machines have no comparison: their unbounded run under the class scheme did not "
+                   "finish (section \"Every run\")." % (len(everything) - len(data), len(everything)))
     if none_bounded == 0:
         out.append("- With one class (`--flow none`) every machine deadlocks at every bounded capacity tried; "
                    "only unbounded buffers finish.")
