@@ -7,6 +7,8 @@ import stat
 from output_files import _identity, _through_stream, named_files, shown
 from output_places import linked_into
 
+TOOLS = os.path.dirname(os.path.abspath(__file__))  # experiments/
+
 
 def divert_stderr():
     """Points standard error at the terminal (/dev/tty) when there is one, else at /dev/null: for
@@ -53,6 +55,8 @@ def check_streams(prog, words, folders=(), own=()):
     for path in own:
         if _identity(path) is not None:
             mine.setdefault(_identity(path), path)
+    # The tools' own folder too: its code and its results folders (`>> experiments/report/sweep.py`).
+    folders = list(folders) + [TOOLS]
     folders = named_folders(list(words)) + [("argument", folder) for folder in folders if os.path.isdir(folder)]
     for fd, name, key in streams:
         if key in mine:

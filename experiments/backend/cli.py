@@ -77,7 +77,7 @@ def record_run(path, label, jobs, hosts, total, ran, failed, wall, cpu):
 
 def report_failures(state, pending, status):
     """Lists every point that was to run and has no result, writes STATE/failed.tsv; returns their number."""
-    failed = [p for p in pending if not p.is_done()]
+    failed = [p for p in pending if not p.is_done() or (p.identity is not None and not os.path.exists(p.record()))]
     write_lines(os.path.join(state, "failed.tsv"),
                 ["%s\t%s\t%s\t%s" % (status.get(p, "no result"), p.done, p.log, p.command) for p in failed], "--state")
     for p in failed:
@@ -102,19 +102,25 @@ def run(args):
     phases = [points.read(os.path.abspath(f)) for f in args.lists]
     points.assign_logs(phases, os.path.join(state, "logs"))
     todo, cache, made = [], {}, {}
+    for phase in phases:
+        for p in phase:
+            points.identify(p, cache, made)
+    points.check_results_are_not_inputs(phases, args.lists)
     for number, phase in enumerate(phases, 1):
         pending = []
         for p in phase:
-            points.identify(p, cache, made)
             if p.is_done():
                 why = points.changed(p)
                 if why is None:
                     continue
                 say("backend: %s: made by another command or from other inputs (%s); running it again"
                     % (p.done, why))
-                for old in (p.done, p.record()):
-                    if os.path.lexists(old):
-                        os.remove(old)
+                # Only a result the backend made (its record is there) is removed: a file without
+                # one may be what the command reads (a scene, a machine file), and is left to the
+                # command; the run succeeds when it records the point again.
+                if os.path.lexists(p.record()):
+                    os.remove(p.record())
+                    os.remove(p.done)
             pending.append(p)
         path = os.path.join(state, "phase%d.todo" % number)
         points.write_todo(path, pending)
@@ -134,7 +140,8 @@ def run(args):
         cpu = (cpu1.ru_utime - cpu0.ru_utime) + (cpu1.ru_stime - cpu0.ru_stime)
     wall = time.time() - start
     failed = report_failures(state, [p for _, pend in todo for p in pend], status)
-    ran = sum(1 for _, pend in todo for p in pend if p.is_done())
+    ran = sum(1 for _, pend in todo for p in pend
+              if p.is_done() and (p.identity is None or os.path.exists(p.record())))
     say("backend: %d points run, %d failed, %.1f s wall%s" % (ran, failed, wall, "" if cpu is None else
                                                               ", %.1f s CPU" % cpu))
     if args.runs:

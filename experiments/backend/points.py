@@ -7,7 +7,7 @@ import os
 import re
 import shlex
 
-from output_files import read_text, write_lines
+from output_files import named_files, read_text, write_lines
 
 # The tools' own folder: its scripts (run_point.sh, output_files.py) are how a point runs, not
 # what it computes from.
@@ -137,7 +137,12 @@ def identify(point, cache, made, cwd=None):
     (a T(1) report), that point's own identity; MADE maps the results of the points identified
     so far to their identities' SHA-256, and gets this point's."""
     cwd = cwd or os.getcwd()
-    files = _inputs(point, _words(point.command), cwd, made)
+    words = _words(point.command)
+    files = _inputs(point, words, cwd, made)
+    try:  # the files a --config machine file names (timing=, map-file=) are read too
+        files |= _inputs(point, [path for _, path in named_files(words)], cwd, made)
+    except (OSError, ValueError, RecursionError):
+        pass  # a machine file that cannot be read: the point's run says so
     for path in sorted(files):
         if path.endswith(".sh") and path not in made:
             try:
@@ -173,3 +178,20 @@ def changed(point):
             return "%s %s since it was made" % (path, "changed" if path in now and path in then else
                                                  "is new" if path in now else "is no longer named")
     return None
+
+
+def check_results_are_not_inputs(phases, lists):
+    """ValueError naming the list line when a point's result file is a point list or a file
+    another point reads other than as an earlier phase's result."""
+    listed = {os.path.realpath(f) for f in lists}
+    every = [p for phase in phases for p in phase]
+    read = {}  # plain input files of the points (not earlier results) -> the first point reading it
+    for p in every:
+        for path, what in p.identity["inputs"].items():
+            if not what.startswith("point "):
+                read.setdefault(path, p)
+    for p in every:
+        why = ("is the point list %s" % p.done if os.path.realpath(p.done) in listed else
+               "is read by the point of %s" % read[p.done].source if p.done in read else None)
+        if why:
+            raise ValueError("%s: the done file %s %s: refused, nothing removed or run" % (p.source, p.done, why))

@@ -92,3 +92,51 @@ class PointIdentity(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+@unittest.skipUnless(shutil.which("parallel"), "GNU parallel is not installed")
+class ResultsThatAreInputs(unittest.TestCase):
+    """A stale result is removed before its point runs again only when the backend made it (its
+    record is there): a file without one (a scene the command reads) is left alone; the point list
+    as a result is refused (exit 2, naming the list line); a machine file's named files (timing=)
+    are part of a point's identity."""
+
+    def setUp(self):
+        self.dir = tempfile.mkdtemp()
+
+    def tearDown(self):
+        shutil.rmtree(self.dir)
+
+    def run_list(self, text):
+        lst = os.path.join(self.dir, "points.list")
+        write(lst, text)
+        return subprocess.run([sys.executable, BACKEND, "run", "--state", os.path.join(self.dir, "st"), "-j", "1",
+                               lst], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True), lst
+
+    def test_a_result_without_record_that_its_command_reads_is_kept(self):
+        scene = os.path.join(self.dir, "s.nff")
+        write(scene, "the scene\n")
+        done, _ = self.run_list("%s\tcat %s > %s.copy\n" % (scene, shlex.quote(scene), shlex.quote(scene)))
+        self.assertEqual(done.returncode, 0, done.stdout)
+        self.assertIn("no record of what it was made from", done.stdout)
+        self.assertEqual(read(scene), "the scene\n")
+
+    def test_the_point_list_as_a_result_is_refused_and_kept(self):
+        lst = os.path.join(self.dir, "points.list")
+        done, _ = self.run_list("%s\ttrue\n" % lst)
+        self.assertEqual(done.returncode, 2, done.stdout)
+        self.assertIn("is the point list", done.stdout)
+        self.assertTrue(os.path.exists(lst))
+
+    def test_a_machine_files_timing_file_is_an_input(self):
+        timing = os.path.join(self.dir, "t.timing")
+        machine = os.path.join(self.dir, "m.toml")
+        out = os.path.join(self.dir, "p.json")
+        write(timing, "test_hit 1750\n")
+        write(machine, '[timing]\ntiming="%s"\n' % timing)
+        text = "%s\ttrue --config %s && cp %s %s\n" % (out, shlex.quote(machine), shlex.quote(timing), shlex.quote(out))
+        self.assertEqual(self.run_list(text)[0].returncode, 0)
+        write(timing, "test_hit 3500\n")
+        done, _ = self.run_list(text)
+        self.assertIn("%s changed since it was made" % timing, done.stdout)
+        self.assertEqual(read(out), "test_hit 3500\n")
