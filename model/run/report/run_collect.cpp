@@ -20,9 +20,10 @@ MemoryReport flat_memory(const SimConfig &config, const rt_scene *scene, const r
 {
     std::vector<rt_memory_use> use(static_cast<size_t>(config.node_count()));
     rt_replicas replicas = config.replica_table();
-    if (rt_memory_per_owner_replicas(scene, grid, cell_owner, config.replicated() ? &replicas : nullptr,
-                                     config.node_count(), &config.memory_layout, use.data()) != RT_OK)
-        throw UserError("cannot compute the data memory per node (out of memory or an inconsistent cell table)");
+    rt_status st = rt_memory_per_owner_replicas(scene, grid, cell_owner, config.replicated() ? &replicas : nullptr,
+                                                config.node_count(), &config.memory_layout, use.data());
+    if (st == RT_ERR_NOMEM) throw UserError("out of memory while computing the data memory per node");
+    if (st != RT_OK) throw UserError("cannot compute the data memory per node (an inconsistent cell table)");
     MemoryReport m;
     for (const auto &u : use) m.max_per_ip_bytes = std::max(m.max_per_ip_bytes, rt_memory_total(&u));
     m.total_bytes = m.max_per_ip_bytes * static_cast<uint64_t>(config.processor_count());
