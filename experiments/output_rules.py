@@ -29,13 +29,15 @@ is an OSError naming the file: `PATH: cannot write: REASON`.
 """
 import contextlib
 import os
+import signal
 import stat
 import sys
 import tempfile
 
 from command_words import (ANIMATION_OPTIONS, NO_RUN_OPTIONS, OUTPUT_OPTIONS, list_values,  # noqa: F401
-                           nonempty, output_options, output_values, refuse_empty_values, unusable_option)
-from stop_signals import exit_on_signals  # noqa: F401  (the tools take it from here, with the rest)
+                           nonempty, output_options, output_values, refuse_empty_values, refuse_repeated_options,
+                           unusable_option)
+from stop_signals import STOP_SIGNALS, exit_on_signals  # noqa: F401  (the tools take it from here, with the rest)
 
 
 class OutputError(ValueError):
@@ -124,11 +126,30 @@ def _new_file_mode():
     return 0o666 & ~mask
 
 
-def _temporary(real):
-    """A new empty temporary beside REAL, its name cut to fit the 255-byte name limit."""
+@contextlib.contextmanager
+def _signals_held():
+    """The stopping signals held back for the block: a signal that comes while a temporary is
+    being made is handled when the block ends, once the caller knows the temporary's name and
+    can remove it, instead of between its making and the caller's `try`."""
+    held = {getattr(signal, name) for name in STOP_SIGNALS}
+    old = signal.pthread_sigmask(signal.SIG_BLOCK, held)
+    try:
+        yield
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, old)
+
+
+def _temporary(real, suffix=""):
+    """A new empty temporary beside REAL, its name cut to fit the 255-byte name limit. Call it
+    with the signals held (_signals_held) and keep its name where the clean-up sees it."""
     folder, base = os.path.split(real)
-    fd, tmp = tempfile.mkstemp(dir=folder, prefix="." + base[:240] + ".")
-    os.fchmod(fd, _new_file_mode())
+    fd, tmp = tempfile.mkstemp(dir=folder, prefix="." + base[:240 - len(suffix)] + ".", suffix=suffix)
+    try:
+        os.fchmod(fd, _new_file_mode())
+    except OSError:
+        os.close(fd)
+        os.unlink(tmp)
+        raise
     return fd, tmp
 
 
@@ -185,19 +206,22 @@ def atomic(path, option="output", mode="w", newline=None):
     """Opens a temporary for PATH (text, or binary with mode "wb"); renames it onto PATH (the file
     a link names) when the block ends, removes it when the block raises."""
     real = target(option, path)
+    tmp = None
     try:
-        fd, tmp = _temporary(real)
-    except OSError as e:
-        raise _cannot_write(path, e) from None
-    try:
+        with _signals_held():
+            try:
+                fd, tmp = _temporary(real)
+            except OSError as e:
+                raise _cannot_write(path, e) from None
         with os.fdopen(fd, mode, newline=newline) as f:
             named = _Named(f, path)
             yield named
             named.flush()
         _replace(tmp, real, path)
     except BaseException:
-        with contextlib.suppress(OSError):
-            os.unlink(tmp)
+        if tmp is not None:
+            with contextlib.suppress(OSError):
+                os.unlink(tmp)
         raise
 
 
@@ -207,22 +231,23 @@ def staged(path, option="output"):
     renamed onto PATH when the block ends, removed when the block raises. The temporary ends in
     PATH's extension, for programs that choose a format by it."""
     real = target(option, path)
-    folder, base = os.path.split(real)
-    ext = os.path.splitext(base)[1][:16]
+    ext = os.path.splitext(os.path.basename(real))[1][:16]
+    tmp = None
     try:
-        fd, tmp = tempfile.mkstemp(dir=folder, prefix="." + base[:220] + ".", suffix=ext)
-        os.fchmod(fd, _new_file_mode())
-        os.close(fd)
-    except OSError as e:
-        raise _cannot_write(path, e) from None
-    try:
+        with _signals_held():
+            try:
+                fd, tmp = _temporary(real, ext)
+                os.close(fd)
+            except OSError as e:
+                raise _cannot_write(path, e) from None
         yield tmp
         if os.path.getsize(tmp) == 0:
             raise WriteError("%s: cannot write: the program wrote nothing" % path)
         _replace(tmp, real, path)
     except BaseException:
-        with contextlib.suppress(OSError):
-            os.unlink(tmp)
+        if tmp is not None:
+            with contextlib.suppress(OSError):
+                os.unlink(tmp)
         raise
 
 

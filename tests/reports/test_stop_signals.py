@@ -68,6 +68,31 @@ plots.gnuplot_kind("x.gp", "k", "d.dat", os.path.join(sys.argv[2], "p.png"), "t"
 """ % EXP
 
 
+# A signal landing the moment the temporary is made, before atomic() or staged() has its name:
+# tempfile.mkstemp sends it on its way out.
+IN_MAKING = """import os, signal, sys, tempfile
+sys.path.insert(0, %r)
+import output_files as of
+of.exit_on_signals("tool")
+make = tempfile.mkstemp
+
+
+def landing(*args, **kwargs):
+    made = make(*args, **kwargs)
+    os.kill(os.getpid(), signal.SIGTERM)
+    return made
+
+
+tempfile.mkstemp = landing
+if sys.argv[1] == "atomic":
+    with of.atomic(sys.argv[2]) as f:
+        f.write("never")
+else:
+    with of.staged(sys.argv[2]) as tmp:
+        open(tmp, "w").write("never")
+""" % EXP
+
+
 def alive(pid):
     try:
         os.kill(pid, 0)
@@ -96,6 +121,14 @@ class StopSignals(unittest.TestCase):
             self.assertEqual(done.returncode, 128 + getattr(signal, name), name)
             self.assertEqual(done.stderr, "tool: stopped by %s\n" % name)
             self.assertEqual(os.listdir(self.dir), [], name)
+
+    def test_a_signal_as_the_temporary_is_made_leaves_no_temporary(self):
+        for how in ("atomic", "staged"):
+            done = subprocess.run([sys.executable, "-c", IN_MAKING, how, os.path.join(self.dir, "a.csv")],
+                                  stderr=subprocess.PIPE, text=True)
+            self.assertEqual(done.returncode, 128 + signal.SIGTERM, how + ": " + done.stderr)
+            self.assertEqual(done.stderr, "tool: stopped by SIGTERM\n", how)
+            self.assertEqual(os.listdir(self.dir), [], how)
 
     def test_a_second_signal_is_ignored_while_the_first_cleans_up(self):
         done = self.run_program("SIGUSR1", "twice")
