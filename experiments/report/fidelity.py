@@ -2,10 +2,10 @@
 commands study.sh calls between its stages (the candidate lists, each stage's choice, the T(1)
 identity's check, the fitted machine's files) and the claims' roles and three counts. The scores
 are fidelity_score's, the stages' tables fidelity_stages', the page fidelity_page's."""
-import math
 import os
 import sys
 
+import decimal_number
 from output_files import atomic
 
 from . import fidelity_score as fs
@@ -147,13 +147,10 @@ def timing_cmd(args):
             print("fidelity timing: %s: the hand-over is one of %s" % (word, ", ".join(map(str, fs.HANDOVER_KEYS))),
                   file=sys.stderr)
             return 2
-        try:
-            number = float(value)
-        except ValueError:
-            number = math.nan
-        if not (math.isfinite(number) and number >= 0) or value != value.strip():
-            print("fidelity timing: %s: not a time in microseconds (a finite number, 0 or more)" % word,
-                  file=sys.stderr)
+        why = decimal_number.fault(value)
+        if why or value.startswith("-"):
+            print("fidelity timing: %s: not a time in microseconds (a decimal number, 0 or more)%s" % (
+                word, ": '%s' %s" % (value, why) if why else ""), file=sys.stderr)
             return 2
         values[key] = value
     if "handover" in values:

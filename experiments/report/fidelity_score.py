@@ -1,6 +1,8 @@
 """The score of the fidelity study, round two (docs/fidelity-protocol.md section 4): each fit
 target's band and point value, a candidate's excesses, the sorted-excess score and its tie
 rules, the hand-over costs a per-step packet cost leaves allowed, and the T(1) identity."""
+import decimal_number
+
 from . import paper
 
 # The F0 window: claim 12's 80 % at 1024 processors over claim 9's times, taken as exact.
@@ -88,9 +90,9 @@ def allowed_handovers(cell_step):
     """The hand-over costs (us) allowed beside a per-step cost: none {0, 580, 2180}, analysis
     {0, 1600}, creation {0, 580}, both {0}."""
     try:
-        c = int(cell_step)
-    except ValueError:  # 1e999, 1.5, x: no cost of the study
-        c = None
+        c = cell_step if isinstance(cell_step, int) else decimal_number.whole(cell_step)
+    except ValueError as e:  # 0580, 1e999, 1.5, x: no cost of the study
+        raise ValueError("cell_step_packet %s: one of %s" % (e, CELL_STEP_COSTS)) from None
     if c not in CELL_STEP_COSTS:
         raise ValueError("cell_step_packet %r is not one of %s" % (cell_step, CELL_STEP_COSTS))
     return {0: (0, 580, 2180), 580: (0, 1600), 1600: (0, 580), 2180: (0,)}[c]

@@ -1,6 +1,7 @@
 """The fidelity study's small commands refuse what they cannot use, with one message: `report
 fidelity allowed` a per-step cost that is no whole number, `report fidelity timing` a value that
-is not a finite time of 0 or more (or a word without '=', a hand-over the study does not know),
+is not a finite time of 0 or more in the strict decimal syntax of every torusrt format (`010` and
+`0x10` refused, as on the command line) (or a word without '=', a hand-over the study does not know),
 exit 2 and nothing on standard output; `report fidelity identity` a folder without identity runs
 (missing, or empty), exit 1."""
 import os
@@ -20,13 +21,20 @@ def fidelity(*args):
 
 class FidelityCommands(unittest.TestCase):
     def test_allowed_names_a_cost_that_is_no_whole_number(self):
-        done = fidelity("allowed", "1e999")
-        self.assertEqual(done.returncode, 1)
-        self.assertIn("cell_step_packet '1e999' is not one of (0, 580, 1600, 2180)", done.stderr)
-        self.assertNotIn("invalid literal", done.stderr)
+        for text, why in (("1e999", "is too large"), ("0580", "has a leading zero"), ("580.0", "is not a whole number"),
+                          ("7", "is not one of")):
+            with self.subTest(text=text):
+                done = fidelity("allowed", text)
+                self.assertEqual((done.returncode, done.stdout), (1, ""), done.stderr)
+                self.assertIn("cell_step_packet '%s' %s" % (text, why), done.stderr)
+                self.assertIn("(0, 580, 1600, 2180)", done.stderr)
+                self.assertNotIn("invalid literal", done.stderr)
+        done = fidelity("allowed", "580")
+        self.assertEqual((done.returncode, done.stdout), (0, "0 1600\n"), done.stderr)
 
     def test_timing_refuses_a_value_that_is_not_a_time(self):
-        for word in ("link=x", "link=1e999", "link=-1", "link=nan", "link", "handover=7"):
+        for word in ("link=x", "link=1e999", "link=-1", "link=nan", "link", "handover=7", "link=010", "link=0x10",
+                     "link=1_000", "link= 5"):
             with self.subTest(word=word):
                 done = fidelity("timing", word)
                 self.assertEqual((done.returncode, done.stdout), (2, ""), done.stderr)
