@@ -97,6 +97,28 @@ def refuse_empty_values(parser):
             action.type = _nonempty_then(action.type)
 
 
+def refuse_repeated_options(parser):
+    """Gives every option of PARSER (and of its subcommands) that stores one value a check that
+    it is given once: `--out a --out b` is refused (exit 2, the option named), as the executables
+    refuse it (`--output: given 2 times; give it once`), instead of the last one winning."""
+    import argparse
+
+    class StoreOnce(argparse._StoreAction):
+        def __call__(self, parser, namespace, values, option_string=None):
+            given = namespace.__dict__.setdefault("_given_options", set())
+            if self.dest in given:
+                raise argparse.ArgumentError(self, "given 2 times; give it once")
+            given.add(self.dest)
+            super().__call__(parser, namespace, values, option_string)
+
+    for action in parser._actions:
+        if isinstance(action, argparse._SubParsersAction):
+            for sub in set(action.choices.values()):
+                refuse_repeated_options(sub)
+        elif type(action) is argparse._StoreAction and action.option_strings:
+            action.__class__ = StoreOnce
+
+
 def _nonempty_then(convert):
     """An argparse type: nonempty(), then CONVERT; named as CONVERT for argparse's messages."""
     def check(text):

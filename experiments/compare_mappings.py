@@ -31,8 +31,8 @@ import sys
 import tempfile
 
 from output_files import (ANIMATION_OPTIONS, NO_RUN_OPTIONS, OutputError, OutputSet, finish_stdout, list_values,
-                          named_files, named_stdout, nonempty, os_message, output_options, shown, staged,
-                          unusable_option, write_text)
+                          named_files, named_stdout, nonempty, os_message, output_options, refuse_repeated_options,
+                          shown, staged, unusable_option, write_text)
 from stop_signals import run_child
 from stream_checks import check_streams
 
@@ -104,6 +104,7 @@ def main():
     parser.add_argument("--out", default="compare-mappings.png", type=nonempty)
     parser.add_argument("--build", default=os.environ.get("TORUSRT_BUILD") or os.path.join(HERE, "..", "build"),
                         type=nonempty)
+    refuse_repeated_options(parser)
     argv = sys.argv[1:]
     options = argv[argv.index("--") + 1:] if "--" in argv else []
     args = parser.parse_args(argv[:argv.index("--")] if "--" in argv else argv)

@@ -49,10 +49,21 @@ set_build() {
 }
 
 # need_value OPTION ARGS...: ends the command (exit 2) naming OPTION when ARGS (the words after
-# it) are none or start with an empty word: an empty value is never taken as the default.
+# it) are none or start with an empty word: an empty value is never taken as the default; or when
+# OPTION was given before (given_once).
 need_value() {
     [ $# -ge 2 ] || die "$1 needs a value"
     [ -n "$2" ] || die "$1: an empty value"
+    given_once "$1"
+}
+
+# given_once OPTION: ends the command (exit 2) when OPTION (or OPTION=VALUE) came before on the
+# command line, as the executables do: the last one does not silently win.
+declare -A GIVEN_OPTIONS=()
+given_once() {
+    local name=${1%%=*}
+    [ -z "${GIVEN_OPTIONS[$name]:-}" ] || die "$name: given 2 times; give it once"
+    GIVEN_OPTIONS[$name]=1
 }
 
 # abspath PATH: absolute form of a path whose parent exists (the path itself need not).
@@ -159,6 +170,7 @@ backend_option() {
     case $1 in
         --backend|--slurm-args|--per-task|-j) need_value "$@" ;;
         --backend=|--slurm-args=|--per-task=) die "${1%=}: an empty value" ;;
+        --backend=*|--slurm-args=*|--per-task=*) given_once "$1" ;;
     esac
     SHIFT=2
     case $1 in

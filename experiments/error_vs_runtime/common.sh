@@ -40,10 +40,14 @@ fastest() { printf '%s\n' "$@" | sort -g | head -n 1; }
 # The helpers below serve the sweep scripts (quantum.sh, pruning.sh).
 
 # need_value OPTION ARGS...: dies (exit 2) naming OPTION when ARGS (the words after it) are none
-# or start with an empty word: an empty value is never taken as the default.
+# or start with an empty word: an empty value is never taken as the default; or when OPTION was
+# given before: the last one does not silently win.
+declare -A GIVEN_OPTIONS=()
 need_value() {
   [ $# -ge 2 ] || die "$1 needs a value"
   [ -n "$2" ] || die "$1: an empty value"
+  [ -z "${GIVEN_OPTIONS[$1]:-}" ] || die "$1: given 2 times; give it once"
+  GIVEN_OPTIONS[$1]=1
 }
 
 # study_option ARGS...: the option at ARGS that every sweep takes (--build, --out, --scenes, --ips,

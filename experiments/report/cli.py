@@ -7,7 +7,8 @@ import sys
 
 from memory_exit import leave_if_out_of_memory
 from output_files import (OutputError, OutputSet, exit_on_signals, finish_stdout, list_values,
-                          named_stdout, nonempty, os_message, out_folder, read_text, refuse_empty_values, shown)
+                          named_stdout, nonempty, os_message, out_folder, read_text, refuse_empty_values,
+                          refuse_repeated_options, shown)
 from stop_signals import run_child
 from stream_checks import check_streams
 
@@ -231,6 +232,7 @@ def main(argv):
     from . import fidelity
     fidelity.add_commands(sub)
     refuse_empty_values(parser)  # '' is never "the default": --doc '' would rewrite docs/
+    refuse_repeated_options(parser)
     args = parser.parse_args(argv)
     prog = "sweep" if args.command.startswith("sweep-") else "experiments/report"  # the command the user ran
     exit_on_signals(prog)

@@ -3,7 +3,8 @@
 # every option or argument of `experiments/report` (each subcommand) and of the study scripts
 # that takes a value refuses '' (exit 2, the option named) before anything is written, so that
 # `--doc ''` cannot rewrite docs/*.md or docs/img/ of the source tree; an option missing its
-# value is refused the same way (no "unbound variable"); and a study's --build folder without
+# value is refused the same way (no "unbound variable"), and so is an option given twice (the
+# executables' `given 2 times; give it once`); and a study's --build folder without
 # the executables is refused before any point runs. The tools run from a copy of experiments/ in
 # a scratch tree, so that a tool that took '' as its default writes into that copy's docs/, not
 # into the source tree.
@@ -81,6 +82,21 @@ for study in animation calibration mapping motion scaling; do
 done
 refused "scaling --backend ''" "--backend: an empty value" bash "$EXP/scaling/study.sh" "${nb[@]}" --backend ''
 refused "mapping --per-task=" "--per-task: an empty value" bash "$EXP/mapping/study.sh" "${nb[@]}" --per-task=
+
+# ---- an option given twice: refused, as the executables refuse it (the last does not win) -----
+refused "report sweep-collect --out twice" "--out: given 2 times; give it once" "${report[@]}" sweep-collect \
+    --out res --out res2 --y image_time_s
+refused "report error-vs-runtime --doc twice" "--doc: given 2 times; give it once" "${report[@]}" error-vs-runtime \
+    --doc d.md --doc e.md --img-dir img
+refused "compare-mappings --out twice" "--out: given 2 times; give it once" python3 "$EXP/compare-mappings" \
+    "$tree/scenes/paper-image1.nff" --out a.png --out b.png
+refused "sweep.sh --results twice" "--results: given 2 times; give it once" bash "$EXP/sweep.sh" "${nb[@]}" --quick \
+    --results r1 --results r2
+refused "sweep.sh --backend and --backend=" "--backend: given 2 times; give it once" bash "$EXP/sweep.sh" "${nb[@]}" \
+    --quick --backend local --backend=local
+refused "quantum.sh --quanta twice" "--quanta: given 2 times; give it once" bash "$EXP/error_vs_runtime/quantum.sh" \
+    "${nb[@]}" --quanta 1 --quanta 2
+refused "scaling --build twice" "--build: given 2 times; give it once" bash "$EXP/scaling/study.sh" "${nb[@]}" "${nb[@]}"
 
 # ---- a --build folder without the executables: refused before any point runs ----------------
 refused "buffers --build (no executables)" "has no torusrt-sim" bash "$EXP/buffers/study.sh" --quick \
