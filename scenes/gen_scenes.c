@@ -523,6 +523,11 @@ int main(int argc, char **argv)
             fprintf(stderr, "torusrt-genscenes: unknown scene '%s' (see --list)\n", shown(argv[a]));
             return 2;
         }
+        for (int b = 2; b < a; ++b) /* one file written twice would be counted as two scenes */
+            if (strcmp(argv[b], argv[a]) == 0) {
+                fprintf(stderr, "torusrt-genscenes: scene '%s' named twice; name it once\n", shown(argv[a]));
+                return 2;
+            }
     }
     int failed = 0, written = 0;
     if (argc == 2) {

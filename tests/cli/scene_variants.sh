@@ -105,6 +105,14 @@ for name in "" "a/b" $'ev2\nl 0 0 0\n#' "-x" ".hidden"; do
     check "NAME '$name': names NAME" grep -q "NAME" "$TMP/name.err"
     check "NAME '$name': nothing written" test -z "$(ls -A "$out/n")"
 done
+# A scene named twice in the plain form: refused before anything is written (it would be written
+# twice and counted as two scenes).
+rm -rf "$out/n" && mkdir "$out/n"
+"$gen" "$out/n" paper-image1 paper-image2 paper-image1 >/dev/null 2>"$TMP/twice.err"
+rc=$?
+check "a scene named twice: exit 2 (got $rc)" test "$rc" = 2
+check "a scene named twice: says so" grep -q "scene 'paper-image1' named twice" "$TMP/twice.err"
+check "a scene named twice: nothing written" test -z "$(ls -A "$out/n")"
 # A control byte in NAME is shown escaped: the message stays one line.
 "$gen" --variant paper-image1 scale=1 "$out/n" $'ev2\nl' >/dev/null 2>"$TMP/name.err"
 check "NAME with a newline: shown as \\x0a" grep -qF "'ev2\x0al'" "$TMP/name.err"
