@@ -6,6 +6,7 @@ import os
 import stat
 
 from output_files import _identity, named_files, shown
+from output_rules import _through_stream
 
 
 def inside(path, folder):
@@ -63,6 +64,28 @@ def _own_place(path, results, is_page):
     return real == os.path.join(top, "img")
 
 
+def _kind_of_place(option, path, is_folder):
+    """Why PATH cannot be the results folder or plots' folder (IS_FOLDER) or a page, whatever its
+    place, or None: a control character in its name (the point lists hold one point a line), a
+    name through /proc or /dev/fd (a stream, which a rename would replace), or an existing file
+    of the other kind (a folder for a page; a file for a folder). The writes would refuse these
+    too, but only after the runs."""
+    what = "%s '%s'" % (option, shown(path))
+    if any(ord(c) < 0x20 or ord(c) == 0x7f for c in path):
+        return "%s: a control character in the name (a newline would split the point lists' lines)" % what
+    if _through_stream(path):
+        return "%s: is a stream or a file another process holds open (through /proc or /dev/fd)" % what
+    try:
+        st = os.stat(path)
+    except OSError:
+        return None
+    if is_folder and not stat.S_ISDIR(st.st_mode):
+        return "%s: is a file, not a folder" % what
+    if not is_folder and not stat.S_ISREG(st.st_mode):
+        return "%s: is a %s, not a regular file" % (what, "folder" if stat.S_ISDIR(st.st_mode) else "special file")
+    return None
+
+
 def _page_place(option, path, kept, images, inputs):
     """Why the page (or, with INPUTS None, the plots' folder) PATH may not be written, or None:
     inside a folder of KEPT ((what, folder, is-the-results-folder): the tree's and the results
@@ -113,6 +136,14 @@ def check_places(prog, repo, argv):
     pages, images = given["--page"], given["--images"]
     results = given["--results"][-1] if given["--results"] else None
     kept = [(None, os.path.join(repo, name), False) for name in ("scenes", "machines", "timing", "experiments")]
+    reason = None
+    for option, path, is_folder in ([(o, p, True) for o, p in given["--results"] + images]
+                                    + [(o, p, False) for o, p in pages]):
+        reason = reason or _kind_of_place(option, path, is_folder)
+    if reason is not None:
+        import sys
+        print("%s: %s" % (prog, reason), file=sys.stderr)
+        return 2
     reason = _results_place(results[0], results[1], repo) if results else None
     advice = "give a results folder of your own"
     if reason is None:

@@ -56,6 +56,7 @@ while [ $# -gt 0 ]; do
   esac
 done
 case $ONLY in ""|quantum|pruning|report) ;; *) die "--only: quantum, pruning or report" ;; esac
+[ "$ONLY" = report ] || set_build "$BUILD" torusrt-render  # before any point runs
 export TORUSRT_BUILD=$BUILD
 
 qargs=() pargs=() SCENES="paper-image1 paper-image2" IPS="4x2x2 4x4x4"

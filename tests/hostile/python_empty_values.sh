@@ -104,4 +104,6 @@ refused "buffers --build (no executables)" "has no torusrt-sim" bash "$EXP/buffe
 check "buffers --build (no executables): no results folder" [ ! -e bq ]
 refused "scaling --build (no executables)" "has no torusrt-sim" bash "$EXP/scaling/study.sh" --build \
     "$TMP/work/empty"
+refused "error study --build (no executables)" "has no torusrt-sim" bash "$EXP/error_vs_runtime/study.sh" --quick \
+    --build "$TMP/work/empty"
 finish

@@ -4,7 +4,9 @@
 # - `sweep.sh --doc` and `error_vs_runtime/study.sh --doc / --img-dir` naming a scene, a machine
 #   file, experiments/lib.sh, a file of the results folder, a hard link to a scene, or a file
 #   the command line names (an sshlogin file, TORUSRT_SCENE_IMAGE1): exit 2 naming the option,
-#   the file unchanged, no img/ folder and no results folder made;
+#   the file unchanged, no img/ folder and no results folder made; and places of the wrong kind
+#   (an --img-dir or --results that is a file, a --doc that is a folder or /dev/stdout, a
+#   --results with a newline) refused before any point runs;
 # - `--results scenes` (buffers, sweep.sh, fidelity) and `--results docs/x`: exit 2, nothing
 #   made there; a relative --results works in the buffer study (its done files are absolute);
 # - `error_vs_runtime/study.sh --quick --results DIR` writes its page and plots into DIR, never
@@ -85,6 +87,18 @@ refused "error study --img-dir scenes/" "" "--img-dir '.*scenes': is inside the 
 refused "error study --doc in its --img-dir" "" "--doc '.*eimg/error-quantum.png': is inside the --img-dir folder" \
     "${evr[@]}" --doc "$TMP/eimg/error-quantum.png" --img-dir "$TMP/eimg"
 check "error study: no results folder made by a refused run" [ ! -e "$TMP/ed" ]
+# a place of the wrong kind: refused before any point runs (the fake build would fail them all)
+echo "a file" >afile && mkdir -p "$TMP/eimg2"
+refused "error study --img-dir a file" afile "--img-dir 'afile': is a file, not a folder" \
+    "${evr[@]}" --doc "$TMP/e.md" --img-dir afile
+refused "error study --doc a folder" "" "--doc '.*eimg2': is a folder, not a regular file" \
+    "${evr[@]}" --doc "$TMP/eimg2" --img-dir "$TMP/eimg"
+refused "error study --doc /dev/stdout" "" "--doc '/dev/stdout': is a stream" \
+    "${evr[@]}" --doc /dev/stdout --img-dir "$TMP/eimg"
+refused "error study --results with a newline" "" "--results '.*\\x0ab': a control character in the name" \
+    "${evr[@]}" --results "$TMP/a"$'\n'"b"
+check "error study --results with a newline: not made" [ ! -e "$TMP/a"$'\n'"b" ]
+refused "sweep --results a file" afile "--results 'afile': is a file, not a folder" "${sweep[@]}" --results afile
 
 # ---- results folders -----------------------------------------------------------------------
 cd "$T" || exit 1
