@@ -146,7 +146,11 @@ def machine(args):
     from . import machine_file as mf
     text = read_text(args.report, "report")  # a device or a FIFO refused before reading, naming it
     try:
-        report = json.loads(text)
+        try:
+            report = json.loads(text)
+        except json.JSONDecodeError as e:  # a machine file or another text given as the report
+            raise ValueError("line %d column %d: not a JSON run report (torusrt-sim --stats writes one): %s"
+                             % (e.lineno, e.colno, e.msg)) from None
         if not isinstance(report, dict):
             raise ValueError("not a JSON report (a %s, not an object)" % type(report).__name__)
         pairs = mf.from_report(report)

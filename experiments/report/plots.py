@@ -15,6 +15,12 @@ def write_dat(path, rows):
     write_text(path, "".join(" ".join(str(v) for v in row) + "\n" for row in rows))
 
 
+def has_rows(path):
+    """Whether the gnuplot data file PATH holds a row."""
+    with open(path) as f:
+        return any(line.strip() and not line.startswith("#") for line in f)
+
+
 def series(table, columns, **match):
     """The named columns of the ok rows matching, as text."""
     return [[row[c] for c in columns] for row in table.where(**match)]
@@ -24,8 +30,8 @@ def gnuplot_kind(gp, kind, data, png, title, ncol=0):
     """Runs the study script GP for one plot KIND of the data file DATA into PNG; returns the
     PNG's file name (the studies' pages link it beside themselves)."""
     with staged(png) as tmp:
-        run_child(["gnuplot", "-e", f"kind='{kind}'; data='{data}'; out='{tmp}'; ttl='{title}'; ncol={ncol}", gp],
-                  check=True)
+        drawn(os.path.basename(gp), png, ["gnuplot", "-e",
+                                          f"kind='{kind}'; data='{data}'; out='{tmp}'; ttl='{title}'; ncol={ncol}", gp])
     return os.path.basename(png)
 
 
@@ -34,14 +40,23 @@ def gnuplot(script, variables):
     `out` and `out_*` name are written through temporaries beside them (output_files)."""
     with contextlib.ExitStack() as stack:
         run_gnuplot(script, {k: stack.enter_context(staged(v)) if k == "out" or k.startswith("out_") else v
-                             for k, v in variables.items()})
+                             for k, v in variables.items()}, variables.get("out", ""))
 
 
-def run_gnuplot(script, variables):
+def run_gnuplot(script, variables, png=""):
     assigns = ["plotdir='%s'" % PLOT_DIR]
     for name, value in variables.items():
         assigns.append("%s=%s" % (name, value if isinstance(value, (int, float)) else "'%s'" % value))
-    run_child(["gnuplot", "-e", "; ".join(assigns), os.path.join(PLOT_DIR, script)], check=True)
+    drawn(script, png or variables.get("out", ""), ["gnuplot", "-e", "; ".join(assigns), os.path.join(PLOT_DIR, script)])
+
+
+def drawn(script, png, command):
+    """Runs gnuplot's COMMAND; a failure is a one-line error naming the script and the picture
+    (gnuplot's own message, above it on standard error, says why), not the command line."""
+    done = run_child(command)
+    if done.returncode != 0:
+        raise ValueError("plots: gnuplot could not draw %s with %s (exit %d; its message is above)"
+                         % (os.path.basename(png) or "the picture", script, done.returncode))
 
 
 def flat_data(all_r, dat):
@@ -122,6 +137,11 @@ def reproduction(res):
               "lb_main": r.facts.lb_map, "lb_other": all_r[1].facts.lb_map if len(all_r) > 1 else r.facts.lb_map}
     flat = dict(common, maps=" ".join(flat_data(all_r, dat)),
                 xmax=1.3 * max((int(row["n"]) for row in r.f56.rows), default=1))
+    if not any(has_rows(os.path.join(dat, name)) for name in os.listdir(dat) if "paper" not in name):
+        for f in (5, 6, 7, 8):  # no old plot stays beside the results it does not show
+            with contextlib.suppress(FileNotFoundError):
+                os.remove(os.path.join(out, "fig%d.png" % f))
+        raise ValueError("plots: no point in %s gave a result (see the failed points): no plots drawn" % res)
     titles = {
         "fig5": {}, "fig6": {"paper_floor": "paper: > %.0f %% for n <= %d (load-balancing)" % (
             100 * paper.EFFICIENCY_FLOOR, paper.EFFICIENCY_FLOOR_MAX_N)},

@@ -1,6 +1,8 @@
 """The machine file of a report (experiments/report machine): written, read back and compared."""
 import os
+import subprocess
 import sys
+import tempfile
 import unittest
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -121,6 +123,22 @@ class MachineFile(unittest.TestCase):
                 f.write("#!/bin/sh\necho no >&2; exit 2\n")
             with self.assertRaisesRegex(ValueError, "--dump-config: exit 2: no"):
                 mf.option_tables(sim)
+
+
+class MachineCommand(unittest.TestCase):
+    def test_a_report_that_is_not_json_is_named_with_line_and_column(self):
+        report = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))),
+                              "experiments", "report")
+        with tempfile.TemporaryDirectory() as d:
+            toml = os.path.join(d, "m.toml")
+            with open(toml, "w") as f:
+                f.write('ips = "4x2x2"\n')
+            done = subprocess.run([sys.executable, report, "machine", toml], stdin=subprocess.DEVNULL,
+                                  stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        self.assertEqual((done.returncode, done.stdout), (1, ""), done.stderr)
+        self.assertIn("%s: line 1 column 1: not a JSON run report (torusrt-sim --stats writes one)" % toml,
+                      done.stderr)
+        self.assertNotIn("Traceback", done.stderr)
 
 
 if __name__ == "__main__":
