@@ -19,7 +19,8 @@
 # medians, and the median of the ratios within each round.
 # BENCH_BASE=DIR compares two builds in one sitting: every run of a row is made by DIR's torusrt-sim
 # and then by BUILD_DIR's, so a slow spell of the machine falls on both alike; the table is
-# BUILD_DIR's, and a last block gives DIR's medians and each row's change at the median.
+# BUILD_DIR's, and a last block gives DIR's medians, each row's change at the median and the
+# median of the run-by-run changes (each build run against the base run just before it).
 # Usage: bash bench/sim.sh [BUILD_DIR]   (BENCH_BIG=0 skips the 1024x1024 run)
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -100,7 +101,11 @@ if [ -n "$base" ]; then
     read -r size cells ips <<<"${configs[$i]}"
     bm=$(med "${base_walls[i]}")
     m=$(med "${walls[i]}")
-    printf '%-10s %5s %8s  base %9.3f  build %9.3f  change %+6.1f %%\n' "$size" "$cells" "$ips" "$bm" "$m" \
-      "$(jq -n "($m / $bm - 1) * 100")"
+    # Each run of the build against the base's run just before it: the pair meets one spell of
+    # the machine, so the median of the pairs' changes drifts less than the change at the medians.
+    pairs=$(paste -d' ' <(tr ' ' '\n' <<<"${base_walls[i]}" | sed '/^$/d') <(tr ' ' '\n' <<<"${walls[i]}" | sed '/^$/d') |
+      while read -r b w; do jq -n "($w / $b - 1) * 100"; done | tr '\n' ' ')
+    printf '%-10s %5s %8s  base %9.3f  build %9.3f  change %+6.1f %%  paired %+6.1f %%\n' "$size" "$cells" "$ips" \
+      "$bm" "$m" "$(jq -n "($m / $bm - 1) * 100")" "$(med "$pairs")"
   done
 fi
