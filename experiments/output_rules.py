@@ -297,6 +297,7 @@ class OutputSet:
     def __init__(self):
         self.inputs = []   # (option, path)
         self.outputs = []  # (option, path, the file it writes)
+        self.folders = []  # (option, folder whose files the command writes as it likes)
 
     def add_input(self, option, path):
         if path:
@@ -308,8 +309,20 @@ class OutputSet:
         self.outputs.append((option, path, real))
         return real
 
+    def add_folder(self, option, folder):
+        """A folder whose files the command writes under names it chooses (plot data): no input
+        may lie in it."""
+        self.folders.append((option, folder))
+
     def check(self):
-        """OutputError when an output is one of the inputs or the file of another output."""
+        """OutputError when an output is one of the inputs or the file of another output, or an
+        input lies in a folder the command writes."""
+        for option, folder in self.folders:
+            top = os.path.realpath(folder) + os.sep
+            for what, path in self.inputs:
+                if _identity(path) is not None and os.path.realpath(path).startswith(top):
+                    raise OutputError("%s: its folder %s, which the command writes, holds the %s file %s, an input"
+                                      % (option, shown(folder), what, shown(path)))
         inputs = {}
         for option, path in self.inputs:
             key = _identity(path)
@@ -403,12 +416,20 @@ def finish_stdout():
 def machine_file_inputs(path):
     """(key, path) of every value of the machine file PATH (torusrt-sim --config) that names an
     existing regular file (timing, map-file, ...), a relative one taken from the machine file's
-    folder as torusrt-sim takes it. A file that cannot be read gives none (torusrt-sim names it)."""
+    folder as torusrt-sim takes it. A file this reader cannot read as TOML gives every quoted
+    string in it that names a file: a reader that parses less than torusrt-sim must not hide an
+    input from the checks (torusrt-sim names the file's own errors)."""
+    import re
     from report.machine_file import read_machine_file
     try:
-        values = read_machine_file(read_text(path, "--config"), path)
+        text = read_text(path, "--config")
     except (OSError, ValueError):
         return []
+    try:
+        values = read_machine_file(text, path)
+    except ValueError:
+        values = {"value %d" % i: v for i, v in enumerate(
+            v for q in re.findall(r'"((?:[^"\\\n]|\\.)*)"|\'([^\'\n]*)\'', text) for v in q if v)}
     folder = os.path.dirname(os.path.abspath(path))
     found = []
     for key, value in values.items():

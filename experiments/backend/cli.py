@@ -106,6 +106,7 @@ def run(args):
         for p in phase:
             points.identify(p, cache, made)
     points.check_results_are_not_inputs(phases, args.lists)
+    points.check_own_files_are_not_inputs(phases, state, args.runs)
     for number, phase in enumerate(phases, 1):
         pending = []
         for p in phase:

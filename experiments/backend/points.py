@@ -122,8 +122,8 @@ def _inputs(point, words, cwd, made):
         if not word or "\0" in word:
             continue
         path = os.path.normpath(os.path.join(cwd, word))
-        if path == point.done or path.startswith(own + "."):
-            continue
+        if path == point.done or (path.startswith(own + ".") and path != point.record()):
+            continue  # its own outputs; its identity record is the backend's, checked as an input
         if path in made or (not path.startswith(TOOLS + os.sep) and os.path.isfile(path)):
             found.add(path)
     return found
@@ -178,6 +178,48 @@ def changed(point):
             return "%s %s since it was made" % (path, "changed" if path in now and path in then else
                                                  "is new" if path in now else "is no longer named")
     return None
+
+
+def check_own_files_are_not_inputs(phases, state, runs=None):
+    """ValueError naming the list line when a point reads a file the backend itself writes: a
+    point's identity record (DONE.id) or log, the state folder's phase lists, joblogs, failed.tsv,
+    `submitted`, a file of its logs/ or slurm/ folder, or the --runs file."""
+    every = [p for phase in phases for p in phase]
+    own = {}
+    for p in every:
+        own[p.record()] = "the identity record of the point of %s" % p.source
+        own[p.log] = "the log of the point of %s" % p.source
+    for number in range(1, len(phases) + 1):
+        own[os.path.join(state, "phase%d.todo" % number)] = "the backend's command list of phase %d" % number
+        own[os.path.join(state, "joblog.phase%d" % number)] = "the backend's joblog of phase %d" % number
+    for name in ("failed.tsv", "submitted"):
+        own[os.path.join(state, name)] = "the backend's %s" % name
+    if runs:
+        own[os.path.abspath(runs)] = "the --runs file"
+    by_file = {}
+    for path, what in own.items():
+        try:
+            st = os.stat(path)
+            by_file[(st.st_dev, st.st_ino)] = what
+        except OSError:
+            pass
+    folders = [os.path.join(os.path.realpath(state), name) + os.sep for name in ("logs", "slurm")]
+    for p in every:
+        for path, what in p.identity["inputs"].items():
+            if what.startswith("point "):
+                continue
+            hit = own.get(os.path.normpath(path))
+            if hit is None:
+                try:
+                    st = os.stat(path)
+                    hit = by_file.get((st.st_dev, st.st_ino))
+                except OSError:
+                    pass
+            if hit is None and os.path.realpath(path).startswith(tuple(folders)):
+                hit = "a file of the backend's %s folder" % os.path.dirname(os.path.realpath(path))
+            if hit:
+                raise ValueError("%s: reads %s, which is %s and the backend writes: refused, nothing removed or run"
+                                 % (p.source, path, hit))
 
 
 def check_results_are_not_inputs(phases, lists):

@@ -131,7 +131,9 @@ def scalar_text(value, text, table, key, name):
 
 def read_machine_file(text, name="machine file"):
     """{key: value} of a machine file, flat or in tables; TOML's errors name the line and column,
-    and so does a key given twice (once at the top and once in a table)."""
+    and so does a key given twice (once at the top and once in a table). A byte-order mark at the
+    start is skipped, as torusrt-sim skips it."""
+    text = text[1:] if text.startswith("\ufeff") else text
     try:
         doc = tomllib.loads(text)
     except tomllib.TOMLDecodeError as e:

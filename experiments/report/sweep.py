@@ -281,6 +281,7 @@ def plan(out, sim, scene, axes, fixed, listing, columns=(), y=DEFAULT_COLUMNS[0]
     if os.path.isdir(out):  # a new folder holds nothing to check, and is made after the checks
         for name in (PLAN, "points.list", "sweep.csv", "sweep.png", FACTS):
             outs.add("--out", os.path.join(out, name))
+    outs.add_folder("--out", os.path.join(out, "plot-data"))
     if os.path.isdir(points):
         for f in files:
             for ext in ("json", "png", "log", "id", "series"):

@@ -98,8 +98,9 @@ if __name__ == "__main__":
 class ResultsThatAreInputs(unittest.TestCase):
     """A stale result is removed before its point runs again only when the backend made it (its
     record is there): a file without one (a scene the command reads) is left alone; the point list
-    as a result is refused (exit 2, naming the list line); a machine file's named files (timing=)
-    are part of a point's identity."""
+    as a result is refused (exit 2, naming the list line), and so is a point that reads a file the
+    backend writes (a result's identity record, a phase list, a joblog, a log); a machine file's
+    named files (timing=) are part of a point's identity."""
 
     def setUp(self):
         self.dir = tempfile.mkdtemp()
@@ -127,6 +128,22 @@ class ResultsThatAreInputs(unittest.TestCase):
         self.assertEqual(done.returncode, 2, done.stdout)
         self.assertIn("is the point list", done.stdout)
         self.assertTrue(os.path.exists(lst))
+
+    def test_a_file_the_backend_writes_as_an_input_is_refused_and_kept(self):
+        out = os.path.join(self.dir, "r.json")
+        st = os.path.join(self.dir, "st")
+        os.makedirs(os.path.join(st, "logs"))
+        for own in (out + ".id", os.path.join(st, "phase1.todo"), os.path.join(st, "joblog.phase1"),
+                    os.path.join(st, "failed.tsv"), os.path.join(st, "logs", "mine.txt")):
+            with self.subTest(own=own):
+                write(own, "precious\n")
+                done, _ = self.run_list("%s\tcp %s %s\n" % (out, shlex.quote(own), shlex.quote(out)))
+                self.assertEqual(done.returncode, 2, done.stdout)
+                self.assertIn("reads %s, which is" % own, done.stdout)
+                self.assertIn("refused, nothing removed or run", done.stdout)
+                self.assertEqual(read(own), "precious\n")
+                self.assertFalse(os.path.exists(out))
+                os.remove(own)
 
     def test_a_machine_files_timing_file_is_an_input(self):
         timing = os.path.join(self.dir, "t.timing")

@@ -298,6 +298,22 @@ class Sets(Base):
         with self.assertRaisesRegex(of.OutputError, r"^--out '.*': is the scene file .*s.nff, an input$"):
             outs.check()
 
+    def test_an_input_in_a_folder_the_command_writes_is_refused(self):
+        os.mkdir(self.path("plot-data"))
+        write(self.path("plot-data", "apart.dat"), "t")
+        os.symlink(self.path("plot-data", "apart.dat"), self.path("l.timing"))
+        for given in (self.path("plot-data", "apart.dat"), self.path("l.timing")):
+            outs = of.OutputSet()
+            outs.add_input("--timing", given)
+            outs.add_folder("--out", self.path("plot-data"))
+            with self.assertRaisesRegex(of.OutputError, "^--out: its folder .*plot-data, which the command writes, "
+                                        "holds the --timing file"):
+                outs.check()
+        outs = of.OutputSet()
+        outs.add_input("--timing", self.path("l.timing"))
+        outs.add_folder("--out", self.path("other"))
+        outs.check()
+
     def test_output_is_an_input_through_a_hard_link(self):
         write(self.path("t.timing"), "t")
         os.link(self.path("t.timing"), self.path("h.png"))
@@ -454,6 +470,17 @@ class SweepPoints(Base):
         write(self.path("cfg", "n.timing"), "link 50000\n")
         self.assertNotEqual(base, sweep.identity(sim, args, {}), "a file the machine file names")
         self.assertIn(("--config %s's timing" % machine, self.path("cfg", "n.timing")), of.named_files(args))
+
+    def test_a_config_file_with_a_byte_order_mark_or_past_this_reader_still_names_its_inputs(self):
+        os.makedirs(self.path("cfg"))
+        write(self.path("cfg", "n.timing"), "link 50\n")
+        for name, text in (("bom.toml", '\ufeff[timing]\ntiming = "n.timing"\n'),
+                           ("odd.toml", "[timing]\ntiming = 'n.timing'\nnot toml = = 1\n")):
+            machine = self.path("cfg", name)
+            with open(machine, "w", encoding="utf-8") as f:
+                f.write(text)
+            named = [path for _, path in of.named_files([self.path("s.nff"), "--config", machine])]
+            self.assertIn(self.path("cfg", "n.timing"), named, name)
 
     def test_another_identity_runs_again(self):
         files = self.point(json.dumps(REPORT), self.made(json.dumps(REPORT)))
