@@ -25,6 +25,7 @@ Example: experiments/compare-mappings scenes/paper-image1.nff --out m.png -- --i
 """
 import argparse
 import json
+import math
 import os
 import subprocess
 import sys
@@ -67,11 +68,34 @@ def run(sim, scene, mapping, options, work, t1):
         sys.exit(1)
     try:
         with open(stats) as f:
-            return json.load(f)
+            report = json.load(f)
     except (OSError, ValueError) as e:  # exit 0 without a report: nothing to compare
         sys.stderr.write("compare-mappings: --map %s: torusrt-sim wrote no report (%s)\n"
                          % (mapping, os_message(e)))
         sys.exit(1)
+    why = report_fault(report)
+    if why:  # another build's report, or not torusrt-sim's
+        sys.stderr.write("compare-mappings: --map %s: the report of %s %s (another version of torusrt-sim?)\n"
+                         % (mapping, shown(sim), why))
+        sys.exit(1)
+    return report
+
+
+def report_fault(report):
+    """Why a run's REPORT cannot be compared: not an object, or a field compare-mappings reads
+    missing ("" when it has them all)."""
+    def number(x):
+        return isinstance(x, (int, float)) and not isinstance(x, bool) and math.isfinite(x)
+    if not isinstance(report, dict):
+        return "is not a JSON object (a %s)" % type(report).__name__
+    for field in ("sim_time_s", "t1_s", "efficiency"):
+        if not number(report.get(field)):
+            return "has no number %s" % field
+    ips = report.get("per_ip")
+    if not isinstance(ips, list) or not ips or not all(
+            isinstance(ip, dict) and isinstance(ip.get("node"), int) and number(ip.get("busy_s")) for ip in ips):
+        return "has no per_ip list of nodes and their busy_s"
+    return ""
 
 
 def plot(results, out, work):

@@ -9,10 +9,10 @@ import io
 import json
 import os
 
-from output_files import atomic, read_text
+from output_files import OutputSet, atomic, read_text
 
 from . import paper
-from .results import save_facts
+from .results import FACTS_FILE, save_facts
 
 POINT_COLUMNS = ["fig", "name", "scene", "mapping", "n", "torus", "m", "data", "json"]
 
@@ -155,6 +155,14 @@ def collect(res):
                              "experiments/sweep's folders are collected by the sweep itself"
                              % (table, number, len(line), len(POINT_COLUMNS), ",".join(POINT_COLUMNS)))
         points.append(dict(zip(POINT_COLUMNS, line)))
+    outs = OutputSet()  # no CSV written over points.tsv or a point's report, also through a link
+    outs.add_input("points table", table)
+    for p in points:
+        outs.add_input("point JSON", p["json"])
+        outs.add_input("point image", os.path.splitext(p["json"])[0] + ".png")
+    for name in ("fig5_6.csv", "fig7.csv", "fig8.csv", "fig10_12.csv", FACTS_FILE):
+        outs.add("results", os.path.join(res, name))
+    outs.check()
     rows = [derived(point_row(res, p)) for p in points]
     flat = [r for r in rows if r["fig"] == "fig5_6"]
     clusters = [r for r in rows if r["fig"] == "fig10_12"]

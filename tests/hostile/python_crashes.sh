@@ -8,6 +8,7 @@
 # - a byte that is not UTF-8 in torusrt-sim's message (a scene's name): shown as \xNN;
 # - a CSV row with fewer fields than its header (report compare, report reproduction), and a
 #   report whose config.option_order is null (report machine): the file, line or field named;
+# - a run's report compare-mappings cannot read (not an object, a field missing): named, exit 1;
 # - the sweep's options in the --opt=value form, and a --y field no report has or one that is
 #   not a number: refused before any point runs, no --out made.
 #
@@ -176,4 +177,20 @@ for limit in 18000 20000 22000 24000 28000 32000; do
     done
 done
 check "Python tools under ulimit -v 18-32 MB: runs that ended in a traceback: $tracebacks of 18" [ "$tracebacks" -eq 0 ]
+
+# ---- compare-mappings on a report it cannot read (another build, not torusrt-sim) -----------
+mkdir -p fake
+for report in '[1,2]' '{"nodes": 1e999, "status": "ok"}' \
+    '{"sim_time_s": 1, "t1_s": 1, "efficiency": 1, "per_ip": [{"node": "x", "busy_s": 1}]}'; do
+    printf '#!/bin/sh\nfor a; do [ "$prev" = --stats ] && printf %%s %q > "$a"; prev=$a; done\nexit 0\n' \
+        "$report" >fake/torusrt-sim
+    chmod +x fake/torusrt-sim
+    "$EXP/compare-mappings" s.nff --map block --out fcm.png --build fake >/dev/null 2>fcm.err </dev/null
+    rc=$?
+    check "compare-mappings, report $report: exit 1 (got $rc)" [ "$rc" -eq 1 ]
+    check "compare-mappings, report $report: says why: $(head -c 200 fcm.err)" \
+        grep -q "compare-mappings: --map block: the report of fake/torusrt-sim" fcm.err
+    no_traceback "compare-mappings, report $report" fcm.err
+    check "compare-mappings, report $report: no picture" [ ! -e fcm.png ]
+done
 finish

@@ -90,6 +90,20 @@ class Collect(unittest.TestCase):
         with self.assertRaisesRegex(ValueError, "%s: not a JSON report \\(a list" % path):
             collect.collect(self.res)
 
+    def test_a_figure_csv_that_links_to_an_input_is_refused_and_the_input_kept(self):
+        json_path = os.path.join(self.res, "fig5_6", "image1-cyclic-n16.json")
+        for name, target in (("fig10_12.csv", "points.tsv"), ("fig7.csv", json_path)):
+            with self.subTest(name=name):
+                link = os.path.join(self.res, name)
+                os.symlink(target, link)
+                with open(os.path.join(self.res, target), "rb") as f:
+                    before = f.read()
+                with self.assertRaisesRegex(ValueError, "is the (points table|point JSON) file"):
+                    collect.collect(self.res)
+                with open(os.path.join(self.res, target), "rb") as f:
+                    self.assertEqual(f.read(), before)
+                os.remove(link)
+
     def test_number_spelling(self):
         self.assertEqual(collect.json_text(2.0), "2")
         self.assertEqual(collect.json_text(0.1), "0.1")
