@@ -171,6 +171,7 @@ backend_option() {
         --backend|--slurm-args|--per-task|-j) need_value "$@" ;;
         --backend=|--slurm-args=|--per-task=) die "${1%=}: an empty value" ;;
         --backend=*|--slurm-args=*|--per-task=*) given_once "$1" ;;
+        -j[0-9]*) given_once -j ;;
     esac
     SHIFT=2
     case $1 in
@@ -178,8 +179,8 @@ backend_option() {
         --backend=*) BACKEND=${1#*=}; SHIFT=1 ;;
         --slurm-args) SLURM_ARGS=$2 ;;
         --slurm-args=*) SLURM_ARGS=${1#*=}; SHIFT=1 ;;
-        --per-task) PER_TASK=$2 ;;
-        --per-task=*) PER_TASK=${1#*=}; SHIFT=1 ;;
+        --per-task) check_per_task "$2"; PER_TASK=$2 ;;
+        --per-task=*) check_per_task "${1#*=}"; PER_TASK=${1#*=}; SHIFT=1 ;;
         -j) check_jobs -j "$2"; JOBS=$2 ;;
         -j[0-9]*) check_jobs -j "${1#-j}"; JOBS=${1#-j}; SHIFT=1 ;;
         *) return 1 ;;
@@ -190,6 +191,10 @@ backend_option() {
 # caps it at the number of points to run); anything else ends the command (exit 2) naming OPTION.
 check_jobs() {
     [[ $2 =~ ^[1-9][0-9]{0,8}$ ]] || die "$1 must be a whole number of points in flight, 1 or more, not '$2'"
+}
+# check_per_task K: --per-task's value checked before anything is made (the backend checks it too).
+check_per_task() {
+    [[ $1 =~ ^[1-9][0-9]{0,8}$ ]] || die "--per-task must be a whole number of points per Slurm task, 1 or more, not '$1'"
 }
 
 # run_points STATE_DIR NAME LIST...: runs the point lists (DONE-FILE<TAB>COMMAND per line, one

@@ -6,6 +6,7 @@ import resource
 import sys
 import time
 
+import decimal_number
 from memory_exit import leave_if_out_of_memory
 from output_files import (OutputError, OutputSet, WriteError, append_text, exit_on_signals, finish_stdout,  # noqa: E501
                           input_file, named_stdout, nonempty, os_message, out_folder, refuse_empty_values,
@@ -41,12 +42,13 @@ def in_flight(asked, kind, most):
 
 
 def positive(text):
-    """-j and --per-task: a whole number from 1 up."""
+    """-j and --per-task: a whole number from 1 up, in the strict decimal syntax (`010`, ` 2` and
+    digits of other scripts refused)."""
     try:
-        value = int(text)
-    except ValueError:
-        value = 0
-    if value < 1 or not text.strip().isdigit():
+        value = decimal_number.whole(text) if text.isascii() else 0
+    except ValueError as e:
+        raise argparse.ArgumentTypeError("must be a whole number, 1 or more: %s" % e) from None
+    if value < 1:
         raise argparse.ArgumentTypeError("must be a whole number, 1 or more, not '%s'" % text)
     return value
 

@@ -94,6 +94,17 @@ refused "sweep.sh --results twice" "--results: given 2 times; give it once" bash
     --results r1 --results r2
 refused "sweep.sh --backend and --backend=" "--backend: given 2 times; give it once" bash "$EXP/sweep.sh" "${nb[@]}" \
     --quick --backend local --backend=local
+refused "sweep --out twice" "--out: given 2 times; give it once" bash "$EXP/sweep" "$tree/scenes/paper-image1.nff" \
+    --axis queue=0 --out o1 --out=o2
+refused "sweep -j1 -j 1" "-j: given 2 times; give it once" bash "$EXP/sweep" "$tree/scenes/paper-image1.nff" \
+    --axis queue=0 -j1 -j 1
+refused "sweep.sh --per-task 0x2" "--per-task must be a whole number" bash "$EXP/sweep.sh" "${nb[@]}" --quick \
+    --results r4 --per-task 0x2
+check "sweep.sh --per-task 0x2: no results folder" [ ! -e r4 ]
+printf '%s\ttrue\n' "$PWD/d1" >l1.list
+for j in 010 ' 2' "$(printf '\xd9\xa3')"; do
+    refused "backend -j '$j'" "must be a whole number, 1 or more" python3 "$EXP/backend" run --state st -j "$j" l1.list
+done
 refused "quantum.sh --quanta twice" "--quanta: given 2 times; give it once" bash "$EXP/error_vs_runtime/quantum.sh" \
     "${nb[@]}" --quanta 1 --quanta 2
 refused "scaling --build twice" "--build: given 2 times; give it once" bash "$EXP/scaling/study.sh" "${nb[@]}" "${nb[@]}"
