@@ -134,6 +134,10 @@ def handover_lines(h):
     return ["handover_send %d" % send, "handover_receive %d" % receive]
 
 
+# The largest timing value a run accepts (support/timing_limits.h, kMaxTimingUs), in us.
+TIMING_MAX = 1e6
+
+
 def timing_cmd(args):
     """A timing file on stdout: the calibrated table with the given keys replaced (every key, so
     the file stands on its own)."""
@@ -143,11 +147,16 @@ def timing_cmd(args):
         if not eq or not key:
             print("fidelity timing: %s: not KEY=VALUE" % word, file=sys.stderr)
             return 2
+        if key in values:
+            print("fidelity timing: %s: the key '%s' is given twice" % (word, key), file=sys.stderr)
+            return 2
         if key == "handover" and value not in [str(h) for h in fs.HANDOVER_KEYS]:
             print("fidelity timing: %s: the hand-over is one of %s" % (word, ", ".join(map(str, fs.HANDOVER_KEYS))),
                   file=sys.stderr)
             return 2
         why = decimal_number.fault(value)
+        if not why and float(value) > TIMING_MAX:
+            why = "is more than %g, the largest value of a timing file" % TIMING_MAX
         if why or value.startswith("-"):
             print("fidelity timing: %s: not a time in microseconds (a decimal number, 0 or more)%s" % (
                 word, ": '%s' %s" % (value, why) if why else ""), file=sys.stderr)
@@ -157,14 +166,16 @@ def timing_cmd(args):
         for line in handover_lines(values.pop("handover")):
             k, v = line.split()
             values[k] = v
+    table = []  # printed once every key is known: a refused command writes nothing
     with open(os.path.join(REPO, "timing", "calibrated.timing")) as f:
         for line in f:
             words = line.split()
             if words and not words[0].startswith("#"):
-                print("%s %s" % (words[0], values.pop(words[0], words[1])))
+                table.append("%s %s" % (words[0], values.pop(words[0], words[1])))
     if values:
         print("fidelity timing: no such timing key: %s" % ", ".join(sorted(values)), file=sys.stderr)
         return 2
+    print("\n".join(table))
     return 0
 
 

@@ -39,6 +39,11 @@ class FidelityCommands(unittest.TestCase):
                 done = fidelity("timing", word)
                 self.assertEqual((done.returncode, done.stdout), (2, ""), done.stderr)
                 self.assertIn("fidelity timing: %s: " % word, done.stderr)
+        for words in (("nosuch=5",), ("link=1e7",), ("link=5", "link=6")):  # nothing printed before the refusal
+            with self.subTest(words=words):
+                done = fidelity("timing", *words)
+                self.assertEqual((done.returncode, done.stdout), (2, ""), done.stderr)
+                self.assertIn("fidelity timing: ", done.stderr)
         done = fidelity("timing", "link=5", "handover=580")
         self.assertEqual(done.returncode, 0, done.stderr)
         self.assertIn("\nlink 5\n", done.stdout)
