@@ -1,5 +1,6 @@
 """The command line of the report package."""
 import argparse
+import contextlib
 import glob
 import os
 import subprocess
@@ -26,6 +27,24 @@ def check_outputs(inputs, outputs):
     outs.check()
 
 
+def made_folders(folder, option="--doc"):
+    """Makes FOLDER and the folders above it that are missing; returns those it made, deepest
+    first (for the clean-up of a run that fails)."""
+    missing = []
+    while folder and not os.path.isdir(folder):
+        missing.append(folder)
+        parent = os.path.dirname(folder)
+        if parent == folder:
+            break
+        folder = parent
+    for made in reversed(missing):
+        try:
+            os.mkdir(made)
+        except FileExistsError as e:  # a file, or a dangling link, in the folder's place
+            raise OutputError("%s: the folder '%s' it writes into is a file, not a folder" % (option, shown(made))) from e
+    return missing
+
+
 def pictures(option, folder, names):
     """The pictures a command writes into FOLDER, as outputs (none to check while it is not made)."""
     return [(option, os.path.join(folder, n)) for n in names] if os.path.isdir(folder) else []
@@ -42,11 +61,17 @@ def reproduction(args):
         doc = os.path.join(REPO, "docs", "reproduction.md") if full else os.path.join(res, "reproduction.md")
     read = [p for pattern in ("*.csv", "*.tsv", "*/*.csv", "*/*.tsv", "plots/*.png", "*/plots/*.png")
             for p in glob.glob(os.path.join(res, pattern))]
-    img = os.path.join(os.path.dirname(os.path.abspath(doc)), "img")
-    os.makedirs(img, exist_ok=True)  # the page's folder and its pictures' (the command makes them)
-    check_outputs([("results", p) for p in read],
-                  [("--doc", doc)] + pictures("--doc", img, ["reproduction-fig%d.png" % f for f in rep.FIGURE_NUMBERS]))
-    by_profile = rep.write(res, doc)
+    img = os.path.join(os.path.dirname(os.path.realpath(doc)), "img")  # beside the page a link names
+    made = made_folders(img)  # the page's folder and its pictures' (the command makes them)
+    try:
+        check_outputs([("results", p) for p in read],
+                      [("--doc", doc)] + pictures("--doc", img, ["reproduction-fig%d.png" % f for f in rep.FIGURE_NUMBERS]))
+        by_profile = rep.write(res, doc)
+    except BaseException:
+        for folder in made:  # a refused or failed run leaves no folder it made (empty ones only)
+            with contextlib.suppress(OSError):
+                os.rmdir(folder)
+        raise
     print("report: %s (%s)" % (doc, "; ".join(
         "%s: %d of %d claims hold" % (p, sum(1 for c in cl if c.verdict == HOLDS), len(cl)) for p, cl in by_profile)))
     return 0
@@ -76,11 +101,18 @@ def error_vs_runtime(args):
     doc = args.doc or os.path.join(REPO, "docs", "error-vs-runtime.md")
     img = args.img_dir or os.path.join(REPO, "docs", "img")
     drawn = ["error-quantum.png", "error-quantum-q.png", "error-pruning.png"]
-    for folder in (os.path.dirname(os.path.abspath(doc)), img):  # the command makes them
-        os.makedirs(folder, exist_ok=True)
-    check_outputs([("--quantum", quantum_csv), ("--pruning", pruning_csv)],
-                  [("--doc", doc)] + pictures("--img-dir", img, drawn))
-    evr.write(quantum_csv, pruning_csv, doc, img, args.command)
+    made = []  # the page's folder and the pictures' (the command makes them; a failed run removes them)
+    try:
+        made = made_folders(os.path.dirname(os.path.realpath(doc)), "--doc")
+        made += made_folders(img, "--img-dir")
+        check_outputs([("--quantum", quantum_csv), ("--pruning", pruning_csv)],
+                      [("--doc", doc)] + pictures("--img-dir", img, drawn))
+        evr.write(quantum_csv, pruning_csv, doc, img, args.command)
+    except BaseException:
+        for folder in made:
+            with contextlib.suppress(OSError):
+                os.rmdir(folder)
+        raise
     print("report: %s, plots in %s" % (doc, img))
     return 0
 

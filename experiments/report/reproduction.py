@@ -146,12 +146,12 @@ def copy_plots(res, img_dir):
     drawn = set()
     for f in FIGURE_NUMBERS:
         target = os.path.join(img_dir, "reproduction-fig%d.png" % f)
-        if os.path.exists(target):
-            os.remove(target)
         source = os.path.join(res, "plots", "fig%d.png" % f)
         if os.path.exists(source) and os.path.getsize(source) > 0:
-            copy_file(source, target, "--doc")
+            copy_file(source, target, "--doc")  # a link is followed: the file it names is written
             drawn.add(f)
+        elif os.path.isfile(target) and not os.path.islink(target):
+            os.remove(target)  # an earlier sweep's picture of a figure this one did not draw
     return drawn
 
 
@@ -414,7 +414,7 @@ def write(res, doc):
     (atomically); returns (reading, claims) per reading."""
     from .results import profile_results
     all_r = profile_results(res)
-    doc_dir = os.path.dirname(os.path.abspath(doc))
+    doc_dir = os.path.dirname(os.path.realpath(doc))  # the page's own folder, a link followed
     drawn = copy_plots(res, os.path.join(doc_dir, "img"))
     text, claim_list = document(res, all_r, doc_dir, drawn)
     with atomic(doc) as f:

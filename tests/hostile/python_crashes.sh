@@ -77,9 +77,10 @@ for sig in INT QUIT USR1 TERM; do
     sims_gone "$TMPDIR/compare-mappings" || fail "cm $sig: its run goes on"
 done
 
-# ---- a sweep stopped by TERM or Ctrl-C stops its points -------------------------------------
+# ---- a sweep stopped by TERM or Ctrl-C stops its points (large images: no point may finish --
+# ---- before the signal, however slow the machine) ------------------------------------------
 for sig in TERM INT; do
-    "${default_signals[@]}" "$EXP/sweep" s.nff --axis ips=4x4,2x2 --out "sw$sig" -j 2 -- --size 600x600 \
+    "${default_signals[@]}" "$EXP/sweep" s.nff --axis ips=4x4,2x2 --out "sw$sig" -j 2 -- --size 1600x1600 \
         >"sw$sig.out" 2>"sw$sig.err" </dev/null &
     pid=$!
     check "sweep $sig: its points started" wait_for_sim "$TMP/work/sw$sig/points"

@@ -1,0 +1,100 @@
+"""The pages `report reproduction` and `report error-vs-runtime` write, and their pictures, keep
+the output rules: a picture that is a symbolic link is written through (the link stays), an
+earlier sweep's picture of a figure this one did not draw is removed but a link is left alone, a
+page reached through a link gets its img/ folder beside the file the link names, a run that fails
+or is refused leaves no folder it made, and a table without the studies' columns is named before
+any plot is drawn."""
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import unittest
+
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+REPORT = os.path.join(REPO, "experiments", "report")
+FIXTURE = os.path.join(REPO, "tests", "reports", "fixtures", "sweep")
+
+
+def report(*args):
+    return subprocess.run([sys.executable, REPORT] + list(args), stdin=subprocess.DEVNULL,
+                          stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+
+
+def write(path, text):
+    with open(path, "w") as f:
+        f.write(text)
+
+
+def read(path):
+    with open(path) as f:
+        return f.read()
+
+
+class ReportPages(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.dir = self.tmp.name
+        self.res = os.path.join(self.dir, "sweep")
+        shutil.copytree(FIXTURE, self.res)
+        os.makedirs(os.path.join(self.res, "plots"))
+        write(os.path.join(self.res, "plots", "fig7.png"), "fig7 of this sweep")
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def path(self, *parts):
+        return os.path.join(self.dir, *parts)
+
+    def test_pictures_that_are_links_are_written_through_and_kept(self):
+        os.makedirs(self.path("page", "img"))
+        write(self.path("mine7.png"), "old")
+        write(self.path("mine6.png"), "keep")
+        os.symlink(self.path("mine7.png"), self.path("page", "img", "reproduction-fig7.png"))
+        os.symlink(self.path("mine6.png"), self.path("page", "img", "reproduction-fig6.png"))
+        write(self.path("page", "img", "reproduction-fig5.png"), "an earlier sweep's")
+        done = report("reproduction", self.res, "--doc", self.path("page", "x.md"))
+        self.assertEqual(done.returncode, 0, done.stderr)
+        self.assertTrue(os.path.islink(self.path("page", "img", "reproduction-fig7.png")))
+        self.assertEqual(read(self.path("mine7.png")), "fig7 of this sweep")
+        self.assertTrue(os.path.islink(self.path("page", "img", "reproduction-fig6.png")))
+        self.assertEqual(read(self.path("mine6.png")), "keep")
+        self.assertFalse(os.path.exists(self.path("page", "img", "reproduction-fig5.png")))
+
+    def test_a_page_through_a_link_has_its_pictures_beside_the_file_it_names(self):
+        os.makedirs(self.path("a"))
+        os.makedirs(self.path("b"))
+        os.symlink(self.path("b", "real.md"), self.path("a", "x.md"))
+        done = report("reproduction", self.res, "--doc", self.path("a", "x.md"))
+        self.assertEqual(done.returncode, 0, done.stderr)
+        self.assertEqual(read(self.path("b", "img", "reproduction-fig7.png")), "fig7 of this sweep")
+        self.assertIn("](img/reproduction-fig7.png)", read(self.path("b", "real.md")))
+        self.assertEqual(os.listdir(self.path("a")), ["x.md"])
+
+    def test_a_failed_reproduction_leaves_no_folder(self):
+        os.makedirs(self.path("empty"))
+        done = report("reproduction", self.path("empty"), "--doc", self.path("new", "x.md"))
+        self.assertEqual(done.returncode, 1, done.stderr)
+        self.assertIn("has none of the profile folders", done.stderr)
+        self.assertFalse(os.path.exists(self.path("new")))
+
+    def test_error_vs_runtime_names_a_missing_column_before_any_plot(self):
+        os.makedirs(self.path("ev"))
+        for name in ("q.csv", "p.csv"):
+            write(self.path("ev", name), "a,b\n1,2\n")
+        args = ["error-vs-runtime", "--quantum", self.path("ev", "q.csv"), "--pruning", self.path("ev", "p.csv"),
+                "--doc", self.path("ev", "out", "x.md")]
+        done = report(*args, "--img-dir", self.path("ev", "img"))
+        self.assertEqual(done.returncode, 1, done.stderr)
+        self.assertIn("no column", done.stderr)
+        self.assertNotIn("Traceback", done.stderr)
+        self.assertEqual(sorted(os.listdir(self.path("ev"))), ["p.csv", "q.csv"])
+        done = report(*args, "--img-dir", self.path("ev", "q.csv"))
+        self.assertEqual(done.returncode, 2, done.stderr)
+        self.assertIn("--img-dir: the folder '%s' it writes into is a file, not a folder" % self.path("ev", "q.csv"),
+                      done.stderr)
+        self.assertEqual(sorted(os.listdir(self.path("ev"))), ["p.csv", "q.csv"])
+
+
+if __name__ == "__main__":
+    unittest.main()
