@@ -203,6 +203,11 @@ def check_own_files_are_not_inputs(phases, state, runs=None):
             by_file[(st.st_dev, st.st_ino)] = what
         except OSError:
             pass
+    if runs:  # nor is it a point's result
+        for p in every:
+            if os.path.realpath(runs) == os.path.realpath(p.done):
+                raise ValueError("%s: the done file %s is the --runs file: refused, nothing removed or run"
+                                 % (p.source, p.done))
     folders = [os.path.join(os.path.realpath(state), name) + os.sep for name in ("logs", "slurm")]
     for p in every:
         for path, what in p.identity["inputs"].items():

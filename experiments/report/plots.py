@@ -2,12 +2,13 @@
 import contextlib
 import os
 
-from output_files import staged, write_text
+from output_files import OutputSet, staged, write_text
 from stop_signals import run_child
 
 from . import paper
 from .results import profile_results
 
+FIGURES = (5, 6, 7, 8, 10, 11, 12)  # the pictures reproduction() draws, plots/figN.png
 PLOT_DIR = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "plots")
 
 
@@ -122,6 +123,16 @@ def reproduction(res):
     r = all_r[0]
     out = os.path.join(res, "plots")
     dat = os.path.join(out, "data")
+    outs = OutputSet()  # no picture or data file over the CSVs it plots, also through a link
+    for reading in all_r:
+        for name in sorted(os.listdir(reading.dir)):
+            if name.endswith((".csv", ".tsv", ".json")):
+                outs.add_input("results", os.path.join(reading.dir, name))
+    if os.path.isdir(out):
+        for f in FIGURES:
+            outs.add("results", os.path.join(out, "fig%d.png" % f))
+    outs.add_folder("results", dat)
+    outs.check()
     os.makedirs(dat, exist_ok=True)
     for name in os.listdir(dat):
         if name.endswith(".dat"):

@@ -360,6 +360,15 @@ def read_points(out):
 def collect(out, columns, y):
     """Writes OUT/sweep.csv and OUT/sweep.png; returns the names of the points that failed."""
     names, points = read_points(out)
+    outs = OutputSet()  # neither over the plan nor over a point's files, also through a link
+    outs.add_input("points table", os.path.join(out, PLAN))
+    for row in points:
+        for what, path in point_files(out, row[0]).items():
+            outs.add_input("point " + what, path)
+    for name in ("sweep.csv", "sweep.png"):
+        outs.add("--out", os.path.join(out, name))
+    outs.add_folder("--out", os.path.join(out, "plot-data"))
+    outs.check()
     flat, failed = [], []
     for row in points:
         path = os.path.join(out, "points", row[0] + ".json")

@@ -145,6 +145,21 @@ class ResultsThatAreInputs(unittest.TestCase):
                 self.assertFalse(os.path.exists(out))
                 os.remove(own)
 
+    def test_the_runs_file_may_be_neither_an_input_nor_a_result(self):
+        given = os.path.join(self.dir, "in.txt")
+        out = os.path.join(self.dir, "d5")
+        write(given, "input data\n")
+        lst = os.path.join(self.dir, "points.list")
+        write(lst, "%s\tcp %s %s\n" % (out, shlex.quote(given), shlex.quote(out)))
+        for runs, why in ((given, "which is the --runs file"), (out, "the done file %s is the --runs file" % out)):
+            with self.subTest(runs=runs):
+                done = subprocess.run([sys.executable, BACKEND, "run", "--state", os.path.join(self.dir, "st"),
+                                       "--runs", runs, lst], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+                self.assertEqual(done.returncode, 2, done.stdout)
+                self.assertIn(why, done.stdout)
+                self.assertEqual(read(given), "input data\n")
+                self.assertFalse(os.path.exists(out))
+
     def test_a_machine_files_timing_file_is_an_input(self):
         timing = os.path.join(self.dir, "t.timing")
         machine = os.path.join(self.dir, "m.toml")

@@ -3,7 +3,8 @@ the output rules: a picture that is a symbolic link is written through (the link
 earlier sweep's picture of a figure this one did not draw is removed but a link is left alone, a
 page reached through a link gets its img/ folder beside the file the link names, a run that fails
 or is refused leaves no folder it made, and a table without the studies' columns is named before
-any plot is drawn."""
+any plot is drawn; `report plots` refuses a picture that is one of the CSVs it plots, and `report sweep-collect` a
+sweep.csv or sweep.png that is one of the sweep's points or its plan."""
 import os
 import shutil
 import subprocess
@@ -77,6 +78,33 @@ class ReportPages(unittest.TestCase):
         self.assertEqual(done.returncode, 1, done.stderr)
         self.assertIn("has none of the profile folders", done.stderr)
         self.assertFalse(os.path.exists(self.path("new")))
+
+    def test_plots_refuse_a_picture_that_is_an_input(self):
+        link = os.path.join(self.res, "plots", "fig7.png")
+        os.remove(link)
+        os.symlink(os.path.join("..", "calibrated", "fig7.csv"), link)
+        before = read(os.path.join(self.res, "calibrated", "fig7.csv"))
+        done = report("plots", self.res)
+        self.assertEqual(done.returncode, 2, done.stderr)
+        self.assertIn("is the results file %s, an input" % os.path.join(self.res, "calibrated", "fig7.csv"),
+                      done.stderr)
+        self.assertEqual(read(os.path.join(self.res, "calibrated", "fig7.csv")), before)
+
+    def test_sweep_collect_refuses_an_output_that_is_a_points_file(self):
+        out = self.path("sw")
+        os.makedirs(os.path.join(out, "points"))
+        write(os.path.join(out, "points.tsv"), "name\tqueue\nqueue_0\t0\n")
+        point = os.path.join(out, "points", "queue_0.json")
+        write(point, '{"status": "ok", "sim_time_s": 1.5, "config": {}}')
+        for name, target in (("sweep.csv", point), ("sweep.png", os.path.join(out, "points.tsv"))):
+            with self.subTest(name=name):
+                os.symlink(target, os.path.join(out, name))
+                before = read(target)
+                done = report("sweep-collect", "--out", out)
+                self.assertEqual(done.returncode, 2, done.stderr)
+                self.assertIn("an input", done.stderr)
+                self.assertEqual(read(target), before)
+                os.remove(os.path.join(out, name))
 
     def test_error_vs_runtime_names_a_missing_column_before_any_plot(self):
         os.makedirs(self.path("ev"))
