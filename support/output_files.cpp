@@ -166,6 +166,36 @@ bool names_a_stream(const std::string &path)
     return false;
 }
 
+// The files a machine file may name: every quoted string in its first megabyte, taken from the
+// machine file's folder as a run takes them. Read without parsing, so that a file the run will
+// refuse, or one past a simple reader, still names its inputs before the streams are checked.
+std::vector<std::string> machine_file_names(const std::string &machine)
+{
+    std::vector<std::string> names;
+    int fd = open(machine.c_str(), O_RDONLY | O_NONBLOCK);
+    if (fd < 0) return names;
+    struct stat st;
+    std::string text;
+    if (fstat(fd, &st) == 0 && S_ISREG(st.st_mode)) {
+        text.resize(1 << 20);
+        ssize_t n = read(fd, &text[0], text.size());
+        text.resize(n > 0 ? static_cast<size_t>(n) : 0);
+    }
+    close(fd);
+    const std::string folder = folder_of(machine);
+    for (size_t i = 0; i < text.size(); i++) {
+        char quote = text[i];
+        if (quote != '"' && quote != '\'') continue;
+        size_t end = i + 1;
+        while (end < text.size() && text[end] != quote && text[end] != '\n') end += text[end] == '\\' ? 2 : 1;
+        if (end >= text.size() || text[end] != quote) break;
+        std::string name = text.substr(i + 1, end - i - 1);
+        if (!name.empty()) names.push_back(name[0] == '/' ? name : folder + "/" + name);
+        i = end;
+    }
+    return names;
+}
+
 }  // namespace
 
 void check_streams_before_parsing(int argc, char **argv, const std::vector<std::string> &output_options)
@@ -185,14 +215,21 @@ void check_streams_before_parsing(int argc, char **argv, const std::vector<std::
             }
             bool output = false;
             for (const std::string &o : output_options) output = output || option == o;
-            struct stat st;
-            if (output || word.empty() || stat(word.c_str(), &st) != 0 || st.st_dev != so.st_dev ||
-                st.st_ino != so.st_ino || names_a_stream(word))
-                continue;
-            if (fd == STDERR_FILENO) divert_stderr();  // the message must not land in the file
-            throw UserError(std::string(stream_name(fd)) + " is redirected to '" + word +
-                                "', a file the command line names (an input)",
-                            2);
+            std::vector<std::string> named{word};
+            if (option == "--config" && !word.empty())  // the files its machine file names are inputs too
+                for (std::string &n : machine_file_names(word)) named.push_back(n);
+            for (size_t k = 0; k < named.size(); k++) {
+                const std::string &name = named[k];
+                struct stat st;
+                if (output || name.empty() || stat(name.c_str(), &st) != 0 || st.st_dev != so.st_dev ||
+                    st.st_ino != so.st_ino || names_a_stream(name))
+                    continue;
+                if (fd == STDERR_FILENO) divert_stderr();  // the message must not land in the file
+                throw UserError(std::string(stream_name(fd)) + " is redirected to '" + name + "', " +
+                                    (k == 0 ? std::string("a file the command line names (an input)")
+                                            : "a file the machine file '" + word + "' names (an input)"),
+                                2);
+            }
         }
     }
 }

@@ -5,7 +5,8 @@
 # option missing its value, -o twice, two scenes): `2>> SCENE` and `>> SCENE` are refused (exit
 # 2) before the parser writes, the file unchanged; --dump-config's machine file appended to its
 # own --config, --timing or --map-file (or to a timing file the machine file names) is refused
-# the same way; a file named by an output option stays the stream's to write (--stats r.json
+# the same way, and so is any message (a parse error, --help, --version) appended to a file a
+# --config machine file names; a file named by an output option stays the stream's to write (--stats r.json
 # > r.json, -q: the JSON); and torusrt-genscenes refuses an empty OUTDIR (it would write into
 # the root folder).
 #
@@ -59,6 +60,10 @@ into 1 "sim: --dump-config --timing >> it" t.timing "$sim" --dump-config --timin
 into 1 "sim: --dump-config --map-file >> it" w.map "$sim" --dump-config --ips 2 --map-file w.map
 cp keep.cfg m.cfg
 into 1 "sim: --dump-config, a timing file the machine file names, >> it" t.timing "$sim" --dump-config --config m.cfg
+into 2 "sim: unknown option, 2>> a timing file the machine file names" t.timing "$sim" keep.nff -o out/o.png \
+    --config m.cfg --frobnicate
+into 1 "sim: --help >> a timing file the machine file names" t.timing "$sim" --config m.cfg --help
+into 1 "sim: --version >> a timing file the machine file names" t.timing "$sim" --config=m.cfg --version
 into 2 "genscenes: 2>> OUTDIR that is a file" s.nff "$gen" s.nff paper-image1
 into 2 "genscenes: --variant, 2>> a word that is a file" s.nff "$gen" --variant paper-image1 zz=1 out s.nff
 
