@@ -11,8 +11,14 @@ BUILD=${TORUSRT_BUILD:-$REPO/build}
 
 die() { echo "${0##*/}: $*" >&2; exit 2; }
 
-# need_tools: the executables a study needs, with a hint where they come from.
+# need_build: the --out CSV is not one of the scenes the runs read, and the executables a study
+# needs are there (with a hint where they come from).
 need_build() {
+  local s F
+  for s in $SCENES; do  # the CSV never replaces a scene the runs read (also through a link)
+    F=$(scene_file "$s")
+    [ ! -e "$OUT" ] || [ ! "$OUT" -ef "$F" ] || die "--out '$OUT': is the scene file $F, an input"
+  done
   [ -x "$BUILD/torusrt-sim" ] && [ -x "$BUILD/torusrt-render" ] ||
     die "no torusrt-sim/torusrt-render in $BUILD (build them, or pass --build DIR / set TORUSRT_BUILD)"
   command -v jq >/dev/null || die "jq is needed (scripts/setup.sh installs it)"

@@ -42,6 +42,8 @@ while [ $# -gt 0 ]; do
   esac
 done
 [[ $REPS =~ ^[1-9][0-9]*$ ]] || die "--reps: a positive integer"
+# the strict decimal syntax of every torusrt format: 010, .5, inf and nan refused
+[[ $MAX_ERR =~ ^(0|[1-9][0-9]*)(\.[0-9]+)?$ ]] || die "--max-error: a percentage, a decimal number 0 or more (not '$MAX_ERR')"
 need_build
 # quantum_seconds Q: Q in seconds, as torusrt-sim reads it (its --dump-config writes microseconds).
 quantum_seconds() {

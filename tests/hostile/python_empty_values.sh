@@ -105,6 +105,16 @@ printf '%s\ttrue\n' "$PWD/d1" >l1.list
 for j in 010 ' 2' "$(printf '\xd9\xa3')"; do
     refused "backend -j '$j'" "must be a whole number, 1 or more" python3 "$EXP/backend" run --state st -j "$j" l1.list
 done
+cp "$tree/scenes/paper-image1.nff" own.nff
+refused "quantum.sh --out its scene" "--out 'own.nff': is the scene file own.nff, an input" \
+    bash "$EXP/error_vs_runtime/quantum.sh" "${nb[@]}" --scenes own.nff --out own.nff
+refused "pruning.sh --out its scene" "--out 'own.nff': is the scene file own.nff, an input" \
+    bash "$EXP/error_vs_runtime/pruning.sh" "${nb[@]}" --scenes own.nff --out own.nff
+check "quantum.sh and pruning.sh --out their scene: the scene kept" cmp -s own.nff "$tree/scenes/paper-image1.nff"
+for m in 010 .5 inf; do
+    refused "quantum.sh --max-error $m" "--max-error: a percentage" bash "$EXP/error_vs_runtime/quantum.sh" "${nb[@]}" \
+        --max-error "$m"
+done
 refused "quantum.sh --quanta twice" "--quanta: given 2 times; give it once" bash "$EXP/error_vs_runtime/quantum.sh" \
     "${nb[@]}" --quanta 1 --quanta 2
 refused "scaling --build twice" "--build: given 2 times; give it once" bash "$EXP/scaling/study.sh" "${nb[@]}" "${nb[@]}"
