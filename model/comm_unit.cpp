@@ -137,12 +137,6 @@ bool CommUnit::processor_held() const { return m_held_total && m_held_count[proc
 
 void CommUnit::accept(const TimedPacket &p)
 {
-    if (p.from_host) {  // a primary at its entry node: straight to the processor side
-        TimedPacket q = p;
-        next_hop(q, owner_of(q)).sink->accept(q);
-        m_local++;
-        return;
-    }
     // Called in the processor side's thread: it waits while one of its packets is held.
     while (processor_held()) sc_core::wait(m_processor_room);
     from_processor(m_pool->add(p, owner_of(p)));
@@ -150,7 +144,7 @@ void CommUnit::accept(const TimedPacket &p)
 
 void CommUnit::accept_pooled(PacketPool &pool, uint32_t handle)
 {
-    if (&pool != m_pool || pool.at(handle).from_host) {
+    if (&pool != m_pool) {
         PacketSinkIf::accept_pooled(pool, handle);  // copied in
         return;
     }

@@ -98,7 +98,6 @@ class IntersectionProcessor : public sc_core::sc_module,
     BufferSpace *room_for(const TimedPacket &p) override { return &m_queue.space_for(p); }
 
     // Statistics, read after the run.
-    const rt_op_counts &ops() const { return m_ops; }
     const sc_core::sc_time &busy_time() const { return m_busy; }
     uint64_t packets_in() const { return m_packets_in; }
     uint64_t packets_out() const { return m_packets_out; }

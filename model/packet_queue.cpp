@@ -103,11 +103,4 @@ bool PacketQueue::try_take_first_pooled(uint32_t &handle)
     return false;
 }
 
-TimedPacket PacketQueue::pop_blocking()
-{
-    TimedPacket tp;
-    while (!try_take_first(tp)) wait_for(nullptr);
-    return tp;
-}
-
 }  // namespace torusrt

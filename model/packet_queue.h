@@ -65,8 +65,6 @@ class PacketQueue {
     // The same for packet `handle` of `pool`: from this queue's pool it stays in its slot, which
     // the queue now owns; from another it is copied in and released there.
     void push_pooled(PacketPool &pool, uint32_t handle);
-    // Removes the oldest packet, waiting while the queue is empty.
-    TimedPacket pop_blocking();
     // Removes the first packet (in the order above) that `accept` (a callable taking a
     // const TimedPacket &) takes, copying it to `*taken` unless null; false: none taken (nothing
     // removed). When it refuses, `accept` registers its retry event with whatever it waits for.
