@@ -73,7 +73,8 @@ void CommUnit::connect_link(int dir, sc_core::sc_export<PacketSinkIf> &in, tlm::
     bind_link_out(dir, in);
     LinkInSocket &target = receiver.next_link_in();
     // A crossing lands in the receiver's input for that socket, then in its arrival state.
-    m_ways.set_lines(dir, &receiver.m_inputs[receiver.m_processor_source - 1], &receiver.m_pool);
+    const Landing landing = receiver.last_link_landing();
+    m_ways.set_lines(dir, landing.input, landing.arrivals);
     socket.bind(target);
 }
 

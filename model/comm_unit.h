@@ -97,6 +97,15 @@ class CommUnit final : public sc_core::sc_module,
     // The next incoming-link socket not yet handed out, for a link to bind to (elaboration). A
     // link's crossings are numbered by its socket, so sources are numbered in this order.
     LinkInSocket &next_link_in();
+    // Where a crossing into the socket next_link_in() handed out last lands first: the input
+    // that socket is bound to, and the unit's own state a crossing reads first (its members
+    // from m_pool on: the pool, the wake, the arrival queue). Addresses for a sender's
+    // prefetch (hop_path.h), never read through; elaboration.
+    struct Landing {
+        const void *input;
+        const void *arrivals;
+    };
+    Landing last_link_landing() const { return {&m_inputs[m_processor_source - 1], &m_pool}; }
 
     void accept(const TimedPacket &p) override;
     // From the processor side by handle in the machine's pool (a packet its processor stepped in
