@@ -9,7 +9,8 @@
  * when P does not divide N), cyclic gives c mod P, block-cyclic with block
  * size B gives (c / B) mod P. Returns RT_ERR_INVALID for P < 1 or B < 1.
  * More processors than cells along an axis is allowed: the extra
- * processors own no cells.
+ * processors own no cells. These are the axis-wise mappings; the model's
+ * others (a map file, the cost mappings) make tables of their own.
  */
 #ifndef RT_MAPPING_H
 #define RT_MAPPING_H
@@ -24,13 +25,9 @@ extern "C" {
 #endif
 
 typedef enum rt_map_kind {
-    RT_MAP_BLOCK = 0,        /* contiguous blocks (paper Fig. 2a) */
-    RT_MAP_CYCLIC = 1,       /* interleaved, load-balancing (paper Fig. 2b) */
-    RT_MAP_BLOCK_CYCLIC = 2, /* blocks of B cells dealt cyclically */
-    RT_MAP_FILE = 3,         /* an explicit table (rt_map_file.h); not made by rt_mapping_fill */
-    RT_MAP_COST = 4,         /* from measured work and traffic (rt_cost_map.h); not made by rt_mapping_fill */
-    RT_MAP_SCATTER =
-        5 /* measured work dealt to the least loaded node (rt_cost_map_scatter); not made by rt_mapping_fill */
+    RT_MAP_BLOCK = 0,       /* contiguous blocks (paper Fig. 2a) */
+    RT_MAP_CYCLIC = 1,      /* interleaved, load-balancing (paper Fig. 2b) */
+    RT_MAP_BLOCK_CYCLIC = 2 /* blocks of B cells dealt cyclically */
 } rt_map_kind;
 
 /* Owner of cell index c along one axis of N cells over P processors. */

@@ -85,8 +85,6 @@ class ClusterBus : public sc_core::sc_module {
     uint64_t object_reads() const { return m_object_reads; }
     double packet_bytes() const { return m_packet_bytes; }
     double object_bytes() const { return m_object_bytes; }
-    const GrantStats &grant_stats() const { return m_all; }
-    const GrantStats &grant_stats(int requester) const { return m_per[requester]; }
     // Requesters waiting for a grant right now (for the deadlock report).
     int waiting() const;
     BusStats stats() const;

@@ -65,11 +65,11 @@ std::unique_ptr<DispatchPolicyIf> make_dispatch_policy(const std::string &name)
 }
 
 ClusterDispatcher::ClusterDispatcher(sc_core::sc_module_name name, const MachineConfig &config,
-                                     std::vector<IntersectionProcessor *> processors)
+                                     std::vector<IntersectionProcessor *> processors, const PacketQueueSetup &inbox)
     : sc_module(name), in("in"), bus_socket("bus_socket"), m_processors(std::move(processors)),
       m_policy(make_dispatch_policy(config.dispatch)),
-      m_inbox(std::string(basename()) + ".queue", config.queue_capacity), m_time(config.style == TimingStyle::lt),
-      m_flow(config.flow), m_dispatched(m_processors.size(), 0)
+      m_inbox(std::string(basename()) + ".queue", config.queue_capacity, inbox),
+      m_time(config.style == TimingStyle::lt), m_flow(config.flow), m_dispatched(m_processors.size(), 0)
 {
     in.bind(*this);
     SC_HAS_PROCESS(ClusterDispatcher);

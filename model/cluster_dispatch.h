@@ -56,8 +56,10 @@ class ClusterDispatcher : public sc_core::sc_module, public PacketSinkIf {
     sc_core::sc_export<PacketSinkIf> in;                               // packets for this node's cells
     tlm_utils::simple_initiator_socket<ClusterDispatcher> bus_socket;  // packet writes over the bus
 
+    // `inbox`: the machine's choices for its input queue (pool, primaries).
     ClusterDispatcher(sc_core::sc_module_name name, const MachineConfig &config,
-                      std::vector<IntersectionProcessor *> processors);
+                      std::vector<IntersectionProcessor *> processors,
+                      const PacketQueueSetup &inbox = PacketQueueSetup());
 
     void accept(const TimedPacket &p) override { m_inbox.push_blocking(p); }
     void accept_pooled(PacketPool &pool, uint32_t handle) override { m_inbox.push_pooled(pool, handle); }

@@ -47,10 +47,12 @@ ClusterNode::ClusterNode(sc_core::sc_module_name name, const MachineConfig &conf
         m_memories.push_back(std::move(mem));
         m_ports.push_back(std::move(port));
     }
-    m_dispatcher = std::make_unique<ClusterDispatcher>("dispatcher", config, procs);
+    PacketQueueSetup inbox;
+    inbox.pool = pool;
+    inbox.primaries = primaries;
+    inbox.entry_node = node;
+    m_dispatcher = std::make_unique<ClusterDispatcher>("dispatcher", config, procs, inbox);
     m_dispatcher->bus_socket.bind(m_bus->target);  // requester m, bound last
-    if (pool) m_dispatcher->inbox().use_pool(*pool);
-    if (primaries) m_dispatcher->inbox().attach(primaries, node);
 }
 
 ClusterNode::~ClusterNode() = default;

@@ -73,7 +73,8 @@ void CommUnit::connect_link(int dir, sc_core::sc_export<PacketSinkIf> &in, tlm::
     bind_link_out(dir, in);
     LinkInSocket &target = receiver.next_link_in();
     // A crossing lands in the receiver's input for that socket, then in its arrival state.
-    m_ways.set_lines(dir, &receiver.m_inputs[receiver.m_processor_source - 1], &receiver.m_pool);
+    const Landing landing = receiver.last_link_landing();
+    m_ways.set_lines(dir, landing.input, landing.arrivals);
     socket.bind(target);
 }
 
@@ -137,12 +138,6 @@ bool CommUnit::processor_held() const { return m_held_total && m_held_count[proc
 
 void CommUnit::accept(const TimedPacket &p)
 {
-    if (p.from_host) {  // a primary at its entry node: straight to the processor side
-        TimedPacket q = p;
-        next_hop(q, owner_of(q)).sink->accept(q);
-        m_local++;
-        return;
-    }
     // Called in the processor side's thread: it waits while one of its packets is held.
     while (processor_held()) sc_core::wait(m_processor_room);
     from_processor(m_pool->add(p, owner_of(p)));
@@ -150,7 +145,7 @@ void CommUnit::accept(const TimedPacket &p)
 
 void CommUnit::accept_pooled(PacketPool &pool, uint32_t handle)
 {
-    if (&pool != m_pool || pool.at(handle).from_host) {
+    if (&pool != m_pool) {
         PacketSinkIf::accept_pooled(pool, handle);  // copied in
         return;
     }

@@ -1,14 +1,14 @@
-// comm_unit.h - a node's communication unit: takes packets from its IP (or cluster), from the
-// host and from incoming links (TLM-2.0 b_transport), and routes each to the local processor
-// side or to the outgoing link of the first hop toward the owner of the packet's cell.
+// comm_unit.h - a node's communication unit: takes packets from its IP (or cluster) and from
+// incoming links (TLM-2.0 b_transport), and routes each to the local processor side or to the
+// outgoing link of the first hop toward the owner of the packet's cell. The host's primaries
+// never pass through it: the processor side's input queue takes them from the primary source.
 //
 // Timing path: packets from the links and from the processor side enter the arrival queue (a
 // payload event queue) at their annotated time; one SC_METHOD delivers every arrival due, in the
 // arrival queue's fixed order (time, source, sequence), but never one pushed in the same delta
 // cycle: that one waits for the next delta, so whether its sender ran before or after the
 // delivery method does not matter. Sources: incoming links 0..L-1, numbered in the order their
-// sockets were bound (next_link_in), then the processor side (L). Host primaries go straight to
-// the local processor side (they never wait). With route_at_once (flat, approximately timed,
+// sockets were bound (next_link_in), then the processor side (L). With route_at_once (flat, approximately timed,
 // positive link time, unbounded buffers) a packet from the processor side for another node is
 // routed as it is handed over when no arrival is due: the processor runs after the delta's
 // deliveries, so this is the order of one delta later.
@@ -86,7 +86,7 @@ class CommUnit final : public sc_core::sc_module,
     // Packets from incoming links: one socket per neighbour (none when the node has none).
     using LinkInSocket = tlm::tlm_target_socket<32, tlm::tlm_base_protocol_types, 1, sc_core::SC_ZERO_OR_MORE_BOUND>;
     sc_core::sc_vector<LinkInSocket> link_in;
-    sc_core::sc_export<PacketSinkIf> in;   // packets from the IP side and the host
+    sc_core::sc_export<PacketSinkIf> in;   // packets from the IP side
     sc_core::sc_port<PacketSinkIf> local;  // packets for this node's cells
     sc_core::sc_port<PacketSinkIf, kDirections, sc_core::SC_ZERO_OR_MORE_BOUND> link_out;  // outgoing links
 
@@ -97,6 +97,15 @@ class CommUnit final : public sc_core::sc_module,
     // The next incoming-link socket not yet handed out, for a link to bind to (elaboration). A
     // link's crossings are numbered by its socket, so sources are numbered in this order.
     LinkInSocket &next_link_in();
+    // Where a crossing into the socket next_link_in() handed out last lands first: the input
+    // that socket is bound to, and the unit's own state a crossing reads first (its members
+    // from m_pool on: the pool, the wake, the arrival queue). Addresses for a sender's
+    // prefetch (hop_path.h), never read through; elaboration.
+    struct Landing {
+        const void *input;
+        const void *arrivals;
+    };
+    Landing last_link_landing() const { return {&m_inputs[m_processor_source - 1], &m_pool}; }
 
     void accept(const TimedPacket &p) override;
     // From the processor side by handle in the machine's pool (a packet its processor stepped in
@@ -104,7 +113,7 @@ class CommUnit final : public sc_core::sc_module,
     void accept_pooled(PacketPool &pool, uint32_t handle) override;
     // The processor side may hand over now unless one of its packets is held; else on_space()'s
     // event is notified once none is (a processor that must not wait in accept() waits for it).
-    bool can_accept(const TimedPacket &p) const override { return p.from_host || !processor_held(); }
+    bool can_accept(const TimedPacket &) const override { return !processor_held(); }
     void on_space(const TimedPacket &p, sc_core::sc_event &e) override;
     BufferSpace *room_for(const TimedPacket &p) override;
     // Binds link_out to `sink`, the way out in direction `dir` (elaboration; a link's own
@@ -127,8 +136,6 @@ class CommUnit final : public sc_core::sc_module,
         return true;
     }
 
-    uint64_t routed_local() const { return m_local; }
-    uint64_t routed_transit() const { return m_transit; }
     // Packets held for room further on (for the deadlock report).
     size_t held() const;
     CommUnitStats stats() const { return {m_local, m_transit, held()}; }

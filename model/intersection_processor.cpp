@@ -1,12 +1,11 @@
 // intersection_processor.cpp - the IP's state machine (one kernel packet step per packet taken
-// up) and its two drivers: SC_METHODs (flat) or an SC_THREAD (cluster).
+// up); processor_driver.cpp runs it.
 #include "intersection_processor.h"
 
 #include <algorithm>
 #include <stdexcept>
 
 #include "flow_control.h"
-#include "sim_now.h"
 
 namespace torusrt {
 
@@ -15,31 +14,28 @@ IntersectionProcessor::IntersectionProcessor(sc_core::sc_module_name name, const
                                              int owner_id, int index, PacketLedger &ledger, const ProcessorSetup &setup)
     : sc_module(name), in("in"), out("out"), fetch("fetch"), fb_socket("fb_socket"),
       m_reserving(config.flow != FlowControl::none && config.queue_capacity != 0), m_threaded(config.cluster > 1),
-      m_timer_wake(setup.calendar, *this, m_timer), m_config(config), m_scene(scene), m_grid(grid), m_owner(cell_owner),
-      m_owner_id(owner_id), m_index(index), m_ledger(ledger), m_params(config.step),
-      m_time(config.style == TimingStyle::lt), m_queue(std::string(basename()) + ".queue", config.queue_capacity)
+      m_config(config), m_scene(scene), m_grid(grid), m_owner(cell_owner), m_owner_id(owner_id), m_index(index),
+      m_ledger(ledger), m_params(config.step), m_time(config.style == TimingStyle::lt),
+      m_driver(*this, m_queue, m_room, m_out_room, setup.calendar, setup.activations, setup.order_after),
+      m_queue(std::string(basename()) + ".queue", config.queue_capacity,
+              {setup.pool, setup.primaries, owner_id, config.queue_order == QueueOrder::rays_first,
+               setup.order_after ? &m_driver : nullptr})
 {
     in.bind(*this);
     m_params.replicas = setup.replicas;
     if (rt_step_result_init(&m_result, scene) != RT_OK) throw std::bad_alloc();
-    m_activations = setup.activations;
-    m_unit = setup.order_after;
-    if (setup.order_after) m_queue.tell_reader_at_once(this);
-    if (setup.pool) m_queue.use_pool(*setup.pool);
-    if (setup.primaries) m_queue.attach(setup.primaries, owner_id);
-    m_queue.take_rays_first(config.queue_order == QueueOrder::rays_first);
     SC_HAS_PROCESS(IntersectionProcessor);
     if (m_threaded) {
         SC_THREAD(run_thread);
         return;
     }
     SC_METHOD(on_wake);  // also runs once at the start
-    sensitive << m_timer << m_queue.not_empty_event() << m_out_room;
+    sensitive << m_driver.timer_event() << m_queue.not_empty_event() << m_out_room;
     SC_METHOD(on_room);
     sensitive << m_room;
     dont_initialize();
     SC_METHOD(run_method);
-    sensitive << m_act;
+    sensitive << m_driver.act_event();
     dont_initialize();
 }
 
@@ -121,13 +117,13 @@ bool IntersectionProcessor::try_take_up()
 
 bool IntersectionProcessor::owe(const TimeWait &w)
 {
-    m_delay = w.delay;
+    m_driver.owe(w.delay);
     return w.due;
 }
 
 IntersectionProcessor::Wake IntersectionProcessor::act()
 {
-    if (m_wake == Wake::timer) m_time.resumed();
+    if (m_driver.waited_for() == Wake::timer) m_time.resumed();
     for (;;) switch (m_stage) {
         case Stage::top:
             m_stage = Stage::take_up_first;
@@ -268,64 +264,6 @@ bool IntersectionProcessor::hand_over()
     if (m_threaded || m_hand_over_waited) m_blocked += m_time.now() - m_handed_at;
     m_hand_over_waited = false;
     return true;
-}
-
-void IntersectionProcessor::run_thread()
-{
-    for (;;) {
-        m_wake = act();
-        if (m_wake == Wake::timer) sc_core::wait(m_delay);
-        else if (m_wake == Wake::queue) sc_core::wait(m_queue.not_empty_event());
-        else if (m_wake == Wake::queue_or_room) sc_core::wait(m_queue.not_empty_event() | m_room);
-        else sc_core::wait(m_out_room);
-    }
-}
-
-void IntersectionProcessor::on_wake()
-{
-    m_woken = true;
-    ask_to_act();
-}
-
-void IntersectionProcessor::on_room()
-{
-    m_room_woken = true;
-    ask_to_act();
-}
-
-void IntersectionProcessor::ask_to_act()
-{
-    if (!m_activations) {
-        m_act.notify();  // immediate: run_method runs after the processes runnable now
-        return;
-    }
-    if (m_act_asked) return;
-    m_act_asked = true;
-    if (m_unit && !m_acting) {
-        if (m_unit->run_after_delivery(*this)) return;
-        if (!m_unit->arrival_due()) {
-            activate();  // nothing of its node is still to come in this delta
-            return;
-        }
-    }
-    m_activations->request(*this);
-}
-
-void IntersectionProcessor::run_method()
-{
-    // Only what the machine waits for moves it on (as for a thread): a release of a buffer it
-    // once waited on may come while it steps or waits on its queue alone.
-    bool go = m_woken || (m_room_woken && m_wake == Wake::queue_or_room);
-    if (m_wake == Wake::timer) go = m_woken && sim_now() >= m_due;
-    m_woken = m_room_woken = false;
-    if (!go) return;
-    m_acting = true;
-    m_wake = act();
-    m_acting = false;
-    if (m_wake != Wake::timer) return;
-    m_due = sim_now() + m_delay;
-    if (m_delay != sc_core::SC_ZERO_TIME) m_timer_wake.at(m_due, m_delay);
-    else m_timer.notify(sc_core::SC_ZERO_TIME);  // the next delta, as wait(SC_ZERO_TIME)
 }
 
 }  // namespace torusrt

@@ -7,20 +7,11 @@
 // packet in hand. Under --flow none it takes the oldest packet and waits at each hand-over.
 //
 // Process: one state machine (act(): take up, wait for the arrival, fetch, step, hand over) that
-// runs until it must wait and says what for. On a flat torus SC_METHODs drive it: the one woken
-// (by the timer, the queue or room for the outputs) asks the machine's activation queue
-// (activation_queue.h) to run the machine later in the same evaluation phase, after every
-// process that was runnable when it began, where a thread would run (after the delta's methods);
-// so it takes up a packet after every delivery and release of that delta cycle, whichever
-// SystemC ran first. (A processor alone notifies its own m_act at once, to the same effect.)
-// With unbounded buffers (order_after) only its own node's deliveries can come before it in a
-// delta: it then runs at once, or right after its unit's delivery round, and the activation
-// queue serves only a wake while its unit still has an arrival due. Without reservations it
-// steps a packet in its pool slot and forwards it by the same handle.
-// Its timed waits end through the machine's wake calendar (wake_calendar.h) where the machine has
-// one, which calls on_wake's work in the first delta of the time, as the timer event would.
-// In a cluster an SC_THREAD drives the same machine, because crossing the cluster bus (packets
-// out, shared-data fetches) waits in b_transport.
+// runs until it must wait and says what for. Its driver (processor_driver.h) runs it again when
+// that comes, and decides its order within a delta cycle: SC_METHODs on a flat torus, an
+// SC_THREAD in a cluster, because crossing the cluster bus (packets out, shared-data fetches)
+// waits in b_transport. Without reservations it steps a packet in its pool slot and forwards it
+// by the same handle.
 #pragma once
 
 #include <string>
@@ -35,6 +26,7 @@
 #include "packet_ledger.h"
 #include "packet_queue.h"
 #include "packet_sink_if.h"
+#include "processor_driver.h"
 #include "queue_registry.h"
 #include "rt_grid.h"
 #include "rt_ops.h"
@@ -74,11 +66,7 @@ struct ProcessorSetup {
     const rt_replicas *replicas = nullptr;
 };
 
-class IntersectionProcessor : public sc_core::sc_module,
-                              public PacketSinkIf,
-                              public WakeCalendar::Client,
-                              public PacketQueue::Reader,
-                              public ActivationQueue::Client {
+class IntersectionProcessor : public sc_core::sc_module, public PacketSinkIf {
   public:
     sc_core::sc_export<PacketSinkIf> in;                                       // packets to process
     sc_core::sc_port<PacketSinkIf> out;                                        // new and forwarded packets
@@ -98,7 +86,6 @@ class IntersectionProcessor : public sc_core::sc_module,
     BufferSpace *room_for(const TimedPacket &p) override { return &m_queue.space_for(p); }
 
     // Statistics, read after the run.
-    const rt_op_counts &ops() const { return m_ops; }
     const sc_core::sc_time &busy_time() const { return m_busy; }
     uint64_t packets_in() const { return m_packets_in; }
     uint64_t packets_out() const { return m_packets_out; }
@@ -123,9 +110,8 @@ class IntersectionProcessor : public sc_core::sc_module,
     bool busy() const { return m_busy_flag; }   // working on a packet now
 
   private:
-    // What the machine waits for: its timer (m_delay), its queue, its queue or room for its
-    // outputs, or the processor side of its communication unit (--flow none, a packet held).
-    enum class Wake : uint8_t { start, timer, queue, queue_or_room, out_room };
+    friend class ProcessorDriver;  // runs act()
+    using Wake = ProcessorWake;
     enum class Stage : uint8_t { top, take_up_first, take_up, begin, end, hand_over };
     // Runs the machine from m_stage until it must wait; returns what for.
     Wake act();
@@ -133,19 +119,11 @@ class IntersectionProcessor : public sc_core::sc_module,
     void begin_step();
     void end_step();
     bool hand_over();  // false: waiting for the processor side (m_out_room)
-    void run_thread();
-    void on_wake();
-    void wake_due() override { on_wake(); }     // the calendar's timer
-    void queue_ready() override { on_wake(); }  // a packet joined the empty queue (told at once)
-    void on_room();
-    // Runs the machine after the processes runnable now (once however often it is asked).
-    void ask_to_act();
-    void activate() override
-    {
-        m_act_asked = false;
-        run_method();
-    }
-    void run_method();
+    // The processes, each its driver's.
+    void run_thread() { m_driver.run_thread(); }
+    void on_wake() { m_driver.woken(); }
+    void on_room() { m_driver.room_released(); }
+    void run_method() { m_driver.run(); }
     void end_of_elaboration() override;
     void start_of_simulation() override
     {
@@ -164,9 +142,6 @@ class IntersectionProcessor : public sc_core::sc_module,
     // What a step reads and writes first, in the order a step touches it; what only a cluster,
     // the class scheme or a copied packet uses after the queue.
     Stage m_stage = Stage::top;
-    Wake m_wake = Wake::start;
-    bool m_woken = false, m_room_woken = false;  // method driver: what woke it this delta
-    bool m_act_asked = false, m_acting = false;
     bool m_reserving;                 // outputs reserve their slots before a packet is taken up
     bool m_threaded;                  // a thread (cluster): a hand-over may wait for the bus
     bool m_forward_pooled = false;    // the step forwards the packet taken up by its handle
@@ -177,14 +152,10 @@ class IntersectionProcessor : public sc_core::sc_module,
     uint32_t m_out_cls = 0;  // the class of the step's outputs
     // The packet taken up: m_current, or its pool slot (m_handle) where it was stepped in place.
     TimedPacket *m_cur = &m_current;
-    DeliveryRoundIf *m_unit = nullptr;  // order_after: its node's unit
-    ActivationQueue *m_activations = nullptr;
-    TimedWake m_timer_wake;  // ends a timed wait: the machine's calendar, or m_timer
     // The interfaces bound to `out` and `fb_socket`, kept after elaboration so a step does not
     // read the ports for them.
     PacketSinkIf *m_out = nullptr;
     tlm::tlm_fw_transport_if<> *m_fb = nullptr;
-    sc_core::sc_time m_delay, m_due;  // the owed wait and when it ends
     const MachineConfig &m_config;
     const rt_scene *m_scene;
     const rt_grid *m_grid;
@@ -203,6 +174,9 @@ class IntersectionProcessor : public sc_core::sc_module,
     rt_step_result m_result;
     // The current step's created packets, then the forwarded one (by copy).
     std::vector<TimedPacket> m_outputs;
+    sc_core::sc_event m_room;      // an output's buffer released a slot
+    sc_core::sc_event m_out_room;  // the processor side may hand over again
+    ProcessorDriver m_driver;      // runs act() when what it waits for comes (the queue's reader)
     PacketQueue m_queue;
     TimedPacket m_current;  // the packet taken up (after its step), when taken up by copy
     // Idle time waiting for room or to hand over; a wait for room for the outputs of a packet in
@@ -210,12 +184,6 @@ class IntersectionProcessor : public sc_core::sc_module,
     sc_core::sc_time m_blocked, m_room_from;
     std::vector<uint32_t> m_tested;       // objects tested in the current step (shared data only)
     tlm::tlm_generic_payload m_fb_trans;  // a member, not a thread local: freed with the module
-    // On the calendar's path (a flat machine with a positive link time) no event is touched per
-    // step.
-    sc_core::sc_event m_room;      // an output's buffer released a slot
-    sc_core::sc_event m_out_room;  // the processor side may hand over again
-    sc_core::sc_event m_timer;     // method driver: the owed wait is over
-    sc_core::sc_event m_act;       // method driver: run the machine (notified at once)
 };
 
 }  // namespace torusrt

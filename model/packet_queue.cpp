@@ -4,8 +4,10 @@
 
 namespace torusrt {
 
-PacketQueue::PacketQueue(std::string name, unsigned capacity)
-    : m_items(&m_own_pool), m_spaces(capacity), m_name(std::move(name))
+PacketQueue::PacketQueue(std::string name, unsigned capacity, const PacketQueueSetup &setup)
+    : m_items(setup.pool ? setup.pool : &m_own_pool), m_rays_first(setup.rays_first), m_ready_reader(setup.reader),
+      m_source(setup.primaries), m_node(setup.primaries ? setup.entry_node : -1), m_spaces(capacity),
+      m_name(std::move(name))
 {
 }
 
@@ -101,13 +103,6 @@ bool PacketQueue::try_take_first_pooled(uint32_t &handle)
         return true;
     }
     return false;
-}
-
-TimedPacket PacketQueue::pop_blocking()
-{
-    TimedPacket tp;
-    while (!try_take_first(tp)) wait_for(nullptr);
-    return tp;
 }
 
 }  // namespace torusrt

@@ -7,7 +7,7 @@
 // pixel order, before the network packets, as if all had been injected at time 0.
 //
 // Storage: the queue holds 32-bit handles into a packet pool (packet_pool.h), the machine's one
-// (use_pool) or, for a queue alone, its own. A packet delivered from the network by handle
+// (PacketQueueSetup::pool) or, for a queue alone, its own. A packet delivered from the network by handle
 // (push_pooled, from the same pool) stays in its slot: a push copies nothing and allocates
 // nothing; a packet pushed by value (push_blocking) is copied into a slot once. The slot is
 // freed when a reader takes the packet.
@@ -15,7 +15,7 @@
 // try_take() offers the packets to the reader in that order (the primary first when due, then
 // the queued packets oldest first, then a primary not yet due) and removes the first it accepts;
 // a reader that accepts every packet sees a plain FIFO (try_take_first). That is the order
-// primaries-first (--queue-order); under rays-first (take_rays_first) the offer is: the queued
+// primaries-first (--queue-order); under rays-first (PacketQueueSetup::rays_first) the offer is: the queued
 // ray packets newest first, then the next primary when due (its injection time no later than
 // the newest shadow packet's stamp, or no shadow packet waits), then the shadow packets newest
 // first, then a primary not yet due. A ray packet leads to more work (a hit makes shadow
@@ -25,7 +25,7 @@
 // slot; only the packet taken is copied out. A process that must not wait (an SC_METHOD) calls
 // the try_ forms and, when nothing was taken, wait_reader() and then waits on not_empty_event()
 // (and, unless empty(), on its own retry event); a thread calls the blocking take_first(). A
-// reader set with tell_reader_at_once() is called instead, in the pushing delta.
+// reader given in PacketQueueSetup::reader is called instead, in the pushing delta.
 #pragma once
 
 #include <cstdint>
@@ -41,15 +41,31 @@
 
 namespace torusrt {
 
+// A reader told at once, in the writer's delta, instead of through not_empty_event() one delta
+// on: it must itself run only after the processes runnable now (a flat processor).
+class PacketQueueReader {
+  public:
+    virtual void queue_ready() = 0;
+
+  protected:
+    ~PacketQueueReader() = default;
+};
+
+// The machine's choices for a queue, fixed at elaboration; a queue alone takes the defaults.
+struct PacketQueueSetup {
+    PacketPool *pool = nullptr;           // where the packets are kept: the machine's pool (null: the queue's own)
+    PrimarySource *primaries = nullptr;   // the host's primaries that feed the queue (null: none)
+    int entry_node = 0;                   // the node whose primaries those are
+    bool rays_first = false;              // the rays-first order above (false: primaries-first)
+    PacketQueueReader *reader = nullptr;  // told of a push at once (null: not_empty_event() only)
+};
+
 class PacketQueue {
   public:
     // capacity 0 = unbounded.
-    PacketQueue(std::string name, unsigned capacity);
+    PacketQueue(std::string name, unsigned capacity, const PacketQueueSetup &setup = PacketQueueSetup());
     PacketQueue(const PacketQueue &) = delete;
     PacketQueue &operator=(const PacketQueue &) = delete;
-
-    // Keeps the packets in `pool`, the machine's (call at elaboration, while empty).
-    void use_pool(PacketPool &pool) { m_items.use_pool(pool); }
 
     // The buffer `p` takes a slot in.
     BufferSpace &space_for(const TimedPacket &p) { return m_spaces.at(p.cls); }
@@ -65,8 +81,6 @@ class PacketQueue {
     // The same for packet `handle` of `pool`: from this queue's pool it stays in its slot, which
     // the queue now owns; from another it is copied in and released there.
     void push_pooled(PacketPool &pool, uint32_t handle);
-    // Removes the oldest packet, waiting while the queue is empty.
-    TimedPacket pop_blocking();
     // Removes the first packet (in the order above) that `accept` (a callable taking a
     // const TimedPacket &) takes, copying it to `*taken` unless null; false: none taken (nothing
     // removed). When it refuses, `accept` registers its retry event with whatever it waits for.
@@ -84,24 +98,7 @@ class PacketQueue {
     // push, tells the reader set below) until the reader's next try.
     void wait_reader() { m_reader_waiting = true; }
     sc_core::sc_event &not_empty_event() { return m_not_empty; }
-    // A reader told at once, in the writer's delta, instead of through not_empty_event() one
-    // delta on: it must itself run only after the processes runnable now (a flat processor).
-    class Reader {
-      public:
-        virtual void queue_ready() = 0;
-
-      protected:
-        ~Reader() = default;
-    };
-    void tell_reader_at_once(Reader *reader) { m_ready_reader = reader; }
-    // Offers ray packets first, newest first (the rays-first order above); false: primaries-first.
-    void take_rays_first(bool on) { m_rays_first = on; }
-    // Feeds this queue with `source`'s primaries for entry node `node`.
-    void attach(PrimarySource *source, int node)
-    {
-        m_source = source;
-        m_node = node;
-    }
+    using Reader = PacketQueueReader;
     // Wakes a reader waiting on an empty queue, so it looks again at the primary source
     // (a new frame's primaries appeared between two sc_start calls).
     void wake()

@@ -24,7 +24,6 @@ class PooledFifo {
     explicit PooledFifo(PacketPool *pool) : m_pool(pool) {}
 
     // Keeps the packets in `pool` (while empty).
-    void use_pool(PacketPool &pool) { m_pool = &pool; }
     PacketPool &pool() const { return *m_pool; }
     bool empty() const { return m_items.empty(); }
     size_t size() const { return m_items.size(); }

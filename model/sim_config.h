@@ -12,7 +12,6 @@
 #include "routing.h"
 #include "preprocess_count.h"
 #include "rt_budget.h"
-#include "rt_mapping.h"
 #include "rt_memory.h"
 #include "rt_replicas.h"
 #include "rt_step.h"
@@ -38,8 +37,9 @@ enum class FlowControl { none, classes };               // see flow_control.h
 enum class ReplicaRule { nearest, hash };               // see replica_choice.h
 enum class QueueOrder { primaries_first, rays_first };  // see packet_queue.h
 
-// The names the options take and the reports print (the arbiter and dispatch policies are
-// named by their registries, bus_arbiter.h and cluster_dispatch.h).
+// The names the options take and the reports print (the arbiter and dispatch policies and the
+// mappings are named by their registries, bus_arbiter.h, cluster_dispatch.h and
+// run/mapping/mapping.h).
 constexpr NamedValue<Topology> kTopologyNames[] = {{Topology::torus, "torus"}, {Topology::mesh, "mesh"}};
 constexpr NamedValue<RouteTies> kRouteTiesNames[] = {{RouteTies::split, "split"}, {RouteTies::plus, "plus"}};
 constexpr NamedValue<TimingStyle> kStyleNames[] = {{TimingStyle::at, "at"}, {TimingStyle::lt, "lt"}};
@@ -49,9 +49,6 @@ constexpr NamedValue<ReplicaRule> kReplicaRuleNames[] = {{ReplicaRule::nearest, 
                                                          {ReplicaRule::hash, "hash"}};
 constexpr NamedValue<QueueOrder> kQueueOrderNames[] = {{QueueOrder::primaries_first, "primaries-first"},
                                                        {QueueOrder::rays_first, "rays-first"}};
-constexpr NamedValue<rt_map_kind> kMappingNames[] = {
-    {RT_MAP_BLOCK, "block"}, {RT_MAP_CYCLIC, "cyclic"}, {RT_MAP_BLOCK_CYCLIC, "block-cyclic"},
-    {RT_MAP_FILE, "file"},   {RT_MAP_COST, "cost"},     {RT_MAP_SCATTER, "scatter"}};
 
 // The machine: everything that decides the image time. machine_options.h writes it back as
 // the options that rebuild it (--dump-config, the JSON report's config.options).
@@ -61,7 +58,7 @@ struct MachineConfig {
     RouteTies route_ties = kDefaultRouteTies;                    // the way round an even ring on a tie
     std::array<int, 3> cells{24, 24, 24};                        // grid cells per axis (the object space's division)
     rt_preprocess_count preprocess_count = RT_COUNT_SEQUENTIAL;  // how preprocessing units are counted
-    rt_map_kind mapping = RT_MAP_CYCLIC;                         // cell-to-node mapping
+    std::string mapping = "cyclic";                              // cell-to-node mapping, by its registered name
     int block = 1;                                               // block size of block-cyclic, K of cost:K
     std::string map_file;                                        // --map-file: explicit cell -> node table
     std::array<unsigned, 2> pilot_size{0, 0};                    // --pilot-size for --map cost (0 = the image's)
@@ -85,8 +82,6 @@ struct MachineConfig {
     rt_memory_layout memory_layout = rt_memory_layout_default();  // what the memory report charges
 
     int node_count() const { return ips[0] * ips[1] * ips[2]; }
-    // A mapping made from a pilot run's measured work (--map cost, cost:K or scatter).
-    bool measured_mapping() const { return mapping == RT_MAP_COST || mapping == RT_MAP_SCATTER; }
     int processor_count() const { return node_count() * cluster; }
 };
 
@@ -113,7 +108,7 @@ struct RunOptions {
 
 // A run of a machine, with the cell -> node table prepared for it (prepare_mapping).
 struct SimConfig : MachineConfig, RunOptions {
-    std::vector<int32_t> owner_table;  // node of every cell (empty: rt_mapping_fill)
+    std::vector<int32_t> owner_table;  // node of every cell (empty: the mapping fills it)
     // Extra owners of replicated cells (rt_replicas.h; both empty: none): per cell, cells + 1
     // offsets into replica_extra.
     std::vector<uint32_t> replica_first;
@@ -129,7 +124,6 @@ void validate_machine(const MachineConfig &machine);
 void validate_run(const RunOptions &run, const MachineConfig &machine);
 void validate(const SimConfig &config);
 
-inline const char *mapping_name(rt_map_kind kind) { return name_in(kMappingNames, kind); }
 inline const char *topology_name(Topology t) { return name_in(kTopologyNames, t); }
 inline const char *route_ties_name(RouteTies r) { return name_in(kRouteTiesNames, r); }
 inline const char *style_name(TimingStyle s) { return name_in(kStyleNames, s); }

@@ -32,10 +32,6 @@ class TransactionPool : public tlm::tlm_mm_interface {
         m_free.pop_back();
         return c;
     }
-    // Transactions made (for the tests: one unless crossings nested).
-    size_t made() const { return m_made.size(); }
-    size_t free_count() const { return m_free.size(); }
-
     // The last release of a transaction taken from this pool (tlm_generic_payload::release).
     void free(tlm::tlm_generic_payload *trans) override
     {

@@ -17,9 +17,6 @@ int rt_mapping_axis_owner(rt_map_kind kind, int block, int c, int cells, int pro
     case RT_MAP_BLOCK_CYCLIC:
         if (block < 1) return -1;
         return (c / block) % procs;
-    case RT_MAP_FILE:
-    case RT_MAP_COST:
-    case RT_MAP_SCATTER: /* tables, not per-axis rules */ return -1;
     }
     return -1;
 }

@@ -29,6 +29,7 @@
 #include "scene_motion.h"
 #include "scene_setup.h"
 #include "sim_config.h"
+#include "mapping.h"
 #include "mapping_setup.h"
 #include "option_registration.h"
 #include "option_spec.h"
@@ -232,8 +233,8 @@ int dump_config(const CommandLine &cl)
     check_config(cl, request);
     check_streams(cl, request.config);  // nor into a file the machine file names
     const SimConfig &config = request.config;
-    std::vector<int32_t> owner;  // the table a run would read, checked as the run checks it
-    if (config.mapping == RT_MAP_FILE) read_map_file(config, config.cells.data(), owner);
+    // The table a run would read, checked as the run checks it.
+    if (const auto check = mapping_of(config).check_inputs) check(config);
     std::fputs(machine_options_toml(config, cl.with_timing).c_str(), stdout);
     return 0;
 }
@@ -281,10 +282,8 @@ int run(CommandLine &cl, double wall_start, int argc, char **argv)
     const SimConfig &config = request.config;
     if (config.replicate > 0 && request.remap != RemapPolicy::static_map)
         throw UserError("--replicate: not with --remap (a remapped table keeps one owner per cell)", 2);
-    if (config.mapping == RT_MAP_SCATTER && request.remap != RemapPolicy::static_map)
-        throw UserError("--map scatter: not with --remap (the frames after the first are remapped with Scotch; use "
-                        "--map cost)",
-                        2);
+    if (mapping_of(config).no_remap && request.remap != RemapPolicy::static_map)
+        throw UserError("--map " + config.mapping + ": not with --remap (" + mapping_of(config).no_remap + ")", 2);
     if (config.replicate > 0 && request.motion)
         throw UserError("--replicate: not with --motion (a moved object's transfers are counted for one owner "
                         "per cell)",

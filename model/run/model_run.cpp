@@ -11,9 +11,9 @@
 #include <unistd.h>
 
 #include "internal_check.h"
+#include "mapping.h"
 #include "packet_ledger.h"
 #include "progress.h"
-#include "rt_mapping.h"
 #include "run_frames.h"
 #include "run_report.h"
 #include "run_stage.h"
@@ -75,15 +75,11 @@ void check_conservation(const PacketLedger &ledger)
 
 std::vector<int32_t> owner_table_of(const SimConfig &config, const rt_grid *grid)
 {
-    int dims[3];
-    rt_grid_dims(grid, dims);
     std::vector<int32_t> owner = config.owner_table;
-    char msg[RT_MSG_LEN] = "";
     if (owner.empty()) {
         owner.resize(rt_grid_cell_count(grid));
-        if (rt_mapping_fill(dims, config.ips.data(), config.mapping, config.block, owner.data(), msg, sizeof msg) !=
-            RT_OK)
-            throw UserError(std::string("--map: ") + msg, 2);
+        ReplicaTable none;
+        mapping_of(config).fill(config, nullptr, grid, owner, none);
     }
     return owner;
 }
@@ -131,7 +127,7 @@ double one_processor_time(const SimConfig &config, const rt_scene *scene, const 
     SimConfig one = config;
     one.ips = {1, 1, 1};
     one.cluster = 1;
-    one.mapping = RT_MAP_BLOCK;  // one node owns every cell, whatever the mapping
+    one.mapping = "block";  // one node owns every cell, whatever the mapping
     one.owner_table.clear();
     one.replica_first.clear();
     one.replica_extra.clear();

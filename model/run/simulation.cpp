@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "frame_report.h"
+#include "mapping.h"
 #include "mapping_setup.h"
 #include "model_run.h"
 #include "output_files.h"
@@ -207,12 +208,8 @@ int simulate(SimRequest &r, double wall_start_s)
     SimConfig &config = r.config;
     StagedOutputs outputs;
     stage_outputs(r, outputs);
-    // The map file needs only the grid's size: a bad one is named before the scene is read.
-    if (config.mapping == RT_MAP_FILE) {
-        std::vector<int32_t> owner;
-        ReplicaTable replicas;
-        read_map_file(config, config.cells.data(), owner, replicas);
-    }
+    // What the mapping reads (a map file) is checked before the scene is.
+    if (const auto check = mapping_of(config).check_inputs) check(config);
     set_run_stage("loading the scene and building its cell lists");
     LoadedScene loaded;
     FrameScene fs = load_frame_scene(r, loaded);

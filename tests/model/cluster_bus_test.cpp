@@ -157,6 +157,8 @@ struct LtProbe : sc_core::sc_module {
 };
 
 double to_us(const sc_time &t) { return t.to_seconds() * 1e6; }
+// A grant wait of the bus's statistics (in the kernel's time units), in us.
+double wait_us(uint64_t value) { return to_us(sc_time::from_value(value)); }
 
 // What the arbiters chose alone (before the run).
 struct ArbiterChoices {
@@ -209,10 +211,11 @@ Saturation saturation(const SaturatedBus &b)
     Saturation s;
     ClusterBus &bus = *b.bus;
     s.transfers = bus.transfers();
-    s.low_wait_max = to_us(bus.grant_stats(3).wait_max);
-    s.high_wait_max = to_us(bus.grant_stats(0).wait_max);
-    s.wait_max = to_us(bus.grant_stats().wait_max);
-    s.low_wait_mean = to_us(bus.grant_stats(3).wait_sum) / bus.grant_stats(3).grants;
+    const BusStats stats = bus.stats();
+    s.low_wait_max = wait_us(stats.per_requester[3].wait_max);
+    s.high_wait_max = wait_us(stats.per_requester[0].wait_max);
+    s.wait_max = wait_us(stats.all.wait_max);
+    s.low_wait_mean = wait_us(stats.per_requester[3].wait_sum) / stats.per_requester[3].grants;
     s.utilisation = bus.busy_time().to_seconds() / sc_core::sc_time_stamp().to_seconds();
     s.one_at_a_time = grants_never_overlap(b.grants.grants, s.why);
     for (const auto &g : b.grants.grants) s.durations.push_back(to_us(g.end - g.start));
@@ -294,7 +297,7 @@ Outcome simulate()
     run.packet_bytes = time_bus.packet_bytes(), run.object_bytes = time_bus.object_bytes();
     run.reads_served = time_mem.reads_served();
     run.lt_ends = probe.ends_us, run.lt_unheld_failed = probe.unheld_read_failed;
-    run.lt_wait_max = to_us(lt_bus.grant_stats().wait_max);
+    run.lt_wait_max = wait_us(lt_bus.stats().all.wait_max);
     return run;
 }
 

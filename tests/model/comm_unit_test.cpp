@@ -2,9 +2,8 @@
 // owner of its cell: its own cells to the local side, others to the link of the first hop
 // (dimension order, the shorter way; on a tie + for a pixel with x + y even, - for odd); packets from its links are
 // delivered at their annotated arrival time, simultaneous ones in source-port order and then in send order, and each
-// link slot (credit) is given back at delivery; host primaries go straight to the local side; processor-side packets
-// leave at their stamp. The unit has one link socket per neighbour, handed out in order, and answers only blocking
-// transport on them.
+// link slot (credit) is given back at delivery; processor-side packets leave at their stamp. The unit has one link
+// socket per neighbour, handed out in order, and answers only blocking transport on them.
 #include <systemc>
 #include <tlm>
 #include <tlm_utils/simple_initiator_socket.h>
@@ -19,13 +18,12 @@ using sc_core::sc_time;
 using namespace torusrt;
 
 // A packet in cell (cell, 0, 0), tagged by its x pixel.
-static TimedPacket packet_in(int cell, uint32_t tag, sc_time stamp = sc_core::SC_ZERO_TIME, bool host = false)
+static TimedPacket packet_in(int cell, uint32_t tag, sc_time stamp = sc_core::SC_ZERO_TIME)
 {
     TimedPacket p{};
     p.packet.dda.cell[0] = cell;
     p.packet.x = tag;
     p.stamp = stamp;
-    p.from_host = host;
     return p;
 }
 
@@ -74,7 +72,7 @@ struct LinkSender : sc_core::sc_module {
     }
 };
 
-// The processor side and the host: hands packets to the unit's `in` at given times.
+// The processor side: hands packets to the unit's `in` at given times.
 struct ProcessorSide : sc_core::sc_module {
     sc_core::sc_port<PacketSinkIf> out;
     struct Push {
@@ -154,20 +152,19 @@ static Outcome simulate()
     ProcessorSide proc("proc");
     proc.out.bind(cu.in);
     proc.pushes = {
-        {us(20), packet_in(0, 20, us(20))},        // own cell: local
-        {us(20), packet_in(1, 21, us(20))},        // node 1: + link
-        {us(20), packet_in(3, 23, us(20))},        // node 3: - link
-        {us(20), packet_in(2, 22, us(20))},        // node 2, two hops either way: x + y = 22 even, +
-        {us(20), packet_in(2, 25, us(20))},        // node 2 again: x + y = 25 odd, - on the tie
-        {us(30), packet_in(0, 30, us(35), true)},  // host primary stamped later: no wait
-        {us(40), packet_in(1, 40, us(47))},        // stamped ahead: leaves at its stamp
+        {us(20), packet_in(0, 20, us(20))},  // own cell: local
+        {us(20), packet_in(1, 21, us(20))},  // node 1: + link
+        {us(20), packet_in(3, 23, us(20))},  // node 3: - link
+        {us(20), packet_in(2, 22, us(20))},  // node 2, two hops either way: x + y = 22 even, +
+        {us(20), packet_in(2, 25, us(20))},  // node 2 again: x + y = 25 odd, - on the tie
+        {us(40), packet_in(1, 40, us(47))},  // stamped ahead: leaves at its stamp
     };
     sc_core::sc_start();
 
     Outcome run;
     run.local_tags = local.tags, run.plus_tags = plus.tags, run.minus_tags = minus.tags;
     run.local_times = local.times, run.plus_times = plus.times, run.minus_times = minus.times;
-    run.routed_local = cu.routed_local(), run.routed_transit = cu.routed_transit();
+    run.routed_local = cu.stats().routed_local, run.routed_transit = cu.stats().routed_transit;
     run.credits_at4 = probe.at4, run.credits_at6 = probe.at6, run.held = cu.held();
     rt_grid_free(grid);
     rt_scene_free(scene);
@@ -183,10 +180,10 @@ static const Outcome &run()
 TEST(CommUnit, DeliversLinkPacketsAtArrivalInPortThenSendOrder)
 {
     // 13 arrives first (1 + 2 = 3 us); at 5 us 10 (port 0, 2 + 3) before 11, 12 (port 1, 1 + 4, send
-    // order); then the processor's own-cell packet 20 at 20 us and the host primary 30 at once at 30 us.
-    EXPECT_EQ(run().local_tags, (std::vector<uint32_t>{13, 10, 11, 12, 20, 30}));
-    EXPECT_EQ(run().local_times, (std::vector<sc_time>{us(3), us(5), us(5), us(5), us(20), us(30)}))
-        << "link arrivals at their annotated time, host primary at once";
+    // order); then the processor's own-cell packet 20 at 20 us.
+    EXPECT_EQ(run().local_tags, (std::vector<uint32_t>{13, 10, 11, 12, 20}));
+    EXPECT_EQ(run().local_times, (std::vector<sc_time>{us(3), us(5), us(5), us(5), us(20)}))
+        << "link arrivals at their annotated time";
 }
 
 TEST(CommUnit, RoutesOtherCellsToTheFirstHopLink)
@@ -201,7 +198,7 @@ TEST(CommUnit, RoutesOtherCellsToTheFirstHopLink)
 
 TEST(CommUnit, CountsLocalAndTransitPackets)
 {
-    EXPECT_EQ(run().routed_local, 6u) << "13, 10, 11, 12, 20, 30";
+    EXPECT_EQ(run().routed_local, 5u) << "13, 10, 11, 12, 20";
     EXPECT_EQ(run().routed_transit, 5u) << "21, 22, 23, 25, 40";
     EXPECT_EQ(run().held, 0u) << "nothing held";
 }

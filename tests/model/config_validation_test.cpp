@@ -56,15 +56,15 @@ TEST(ConfigValidation, NamesTheOptionOfEveryBadSetting)
     expect(c, "--cells", "more cells than a grid holds");
     c = good(), c.queue_capacity = kMaxQueue + 1;
     expect(c, "--queue", "a queue too large");
-    c = good(), c.mapping = RT_MAP_BLOCK_CYCLIC, c.block = 0;
+    c = good(), c.mapping = "block-cyclic", c.block = 0;
     expect(c, "--map block-cyclic:B", "block 0");
-    c = good(), c.mapping = RT_MAP_FILE;
+    c = good(), c.mapping = "file";
     expect(c, "--map-file", "the file mapping without a file");
     c = good(), c.pilot_size = {16, 16};
     expect(c, "--pilot-size", "a pilot size without --map cost");
     c = good(), c.replicate = 0.5;
     expect(c, "--replicate", "a replication budget without --map cost");
-    c = good(), c.mapping = RT_MAP_COST, c.replicate = 65;
+    c = good(), c.mapping = "cost", c.replicate = 65;
     expect(c, "--replicate", "a budget above the option table's range (no check of its own)");
     c = good(), c.timing.link_us = 2e6;
     expect(c, "--link-us", "a 2 s link");
@@ -95,7 +95,7 @@ SimConfig sample_machine()
 {
     SimConfig c = good();
     c.ips = {4, 2, 1};
-    c.mapping = RT_MAP_BLOCK_CYCLIC, c.block = 3;
+    c.mapping = "block-cyclic", c.block = 3;
     c.step.min_weight = 1.0 / 3.0;
     c.quantum_us = 0.1, c.style = TimingStyle::lt;
     c.cluster = 2, c.arbiter = "fixed-priority";
@@ -121,7 +121,7 @@ TEST(MachineOptions, WritesTheMachineAsOptions)
 TEST(MachineOptions, FileMappingHasMapFileAndNoMap)
 {
     SimConfig c = sample_machine();
-    c.mapping = RT_MAP_FILE, c.map_file = "/maps/m.map";
+    c.mapping = "file", c.map_file = "/maps/m.map";
     nlohmann::json j = machine_options_json(c);
     EXPECT_TRUE(!j.contains("map") && j["map-file"] == "/maps/m.map") << "a file mapping has map-file and no map";
     EXPECT_NE(machine_options_toml(c).find("map-file=\"/maps/m.map\"\n"), std::string::npos)
@@ -131,7 +131,7 @@ TEST(MachineOptions, FileMappingHasMapFileAndNoMap)
 TEST(MachineOptions, FilePathsAreWrittenAbsolute)
 {
     SimConfig c = sample_machine();
-    c.mapping = RT_MAP_FILE, c.map_file = "./sub/m.map";
+    c.mapping = "file", c.map_file = "./sub/m.map";
     c.timing_file = "t.timing";
     char cwd[4096];
     ASSERT_NE(getcwd(cwd, sizeof cwd), nullptr);

@@ -36,9 +36,9 @@ Outcome simulate()
 {
     Outcome r;
     PacketPool pool;
-    PacketQueue copied("copied", 0), pooled("pooled", 0);
-    copied.use_pool(pool);
-    pooled.use_pool(pool);
+    PacketQueueSetup in_pool;
+    in_pool.pool = &pool;
+    PacketQueue copied("copied", 0, in_pool), pooled("pooled", 0, in_pool);
     const uint32_t xs[] = {7, 3, 11, 5};
     for (uint32_t i = 0; i < 4; i++) {
         copied.push_pooled(pool, pool.add(packet(xs[i], i % 2), -1));

@@ -47,13 +47,20 @@ std::string name_of(const TimedPacket &t)
     return std::to_string(t.packet.x);
 }
 
-// A queue of node 0 fed by `source`, the four packets pushed (the shadows stamped
-// `shadow_stamp_us`).
-void fill(PacketQueue &q, PacketPool &pool, PrimarySource &source, bool rays_first, double shadow_stamp_us = 0)
+// The setup of a queue of node 0 fed by `source`, in `pool`.
+PacketQueueSetup setup(PacketPool &pool, PrimarySource &source, bool rays_first)
 {
-    q.use_pool(pool);
-    q.attach(&source, 0);
-    q.take_rays_first(rays_first);
+    PacketQueueSetup s;
+    s.pool = &pool;
+    s.primaries = &source;
+    s.entry_node = 0;
+    s.rays_first = rays_first;
+    return s;
+}
+
+// The four packets pushed into `q` (the shadows stamped `shadow_stamp_us`).
+void fill(PacketQueue &q, PacketPool &pool, double shadow_stamp_us = 0)
+{
     q.push_pooled(pool, pool.add(queued(10, RT_PACKET_RAY, 0), -1));
     q.push_pooled(pool, pool.add(queued(20, RT_PACKET_SHADOW, shadow_stamp_us), -1));
     q.push_pooled(pool, pool.add(queued(30, RT_PACKET_RAY, 0), -1));
@@ -91,22 +98,22 @@ Outcome simulate()
     {
         PacketPool pool;
         PrimarySource source(scene, grid, owner, 1, sc_core::SC_ZERO_TIME);
-        PacketQueue q("fifo", 0);
-        fill(q, pool, source, false);
+        PacketQueue q("fifo", 0, setup(pool, source, false));
+        fill(q, pool);
         r.fifo_taken = drain_pooled(q, pool);
     }
     {
         PacketPool pool;
         PrimarySource source(scene, grid, owner, 1, sc_core::SC_ZERO_TIME);
-        PacketQueue q("rays", 0);
-        fill(q, pool, source, true);
+        PacketQueue q("rays", 0, setup(pool, source, true));
+        fill(q, pool);
         r.rays_taken = drain_pooled(q, pool);
     }
     {  // a reader that refuses all but shadow 20 is offered every packet in turn
         PacketPool pool;
         PrimarySource source(scene, grid, owner, 1, sc_core::SC_ZERO_TIME);
-        PacketQueue q("offered", 0);
-        fill(q, pool, source, true);
+        PacketQueue q("offered", 0, setup(pool, source, true));
+        fill(q, pool);
         TimedPacket got;
         bool taken = q.try_take(
             [&](const TimedPacket &c) {
@@ -121,8 +128,8 @@ Outcome simulate()
         r.inject_us = 1000;
         PacketPool pool;
         PrimarySource source(scene, grid, owner, 1, us(1000));
-        PacketQueue q("late", 0);
-        fill(q, pool, source, true, 500);
+        PacketQueue q("late", 0, setup(pool, source, true));
+        fill(q, pool, 500);
         r.rays_late_primary = drain_pooled(q, pool);
     }
     rt_grid_free(grid);

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "load_motion.h"
+#include "mapping.h"
 #include "user_error.h"
 #include "wall_clock.h"
 
@@ -47,7 +48,7 @@ std::vector<int32_t> fresh_map(const RemapContext &ctx, const FramePilot &pilot)
 {
     std::vector<int32_t> owner(pilot.get().cells);
     char msg[RT_MSG_LEN] = "";
-    int fold = ctx.config.mapping == RT_MAP_COST ? ctx.config.block : 1;
+    int fold = mapping_of(ctx.config).remap_fold(ctx.config);
     if (rt_cost_map_folded(&pilot.get(), ctx.config.ips.data(), ctx.config.topology == Topology::torus,
                            rt_cost_edge_us(&ctx.config.timing), fold, owner.data(), nullptr, msg, sizeof msg) != RT_OK)
         throw UserError(std::string("--remap: ") + msg);

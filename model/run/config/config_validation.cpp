@@ -6,6 +6,7 @@
 #include <string>
 
 #include "machine_options.h"
+#include "mapping.h"
 #include "option_parsing.h"
 #include "setting_checks.h"
 #include "sim_config.h"
@@ -60,16 +61,19 @@ void validate_shape(const MachineConfig &m)
 
 void validate_mapping(const MachineConfig &m)
 {
-    if (m.block < 1)
-        bad(m.mapping == RT_MAP_COST ? "--map cost:K: K must be at least 1"
-                                     : "--map block-cyclic:B: B must be at least 1");
-    if ((m.mapping == RT_MAP_FILE) != !m.map_file.empty())
+    const Mapping &mapping = mapping_of(m);
+    if (m.block < 1) {
+        const bool named = mapping.parameter != MappingParameter::none;
+        const std::string form = named ? std::string(mapping.name) + ":" + mapping.parameter_name : "block-cyclic:B";
+        bad("--map " + form + ": " + form.substr(form.find(':') + 1) + " must be at least 1");
+    }
+    if (mapping.from_file != !m.map_file.empty())
         bad("--map-file: a table file goes with the file mapping, and only with it");
     if (m.pilot_size[0] > 0 || m.pilot_size[1] > 0) {
-        if (!m.measured_mapping()) bad("--pilot-size: only with --map cost or scatter");
+        if (!mapping.measured) bad("--pilot-size: only with --map cost or scatter");
         check_image_size("--pilot-size", m.pilot_size[0], m.pilot_size[1]);
     }
-    if (m.replicate > 0 && !m.measured_mapping()) bad("--replicate: only with --map cost or scatter");
+    if (m.replicate > 0 && !mapping.measured) bad("--replicate: only with --map cost or scatter");
 }
 
 void validate_timing(const MachineConfig &m)

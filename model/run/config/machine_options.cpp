@@ -11,6 +11,7 @@
 
 #include "bus_arbiter.h"
 #include "cluster_dispatch.h"
+#include "mapping.h"
 #include "option_parsing.h"
 #include "rt_grid.h"
 #include "timing_choice.h"
@@ -39,30 +40,27 @@ void set_timing(const OptionSpec &spec, rt_timing &t, const char *key, double v)
     if (rt_timing_set(&t, key, v, msg, sizeof msg) != RT_OK) throw UserError(spec.long_name() + ": " + msg, 2);
 }
 
-// block, cyclic, block-cyclic:B, cost, cost:K, scatter.
-rt_map_kind parse_mapping(const std::string &option, const std::string &text, int &block)
+// NAME or NAME:N of a mapping --map chooses (the registry's forms); N into `block`.
+void parse_mapping(const std::string &option, const std::string &text, MachineConfig &m)
 {
     size_t colon = text.find(':');
-    std::string name = text.substr(0, colon);
-    for (const auto &entry : kMappingNames) {
-        if (name != entry.name || entry.value == RT_MAP_FILE) continue;
-        bool parameter = entry.value == RT_MAP_BLOCK_CYCLIC || entry.value == RT_MAP_COST;
-        if (colon == std::string::npos && entry.value != RT_MAP_BLOCK_CYCLIC) return entry.value;
-        if (colon == std::string::npos || !parameter) break;
-        const bool cost = entry.value == RT_MAP_COST;
-        block = static_cast<int>(parse_integer(option + (cost ? " cost:K" : " block-cyclic:B"), text.substr(colon + 1),
-                                               1, cost ? 64 : 1 << 20));
-        return entry.value;
-    }
-    throw UserError(option + " '" + shown_text(text) + "': expected " + mapping_forms(), 2);
+    const Mapping *mapping = find_mapping(text.substr(0, colon));
+    bool given = colon != std::string::npos;
+    bool fits =
+        mapping && !mapping->from_file &&
+        (given ? mapping->parameter != MappingParameter::none : mapping->parameter != MappingParameter::required);
+    if (!fits) throw UserError(option + " '" + shown_text(text) + "': expected " + mapping_forms(), 2);
+    if (given)
+        m.block = static_cast<int>(parse_integer(option + " " + mapping->name + ":" + mapping->parameter_name,
+                                                 text.substr(colon + 1), 1, mapping->parameter_max));
+    m.mapping = mapping->name;
 }
 
-std::string map_text(const MachineConfig &m)
+// The mapping is a table read from --map-file.
+bool from_file(const MachineConfig &m)
 {
-    std::string name = mapping_name(m.mapping);
-    if (m.mapping == RT_MAP_BLOCK_CYCLIC || (m.mapping == RT_MAP_COST && m.block > 1))
-        name += ":" + std::to_string(m.block);
-    return name;
+    const Mapping *mapping = find_mapping(m.mapping);
+    return mapping && mapping->from_file;
 }
 
 // `path` as an absolute path (the working folder in front of a relative one; an absolute one as
@@ -376,15 +374,13 @@ std::vector<MachineOption> mapping_options()
     using K = ValueKind;
     return {
         {{"--map", "KIND", K::text, "cyclic", 0, 0, "", "cell mapping: " + mapping_forms(), G::machine, "map"},
-         [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
-             m.mapping = parse_mapping(s.long_name(), t, m.block);
-         },
-         map_text},
+         [](const OptionSpec &s, const std::string &t, MachineConfig &m) { parse_mapping(s.long_name(), t, m); },
+         mapping_text},
         {{"--map-file", "FILE", K::file, "", 0, 0, "", "explicit cell -> node table (torusrt-map 1 format)", G::machine,
           "map-file"},
          [](const OptionSpec &, const std::string &t, MachineConfig &m) {
              if (t.empty()) return;
-             m.mapping = RT_MAP_FILE;
+             m.mapping = file_mapping_name();
              m.map_file = t;
          },
          [](const MachineConfig &m) { return absolute_path(m.map_file); }},
@@ -471,8 +467,6 @@ std::string toml_string(const std::string &key, const std::string &v)
 
 }  // namespace
 
-std::string mapping_forms() { return "block, cyclic, block-cyclic:B, cost, cost:K or scatter"; }
-
 const std::vector<MachineOption> &machine_option_table()
 {
     static const std::vector<MachineOption> table = build_table();
@@ -499,7 +493,7 @@ OptionList machine_options(const MachineConfig &m, bool with_timing)
     OptionList list;
     for (const MachineOption &o : machine_option_table()) {
         const std::string &key = o.spec.key;
-        if (key == "map" && m.mapping == RT_MAP_FILE) continue;  // the map file holds the mapping
+        if (key == "map" && from_file(m)) continue;  // the map file holds the mapping
         if (with_timing && key == "timing-values") list.emplace_back(key, timing_values_text(m));
         else if (with_timing && key == "timing") list.emplace_back(key, std::string());
         else list.emplace_back(key, o.write(m));
@@ -545,7 +539,7 @@ nlohmann::json machine_option_tables_json(const MachineConfig &m)
 {
     nlohmann::json j = nlohmann::json::object();
     for (const MachineOption &o : machine_option_table())
-        if (o.spec.key != "map" || m.mapping != RT_MAP_FILE) j[o.spec.key] = o.table;
+        if (o.spec.key != "map" || !from_file(m)) j[o.spec.key] = o.table;
     return j;
 }
 

@@ -63,7 +63,4 @@ nlohmann::json machine_option_order_json(const MachineConfig &machine);
 // {"key": "table", ...}: the machine file's table of each key of machine_options_json.
 nlohmann::json machine_option_tables_json(const MachineConfig &machine);
 
-// The names a --map value may take, for the help and messages: "block, cyclic, ...".
-std::string mapping_forms();
-
 }  // namespace torusrt

@@ -2,15 +2,14 @@
 #include "mapping_setup.h"
 
 #include <algorithm>
-#include <cstdlib>
 #include <vector>
 
-#include "cost_mapping.h"
+#include "mapping.h"
 #include "output_files.h"
+#include "pilot_mapping.h"
 #include "rt_cost_map.h"
 #include "rt_load_image.h"
 #include "rt_map_file.h"
-#include "rt_mapping.h"
 #include "rt_text.h"
 #include "user_error.h"
 
@@ -26,60 +25,10 @@ nlohmann::json cells_per_node(const std::vector<int32_t> &owner, int nodes)
     return {{"min", *mm.first}, {"max", *mm.second}};
 }
 
-// Throws the memory budget's UserError, naming `option`, unless `bytes` for `what` fit in what
-// the run has left; they are freed again before the run reserves its own.
-void check_passing(const rt_budget &budget, uint64_t bytes, const std::string &option, const std::string &what)
-{
-    rt_budget trial = budget;
-    char msg[RT_MSG_LEN] = "";
-    if (rt_budget_reserve(&trial, bytes, what.c_str(), msg, sizeof msg) != RT_OK) throw UserError(option + ": " + msg);
-}
-
-std::string size_text(unsigned w, unsigned h) { return std::to_string(w) + "x" + std::to_string(h); }
-
-// The pilot of --map cost or scatter at its size, with the mapper's tables, against the budget.
-void check_cost_mapping_budget(const SimConfig &config, const rt_scene *scene, const rt_grid *grid)
-{
-    const rt_camera *cam = rt_scene_camera(scene);
-    unsigned w = config.pilot_size[0] ? config.pilot_size[0] : cam->width;
-    unsigned h = config.pilot_size[0] ? config.pilot_size[1] : cam->height;
-    size_t cells = rt_grid_cell_count(grid);
-    bool scatter = config.mapping == RT_MAP_SCATTER;
-    uint64_t bytes = rt_cost_pilot_bytes(grid, rt_scene_object_count(scene), w, h, 0) +
-                     (scatter ? rt_cost_scatter_bytes(cells) : rt_cost_map_bytes(cells));
-    check_passing(config.memory, bytes, scatter ? "--map scatter" : "--map cost",
-                  "the pilot of " + size_text(w, h) + " pixels and the mapping of " + std::to_string(cells) + " cells");
-}
-
 }  // namespace
-
-void read_map_file(const SimConfig &config, const int dims[3], std::vector<int32_t> &owner)
-{
-    ReplicaTable ignored;
-    read_map_file(config, dims, owner, ignored);
-}
-
-void read_map_file(const SimConfig &config, const int dims[3], std::vector<int32_t> &owner, ReplicaTable &replicas)
-{
-    size_t cells = size_t(dims[0]) * dims[1] * dims[2];
-    owner.assign(cells, 0);
-    std::vector<uint32_t> first(cells + 1);
-    int32_t *extra = nullptr;
-    size_t count = 0;
-    char msg[RT_MSG_LEN] = "";
-    if (rt_map_file_read_replicas(config.map_file.c_str(), dims, config.node_count(), owner.data(), first.data(),
-                                  &extra, &count, msg, sizeof msg) != RT_OK)
-        throw UserError(std::string("--map-file: ") + msg, 2);
-    replicas.first.clear();
-    replicas.extra.assign(extra, extra + count);
-    if (count) replicas.first = std::move(first);
-    std::free(extra);
-}
 
 nlohmann::json prepare_mapping(SimConfig &config, rt_scene *scene, const rt_grid *grid)
 {
-    int dims[3];
-    rt_grid_dims(grid, dims);
     int nodes = config.node_count();
     char msg[RT_MSG_LEN] = "";
     // The owner table and the machine's copy of it (run_frames) stay for the whole run.
@@ -89,23 +38,12 @@ nlohmann::json prepare_mapping(SimConfig &config, rt_scene *scene, const rt_grid
                           sizeof msg) != RT_OK)
         throw UserError(msg);
     std::vector<int32_t> owner(cells);
-    nlohmann::json j = {{"kind", mapping_name(config.mapping)}};
-    if (config.mapping == RT_MAP_FILE) {
-        ReplicaTable replicas;
-        read_map_file(config, dims, owner, replicas);
-        config.replica_first = std::move(replicas.first);
-        config.replica_extra = std::move(replicas.extra);
-        j["file"] = config.map_file;
-    } else if (config.measured_mapping()) {
-        check_cost_mapping_budget(config, scene, grid);
-        ReplicaTable replicas;
-        j.update(cost_mapping(config, scene, grid, owner, replicas));
-        config.replica_first = std::move(replicas.first);
-        config.replica_extra = std::move(replicas.extra);
-    } else if (rt_mapping_fill(dims, config.ips.data(), config.mapping, config.block, owner.data(), msg, sizeof msg) !=
-               RT_OK) {
-        throw UserError(std::string("--map: ") + msg, 2);
-    }
+    const Mapping &mapping = mapping_of(config);
+    nlohmann::json j = {{"kind", mapping.name}};
+    ReplicaTable replicas;
+    j.update(mapping.fill(config, scene, grid, owner, replicas));
+    config.replica_first = std::move(replicas.first);
+    config.replica_extra = std::move(replicas.extra);
     j["cells_per_node"] = cells_per_node(owner, nodes);
     config.owner_table = std::move(owner);
     return j;
@@ -136,9 +74,7 @@ std::string load_map_caption(const SimConfig &config)
     std::string machine = std::to_string(config.ips[0]) + "x" + std::to_string(config.ips[1]) + "x" +
                           std::to_string(config.ips[2]) + " " + topology_name(config.topology);
     if (config.cluster > 1) machine += ", " + std::to_string(config.cluster) + " processors per node";
-    std::string mapping = mapping_name(config.mapping);
-    if (config.mapping == RT_MAP_BLOCK_CYCLIC || (config.mapping == RT_MAP_COST && config.block > 1))
-        mapping += ":" + std::to_string(config.block);
+    std::string mapping = mapping_text(config);
     if (config.replicate > 0) mapping += ", replicated cells";
     return std::string(shown) + ", " + machine + ", " + mapping + " mapping";
 }

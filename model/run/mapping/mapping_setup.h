@@ -1,5 +1,5 @@
-// mapping_setup.h - the cell -> node table a run uses, decided before the run:
-// a regular mapping, an explicit --map-file, or --map cost (pilot run + Scotch).
+// mapping_setup.h - the cell -> node table a run uses, decided before the run by the mapping
+// the machine names (mapping.h), and the files that show it.
 #pragma once
 
 #include <optional>
@@ -9,21 +9,17 @@
 
 #include "rt_grid.h"
 #include "rt_scene.h"
-#include "cost_mapping.h"
+#include "mapping.h"
 #include "output_files.h"
 #include "sim_config.h"
 
 namespace torusrt {
 
-// Fills config.owner_table (and config.replica_first / replica_extra for a replicated table) for the loaded scene and
-// returns what the report says about it (JSON `mapping`: kind, cells per node, pilot and mapper costs for `cost`).
-// Throws UserError naming the file and line (exit 2) for a bad --map-file.
-// Reads config.map_file for a grid of `dims` cells into `owner` (UserError naming the file and
-// line, exit 2).
-void read_map_file(const SimConfig &config, const int dims[3], std::vector<int32_t> &owner);
-// The same, with the extra owners of a `torusrt-map 2` table (empty for version 1).
-void read_map_file(const SimConfig &config, const int dims[3], std::vector<int32_t> &owner, ReplicaTable &replicas);
-
+// Fills config.owner_table (and config.replica_first / replica_extra for a replicated table)
+// for the loaded scene with the mapping config.mapping names (mapping.h), and returns what the
+// report says about it (JSON `mapping`: kind, cells per node, the mapping's own facts such as
+// the pilot and mapper costs of `cost`). Throws UserError naming the file and line (exit 2) for
+// a bad --map-file.
 nlohmann::json prepare_mapping(SimConfig &config, rt_scene *scene, const rt_grid *grid);
 
 // Writes the files asked for into the run's output set (UserError on failure), committed with

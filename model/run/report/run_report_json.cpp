@@ -34,7 +34,7 @@ nlohmann::json config_json(const SimConfig &config)
     return {{"ips", config.ips},
             {"nodes", config.node_count()},
             {"processors", config.processor_count()},
-            {"mapping", mapping_name(config.mapping)},
+            {"mapping", config.mapping},
             {"block", config.block},
             {"topology", topology_name(config.topology)},
             {"route_ties", route_ties_name(config.route_ties)},

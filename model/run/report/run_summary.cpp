@@ -138,7 +138,7 @@ void print_summary(const RunReport &r, std::FILE *out)
     std::fprintf(out,
                  "  system       %s, %s mapping, %s,\n"
                  "               %s\n",
-                 network_text(c).c_str(), mapping_name(c.mapping), node_text(c).c_str(), machine_text(c).c_str());
+                 network_text(c).c_str(), c.mapping.c_str(), node_text(c).c_str(), machine_text(c).c_str());
     if (r.frames.empty())
         std::fprintf(out, "  image time   %s s simulated   (T(1) %s s, %s)\n", sig4(T).c_str(), sig4(f.t1_s).c_str(),
                      f.t1_source.c_str());
