@@ -70,9 +70,17 @@ rt_status rt_timing_set(rt_timing *timing, const char *key, double value, char *
 
 rt_status rt_timing_load(const char *path, rt_timing *timing, char *msg, size_t msg_len);
 
-/* Number of keys and the i-th key's name (for help text and echoing). */
+/* The largest value of any key (and of a link or bus transfer's time): 1e6 us, 1 s. */
+#define RT_TIMING_MAX_VALUE 1e6
+
+/* Number of keys and the i-th key's name (for help text and echoing); NULL past the end. */
 size_t rt_timing_key_count(void);
 const char *rt_timing_key_name(size_t index);
+/* The i-th key's unit ("us", "bytes" or "bytes/us") and one-line meaning; NULL past the end. */
+const char *rt_timing_key_unit(size_t index);
+const char *rt_timing_key_meaning(size_t index);
+/* 1 if the i-th key must be > 0 (a divisor), 0 if >= 0 (or past the end). */
+int rt_timing_key_positive(size_t index);
 double rt_timing_get(const rt_timing *timing, size_t index);
 
 /* Microseconds an IP spends on the operations in `ops` (frame-buffer writes included). */
