@@ -46,6 +46,7 @@ typedef struct rt_timing {
     double handover_receive_us; /* receiving IP: take up a packet another IP handed over */
     double preprocess_unit_us;  /* one half-space test of a moving scene's cell-list update (340) */
     double cell_step_packet_us; /* packet work on every move into the next cell, T(1) included (580) */
+    double link_setup_us;       /* a link's fixed time per packet on top of its transfer time (0) */
 } rt_timing;
 
 void rt_timing_defaults(rt_timing *timing);
@@ -86,7 +87,8 @@ double rt_timing_get(const rt_timing *timing, size_t index);
 /* Microseconds an IP spends on the operations in `ops` (frame-buffer writes included). */
 double rt_timing_step_us(const rt_timing *timing, const rt_op_counts *ops);
 
-/* Microseconds a link is busy with one packet. */
+/* Microseconds a link is busy with one packet: link_setup plus the transfer (link, or packet_bytes
+ * over link_bytes_per_us). */
 double rt_timing_link_packet_us(const rt_timing *timing);
 
 /* Microseconds one bus transfer of `bytes` occupies the bus (arbitration excluded). */

@@ -54,6 +54,8 @@ static const timing_key keys[] = {
      * window; 0 in the profiles before that fit. */
     {"cell_step_packet", offsetof(rt_timing, cell_step_packet_us), 0, 580.0, "us",
      "packet work on every move into the next cell"},
+    {"link_setup", offsetof(rt_timing, link_setup_us), 0, 0.0, "us",
+     "a link's fixed time per packet before the transfer"},
 };
 #define KEY_COUNT (sizeof keys / sizeof keys[0])
 
@@ -289,7 +291,7 @@ double rt_timing_step_us(const rt_timing *t, const rt_op_counts *ops)
 
 double rt_timing_link_packet_us(const rt_timing *t)
 {
-    return t->link_bytes_per_us > 0.0 ? t->packet_bytes / t->link_bytes_per_us : t->link_us;
+    return t->link_setup_us + (t->link_bytes_per_us > 0.0 ? t->packet_bytes / t->link_bytes_per_us : t->link_us);
 }
 
 double rt_timing_bus_transfer_us(const rt_timing *t, double bytes)

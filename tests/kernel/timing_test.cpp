@@ -315,6 +315,12 @@ TEST(Timing, LinkAndBusTimes)
     EXPECT_EQ(rt_timing_link_packet_us(&t), 2.0);
     t.packet_bytes = 35;
     EXPECT_EQ(rt_timing_link_packet_us(&t), 2.5);
+    // A set-up time comes before the transfer, with a bandwidth and with a time per packet.
+    t.link_setup_us = 1.5;
+    EXPECT_EQ(rt_timing_link_packet_us(&t), 4.0);
+    t.link_bytes_per_us = 0;
+    EXPECT_EQ(rt_timing_link_packet_us(&t), 51.5);
+    t.link_setup_us = 0;
     // ceil(bytes / 2) cycles of 0.5 us.
     t.bus_cycle_us = 0.5;
     EXPECT_EQ(rt_timing_bus_transfer_us(&t, 28), 7.0);
