@@ -28,6 +28,7 @@ const std::map<std::string, std::string> kEveryOptionSet = {
     {"--link-us", "20"},
     {"--packet-bytes", "30"},
     {"--link-bytes-per-us", "2"},
+    {"--link-setup-us", "3"},
     {"--max-depth", "3"},
     {"--min-weight", "0.01"},
     {"--style", "lt"},

@@ -171,6 +171,17 @@ std::vector<MachineOption> network_options()
     };
 }
 
+// A link time: a bare number in microseconds (the unit is in the option's name), at most the
+// spec's maximum.
+double link_time_us(const OptionSpec &s, const std::string &text)
+{
+    double us = parse_time(s.long_name(), text, -6, -6);
+    if (us > s.max)
+        throw UserError(
+            s.long_name() + " '" + shown_text(text) + "': must be at most " + number_text(s.max) + " us (1 s)", 2);
+    return us;
+}
+
 // --link-us acts only while no bandwidth sets the link time.
 const char *needs_no_bandwidth(const MachineConfig &m)
 {
@@ -206,12 +217,7 @@ std::vector<MachineOption> timing_table_options()
         {{"--link-us", "TIME", K::time, "50", 0, kMaxTimingUs, "us",
           "time per packet on a link; a bare number is microseconds", G::machine, "link-us"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
-             double us = parse_time(s.long_name(), t, -6, -6);
-             if (us > s.max)
-                 throw UserError(s.long_name() + " '" + shown_text(t) + "': must be at most " + number_text(s.max) +
-                                     " us (1 s)",
-                                 2);
-             set_timing(s, m.timing, "link", us);
+             set_timing(s, m.timing, "link", link_time_us(s, t));
          },
          [](const MachineConfig &m) { return number_text(timing_value(m.timing, "link")); },
          nullptr,
@@ -235,6 +241,14 @@ std::vector<MachineOption> timing_table_options()
              set_timing(s, m.timing, "link_bytes_per_us", parse_real(s.long_name(), t, s.min, s.max));
          },
          [](const MachineConfig &m) { return number_text(timing_value(m.timing, "link_bytes_per_us")); }},
+        {{"--link-setup-us", "TIME", K::time, "0", 0, kMaxTimingUs, "us",
+          "fixed time per packet on a link before its transfer (--link-us or the bandwidth's); a bare number is "
+          "microseconds",
+          G::machine, "link-setup-us"},
+         [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
+             set_timing(s, m.timing, "link_setup", link_time_us(s, t));
+         },
+         [](const MachineConfig &m) { return number_text(timing_value(m.timing, "link_setup")); }},
     };
 }
 
