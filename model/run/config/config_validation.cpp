@@ -96,20 +96,10 @@ void validate_tracing(const RunOptions &r, const MachineConfig &m)
                 std::to_string(m.node_count() - 1) + ")");
 }
 
-void validate_memory_layout(const rt_memory_layout &l)
-{
-    if (l.cell_header_bytes > kMaxRecordBytes) bad("--cell-header-bytes: at most " + str(kMaxRecordBytes));
-    if (l.list_entry_bytes < 1 || l.list_entry_bytes > kMaxRecordBytes)
-        bad("--list-entry-bytes: 1 to " + str(kMaxRecordBytes));
-    if (l.object_record_bytes > kMaxRecordBytes)
-        bad("--object-record-bytes: 0 (each kind's own size) to " + str(kMaxRecordBytes));
-}
-
 }  // namespace
 
 void validate_machine(const MachineConfig &m)
 {
-    validate_memory_layout(m.memory_layout);
     validate_table_ranges(m);
     validate_shape(m);
     validate_mapping(m);

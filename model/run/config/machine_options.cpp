@@ -105,7 +105,7 @@ std::vector<MachineOption> network_options()
         {{"--ips", "DIMS", K::text, "1", 1, kMaxNodes, "",
           "torus nodes: P, PXxPY or PXxPYxPZ, at most " + std::to_string(kMaxNodes), G::machine, "ips"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
-             m.ips = parse_dims_1_to_3(s.long_name(), t, 1, kMaxNodes);
+             m.ips = parse_dims_1_to_3(s.long_name(), t, static_cast<int>(s.min), static_cast<int>(s.max));
          },
          [](const MachineConfig &m) { return dims(m.ips); },
          [](const MachineConfig &m, nlohmann::json &j) {
@@ -134,7 +134,7 @@ std::vector<MachineOption> network_options()
          needs_even_ring},
         {common_option_spec("--cells"),
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
-             m.cells = parse_triple(s.long_name(), t, 1, static_cast<int>(s.max));
+             m.cells = parse_triple(s.long_name(), t, static_cast<int>(s.min), static_cast<int>(s.max));
          },
          [](const MachineConfig &m) { return dims(m.cells); }},
         {common_option_spec("--preprocess-count"),
@@ -145,7 +145,8 @@ std::vector<MachineOption> network_options()
         {{"--queue", "N", K::integer, "0", 0, double(kMaxQueue), "packets",
           "capacity of every packet buffer (of each class), 0 = unbounded", G::machine, "queue"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
-             m.queue_capacity = static_cast<unsigned>(parse_integer(s.long_name(), t, 0, kMaxQueue));
+             m.queue_capacity =
+                 static_cast<unsigned>(parse_integer(s.long_name(), t, 0, static_cast<long long>(s.max)));
          },
          [](const MachineConfig &m) { return std::to_string(m.queue_capacity); },
          [](const MachineConfig &m, nlohmann::json &j) { j["queue"] = m.queue_capacity; },
@@ -310,7 +311,7 @@ MachineOption layout_option(const char *name, const char *fallback, int min, con
              OptionGroup::machine, name + 2},
             [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
                 m.memory_layout.*Field = static_cast<uint32_t>(
-                    parse_integer(s.long_name(), t, static_cast<long long>(s.min), kMaxRecordBytes));
+                    parse_integer(s.long_name(), t, static_cast<long long>(s.min), static_cast<long long>(s.max)));
             },
             [](const MachineConfig &m) { return std::to_string(m.memory_layout.*Field); }};
 }
@@ -327,7 +328,8 @@ std::vector<MachineOption> cluster_options()
         {{"--cluster", "N", K::integer, "1", 1, kMaxCluster, "processors", "processors per torus node on a shared bus",
           G::machine, "cluster"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
-             m.cluster = static_cast<int>(parse_integer(s.long_name(), t, 1, kMaxCluster));
+             m.cluster = static_cast<int>(
+                 parse_integer(s.long_name(), t, static_cast<long long>(s.min), static_cast<long long>(s.max)));
          },
          [](const MachineConfig &m) { return std::to_string(m.cluster); },
          [](const MachineConfig &m, nlohmann::json &j) {
@@ -408,7 +410,7 @@ std::vector<MachineOption> mapping_options()
           "them",
           G::machine, "replicate"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
-             m.replicate = parse_real(s.long_name(), t, 0, 64);
+             m.replicate = parse_real(s.long_name(), t, s.min, s.max);
          },
          [](const MachineConfig &m) { return number_text(m.replicate); },
          nullptr,
