@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "combination_rules.h"
 #include "machine_options.h"
 #include "option_parsing.h"
 #include "run_options.h"
@@ -82,12 +83,20 @@ std::string run_reference()
     return s;
 }
 
+std::string rule_reference()
+{
+    std::string s = "| option | rule | of |\n| --- | --- | --- |\n";
+    for (const CombinationRule &r : combination_rules())
+        s += "| " + code(r.option) + " | " + cell(r.rule) + " | " + (r.of_machine ? "machine" : "run") + " |\n";
+    return s;
+}
+
 }  // namespace
 
 std::string option_tables_markdown()
 {
     return block("machine file tables", file_tables()) + block("machine options", machine_reference()) +
-           block("run options", run_reference());
+           block("run options", run_reference()) + block("combination rules", rule_reference());
 }
 
 }  // namespace torusrt
