@@ -1,12 +1,14 @@
-// option_table_test.cpp - the machine's option table is the one place of each option's default
-// and of the one-processor run's machine: every default text reads back to the default machine,
-// and a machine with every option set gives, for T(1), one processor and else itself.
+// option_table_test.cpp - the option tables are the one place of each option's default and of
+// the one-processor run's machine: every default text reads back to the default machine (or
+// run), and a machine with every option set gives, for T(1), one processor and else itself.
 #include <map>
+#include <sstream>
 #include <string>
 
 #include "machine_options.h"
 #include "model_run.h"
 #include "model_test.h"
+#include "run_options.h"
 #include "sim_config.h"
 
 using namespace torusrt;
@@ -54,7 +56,32 @@ bool not_set(const std::string &name)
     return false;
 }
 
+// What the run options set in a request, as text to compare.
+std::string run_settings(const SimRequest &r)
+{
+    const SimConfig &c = r.config;
+    std::ostringstream s;
+    s.precision(17);
+    s << c.trace_from_us << ' ' << c.trace_to_us << ' ' << c.t1_s << ' ' << c.time_limit_s << ' ' << c.progress_every_s
+      << ' ' << c.stats_interval_s << ' ' << c.vcd_path << '|' << c.trace_ips.size() << ' ' << c.write_map << '|'
+      << r.load_map << '|' << r.frames_csv << '|' << r.stats_series << '|' << static_cast<int>(r.remap) << ' '
+      << r.adaptive.pilot_fraction << ' ' << r.adaptive.window << ' ' << r.adaptive.margin;
+    return s.str();
+}
+
 }  // namespace
+
+TEST(OptionTable, EveryRunOptionsDefaultTextReadsBackToTheDefaultRun)
+{
+    const SimRequest defaults;
+    for (const RunOption &o : run_option_table()) {
+        if (o.spec.default_text.empty()) continue;
+        SimRequest read;
+        o.read(o.spec, o.spec.default_text, read);
+        EXPECT_EQ(run_settings(read), run_settings(defaults))
+            << o.spec.long_name() << " '" << o.spec.default_text << "'";
+    }
+}
 
 TEST(OptionTable, EveryDefaultTextReadsBackToTheDefaultMachine)
 {
