@@ -4,7 +4,8 @@
 // these, --config files feed them, --dump-config and the JSON report's config.options write
 // them, in the table's order; the JSON report's other config keys come from the entries' `json`,
 // the one-processor run's machine (T(1)) from their `one_processor`. Adding a machine option is
-// one entry here plus its field in MachineConfig (sim_config.h) and its use. No CLI11 here.
+// one entry here plus its field in MachineConfig (sim_config.h) and its use; the files it
+// touches are listed in docs/options.md. No CLI11 here.
 #pragma once
 
 #include <map>
