@@ -46,6 +46,7 @@ typedef struct rt_timing {
     double handover_receive_us; /* receiving IP: take up a packet another IP handed over */
     double preprocess_unit_us;  /* one half-space test of a moving scene's cell-list update (340) */
     double cell_step_packet_us; /* packet work on every move into the next cell, T(1) included (580) */
+    double link_setup_us;       /* a link's fixed time per packet on top of its transfer time (0) */
 } rt_timing;
 
 void rt_timing_defaults(rt_timing *timing);
@@ -70,15 +71,24 @@ rt_status rt_timing_set(rt_timing *timing, const char *key, double value, char *
 
 rt_status rt_timing_load(const char *path, rt_timing *timing, char *msg, size_t msg_len);
 
-/* Number of keys and the i-th key's name (for help text and echoing). */
+/* The largest value of any key (and of a link or bus transfer's time): 1e6 us, 1 s. */
+#define RT_TIMING_MAX_VALUE 1e6
+
+/* Number of keys and the i-th key's name (for help text and echoing); NULL past the end. */
 size_t rt_timing_key_count(void);
 const char *rt_timing_key_name(size_t index);
+/* The i-th key's unit ("us", "bytes" or "bytes/us") and one-line meaning; NULL past the end. */
+const char *rt_timing_key_unit(size_t index);
+const char *rt_timing_key_meaning(size_t index);
+/* 1 if the i-th key must be > 0 (a divisor), 0 if >= 0 (or past the end). */
+int rt_timing_key_positive(size_t index);
 double rt_timing_get(const rt_timing *timing, size_t index);
 
 /* Microseconds an IP spends on the operations in `ops` (frame-buffer writes included). */
 double rt_timing_step_us(const rt_timing *timing, const rt_op_counts *ops);
 
-/* Microseconds a link is busy with one packet. */
+/* Microseconds a link is busy with one packet: link_setup plus the transfer (link, or packet_bytes
+ * over link_bytes_per_us). */
 double rt_timing_link_packet_us(const rt_timing *timing);
 
 /* Microseconds one bus transfer of `bytes` occupies the bus (arbitration excluded). */

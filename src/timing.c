@@ -15,39 +15,47 @@ typedef struct timing_key {
     size_t offset;    /* into rt_timing */
     int positive;     /* must be > 0 (a divisor), else >= 0 */
     double default_value;
+    const char *unit;    /* of the value: "us", "bytes" or "bytes/us" */
+    const char *meaning; /* one line, for help and docs */
 } timing_key;
 
-/* One row per field: names, defaults and checks live in one place. */
+/* One row per field: names, defaults, units and checks live in one place. */
 static const timing_key keys[] = {
-    {"test_miss", offsetof(rt_timing, test_miss_us), 0, 1300.0},
-    {"test_hit", offsetof(rt_timing, test_hit_us), 0, 1750.0},
-    {"dda_step", offsetof(rt_timing, dda_step_us), 0, 340.0},
-    {"shading", offsetof(rt_timing, shading_us), 0, 4600.0},
-    {"reflection", offsetof(rt_timing, reflection_us), 0, 680.0},
-    {"refraction", offsetof(rt_timing, refraction_us), 0, 1100.0},
-    {"packet_analysis", offsetof(rt_timing, packet_analysis_us), 0, 580.0},
-    {"packet_creation", offsetof(rt_timing, packet_creation_us), 0, 1600.0},
-    {"fb_write", offsetof(rt_timing, fb_write_us), 0, 0.0},
-    {"link", offsetof(rt_timing, link_us), 0, 50.0},
-    {"link_bytes_per_us", offsetof(rt_timing, link_bytes_per_us), 0, 0.0},
-    {"packet_bytes", offsetof(rt_timing, packet_bytes), 1, 28.0},
-    {"host_inject", offsetof(rt_timing, host_inject_us), 0, 0.0},
-    {"bus_width_bytes", offsetof(rt_timing, bus_width_bytes), 1, 2.0},
+    {"test_miss", offsetof(rt_timing, test_miss_us), 0, 1300.0, "us", "intersection test, miss"},
+    {"test_hit", offsetof(rt_timing, test_hit_us), 0, 1750.0, "us", "intersection test, hit"},
+    {"dda_step", offsetof(rt_timing, dda_step_us), 0, 340.0, "us", "next-cell determination"},
+    {"shading", offsetof(rt_timing, shading_us), 0, 4600.0, "us", "luminance computation at a hit"},
+    {"reflection", offsetof(rt_timing, reflection_us), 0, 680.0, "us", "reflection vector"},
+    {"refraction", offsetof(rt_timing, refraction_us), 0, 1100.0, "us", "transmission vector"},
+    {"packet_analysis", offsetof(rt_timing, packet_analysis_us), 0, 580.0, "us", "taking up a new packet"},
+    {"packet_creation", offsetof(rt_timing, packet_creation_us), 0, 1600.0, "us", "making a new packet at a hit"},
+    {"fb_write", offsetof(rt_timing, fb_write_us), 0, 0.0, "us", "one frame-buffer contribution"},
+    {"link", offsetof(rt_timing, link_us), 0, 50.0, "us", "one packet over a link"},
+    {"link_bytes_per_us", offsetof(rt_timing, link_bytes_per_us), 0, 0.0, "bytes/us",
+     "link bandwidth; > 0 overrides link"},
+    {"packet_bytes", offsetof(rt_timing, packet_bytes), 1, 28.0, "bytes", "packet size on the wire"},
+    {"host_inject", offsetof(rt_timing, host_inject_us), 0, 0.0, "us", "host time to inject one primary packet"},
+    {"bus_width_bytes", offsetof(rt_timing, bus_width_bytes), 1, 2.0, "bytes", "cluster bus data width per cycle"},
     /* Bus and memory: the fidelity study's fit on the shared-data penalty (docs/fidelity.md). */
-    {"bus_cycle", offsetof(rt_timing, bus_cycle_us), 0, 4.0},
-    {"bus_arbitration", offsetof(rt_timing, bus_arbitration_us), 0, 0.25},
-    {"memory_access", offsetof(rt_timing, memory_access_us), 0, 0.5},
+    {"bus_cycle", offsetof(rt_timing, bus_cycle_us), 0, 4.0, "us", "cluster bus cycle"},
+    {"bus_arbitration", offsetof(rt_timing, bus_arbitration_us), 0, 0.25, "us", "arbitration before a bus transfer"},
+    {"memory_access", offsetof(rt_timing, memory_access_us), 0, 0.5, "us", "2-port memory access from the bus side"},
     /* Calibrated (docs/calibration.md): the paper's claims fit a hand-over that costs the IPs
      * nothing beyond the link; the literal profile charges a creation plus an analysis. */
-    {"handover_send", offsetof(rt_timing, handover_send_us), 0, 0.0},
-    {"handover_receive", offsetof(rt_timing, handover_receive_us), 0, 0.0},
+    {"handover_send", offsetof(rt_timing, handover_send_us), 0, 0.0, "us", "handing a packet on to another IP"},
+    {"handover_receive", offsetof(rt_timing, handover_receive_us), 0, 0.0, "us",
+     "taking up a packet another IP handed over"},
     /* The paper times no half-space test; a next-cell determination, the nearest operation it
      * measures (coordinates against cell planes), stands for one (docs/timing.md). */
-    {"preprocess_unit", offsetof(rt_timing, preprocess_unit_us), 0, 340.0},
+    {"preprocess_unit", offsetof(rt_timing, preprocess_unit_us), 0, 340.0, "us",
+     "one half-space test of a moving scene's update"},
     /* The packet is taken up again at every cell it enters (it carries the index of the next
      * cell, docs/paper.md): the fidelity study fitted the table's packet analysis on the work
      * window; 0 in the profiles before that fit. */
-    {"cell_step_packet", offsetof(rt_timing, cell_step_packet_us), 0, 580.0},
+    {"cell_step_packet", offsetof(rt_timing, cell_step_packet_us), 0, 580.0, "us",
+     "packet work on every move into the next cell"},
+    {"link_setup", offsetof(rt_timing, link_setup_us), 0, 0.0, "us",
+     "a link's fixed time per packet before the transfer"},
 };
 #define KEY_COUNT (sizeof keys / sizeof keys[0])
 
@@ -257,6 +265,12 @@ size_t rt_timing_key_count(void) { return KEY_COUNT; }
 
 const char *rt_timing_key_name(size_t index) { return index < KEY_COUNT ? keys[index].name : NULL; }
 
+const char *rt_timing_key_unit(size_t index) { return index < KEY_COUNT ? keys[index].unit : NULL; }
+
+const char *rt_timing_key_meaning(size_t index) { return index < KEY_COUNT ? keys[index].meaning : NULL; }
+
+int rt_timing_key_positive(size_t index) { return index < KEY_COUNT ? keys[index].positive : 0; }
+
 /* NAN for an index past the table. */
 double rt_timing_get(const rt_timing *timing, size_t index) { return index < KEY_COUNT ? *cfield(timing, index) : NAN; }
 
@@ -277,7 +291,7 @@ double rt_timing_step_us(const rt_timing *t, const rt_op_counts *ops)
 
 double rt_timing_link_packet_us(const rt_timing *t)
 {
-    return t->link_bytes_per_us > 0.0 ? t->packet_bytes / t->link_bytes_per_us : t->link_us;
+    return t->link_setup_us + (t->link_bytes_per_us > 0.0 ? t->packet_bytes / t->link_bytes_per_us : t->link_us);
 }
 
 double rt_timing_bus_transfer_us(const rt_timing *t, double bytes)

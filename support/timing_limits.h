@@ -9,7 +9,7 @@
 namespace torusrt {
 
 // The most any one operation, link transfer or bus transfer may take, in microseconds (1 s).
-constexpr double kMaxTimingUs = 1e6;
+constexpr double kMaxTimingUs = RT_TIMING_MAX_VALUE;
 
 // "" if every value of `timing` is within the limits, else a message naming the first key
 // that is not (the packet size is bounded by kMaxTimingUs bytes too). `key`, if given, is set

@@ -23,6 +23,7 @@
 #include "machine_options.h"
 #include "model_run.h"
 #include "motion_options.h"
+#include "option_docs.h"
 #include "option_parsing.h"
 #include "output_files.h"
 #include "packet_pool.h"
@@ -128,6 +129,8 @@ void declare_options(CLI::App &app, std::shared_ptr<MachineFileReader> reader)
                           "with --dump-config: write every timing value (timing-values), so that the file needs "
                           "no timing file",
                           OptionGroup::machine, ""});
+    // Not in the help: docs/cli.md's generated tables (scripts/write_option_docs.py writes them there).
+    app.add_flag("--option-tables")->group("")->configurable(false);
     for (const MachineOption &o : machine_option_table()) add_spec_option(app, o.spec);
     add_common_options(app, output_help, {"--output", "--stats"});
     for (const RunOption &o : run_option_table())
@@ -324,6 +327,7 @@ int sc_main(int argc, char **argv)
             cl.anim = animation_options_given(cl.given);
             cl.dump_config = cl.has("--dump-config");
             cl.with_timing = cl.has("--with-timing");
+            if (cl.has("--option-tables")) return std::fputs(option_tables_markdown().c_str(), stdout) < 0 ? 1 : 0;
             try {
                 if (cl.with_timing && !cl.dump_config) throw UserError("--with-timing: only with --dump-config", 2);
                 return cl.dump_config ? dump_config(cl) : run(cl, wall_start, argc, argv);

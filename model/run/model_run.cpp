@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "internal_check.h"
+#include "machine_options.h"
 #include "mapping.h"
 #include "packet_ledger.h"
 #include "progress.h"
@@ -122,23 +123,22 @@ void print_summary_stdout(const RunReport &report) { print_summary(report, stdou
 // The T(1) run's exit status when memory ran out: the parent gives the run's out-of-memory message.
 constexpr int kT1OutOfMemory = 4;
 
+SimConfig one_processor_config(const SimConfig &config)
+{
+    SimConfig one;  // no owner table, no replicas, nothing traced, written or shown
+    static_cast<MachineConfig &>(one) = one_processor_machine(config);
+    one.scene_path = config.scene_path;
+    one.width = config.width;
+    one.height = config.height;
+    one.memory = config.memory;
+    one.time_limit_s = config.time_limit_s;
+    one.quiet = true;
+    return one;
+}
+
 double one_processor_time(const SimConfig &config, const rt_scene *scene, const rt_grid *grid)
 {
-    SimConfig one = config;
-    one.ips = {1, 1, 1};
-    one.cluster = 1;
-    one.mapping = "block";  // one node owns every cell, whatever the mapping
-    one.owner_table.clear();
-    one.replica_first.clear();
-    one.replica_extra.clear();
-    one.replicate = 0;
-    one.vcd_path.clear();
-    one.trace_ips.clear();
-    one.stats_interval_s = 0;  // the parent writes the series
-    one.quiet = true;
-    one.style = TimingStyle::at;
-    one.quantum_us = 0;
-    one.queue_capacity = 0;  // T(1) is the unconstrained sequential time
+    const SimConfig one = one_processor_config(config);
     int fds[2];
     if (pipe(fds) != 0) throw UserError("cannot create a pipe for the T(1) run");
     std::fflush(nullptr);

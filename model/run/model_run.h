@@ -53,6 +53,12 @@ void check_conservation(const PacketLedger &ledger);
 // Prints the human summary of a report on stdout.
 void print_summary_stdout(const RunReport &report);
 
+// The settings of the one-processor run for T(1), by one rule: the machine's one-processor form
+// (one_processor_machine: each machine option's `one_processor` text) doing the same work (the
+// scene, its image size, the memory budget, the time limit) and every other run option at its
+// default, so that it traces, writes and shows nothing.
+SimConfig one_processor_config(const SimConfig &config);
+
 // T(1) of `config`'s scene: the same model with one processor (and no cluster), run in a child
 // process. Throws UserError if that run fails.
 double one_processor_time(const SimConfig &config, const rt_scene *scene, const rt_grid *grid);

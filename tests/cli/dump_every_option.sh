@@ -32,6 +32,7 @@ declare -A sample=(
     [--link-us]="--ips 2 --link-us 500"
     [--packet-bytes]="--ips 2 --packet-bytes 56 --link-bytes-per-us 1"
     [--link-bytes-per-us]="--ips 2 --link-bytes-per-us 2"
+    [--link-setup-us]="--ips 2 --link-setup-us 5"
     [--max-depth]="--max-depth 1"
     [--min-weight]="--min-weight 0.5"
     [--style]="--ips 2 --style lt --quantum 1ms"

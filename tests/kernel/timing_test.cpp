@@ -75,7 +75,7 @@ TEST(Timing, KeysNameEveryField)
 {
     rt_timing t;
     rt_timing_defaults(&t);
-    ASSERT_EQ(rt_timing_key_count(), 21u);
+    ASSERT_EQ(rt_timing_key_count(), sizeof(rt_timing) / sizeof(double));  // a key for every field
     EXPECT_STREQ(rt_timing_key_name(0), "test_miss");
     EXPECT_EQ(rt_timing_get(&t, 0), 1300);
     bool seen_link = false, seen_width = false;
@@ -92,8 +92,8 @@ TEST(Timing, KeysNameEveryField)
     }
     EXPECT_TRUE(seen_link);
     EXPECT_TRUE(seen_width);
-    EXPECT_EQ(rt_timing_key_name(21), nullptr);
-    EXPECT_TRUE(std::isnan(rt_timing_get(&t, 21)));
+    EXPECT_EQ(rt_timing_key_name(rt_timing_key_count()), nullptr);
+    EXPECT_TRUE(std::isnan(rt_timing_get(&t, rt_timing_key_count())));
 }
 
 TEST(Timing, SetRejectsBadValues)
@@ -315,6 +315,12 @@ TEST(Timing, LinkAndBusTimes)
     EXPECT_EQ(rt_timing_link_packet_us(&t), 2.0);
     t.packet_bytes = 35;
     EXPECT_EQ(rt_timing_link_packet_us(&t), 2.5);
+    // A set-up time comes before the transfer, with a bandwidth and with a time per packet.
+    t.link_setup_us = 1.5;
+    EXPECT_EQ(rt_timing_link_packet_us(&t), 4.0);
+    t.link_bytes_per_us = 0;
+    EXPECT_EQ(rt_timing_link_packet_us(&t), 51.5);
+    t.link_setup_us = 0;
     // ceil(bytes / 2) cycles of 0.5 us.
     t.bus_cycle_us = 0.5;
     EXPECT_EQ(rt_timing_bus_transfer_us(&t, 28), 7.0);

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <climits>
-#include <cstdio>
 #include <cstring>
 #include <unistd.h>
 
@@ -16,6 +15,7 @@
 #include "rt_grid.h"
 #include "timing_choice.h"
 #include "timing_limits.h"
+#include "timing_option_texts.h"
 #include "user_error.h"
 
 namespace torusrt {
@@ -25,19 +25,6 @@ namespace {
 std::string dims(const std::array<int, 3> &d)
 {
     return std::to_string(d[0]) + "x" + std::to_string(d[1]) + "x" + std::to_string(d[2]);
-}
-
-double timing_value(const rt_timing &t, const char *key)
-{
-    for (size_t i = 0; i < rt_timing_key_count(); i++)
-        if (std::strcmp(rt_timing_key_name(i), key) == 0) return rt_timing_get(&t, i);
-    return 0;
-}
-
-void set_timing(const OptionSpec &spec, rt_timing &t, const char *key, double v)
-{
-    char msg[RT_MSG_LEN] = "";
-    if (rt_timing_set(&t, key, v, msg, sizeof msg) != RT_OK) throw UserError(spec.long_name() + ": " + msg, 2);
 }
 
 // NAME or NAME:N of a mapping --map chooses (the registry's forms); N into `block`.
@@ -74,58 +61,6 @@ std::string absolute_path(const std::string &path)
     std::string rel = path;
     while (rel.rfind("./", 0) == 0) rel.erase(0, rel.find_first_not_of('/', 1));
     return (std::strcmp(cwd, "/") == 0 ? "" : std::string(cwd)) + "/" + rel;
-}
-
-// --timing FILE: the table of the profile with the file's values on top.
-void read_timing_file(const OptionSpec &, const std::string &t, MachineConfig &m)
-{
-    if (t.empty()) return;
-    m.timing_profile = choose_timing(m.timing_base, t, &m.timing);
-    m.timing_file = t;
-    // The table as loaded is input: a value out of range is the file's fault, named at its line.
-    std::string key, problem = timing_limit_problem(m.timing, &key);
-    long line = problem.empty() ? 0 : timing_key_line(t, key);
-    if (!problem.empty())
-        throw UserError("--timing: " + shown_text(t) + (line > 0 ? ":" + std::to_string(line) : "") + ": " + problem);
-}
-
-// "KEY=VALUE,..." of every timing key, each key once; no empty item (a stray comma).
-void read_timing_values(const OptionSpec &spec, const std::string &text, MachineConfig &m)
-{
-    std::vector<std::string> seen;
-    size_t pos = 0;
-    while (pos < text.size()) {
-        size_t comma = text.find(',', pos);
-        std::string item = text.substr(pos, comma == std::string::npos ? std::string::npos : comma - pos);
-        if (item.empty() || (comma + 1 == text.size()))
-            throw UserError(spec.long_name() + " '" + shown_text(text) +
-                                "': an empty item (a comma with no KEY=VALUE " + (item.empty() ? "before" : "after") +
-                                " it)",
-                            2);
-        size_t eq = item.find('=');
-        if (eq == std::string::npos)
-            throw UserError(spec.long_name() + " '" + shown_text(item) + "': expected KEY=VALUE", 2);
-        std::string key = item.substr(0, eq);
-        if (std::find(seen.begin(), seen.end(), key) != seen.end())
-            throw UserError(
-                spec.long_name() + " '" + shown_text(item) + "': the key '" + shown_text(key) + "' is given twice", 2);
-        seen.push_back(key);
-        set_timing(spec, m.timing, key.c_str(),
-                   parse_real(spec.long_name() + " " + key, item.substr(eq + 1), 0, kMaxTimingUs));
-        if (comma == std::string::npos) break;
-        pos = comma + 1;
-    }
-    m.timing_file.clear();
-    m.timing_values = true;
-    m.timing_profile = m.timing_base + " + values";
-}
-
-std::string timing_values_text(const MachineConfig &m)
-{
-    std::string s;
-    for (size_t i = 0; i < rt_timing_key_count(); i++)
-        s += std::string(i ? "," : "") + rt_timing_key_name(i) + "=" + number_text(rt_timing_get(&m.timing, i));
-    return s;
 }
 
 template <typename E, size_t N> std::string choice_help(const char *what, const NamedValue<E> (&table)[N])
@@ -168,15 +103,22 @@ std::vector<MachineOption> network_options()
         {{"--ips", "DIMS", K::text, "1", 1, kMaxNodes, "",
           "torus nodes: P, PXxPY or PXxPYxPZ, at most " + std::to_string(kMaxNodes), G::machine, "ips"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
-             m.ips = parse_dims_1_to_3(s.long_name(), t, 1, kMaxNodes);
+             m.ips = parse_dims_1_to_3(s.long_name(), t, static_cast<int>(s.min), static_cast<int>(s.max));
          },
-         [](const MachineConfig &m) { return dims(m.ips); }},
+         [](const MachineConfig &m) { return dims(m.ips); },
+         [](const MachineConfig &m, nlohmann::json &j) {
+             j["ips"] = m.ips;
+             j["nodes"] = m.node_count();
+         },
+         nullptr,
+         "1"},
         {{"--topology", "KIND", K::text, "torus", 0, 0, "",
           choice_help("network", kTopologyNames) + " (mesh: no wrap-around)", G::machine, "topology"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
              m.topology = value_named(s.long_name(), t, kTopologyNames);
          },
-         [](const MachineConfig &m) { return std::string(topology_name(m.topology)); }},
+         [](const MachineConfig &m) { return std::string(topology_name(m.topology)); },
+         [](const MachineConfig &m, nlohmann::json &j) { j["topology"] = topology_name(m.topology); }},
         {{"--route-ties", "RULE", K::text, route_ties_name(kDefaultRouteTies), 0, 0, "",
           choice_help("the way round an even ring when both are equally short", kRouteTiesNames) +
               " (split: + for a packet whose pixel x + y is even, - for odd, so a ring of two uses both its "
@@ -186,10 +128,11 @@ std::vector<MachineOption> network_options()
              m.route_ties = value_named(s.long_name(), t, kRouteTiesNames);
          },
          [](const MachineConfig &m) { return std::string(route_ties_name(m.route_ties)); },
+         [](const MachineConfig &m, nlohmann::json &j) { j["route_ties"] = route_ties_name(m.route_ties); },
          needs_even_ring},
         {common_option_spec("--cells"),
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
-             m.cells = parse_triple(s.long_name(), t, 1, static_cast<int>(s.max));
+             m.cells = parse_triple(s.long_name(), t, static_cast<int>(s.min), static_cast<int>(s.max));
          },
          [](const MachineConfig &m) { return dims(m.cells); }},
         {common_option_spec("--preprocess-count"),
@@ -200,9 +143,13 @@ std::vector<MachineOption> network_options()
         {{"--queue", "N", K::integer, "0", 0, double(kMaxQueue), "packets",
           "capacity of every packet buffer (of each class), 0 = unbounded", G::machine, "queue"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
-             m.queue_capacity = static_cast<unsigned>(parse_integer(s.long_name(), t, 0, kMaxQueue));
+             m.queue_capacity =
+                 static_cast<unsigned>(parse_integer(s.long_name(), t, 0, static_cast<long long>(s.max)));
          },
-         [](const MachineConfig &m) { return std::to_string(m.queue_capacity); }},
+         [](const MachineConfig &m) { return std::to_string(m.queue_capacity); },
+         [](const MachineConfig &m, nlohmann::json &j) { j["queue"] = m.queue_capacity; },
+         nullptr,
+         "0"},  // T(1) is the unconstrained sequential time
         {{"--flow", "SCHEME", K::text, "classes", 0, 0, "",
           choice_help("flow control", kFlowNames) + " (none: one class, finite buffers may deadlock, exit 3)",
           G::machine, "flow"},
@@ -218,8 +165,20 @@ std::vector<MachineOption> network_options()
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
              m.queue_order = value_named(s.long_name(), t, kQueueOrderNames);
          },
-         [](const MachineConfig &m) { return std::string(queue_order_name(m.queue_order)); }},
+         [](const MachineConfig &m) { return std::string(queue_order_name(m.queue_order)); },
+         [](const MachineConfig &m, nlohmann::json &j) { j["queue_order"] = queue_order_name(m.queue_order); }},
     };
+}
+
+// A link time: a bare number in microseconds (the unit is in the option's name), at most the
+// spec's maximum.
+double link_time_us(const OptionSpec &s, const std::string &text)
+{
+    double us = parse_time(s.long_name(), text, -6, -6);
+    if (us > s.max)
+        throw UserError(
+            s.long_name() + " '" + shown_text(text) + "': must be at most " + number_text(s.max) + " us (1 s)", 2);
+    return us;
 }
 
 // --link-us acts only while no bandwidth sets the link time.
@@ -228,19 +187,22 @@ const char *needs_no_bandwidth(const MachineConfig &m)
     return timing_value(m.timing, "link_bytes_per_us") > 0 ? "--link-bytes-per-us 0 (it sets the link time)" : nullptr;
 }
 
-// Machine options of the timing (profile, file, link, step limits, style), in dump order.
-std::vector<MachineOption> timing_options()
+// Machine options of the timing table (profile, file, values, link), in dump order.
+std::vector<MachineOption> timing_table_options()
 {
     using G = OptionGroup;
     using K = ValueKind;
-    const double max_time_s = kMaxSimTimeS;
     return {
         {common_option_spec("--timing-profile"),
          [](const OptionSpec &, const std::string &t, MachineConfig &m) {
              m.timing_profile = choose_timing(t, "", &m.timing);
              m.timing_base = t;
          },
-         [](const MachineConfig &m) { return m.timing_base; }},
+         [](const MachineConfig &m) { return m.timing_base; },
+         [](const MachineConfig &m, nlohmann::json &j) {
+             j["timing_profile"] = m.timing_profile;  // the label: the profile with its file or values
+             j["timing"] = timing_json(m.timing);
+         }},
         {common_option_spec("--timing"), read_timing_file,
          [](const MachineConfig &m) { return absolute_path(m.timing_file); }},
         {{"--timing-values", "LIST", K::text, "", 0, 0, "",
@@ -254,14 +216,10 @@ std::vector<MachineOption> timing_options()
         {{"--link-us", "TIME", K::time, "50", 0, kMaxTimingUs, "us",
           "time per packet on a link; a bare number is microseconds", G::machine, "link-us"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
-             double us = parse_time(s.long_name(), t, -6, -6);
-             if (us > s.max)
-                 throw UserError(s.long_name() + " '" + shown_text(t) + "': must be at most " + number_text(s.max) +
-                                     " us (1 s)",
-                                 2);
-             set_timing(s, m.timing, "link", us);
+             set_timing(s, m.timing, "link", link_time_us(s, t));
          },
          [](const MachineConfig &m) { return number_text(timing_value(m.timing, "link")); },
+         nullptr,
          needs_no_bandwidth},
         {{"--packet-bytes", "BYTES", K::real, "28", 0, kMaxTimingUs, "bytes", "packet size on the wire", G::machine,
           "packet-bytes"},
@@ -282,30 +240,64 @@ std::vector<MachineOption> timing_options()
              set_timing(s, m.timing, "link_bytes_per_us", parse_real(s.long_name(), t, s.min, s.max));
          },
          [](const MachineConfig &m) { return number_text(timing_value(m.timing, "link_bytes_per_us")); }},
+        {{"--link-setup-us", "TIME", K::time, "0", 0, kMaxTimingUs, "us",
+          "fixed time per packet on a link before its transfer (--link-us or the bandwidth's); a bare number is "
+          "microseconds",
+          G::machine, "link-setup-us"},
+         [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
+             set_timing(s, m.timing, "link_setup", link_time_us(s, t));
+         },
+         [](const MachineConfig &m) { return number_text(timing_value(m.timing, "link_setup")); }},
+    };
+}
+
+// Machine options of the shade tree's limits and the timing style, in dump order (the timing table).
+std::vector<MachineOption> step_and_style_options()
+{
+    using G = OptionGroup;
+    using K = ValueKind;
+    const double max_time_s = kMaxSimTimeS;
+    return {
         {common_option_spec("--max-depth"),
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
              m.step.max_depth = static_cast<int>(parse_integer(s.long_name(), t, 0, static_cast<long long>(s.max)));
          },
-         [](const MachineConfig &m) { return std::to_string(m.step.max_depth); }},
+         [](const MachineConfig &m) { return std::to_string(m.step.max_depth); },
+         [](const MachineConfig &m, nlohmann::json &j) { j["max_depth"] = m.step.max_depth; }},
         {common_option_spec("--min-weight"),
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
              m.step.min_weight = parse_fraction(s.long_name(), t);
          },
-         [](const MachineConfig &m) { return number_text(m.step.min_weight); }},
+         [](const MachineConfig &m) { return number_text(m.step.min_weight); },
+         [](const MachineConfig &m, nlohmann::json &j) { j["min_weight"] = m.step.min_weight; }},
         {{"--style", "at|lt", K::text, "at", 0, 0, "",
           choice_help("timing style", kStyleNames) + " (approximately or loosely timed; lt needs --quantum)",
           G::machine, "style"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
              m.style = value_named(s.long_name(), t, kStyleNames);
          },
-         [](const MachineConfig &m) { return std::string(style_name(m.style)); }},
+         [](const MachineConfig &m) { return std::string(style_name(m.style)); },
+         [](const MachineConfig &m, nlohmann::json &j) { j["style"] = style_name(m.style); },
+         nullptr,
+         "at"},
         {{"--quantum", "TIME", K::time, "0", 0, max_time_s, "s", "loosely-timed global quantum, e.g. 500us, 10ms",
           G::machine, "quantum"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
              m.quantum_us = parse_time(s.long_name(), t, 0, -6);
          },
-         [](const MachineConfig &m) { return number_text(m.quantum_us) + "us"; }},
+         [](const MachineConfig &m) { return number_text(m.quantum_us) + "us"; },
+         [](const MachineConfig &m, nlohmann::json &j) { j["quantum_us"] = m.quantum_us; },
+         nullptr,
+         "0"},
     };
+}
+
+// The machine file's [timing] table: the timing table's options, then the step limits and style.
+std::vector<MachineOption> timing_options()
+{
+    std::vector<MachineOption> options = timing_table_options();
+    for (MachineOption &o : step_and_style_options()) options.push_back(std::move(o));
+    return options;
 }
 
 // A memory-accounting option: bytes of one field of the memory layout, from `min` to
@@ -317,7 +309,7 @@ MachineOption layout_option(const char *name, const char *fallback, int min, con
              OptionGroup::machine, name + 2},
             [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
                 m.memory_layout.*Field = static_cast<uint32_t>(
-                    parse_integer(s.long_name(), t, static_cast<long long>(s.min), kMaxRecordBytes));
+                    parse_integer(s.long_name(), t, static_cast<long long>(s.min), static_cast<long long>(s.max)));
             },
             [](const MachineConfig &m) { return std::to_string(m.memory_layout.*Field); }};
 }
@@ -334,15 +326,23 @@ std::vector<MachineOption> cluster_options()
         {{"--cluster", "N", K::integer, "1", 1, kMaxCluster, "processors", "processors per torus node on a shared bus",
           G::machine, "cluster"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
-             m.cluster = static_cast<int>(parse_integer(s.long_name(), t, 1, kMaxCluster));
+             m.cluster = static_cast<int>(
+                 parse_integer(s.long_name(), t, static_cast<long long>(s.min), static_cast<long long>(s.max)));
          },
-         [](const MachineConfig &m) { return std::to_string(m.cluster); }},
+         [](const MachineConfig &m) { return std::to_string(m.cluster); },
+         [](const MachineConfig &m, nlohmann::json &j) {
+             j["cluster"] = m.cluster;
+             j["processors"] = m.processor_count();
+         },
+         nullptr,
+         "1"},
         {{"--data", "KIND", K::text, "replicated", 0, 0, "", choice_help("object data in a cluster", kDataModeNames),
           G::machine, "data"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
              m.data = value_named(s.long_name(), t, kDataModeNames);
          },
          [](const MachineConfig &m) { return std::string(data_mode_name(m.data)); },
+         [](const MachineConfig &m, nlohmann::json &j) { j["data"] = data_mode_name(m.data); },
          clustered_only},
         {{"--arbiter", "KIND", K::text, "round-robin", 0, 0, "",
           "cluster bus arbiter: " + listed(arbiter_policy_names()), G::machine, "arbiter"},
@@ -350,6 +350,7 @@ std::vector<MachineOption> cluster_options()
              m.arbiter = registered_name(s.long_name(), t, arbiter_policy_names());
          },
          [](const MachineConfig &m) { return m.arbiter; },
+         [](const MachineConfig &m, nlohmann::json &j) { j["arbiter"] = m.arbiter; },
          clustered_only},
         {{"--dispatch", "KIND", K::text, "round-robin", 0, 0, "",
           "cluster packet dispatch: " + listed(dispatch_policy_names()), G::machine, "dispatch"},
@@ -357,6 +358,7 @@ std::vector<MachineOption> cluster_options()
              m.dispatch = registered_name(s.long_name(), t, dispatch_policy_names());
          },
          [](const MachineConfig &m) { return m.dispatch; },
+         [](const MachineConfig &m, nlohmann::json &j) { j["dispatch"] = m.dispatch; },
          clustered_only},
         layout_option<&rt_memory_layout::cell_header_bytes>("--cell-header-bytes", "4", 0,
                                                             "memory accounting: bytes per cell list"),
@@ -375,7 +377,13 @@ std::vector<MachineOption> mapping_options()
     return {
         {{"--map", "KIND", K::text, "cyclic", 0, 0, "", "cell mapping: " + mapping_forms(), G::machine, "map"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) { parse_mapping(s.long_name(), t, m); },
-         mapping_text},
+         mapping_text,
+         [](const MachineConfig &m, nlohmann::json &j) {
+             j["mapping"] = m.mapping;
+             j["block"] = m.block;
+         },
+         nullptr,
+         "block"},  // one node owns every cell, whatever the mapping
         {{"--map-file", "FILE", K::file, "", 0, 0, "", "explicit cell -> node table (torusrt-map 1 format)", G::machine,
           "map-file"},
          [](const OptionSpec &, const std::string &t, MachineConfig &m) {
@@ -398,9 +406,12 @@ std::vector<MachineOption> mapping_options()
           "them",
           G::machine, "replicate"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
-             m.replicate = parse_real(s.long_name(), t, 0, 64);
+             m.replicate = parse_real(s.long_name(), t, s.min, s.max);
          },
-         [](const MachineConfig &m) { return number_text(m.replicate); }},
+         [](const MachineConfig &m) { return number_text(m.replicate); },
+         nullptr,
+         nullptr,
+         "0"},
         {{"--replica-choice", "RULE", K::text, "nearest", 0, 0, "",
           choice_help("owner of a replicated cell a packet goes to", kReplicaRuleNames) +
               " (nearest: fewest hops, then lowest node; hash: of pixel and depth)",
@@ -409,6 +420,7 @@ std::vector<MachineOption> mapping_options()
              m.replica_choice = value_named(s.long_name(), t, kReplicaRuleNames);
          },
          [](const MachineConfig &m) { return std::string(replica_rule_name(m.replica_choice)); },
+         nullptr,
          [](const MachineConfig &m) { return m.replicate > 0 ? nullptr : "--replicate above 0"; }},
     };
 }
@@ -432,37 +444,6 @@ std::vector<MachineOption> build_table()
             table.push_back(std::move(o));
         }
     return table;
-}
-
-// A TOML basic string: quotes, backslashes and control bytes escaped; bytes that are not
-// UTF-8 cannot be written at all (TOML files are UTF-8).
-std::string toml_string(const std::string &key, const std::string &v)
-{
-    std::string out = "\"";
-    for (size_t i = 0; i < v.size(); i++) {
-        unsigned char c = static_cast<unsigned char>(v[i]);
-        if (c == '"' || c == '\\') {
-            out += '\\';
-            out += static_cast<char>(c);
-        } else if (c < 0x20 || c == 0x7f) {
-            char esc[8];
-            std::snprintf(esc, sizeof esc, "\\u%04X", c);
-            out += esc;
-        } else if (c >= 0x80) {  // one UTF-8 sequence, checked
-            size_t n = c >= 0xf0 && c < 0xf5 ? 4 : c >= 0xe0 ? 3 : c >= 0xc2 && c < 0xe0 ? 2 : 0;
-            bool ok = n > 0 && i + n <= v.size();
-            for (size_t k = 1; ok && k < n; k++) ok = (static_cast<unsigned char>(v[i + k]) & 0xc0) == 0x80;
-            if (!ok)
-                throw UserError("--" + key + " '" + shown_text(v) +
-                                    "': a value that is not UTF-8 cannot be written to a machine file",
-                                2);
-            out.append(v, i, n);
-            i += n - 1;
-        } else {
-            out += static_cast<char>(c);
-        }
-    }
-    return out + "\"";
 }
 
 }  // namespace
@@ -508,17 +489,20 @@ std::vector<std::string> machine_file_tables()
     return names;
 }
 
-std::string machine_options_toml(const MachineConfig &m, bool with_timing)
+MachineConfig one_processor_machine(const MachineConfig &machine)
 {
-    const nlohmann::json tables = machine_option_tables_json(m);
-    std::string s, table;
-    for (const auto &kv : machine_options(m, with_timing)) {
-        const std::string &in = tables.at(kv.first).get_ref<const std::string &>();
-        if (in != table) s += (table.empty() ? "[" : "\n[") + in + "]\n";
-        table = in;
-        s += kv.first + "=" + toml_string(kv.first, kv.second) + "\n";
-    }
-    return s;
+    MachineConfig one = machine;
+    for (const MachineOption &o : machine_option_table())
+        if (o.one_processor) o.read(o.spec, o.one_processor, one);
+    return one;
+}
+
+nlohmann::json machine_config_json(const MachineConfig &m)
+{
+    nlohmann::json j = nlohmann::json::object();
+    for (const MachineOption &o : machine_option_table())
+        if (o.json) o.json(m, j);
+    return j;
 }
 
 nlohmann::json machine_options_json(const MachineConfig &m)

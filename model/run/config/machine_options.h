@@ -2,8 +2,10 @@
 // declared once with its spec (name, kind, default, range, unit, help, group, key), how its text
 // sets the machine and how the machine writes it back. The command line (torusrt-sim) registers
 // these, --config files feed them, --dump-config and the JSON report's config.options write
-// them, in the table's order. Adding a machine option is one entry here plus its field in
-// MachineConfig (sim_config.h) and its use. No CLI11 here.
+// them, in the table's order; the JSON report's other config keys come from the entries' `json`,
+// the one-processor run's machine (T(1)) from their `one_processor`. Adding a machine option is
+// one entry here plus its field in MachineConfig (sim_config.h) and its use; the files it
+// touches are listed in docs/options.md. No CLI11 here.
 #pragma once
 
 #include <map>
@@ -23,10 +25,16 @@ struct MachineOption {
     void (*read)(const OptionSpec &spec, const std::string &text, MachineConfig &machine);
     // The text that reads back to the same setting.
     std::string (*write)(const MachineConfig &machine);
+    // Adds the option's keys of the JSON report's config block ("ips", "nodes", ...); nullptr:
+    // the option is only in config.options.
+    void (*json)(const MachineConfig &machine, nlohmann::json &config) = nullptr;
     // When the option changes nothing in `machine`: what it would need ("--cluster > 1"), else
     // nullptr; no function: it always acts. The validator warns of such an option given on the
     // command line (idle_option_warnings).
     const char *(*needs)(const MachineConfig &machine) = nullptr;
+    // The text the one-processor run for T(1) reads for this option; nullptr: it keeps the
+    // machine's (one_processor_machine).
+    const char *one_processor = nullptr;
     // The machine file's table that groups it ("network", "timing", "cluster", "mapping"): the
     // part of the table that declares it.
     std::string table = "";
@@ -55,6 +63,14 @@ std::vector<std::string> machine_file_tables();
 // The machine file: a [table] per part of the option table, each holding its key = "value"
 // lines, TOML basic strings with every byte a path may hold escaped.
 std::string machine_options_toml(const MachineConfig &machine, bool with_timing = false);
+
+// The one-processor machine of T(1): `machine` with every option's `one_processor` text read on
+// top, in the table's order (one node, one processor, every cell on it, unbounded buffers,
+// approximately timed); the rest, its timing included, as `machine` has it.
+MachineConfig one_processor_machine(const MachineConfig &machine);
+
+// The JSON report's config keys that the options' `json` write: {"ips": [4, 2, 2], "nodes": 16, ...}.
+nlohmann::json machine_config_json(const MachineConfig &machine);
 
 // {"key": "value", ...}.
 nlohmann::json machine_options_json(const MachineConfig &machine);

@@ -22,37 +22,14 @@ nlohmann::json min_mean_max(const std::vector<double> &v)
             {"max", *std::max_element(v.begin(), v.end())}};
 }
 
-nlohmann::json timing_json(const rt_timing &t)
-{
-    nlohmann::json j;
-    for (size_t i = 0; i < rt_timing_key_count(); i++) j[rt_timing_key_name(i)] = rt_timing_get(&t, i);
-    return j;
-}
-
+// The machine's keys from its option table, then the machine as --dump-config writes it.
 nlohmann::json config_json(const SimConfig &config)
 {
-    return {{"ips", config.ips},
-            {"nodes", config.node_count()},
-            {"processors", config.processor_count()},
-            {"mapping", config.mapping},
-            {"block", config.block},
-            {"topology", topology_name(config.topology)},
-            {"route_ties", route_ties_name(config.route_ties)},
-            {"queue", config.queue_capacity},
-            {"queue_order", queue_order_name(config.queue_order)},
-            {"style", style_name(config.style)},
-            {"quantum_us", config.quantum_us},
-            {"cluster", config.cluster},
-            {"data", data_mode_name(config.data)},
-            {"arbiter", config.arbiter},
-            {"dispatch", config.dispatch},
-            {"max_depth", config.step.max_depth},
-            {"min_weight", config.step.min_weight},
-            {"timing_profile", config.timing_profile},
-            {"timing", timing_json(config.timing)},
-            {"options", machine_options_json(config)},  // the machine, as --dump-config writes it
-            {"option_order", machine_option_order_json(config)},
-            {"option_tables", machine_option_tables_json(config)}};  // the machine file's table of each key
+    nlohmann::json j = machine_config_json(config);
+    j["options"] = machine_options_json(config);
+    j["option_order"] = machine_option_order_json(config);
+    j["option_tables"] = machine_option_tables_json(config);  // the machine file's table of each key
+    return j;
 }
 
 nlohmann::json per_ip_json(const RunReport &r, std::vector<double> &busy)
