@@ -84,6 +84,7 @@ std::vector<int32_t> owner_table_of(const SimConfig &config, const rt_grid *grid
         if (rt_mapping_fill(dims, config.ips.data(), config.mapping, config.block, owner.data(), msg, sizeof msg) !=
             RT_OK)
             throw UserError(std::string("--map: ") + msg, 2);
+        place_on_nodes(config.network(), owner);
     }
     return owner;
 }

@@ -105,6 +105,8 @@ nlohmann::json prepare_mapping(SimConfig &config, rt_scene *scene, const rt_grid
     } else if (rt_mapping_fill(dims, config.ips.data(), config.mapping, config.block, owner.data(), msg, sizeof msg) !=
                RT_OK) {
         throw UserError(std::string("--map: ") + msg, 2);
+    } else {
+        place_on_nodes(config.network(), owner);
     }
     j["cells_per_node"] = cells_per_node(owner, nodes);
     config.owner_table = std::move(owner);
@@ -134,7 +136,7 @@ std::string load_map_caption(const SimConfig &config)
     char shown[128];
     rt_escape_bytes(base.data(), base.size(), 1, shown, sizeof shown);
     std::string machine = std::to_string(config.ips[0]) + "x" + std::to_string(config.ips[1]) + "x" +
-                          std::to_string(config.ips[2]) + " " + topology_name(config.topology);
+                          std::to_string(config.ips[2]) + " " + config.topology;
     if (config.cluster > 1) machine += ", " + std::to_string(config.cluster) + " processors per node";
     std::string mapping = mapping_name(config.mapping);
     if (config.mapping == RT_MAP_BLOCK_CYCLIC || (config.mapping == RT_MAP_COST && config.block > 1))

@@ -36,7 +36,7 @@ nlohmann::json config_json(const SimConfig &config)
             {"processors", config.processor_count()},
             {"mapping", mapping_name(config.mapping)},
             {"block", config.block},
-            {"topology", topology_name(config.topology)},
+            {"topology", config.topology},
             {"route_ties", route_ties_name(config.route_ties)},
             {"queue", config.queue_capacity},
             {"queue_order", queue_order_name(config.queue_order)},
@@ -79,6 +79,7 @@ nlohmann::json per_ip_json(const RunReport &r, std::vector<double> &busy)
 nlohmann::json links_json(const RunReport &r)
 {
     double T = r.sim_time_s;
+    const rt_topology topo = r.config.network();
     nlohmann::json per_link = nlohmann::json::array();
     std::vector<double> util;
     for (const LinkStats &l : r.links) {
@@ -86,7 +87,7 @@ nlohmann::json links_json(const RunReport &r)
         util.push_back(u);
         per_link.push_back({{"from", l.from},
                             {"to", l.to},
-                            {"dir", direction_name(l.dir)},
+                            {"dir", rt_topology_port_name(&topo, l.dir)},
                             {"packets", l.packets},
                             {"busy_s", l.busy_s},
                             {"utilisation", u},
