@@ -5,12 +5,13 @@
 #include "rt_topology.h"
 #include "topology_class.h"
 
-extern const rt_topology_class rt_topology_torus_class, rt_topology_mesh_class;
+extern const rt_topology_class rt_topology_torus_class, rt_topology_mesh_class, rt_topology_hypercube_class;
 
 /* One line per topology: the names --topology takes, in the order help lists them. */
 static const rt_topology_class *const registry[] = {
     &rt_topology_torus_class,
     &rt_topology_mesh_class,
+    &rt_topology_hypercube_class,
 };
 
 static const int registry_count = (int)(sizeof registry / sizeof registry[0]);
