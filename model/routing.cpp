@@ -26,7 +26,8 @@ void place_on_nodes(const rt_topology &topology, std::vector<int32_t> &owner)
 }
 
 Routing::Routing(const rt_topology &topology, RouteTies ties)
-    : m_topo(topology), m_ties(ties), m_has_ties(rt_topology_has_ties(&topology) != 0)
+    : m_topo(topology), m_ties(ties), m_has_ties(rt_topology_has_ties(&topology) != 0),
+      m_other_datelines(topology.kind == RT_TOPOLOGY_OTHER && rt_topology_channels(&topology) > 1)
 {
     for (int p = 0; p < m_topo.ports; p++) m_dimension[static_cast<size_t>(p)] = rt_topology_port_dimension(&m_topo, p);
     m_coords.reserve(static_cast<size_t>(m_topo.nodes));

@@ -63,19 +63,20 @@ class Routing {
     // more of its packet than it needs.
     template <class TieKey> int next_direction_by(int from, int to, TieKey tie_key) const
     {
-        if (m_topo.kind == RT_TOPOLOGY_OTHER)
-            return rt_topology_first_port(&m_topo, from, to, c_ties(), m_has_ties && from != to ? tie_key() : 0);
         const std::array<int, 3> &a = m_coords[static_cast<size_t>(from)], &b = m_coords[static_cast<size_t>(to)];
         for (int axis = 0; axis < 3; axis++) {
             if (a[axis] == b[axis]) continue;
-            if (m_topo.kind == RT_TOPOLOGY_MESH) return direction(axis, b[axis] > a[axis]);
+            // One test on the torus's way, as a torus-only routine would make.
+            if (m_topo.kind != RT_TOPOLOGY_TORUS)
+                return m_topo.kind == RT_TOPOLOGY_MESH ? direction(axis, b[axis] > a[axis])
+                                                       : other_first_port(from, to, tie_key);
             int p = m_topo.dims[axis];
             int forward = b[axis] - a[axis];
             if (forward < 0) forward += p;  // the hops going + round the ring
             if (forward != p - forward) return direction(axis, forward < p - forward);
             return direction(axis, m_ties == RouteTies::plus || tie_key() % 2 == 0);
         }
-        return -1;
+        return -1;  // positions are one per node: the same position is the same node
     }
     RouteTies ties() const { return m_ties; }
     // Whether the link leaving `node` through port `dir` is its dimension's dateline (on the
@@ -83,8 +84,8 @@ class Routing {
     // last going -).
     bool wraps(int node, int dir) const
     {
-        if (m_topo.kind == RT_TOPOLOGY_MESH) return false;
-        if (m_topo.kind == RT_TOPOLOGY_OTHER) return rt_topology_crosses_dateline(&m_topo, node, dir) != 0;
+        if (m_topo.kind != RT_TOPOLOGY_TORUS)
+            return m_other_datelines && rt_topology_crosses_dateline(&m_topo, node, dir) != 0;
         int axis = dir / 2;
         if (m_topo.dims[axis] < 2) return false;
         int c = m_coords[static_cast<size_t>(node)][axis];
@@ -97,10 +98,16 @@ class Routing {
 
   private:
     rt_route_ties c_ties() const { return m_ties == RouteTies::plus ? RT_TIES_PLUS : RT_TIES_SPLIT; }
+    // A plug-in's first port, through the interface (its tie key read only if it can tie).
+    template <class TieKey> int other_first_port(int from, int to, TieKey tie_key) const
+    {
+        return rt_topology_first_port(&m_topo, from, to, c_ties(), m_has_ties ? tie_key() : 0);
+    }
 
     rt_topology m_topo;
     RouteTies m_ties;
     bool m_has_ties;
+    bool m_other_datelines;                    // a plug-in whose scheme has datelines (more than one channel)
     std::array<int, kMaxPorts> m_dimension{};  // per port, the dimension it moves along
     // Every node's grid position, worked out once: a hop asks for two and divisions cost more.
     std::vector<std::array<int, 3>> m_coords;
