@@ -1,9 +1,9 @@
-/* rt_cost_map.h - measured load and a cost-driven mapping of cells onto a torus or mesh.
+/* rt_cost_map.h - measured load and a cost-driven mapping of cells onto the nodes' topology.
  *
  * Usage:
  *   rt_cost_pilot pilot;
  *   rt_cost_pilot_run(scene, grid, &params, &timing, &pilot, msg, sizeof msg);
- *   rt_cost_map(&pilot, nodes, 1, rt_cost_edge_us(&timing), owner, &facts, msg, sizeof msg);
+ *   rt_cost_map(&pilot, &topo, rt_cost_edge_us(&timing), owner, &facts, msg, sizeof msg);
  *   rt_cost_pilot_release(&pilot);
  *
  * The pilot is the reference renderer with every cell its own owner: each step
@@ -14,7 +14,7 @@
  * The mapper builds the cell graph (vertex weight = work, edge weight = the
  * packets crossing the face both ways times the cost of one hand-over, both
  * scaled to integers with empty cells and quiet faces weighing 1) and maps it
- * with Scotch (SCOTCH_graphMap) onto a PX x PY x PZ torus or mesh of nodes,
+ * with Scotch (SCOTCH_graphMap) onto the nodes' topology (rt_topology.h),
  * balancing work while keeping traffic few hops long. Scotch's random
  * generator is reset to a fixed seed first, so the mapping is reproducible.
  * Failures return RT_ERR_INVALID / RT_ERR_NOMEM / RT_ERR_LIMIT with a
@@ -34,6 +34,7 @@
 #include "rt_status.h"
 #include "rt_step.h"
 #include "rt_timing.h"
+#include "rt_topology.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -98,26 +99,25 @@ typedef struct rt_cost_map_facts {
     double cut_hops;          /* those packets times the hops between their nodes */
 } rt_cost_map_facts;
 
-/* Fills owner[cell] with node ids px + PX * (py + PY * pz). facts may be NULL. */
-rt_status rt_cost_map(const rt_cost_pilot *pilot, const int nodes[3], int torus, double edge_us, int32_t *owner,
+/* Fills owner[cell] with the topology's node ids; facts' hops are its hops. facts may be NULL. */
+rt_status rt_cost_map(const rt_cost_pilot *pilot, const rt_topology *topo, double edge_us, int32_t *owner,
                       rt_cost_map_facts *facts, char *msg, size_t msg_len);
 
 /* The same mapped onto a machine `fold` times larger along every axis of more than one node,
- * each of its terminals then folded onto node (x mod PX, y mod PY, z mod PZ): every node gets
- * fold^d balanced pieces spread over the grid (work interleaved in time, as cyclic does), each
- * piece's neighbours on neighbouring nodes. fold 1 is rt_cost_map; 1..64. */
-rt_status rt_cost_map_folded(const rt_cost_pilot *pilot, const int nodes[3], int torus, double edge_us, int fold,
+ * each of its terminals then folded onto a node (torus and mesh: x mod PX, y mod PY, z mod PZ;
+ * docs/topologies.md): every node gets fold^d balanced pieces spread over the grid (work interleaved in time, as cyclic
+ * does), each piece's neighbours on neighbouring nodes. fold 1 is rt_cost_map; 1..64. */
+rt_status rt_cost_map_folded(const rt_cost_pilot *pilot, const rt_topology *topo, double edge_us, int fold,
                              int32_t *owner, rt_cost_map_facts *facts, char *msg, size_t msg_len);
 
 /* A remapping from `old_owner` (SCOTCH_graphRemap): the same graph, each cell also weighing
  * move_us[cell], the microseconds moving it to another node costs, against keeping it on its
  * old node (migration ratio 1, in the edge weights' units). Node ids as rt_cost_map's. */
-rt_status rt_cost_remap(const rt_cost_pilot *pilot, const int nodes[3], int torus, double edge_us,
-                        const int32_t *old_owner, const double *move_us, int32_t *owner, rt_cost_map_facts *facts,
-                        char *msg, size_t msg_len);
+rt_status rt_cost_remap(const rt_cost_pilot *pilot, const rt_topology *topo, double edge_us, const int32_t *old_owner,
+                        const double *move_us, int32_t *owner, rt_cost_map_facts *facts, char *msg, size_t msg_len);
 
 /* Copies of the hottest cells on more nodes (docs/cell-mappings.md#replicated-cells), on top of
- * the one-owner table `owner` of the PX x PY x PZ (node_dims) torus (torus 1) or mesh. Each node
+ * the one-owner table `owner` of the nodes of `topo` (nearest: by its hops). Each node
  * may add `fraction` times its data under `owner` (rt_memory_per_owner_layout with `layout`,
  * NULL: the default). The prediction gives each owner a share of the cell's work by `rule`:
  * hash an even split; nearest the part of the pilot's packets entering the cell through its
@@ -131,9 +131,9 @@ rt_status rt_cost_remap(const rt_cost_pilot *pilot, const int nodes[3], int toru
  * predicted busiest node's work. fraction 0 gives no copies. RT_ERR_INVALID on bad arguments,
  * RT_ERR_LIMIT when nodes x objects marks exceed 2^31 bits, RT_ERR_NOMEM; *extra is NULL then. */
 rt_status rt_cost_replicate(const rt_cost_pilot *pilot, const rt_scene *scene, const rt_grid *grid,
-                            const int node_dims[3], int torus, rt_replica_rule rule, const int32_t *owner,
-                            double fraction, const rt_memory_layout *layout, uint32_t *first, int32_t **extra,
-                            size_t *extra_count, rt_cost_map_facts *facts, char *msg, size_t msg_len);
+                            const rt_topology *topo, rt_replica_rule rule, const int32_t *owner, double fraction,
+                            const rt_memory_layout *layout, uint32_t *first, int32_t **extra, size_t *extra_count,
+                            rt_cost_map_facts *facts, char *msg, size_t msg_len);
 
 /* The balanced scatter behind --map scatter (docs/cell-mappings.md#scatter): the cells, hottest
  * first (equal work: in cell order), each dealt to the node with the least work so far (ties: the
@@ -148,9 +148,9 @@ rt_status rt_cost_replicate(const rt_cost_pilot *pilot, const rt_scene *scene, c
  * the predicted busiest node with each cell's work split evenly over its owners, and the pilot's
  * packets the primary table cuts. RT_ERR_INVALID on bad arguments, RT_ERR_NOMEM. */
 rt_status rt_cost_map_scatter(const rt_cost_pilot *pilot, const rt_scene *scene, const rt_grid *grid,
-                              const int node_dims[3], int torus, double fraction, const rt_memory_layout *layout,
-                              int32_t *owner, uint32_t *first, int32_t **extra, size_t *extra_count,
-                              rt_cost_map_facts *facts, char *msg, size_t msg_len);
+                              const rt_topology *topo, double fraction, const rt_memory_layout *layout, int32_t *owner,
+                              uint32_t *first, int32_t **extra, size_t *extra_count, rt_cost_map_facts *facts,
+                              char *msg, size_t msg_len);
 
 #ifdef __cplusplus
 }

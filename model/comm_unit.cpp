@@ -18,7 +18,7 @@ namespace {
 size_t neighbours(const Routing &routing, int node)
 {
     size_t n = 0;
-    for (int dir = 0; dir < kDirections; dir++) n += routing.neighbour(node, dir) >= 0;
+    for (int dir = 0; dir < routing.ports(); dir++) n += routing.neighbour(node, dir) >= 0;
     return n;
 }
 }  // namespace
@@ -63,7 +63,7 @@ void CommUnit::end_of_elaboration()
 void CommUnit::start_of_simulation()
 {
     m_local_sink = local.operator->();  // bound now
-    for (int dir = 0; dir < kDirections; dir++)
+    for (int dir = 0; dir < m_routing.ports(); dir++)
         if (m_port_of_dir[dir] >= 0) m_ways.set_sink(dir, link_out[m_port_of_dir[dir]]);
 }
 

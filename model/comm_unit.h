@@ -88,7 +88,7 @@ class CommUnit final : public sc_core::sc_module,
     sc_core::sc_vector<LinkInSocket> link_in;
     sc_core::sc_export<PacketSinkIf> in;   // packets from the IP side
     sc_core::sc_port<PacketSinkIf> local;  // packets for this node's cells
-    sc_core::sc_port<PacketSinkIf, kDirections, sc_core::SC_ZERO_OR_MORE_BOUND> link_out;  // outgoing links
+    sc_core::sc_port<PacketSinkIf, kMaxPorts, sc_core::SC_ZERO_OR_MORE_BOUND> link_out;  // outgoing links
 
     using Setup = CommUnitSetup;
     CommUnit(sc_core::sc_module_name name, int node, const Routing &routing, const rt_grid *grid,
@@ -212,7 +212,7 @@ class CommUnit final : public sc_core::sc_module,
     const int32_t *m_owner;
     PacketSinkIf *m_local_sink = nullptr;  // what `local` is bound to (from the start of simulation)
     // Per incoming-link socket, what it is bound to (a crossing's target).
-    std::array<LinkInput, kDirections> m_inputs;
+    std::array<LinkInput, kMaxPorts> m_inputs;
     HopPath m_ways;  // per direction, what link_out is bound to there (from the start of simulation)
     // Per source, per incoming buffer (2 x class + channel), pool handles.
     // Sorted by buffer; retry() visits them in that order.
@@ -225,7 +225,7 @@ class CommUnit final : public sc_core::sc_module,
     std::vector<size_t> m_held_count;
     sc_core::sc_event m_due, m_run, m_retry, m_processor_room;
     std::vector<sc_core::sc_event *> m_processor_waiters;  // on_space(): notified with m_processor_room
-    std::array<int, kDirections> m_port_of_dir;            // link_out's index per direction (-1: none)
+    std::array<int, kMaxPorts> m_port_of_dir;              // link_out's index per direction (-1: none)
     int m_links_bound = 0;                                 // link_out's bindings so far
     const ReplicaChoice *m_replicas;                       // the owners of replicated cells, or null
     PacketPool m_own_pool;

@@ -1,4 +1,4 @@
-// hop_path.h - a communication unit's ways out: per direction, the sink its link_out port is
+// hop_path.h - a communication unit's ways out: per port (direction), the sink its link_out port is
 // bound to there, and where a crossing of that way first touches memory beyond the sender.
 //
 // Usage: at elaboration the unit names where each link's crossing lands (set_lines: the interface
@@ -53,7 +53,7 @@ class HopPath {
         const void *target = nullptr;
         const char *receiver = nullptr;
     };
-    std::array<Way, kDirections> m_ways{};
+    std::array<Way, kMaxPorts> m_ways{};
 };
 
 }  // namespace torusrt

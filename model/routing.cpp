@@ -1,58 +1,45 @@
-// routing.cpp - dimension-order routing on rings (torus) or lines (mesh).
+// routing.cpp - the model's face on the nodes' topology.
 #include "routing.h"
 
-#include <cstdlib>
+#include <stdexcept>
 
 namespace torusrt {
 
-const char *direction_name(int dir)
+rt_topology make_topology(const std::array<int, 3> &dims, const std::string &name)
 {
-    static const char *names[kDirections] = {"xp", "xm", "yp", "ym", "zp", "zm"};
-    return dir >= 0 && dir < kDirections ? names[dir] : "none";
+    rt_topology t;
+    char msg[256] = "";
+    if (rt_topology_make(name.c_str(), dims.data(), &t, msg, sizeof msg) != RT_OK) throw std::invalid_argument(msg);
+    return t;
 }
 
-Routing::Routing(const std::array<int, 3> &dims, bool torus, RouteTies ties)
-    : m_dims(dims), m_torus(torus), m_ties(ties)
+std::vector<std::string> topology_names()
 {
-    int nodes = dims[0] * dims[1] * dims[2];
-    m_coords.reserve(static_cast<size_t>(nodes > 0 ? nodes : 0));
-    for (int n = 0; n < nodes; n++) m_coords.push_back({n % dims[0], (n / dims[0]) % dims[1], n / (dims[0] * dims[1])});
+    std::vector<std::string> names;
+    for (int i = 0; rt_topology_name_at(i); i++) names.emplace_back(rt_topology_name_at(i));
+    return names;
+}
+
+void place_on_nodes(const rt_topology &topology, std::vector<int32_t> &owner)
+{
+    for (int32_t &o : owner) o = rt_topology_node_of_grid_id(&topology, o);
+}
+
+Routing::Routing(const rt_topology &topology, RouteTies ties)
+    : m_topo(topology), m_ties(ties), m_has_ties(rt_topology_has_ties(&topology) != 0),
+      m_other_datelines(topology.kind == RT_TOPOLOGY_OTHER && rt_topology_channels(&topology) > 1)
+{
+    for (int p = 0; p < m_topo.ports; p++) m_dimension[static_cast<size_t>(p)] = rt_topology_port_dimension(&m_topo, p);
+    m_coords.reserve(static_cast<size_t>(m_topo.nodes));
+    for (int n = 0; n < m_topo.nodes; n++) {
+        std::array<int, 3> c{};
+        rt_topology_position(&m_topo, n, c.data());
+        m_coords.push_back(c);
+    }
 }
 
 std::array<int, 3> Routing::coords(int node) const { return m_coords[static_cast<size_t>(node)]; }
 
-int Routing::node(const std::array<int, 3> &c) const { return c[0] + m_dims[0] * (c[1] + m_dims[1] * c[2]); }
-
-int Routing::neighbour(int n, int dir) const
-{
-    int axis = dir / 2, step = dir % 2 == 0 ? 1 : -1;
-    if (m_dims[axis] < 2) return -1;
-    auto c = coords(n);
-    int v = c[axis] + step;
-    if (v < 0 || v >= m_dims[axis]) {
-        if (!m_torus) return -1;
-        v = (v + m_dims[axis]) % m_dims[axis];
-    }
-    c[axis] = v;
-    return node(c);
-}
-
-bool Routing::wraps(int n, int dir) const
-{
-    int axis = dir / 2;
-    if (!m_torus || m_dims[axis] < 2) return false;
-    int c = coords(n)[axis];
-    return dir % 2 == 0 ? c == m_dims[axis] - 1 : c == 0;
-}
-
-int Routing::hops(int from, int to) const
-{
-    int h = 0;
-    while (from != to) {
-        from = neighbour(from, next_direction(from, to, 0));
-        h++;
-    }
-    return h;
-}
+int Routing::node(const std::array<int, 3> &c) const { return rt_topology_node_at(&m_topo, c.data()); }
 
 }  // namespace torusrt

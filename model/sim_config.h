@@ -30,17 +30,15 @@ constexpr int kMaxCluster = 256;
 constexpr unsigned kMaxQueue = 100000000;   // packets per queue
 constexpr unsigned kMaxRecordBytes = 4096;  // --cell-header-bytes, --list-entry-bytes, --object-record-bytes
 
-enum class Topology { torus, mesh };
 enum class TimingStyle { at, lt };
 enum class DataMode { replicated, shared };
 enum class FlowControl { none, classes };               // see flow_control.h
 enum class ReplicaRule { nearest, hash };               // see replica_choice.h
 enum class QueueOrder { primaries_first, rays_first };  // see packet_queue.h
 
-// The names the options take and the reports print (the arbiter and dispatch policies and the
-// mappings are named by their registries, bus_arbiter.h, cluster_dispatch.h and
-// run/mapping/mapping.h).
-constexpr NamedValue<Topology> kTopologyNames[] = {{Topology::torus, "torus"}, {Topology::mesh, "mesh"}};
+// The names the options take and the reports print (the topology, the arbiter and dispatch
+// policies and the mappings are named by their registries, rt_topology.h, bus_arbiter.h,
+// cluster_dispatch.h and run/mapping/mapping.h).
 constexpr NamedValue<RouteTies> kRouteTiesNames[] = {{RouteTies::split, "split"}, {RouteTies::plus, "plus"}};
 constexpr NamedValue<TimingStyle> kStyleNames[] = {{TimingStyle::at, "at"}, {TimingStyle::lt, "lt"}};
 constexpr NamedValue<DataMode> kDataModeNames[] = {{DataMode::replicated, "replicated"}, {DataMode::shared, "shared"}};
@@ -53,8 +51,8 @@ constexpr NamedValue<QueueOrder> kQueueOrderNames[] = {{QueueOrder::primaries_fi
 // The machine: everything that decides the image time. machine_options.h writes it back as
 // the options that rebuild it (--dump-config, the JSON report's config.options).
 struct MachineConfig {
-    std::array<int, 3> ips{1, 1, 1};                             // torus nodes per axis
-    Topology topology = Topology::torus;                         // rings in every dimension, or a mesh
+    std::array<int, 3> ips{1, 1, 1};                             // nodes per axis of the mapping's grid
+    std::string topology = "torus";                              // the network, by its registered name
     RouteTies route_ties = kDefaultRouteTies;                    // the way round an even ring on a tie
     std::array<int, 3> cells{24, 24, 24};                        // grid cells per axis (the object space's division)
     rt_preprocess_count preprocess_count = RT_COUNT_SEQUENTIAL;  // how preprocessing units are counted
@@ -82,6 +80,8 @@ struct MachineConfig {
     rt_memory_layout memory_layout = rt_memory_layout_default();  // what the memory report charges
 
     int node_count() const { return ips[0] * ips[1] * ips[2]; }
+    // The network of the nodes (the validator has checked that `topology` takes `ips`).
+    rt_topology network() const { return make_topology(ips, topology); }
     int processor_count() const { return node_count() * cluster; }
 };
 
@@ -124,7 +124,6 @@ void validate_machine(const MachineConfig &machine);
 void validate_run(const RunOptions &run, const MachineConfig &machine);
 void validate(const SimConfig &config);
 
-inline const char *topology_name(Topology t) { return name_in(kTopologyNames, t); }
 inline const char *route_ties_name(RouteTies r) { return name_in(kRouteTiesNames, r); }
 inline const char *style_name(TimingStyle s) { return name_in(kStyleNames, s); }
 inline const char *data_mode_name(DataMode d) { return name_in(kDataModeNames, d); }

@@ -11,7 +11,7 @@ namespace torusrt {
 TorusSystem::TorusSystem(sc_core::sc_module_name name, const MachineConfig &config, const rt_scene *scene,
                          const rt_grid *grid, const int32_t *cell_owner, PacketLedger &ledger, rt_framebuffer *fb,
                          HandOverTiming hand_over, const rt_replicas *replicas)
-    : sc_module(name), m_routing(config.ips, config.topology == Topology::torus, config.route_ties)
+    : sc_module(name), m_routing(config.network(), config.route_ties)
 {
     if (replicas)
         m_replica_choice = std::make_unique<ReplicaChoice>(cell_owner, *replicas, m_routing, config.replica_choice);
@@ -62,11 +62,12 @@ TorusSystem::TorusSystem(sc_core::sc_module_name name, const MachineConfig &conf
         }
     }
     for (int n = 0; n < nodes; n++) {
-        for (int dir = 0; dir < kDirections; dir++) {
+        for (int dir = 0; dir < m_routing.ports(); dir++) {
             int to = m_routing.neighbour(n, dir);
             if (to < 0) continue;
             // Named by its ends, so a trace says where every link goes.
-            std::string lname = "link_" + std::to_string(n) + "_to_" + std::to_string(to) + "_" + direction_name(dir);
+            std::string lname =
+                "link_" + std::to_string(n) + "_to_" + std::to_string(to) + "_" + m_routing.port_name(dir);
             auto link = std::make_unique<ToroidalLink>(lname.c_str(), config, n, to, dir, &m_transactions);
             m_comm[n]->connect_link(dir, link->in, link->socket, *m_comm[to]);
             m_links.push_back(std::move(link));

@@ -4,17 +4,16 @@
 
 #include <stdint.h>
 
+#include "rt_topology.h"
+
 /* Neighbour of cell c through face f (-x, +x, -y, +y, -z, +z) of a dims grid, -1 at its boundary. */
 long rt_cost_neighbour(const int dims[3], long c, int f);
-
-/* Hops between nodes a and b of a nodes[0] x nodes[1] x nodes[2] torus (torus 1) or mesh. */
-int rt_cost_hops(const int nodes[3], int torus, int a, int b);
 
 /* The busiest and mean node work of a one-owner table, and the pilot's packets it cuts
  * (and their hops); all zero when out of memory. */
 struct rt_cost_pilot;
 struct rt_cost_map_facts;
-void rt_cost_map_facts_of(const struct rt_cost_pilot *p, const int nodes[3], int torus, const int32_t *owner,
+void rt_cost_map_facts_of(const struct rt_cost_pilot *p, const rt_topology *topo, const int32_t *owner,
                           struct rt_cost_map_facts *facts);
 
 #endif

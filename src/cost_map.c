@@ -1,4 +1,4 @@
-/* cost_map.c - the weighted cell graph and its Scotch mapping onto the node torus or mesh. */
+/* cost_map.c - the weighted cell graph and its Scotch mapping onto the nodes' topology. */
 #include <errno.h>
 #include <math.h>
 #include <stdint.h>
@@ -10,6 +10,7 @@
 
 #include "cost_internal.h"
 #include "rt_cost_map.h"
+#include "topology_class.h"
 
 /* Integer weights: the largest weight and the largest weight total Scotch gets. */
 #define WEIGHT_MAX (1 << 20)
@@ -133,19 +134,18 @@ typedef struct remap_args {
     SCOTCH_Num *move_load;
 } remap_args;
 
-/* Maps the bound graph onto the node torus or mesh (or remaps it from the old partition). */
-static rt_status map_onto(SCOTCH_Graph *graph, const int nodes[3], int torus, const remap_args *remap,
+/* Maps the bound graph onto the topology grown `fold` times (or remaps it from the old partition). */
+static rt_status map_onto(SCOTCH_Graph *graph, const rt_topology *topo, int fold, const remap_args *remap,
                           SCOTCH_Num *parttab, char *msg, size_t msg_len)
 {
     SCOTCH_Arch arch;
     SCOTCH_Strat strat;
     rt_status st = RT_OK;
+    const char *call = "SCOTCH_archInit";
     SCOTCH_archInit(&arch);
-    int r = torus ? SCOTCH_archTorus3(&arch, nodes[0], nodes[1], nodes[2])
-                  : SCOTCH_archMesh3(&arch, nodes[0], nodes[1], nodes[2]);
-    if (r != 0) st = scotch_fail(msg, msg_len, torus ? "SCOTCH_archTorus3" : "SCOTCH_archMesh3");
+    if (rt_topology_scotch_arch(topo, fold, &arch, &call) != 0) st = scotch_fail(msg, msg_len, call);
     SCOTCH_stratInit(&strat);
-    SCOTCH_Num parts = (SCOTCH_Num)nodes[0] * nodes[1] * nodes[2];
+    SCOTCH_Num parts = st == RT_OK ? SCOTCH_archSize(&arch) : 1;
     SCOTCH_Num flags = SCOTCH_STRATQUALITY | SCOTCH_STRATBALANCE | (remap->old_part ? SCOTCH_STRATREMAP : 0);
     if (st == RT_OK && SCOTCH_stratGraphMapBuild(&strat, flags, parts, 0.03) != 0)
         st = scotch_fail(msg, msg_len, "SCOTCH_stratGraphMapBuild");
@@ -176,9 +176,9 @@ static int scotch_headroom(size_t cells)
     return probe != NULL;
 }
 
-/* Runs Scotch on the graph; parttab gets a terminal per cell (x fastest, as our node ids). */
-static rt_status scotch_map(cell_graph *g, const int nodes[3], int torus, const remap_args *remap, SCOTCH_Num *parttab,
-                            char *msg, size_t msg_len)
+/* Runs Scotch on the graph; parttab gets a terminal of the grown topology per cell. */
+static rt_status scotch_map(cell_graph *g, const rt_topology *topo, int fold, const remap_args *remap,
+                            SCOTCH_Num *parttab, char *msg, size_t msg_len)
 {
     SCOTCH_Graph graph, bound;
     SCOTCH_Context ctx;
@@ -200,7 +200,7 @@ static rt_status scotch_map(cell_graph *g, const int nodes[3], int torus, const 
     if (st == RT_OK) {
         st = bind_context(&ctx, &graph, &bound, msg, msg_len);
         if (st == RT_OK) {
-            st = map_onto(&bound, nodes, torus, remap, parttab, msg, msg_len);
+            st = map_onto(&bound, topo, fold, remap, parttab, msg, msg_len);
             SCOTCH_graphExit(&bound);
         }
         SCOTCH_contextExit(&ctx);
@@ -209,23 +209,10 @@ static rt_status scotch_map(cell_graph *g, const int nodes[3], int torus, const 
     return st;
 }
 
-/* Hops between two nodes on the torus or mesh. */
-int rt_cost_hops(const int n[3], int torus, int a, int b)
-{
-    int h = 0;
-    for (int k = 0; k < 3; k++) {
-        int d = abs(a % n[k] - b % n[k]);
-        h += torus && n[k] - d < d ? n[k] - d : d;
-        a /= n[k];
-        b /= n[k];
-    }
-    return h;
-}
-
-void rt_cost_map_facts_of(const rt_cost_pilot *p, const int nodes[3], int torus, const int32_t *owner,
+void rt_cost_map_facts_of(const rt_cost_pilot *p, const rt_topology *topo, const int32_t *owner,
                           rt_cost_map_facts *facts)
 {
-    int n = nodes[0] * nodes[1] * nodes[2];
+    int n = topo->nodes;
     double *work = calloc((size_t)n, sizeof *work);
     memset(facts, 0, sizeof *facts);
     if (!work) return;
@@ -236,7 +223,7 @@ void rt_cost_map_facts_of(const rt_cost_pilot *p, const int nodes[3], int torus,
             if (nb < 0 || owner[nb] == owner[c]) continue;
             double k = face_packets(p, c, f, nb);
             facts->cut_packets += k;
-            facts->cut_hops += k * rt_cost_hops(nodes, torus, owner[c], owner[nb]);
+            facts->cut_hops += k * rt_topology_hops(topo, owner[c], owner[nb]);
         }
     }
     for (int i = 0; i < n; i++) facts->max_node_work_us = fmax(facts->max_node_work_us, work[i]);
@@ -244,23 +231,16 @@ void rt_cost_map_facts_of(const rt_cost_pilot *p, const int nodes[3], int torus,
     free(work);
 }
 
-rt_status rt_cost_map(const rt_cost_pilot *p, const int nodes[3], int torus, double edge_us, int32_t *owner,
+rt_status rt_cost_map(const rt_cost_pilot *p, const rt_topology *topo, double edge_us, int32_t *owner,
                       rt_cost_map_facts *facts, char *msg, size_t msg_len)
 {
-    return rt_cost_map_folded(p, nodes, torus, edge_us, 1, owner, facts, msg, msg_len);
+    return rt_cost_map_folded(p, topo, edge_us, 1, owner, facts, msg, msg_len);
 }
 
-/* Node of a terminal of the folded (fold x nodes) machine: each coordinate modulo the nodes'. */
-static int32_t fold_node(SCOTCH_Num t, const int v[3], const int n[3])
+rt_status rt_cost_map_folded(const rt_cost_pilot *p, const rt_topology *topo, double edge_us, int fold, int32_t *owner,
+                             rt_cost_map_facts *facts, char *msg, size_t msg_len)
 {
-    int x = (int)(t % v[0]), y = (int)(t / v[0] % v[1]), z = (int)(t / ((SCOTCH_Num)v[0] * v[1]));
-    return (int32_t)(x % n[0] + n[0] * (y % n[1] + n[1] * (z % n[2])));
-}
-
-rt_status rt_cost_map_folded(const rt_cost_pilot *p, const int nodes[3], int torus, double edge_us, int fold,
-                             int32_t *owner, rt_cost_map_facts *facts, char *msg, size_t msg_len)
-{
-    if (nodes[0] < 1 || nodes[1] < 1 || nodes[2] < 1 || !p->work_us || !(edge_us >= 0) || fold < 1 || fold > 64) {
+    if (!topo || topo->nodes < 1 || !p->work_us || !(edge_us >= 0) || fold < 1 || fold > 64) {
         if (msg && msg_len) snprintf(msg, msg_len, "cost mapping: bad arguments");
         return RT_ERR_INVALID;
     }
@@ -270,7 +250,7 @@ rt_status rt_cost_map_folded(const rt_cost_pilot *p, const int nodes[3], int tor
         return RT_ERR_LIMIT;
     }
     rt_status st = RT_OK;
-    if ((long)nodes[0] * nodes[1] * nodes[2] == 1) {
+    if (topo->nodes == 1) {
         for (size_t c = 0; c < p->cells; c++) owner[c] = 0;
     } else {
         cell_graph g;
@@ -278,23 +258,22 @@ rt_status rt_cost_map_folded(const rt_cost_pilot *p, const int nodes[3], int tor
         st = build_graph(p, edge_us, &g);
         if (st == RT_OK && !part) st = RT_ERR_NOMEM;
         if (st == RT_ERR_NOMEM && msg && msg_len) snprintf(msg, msg_len, "cost mapping: out of memory");
-        int v[3];
-        for (int k = 0; k < 3; k++) v[k] = nodes[k] > 1 ? nodes[k] * fold : 1;
         remap_args plain = {NULL, NULL};
-        if (st == RT_OK) st = scotch_map(&g, v, torus, &plain, part, msg, msg_len);
-        for (size_t c = 0; st == RT_OK && c < p->cells; c++) owner[c] = fold_node(part[c], v, nodes);
+        if (st == RT_OK) st = scotch_map(&g, topo, fold, &plain, part, msg, msg_len);
+        for (size_t c = 0; st == RT_OK && c < p->cells; c++)
+            owner[c] = (int32_t)rt_topology_fold_terminal(topo, fold, (long)part[c]);
         free(part);
         graph_free(&g);
     }
-    if (st == RT_OK && facts) rt_cost_map_facts_of(p, nodes, torus, owner, facts);
+    if (st == RT_OK && facts) rt_cost_map_facts_of(p, topo, owner, facts);
     return st;
 }
 
-rt_status rt_cost_remap(const rt_cost_pilot *p, const int nodes[3], int torus, double edge_us, const int32_t *old_owner,
+rt_status rt_cost_remap(const rt_cost_pilot *p, const rt_topology *topo, double edge_us, const int32_t *old_owner,
                         const double *move_us, int32_t *owner, rt_cost_map_facts *facts, char *msg, size_t msg_len)
 {
-    long n = (long)nodes[0] * nodes[1] * nodes[2];
-    if (nodes[0] < 1 || nodes[1] < 1 || nodes[2] < 1 || !p->work_us || !(edge_us >= 0) || !old_owner || !move_us) {
+    long n = topo ? topo->nodes : 0;
+    if (n < 1 || !p->work_us || !(edge_us >= 0) || !old_owner || !move_us) {
         if (msg && msg_len) snprintf(msg, msg_len, "cost remapping: bad arguments");
         return RT_ERR_INVALID;
     }
@@ -303,7 +282,7 @@ rt_status rt_cost_remap(const rt_cost_pilot *p, const int nodes[3], int torus, d
             snprintf(msg, msg_len, "cost remapping: %zu cells is too many for Scotch's weights", p->cells);
         return RT_ERR_LIMIT;
     }
-    if (n == 1) return rt_cost_map(p, nodes, torus, edge_us, owner, facts, msg, msg_len);
+    if (n == 1) return rt_cost_map(p, topo, edge_us, owner, facts, msg, msg_len);
     cell_graph g;
     rt_status st = build_graph(p, edge_us, &g);
     SCOTCH_Num *part = malloc(p->cells * sizeof *part);
@@ -326,13 +305,14 @@ rt_status rt_cost_remap(const rt_cost_pilot *p, const int nodes[3], int torus, d
             old_part[c] = (old_owner[c] >= 0 && old_owner[c] < n) ? old_owner[c] : -1;
         }
         remap_args args = {old_part, move};
-        st = scotch_map(&g, nodes, torus, &args, part, msg, msg_len);
+        st = scotch_map(&g, topo, 1, &args, part, msg, msg_len);
     }
-    for (size_t c = 0; st == RT_OK && c < p->cells; c++) owner[c] = (int32_t)part[c];
+    for (size_t c = 0; st == RT_OK && c < p->cells; c++)
+        owner[c] = (int32_t)rt_topology_fold_terminal(topo, 1, (long)part[c]);
     free(part);
     free(old_part);
     free(move);
     graph_free(&g);
-    if (st == RT_OK && facts) rt_cost_map_facts_of(p, nodes, torus, owner, facts);
+    if (st == RT_OK && facts) rt_cost_map_facts_of(p, topo, owner, facts);
     return st;
 }

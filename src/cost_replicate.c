@@ -19,7 +19,7 @@ typedef struct replicate_state {
     const int32_t *owner;
     rt_memory_layout layout;
     int nodes;
-    int dims[3], torus; /* the nodes' torus or mesh */
+    const rt_topology *topo; /* the nodes' network */
     rt_replica_rule rule;
     int32_t *own;       /* scratch: one cell's owners, the candidate last */
     double *inflow;     /* scratch: per owner, pilot packets entering the cell that reach it */
@@ -97,9 +97,9 @@ static void owner_shares(const replicate_state *s, uint32_t c, int k, double *sh
         if (nb < 0) continue;
         double in = (double)s->pilot->traffic[nb * RT_CELL_FACES + (f ^ 1)];
         if (in <= 0) continue;
-        int best = 0, best_hops = rt_cost_hops(s->dims, s->torus, s->owner[nb], s->own[0]);
+        int best = 0, best_hops = rt_topology_hops(s->topo, s->owner[nb], s->own[0]);
         for (int i = 1; i < k; i++) {
-            int h = rt_cost_hops(s->dims, s->torus, s->owner[nb], s->own[i]);
+            int h = rt_topology_hops(s->topo, s->owner[nb], s->own[i]);
             if (h < best_hops || (h == best_hops && s->own[i] < s->own[best])) best = i, best_hops = h;
         }
         s->inflow[best] += in;
@@ -288,13 +288,13 @@ static rt_status write_table(const replicate_state *s, uint32_t *first, int32_t 
 }
 
 rt_status rt_cost_replicate(const rt_cost_pilot *pilot, const rt_scene *scene, const rt_grid *grid,
-                            const int node_dims[3], int torus, rt_replica_rule rule, const int32_t *owner,
-                            double fraction, const rt_memory_layout *layout, uint32_t *first, int32_t **extra,
-                            size_t *extra_count, rt_cost_map_facts *facts, char *msg, size_t msg_len)
+                            const rt_topology *topo, rt_replica_rule rule, const int32_t *owner, double fraction,
+                            const rt_memory_layout *layout, uint32_t *first, int32_t **extra, size_t *extra_count,
+                            rt_cost_map_facts *facts, char *msg, size_t msg_len)
 {
     *extra = NULL;
     *extra_count = 0;
-    int nodes = node_dims[0] * node_dims[1] * node_dims[2];
+    int nodes = topo ? topo->nodes : 0;
     if (nodes < 1 || !(fraction >= 0) || pilot->cells != rt_grid_cell_count(grid)) {
         if (msg && msg_len) snprintf(msg, msg_len, "cost replication: bad arguments");
         return RT_ERR_INVALID;
@@ -306,8 +306,7 @@ rt_status rt_cost_replicate(const rt_cost_pilot *pilot, const rt_scene *scene, c
     s.grid = grid;
     s.owner = owner;
     s.nodes = nodes;
-    for (int a = 0; a < 3; a++) s.dims[a] = node_dims[a];
-    s.torus = torus;
+    s.topo = topo;
     s.rule = rule;
     s.layout = layout ? *layout : rt_memory_layout_default();
     rt_status st = state_init(&s, fraction);

@@ -237,15 +237,14 @@ static rt_status fit_budget(const rt_scene *scene, const rt_grid *grid, const rt
 }
 
 rt_status rt_cost_map_scatter(const rt_cost_pilot *pilot, const rt_scene *scene, const rt_grid *grid,
-                              const int node_dims[3], int torus, double fraction, const rt_memory_layout *layout,
-                              int32_t *owner, uint32_t *first, int32_t **extra, size_t *extra_count,
-                              rt_cost_map_facts *facts, char *msg, size_t msg_len)
+                              const rt_topology *topo, double fraction, const rt_memory_layout *layout, int32_t *owner,
+                              uint32_t *first, int32_t **extra, size_t *extra_count, rt_cost_map_facts *facts,
+                              char *msg, size_t msg_len)
 {
     *extra = NULL;
     *extra_count = 0;
-    long n_long = (long)node_dims[0] * node_dims[1] * node_dims[2];
-    if (node_dims[0] < 1 || node_dims[1] < 1 || node_dims[2] < 1 || n_long > INT32_MAX || !pilot->work_us ||
-        !(fraction >= 0) || pilot->cells != rt_grid_cell_count(grid)) {
+    long n_long = topo ? topo->nodes : 0;
+    if (n_long < 1 || !pilot->work_us || !(fraction >= 0) || pilot->cells != rt_grid_cell_count(grid)) {
         if (msg && msg_len) snprintf(msg, msg_len, "scatter mapping: bad arguments");
         return RT_ERR_INVALID;
     }
@@ -282,7 +281,7 @@ rt_status rt_cost_map_scatter(const rt_cost_pilot *pilot, const rt_scene *scene,
     }
     if (st == RT_OK) st = write_table(&d, cells, owner, first, extra, extra_count);
     if (st == RT_OK && facts) {
-        rt_cost_map_facts_of(pilot, node_dims, torus, owner, facts);
+        rt_cost_map_facts_of(pilot, topo, owner, facts);
         memset(load, 0, (size_t)nodes * sizeof *load); /* the table's loads, copies dropped included */
         for (size_t c = 0; c < cells; c++)
             for (uint32_t i = 0; i < d.count[c]; i++) load[d.owners[d.start[c] + i]] += pilot->work_us[c] / d.count[c];

@@ -265,12 +265,13 @@ void note_ring(const CommandLine &cl, const SimConfig &config)
 {
     const std::string ips = cl.text("--ips");
     if (config.quiet || ips.empty() || ips.find('x') != std::string::npos || config.node_count() < 3) return;
-    bool torus = config.topology == Topology::torus;
+    const rt_topology topo = config.network();
+    const char *one_axis = rt_topology_one_axis_name(&topo);
+    if (!one_axis) return;
     std::fprintf(stderr,
                  "torusrt-sim: note: --ips %s builds a %dx1x1 %s: a %s of %d (PXxPY or PXxPYxPZ, e.g. 4x4, spreads "
                  "the nodes over two or three dimensions)\n",
-                 ips.c_str(), config.node_count(), topology_name(config.topology), torus ? "ring" : "line",
-                 config.node_count());
+                 ips.c_str(), config.node_count(), config.topology.c_str(), one_axis, config.node_count());
 }
 
 int run(CommandLine &cl, double wall_start, int argc, char **argv)

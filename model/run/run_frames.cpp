@@ -298,8 +298,7 @@ struct FrameLoop {
     bool by_object() const { return plan.motion && plan.policy == RemapPolicy::adaptive; }
 
     FrameLoop(const SimConfig &c, rt_scene *s, const rt_grid *g, const FramePlan &p)
-        : config(c), scene(s), grid(g), plan(p),
-          routing(c.ips, c.topology == Topology::torus, c.route_ties), ctx{c, s, g, routing},
+        : config(c), scene(s), grid(g), plan(p), routing(c.network(), c.route_ties), ctx{c, s, g, routing},
           remapper(p.policy, p.adaptive.window, p.adaptive.margin), still(rt_camera_pose_of(rt_scene_camera(s)))
     {
     }

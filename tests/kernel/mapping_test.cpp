@@ -295,8 +295,8 @@ TEST(CostMap, PilotWorkSumsToTheRenderersTimeAndTrafficToItsHandOvers)
         int nodes[3] = {3, 2, 1};
         std::vector<int32_t> owner(pilot.cells, -1), again(pilot.cells, -2);
         rt_cost_map_facts f;
-        ASSERT_EQ(rt_cost_map(&pilot, nodes, torus, rt_cost_edge_us(&t), owner.data(), &f, msg, sizeof msg), RT_OK)
-            << msg;
+        const rt_topology topo = torusrt_test::make_topology(torus ? "torus" : "mesh", nodes);
+        ASSERT_EQ(rt_cost_map(&pilot, &topo, rt_cost_edge_us(&t), owner.data(), &f, msg, sizeof msg), RT_OK) << msg;
         std::vector<int> used(6, 0);
         for (int32_t n : owner) {
             ASSERT_GE(n, 0);
@@ -306,26 +306,28 @@ TEST(CostMap, PilotWorkSumsToTheRenderersTimeAndTrafficToItsHandOvers)
         for (int n = 0; n < 6; n++) EXPECT_GT(used[n], 0) << "node " << n << " got no cell";
         EXPECT_GE(f.max_node_work_us, f.mean_node_work_us);
         EXPECT_GE(f.cut_hops, f.cut_packets);
-        ASSERT_EQ(rt_cost_map(&pilot, nodes, torus, rt_cost_edge_us(&t), again.data(), nullptr, msg, sizeof msg),
-                  RT_OK);
+        ASSERT_EQ(rt_cost_map(&pilot, &topo, rt_cost_edge_us(&t), again.data(), nullptr, msg, sizeof msg), RT_OK);
         EXPECT_EQ(owner, again) << "reproducible";
     }
     {  // Folded: fold 1 is the plain mapping; fold 2 still uses only real nodes, every one.
         int nodes[3] = {2, 2, 1};
         std::vector<int32_t> plain(pilot.cells), one(pilot.cells), two(pilot.cells);
         double e = rt_cost_edge_us(&t);
-        ASSERT_EQ(rt_cost_map(&pilot, nodes, 1, e, plain.data(), nullptr, msg, sizeof msg), RT_OK) << msg;
-        ASSERT_EQ(rt_cost_map_folded(&pilot, nodes, 1, e, 1, one.data(), nullptr, msg, sizeof msg), RT_OK) << msg;
-        ASSERT_EQ(rt_cost_map_folded(&pilot, nodes, 1, e, 2, two.data(), nullptr, msg, sizeof msg), RT_OK) << msg;
+        const rt_topology topo = torusrt_test::make_topology("torus", nodes);
+        ASSERT_EQ(rt_cost_map(&pilot, &topo, e, plain.data(), nullptr, msg, sizeof msg), RT_OK) << msg;
+        ASSERT_EQ(rt_cost_map_folded(&pilot, &topo, e, 1, one.data(), nullptr, msg, sizeof msg), RT_OK) << msg;
+        ASSERT_EQ(rt_cost_map_folded(&pilot, &topo, e, 2, two.data(), nullptr, msg, sizeof msg), RT_OK) << msg;
         EXPECT_EQ(plain, one);
         std::set<int32_t> used(two.begin(), two.end());
         EXPECT_EQ(used.size(), 4u);
         EXPECT_GE(*used.begin(), 0);
         EXPECT_LE(*used.rbegin(), 3);
-        EXPECT_EQ(rt_cost_map_folded(&pilot, nodes, 1, e, 0, two.data(), nullptr, msg, sizeof msg), RT_ERR_INVALID);
+        EXPECT_EQ(rt_cost_map_folded(&pilot, &topo, e, 0, two.data(), nullptr, msg, sizeof msg), RT_ERR_INVALID);
     }
     int bad[3] = {0, 1, 1};
+    rt_topology none;
+    EXPECT_EQ(rt_topology_make("torus", bad, &none, msg, sizeof msg), RT_ERR_INVALID) << "no machine of 0 nodes";
     std::vector<int32_t> owner(pilot.cells);
-    EXPECT_EQ(rt_cost_map(&pilot, bad, 1, 1.0, owner.data(), nullptr, msg, sizeof msg), RT_ERR_INVALID);
+    EXPECT_EQ(rt_cost_map(&pilot, nullptr, 1.0, owner.data(), nullptr, msg, sizeof msg), RT_ERR_INVALID);
     rt_cost_pilot_release(&pilot);
 }

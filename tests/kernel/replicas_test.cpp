@@ -102,13 +102,14 @@ TEST(Replicas, CostReplicationByHand)
     uint64_t traffic[2 * RT_CELL_FACES] = {};
     rt_cost_pilot pilot{{2, 1, 1}, 2, work, traffic, 10, {}, nullptr, 0};
     const int two[3] = {2, 1, 1};
+    const rt_topology two_nodes = torusrt_test::make_topology("torus", two);
     const int32_t owner[2] = {0, 1};
     uint32_t first[3];
     int32_t *extra = nullptr;
     size_t count = 0;
     rt_cost_map_facts facts{};
     char msg[RT_MSG_LEN] = "";
-    ASSERT_EQ(rt_cost_replicate(&pilot, t.scene.get(), t.grid.get(), two, 1, RT_REPLICA_HASH, owner, 1.0, nullptr,
+    ASSERT_EQ(rt_cost_replicate(&pilot, t.scene.get(), t.grid.get(), &two_nodes, RT_REPLICA_HASH, owner, 1.0, nullptr,
                                 first, &extra, &count, &facts, msg, sizeof msg),
               RT_OK)
         << msg;
@@ -118,7 +119,7 @@ TEST(Replicas, CostReplicationByHand)
     EXPECT_EQ(extra[1], 0);  // cell 1 also on node 0
     EXPECT_DOUBLE_EQ(facts.max_node_work_us, 5.0);
     std::free(extra);
-    ASSERT_EQ(rt_cost_replicate(&pilot, t.scene.get(), t.grid.get(), two, 1, RT_REPLICA_HASH, owner, 0.5, nullptr,
+    ASSERT_EQ(rt_cost_replicate(&pilot, t.scene.get(), t.grid.get(), &two_nodes, RT_REPLICA_HASH, owner, 0.5, nullptr,
                                 first, &extra, &count, &facts, msg, sizeof msg),
               RT_OK);
     EXPECT_EQ(count, 0u);
@@ -237,14 +238,15 @@ TEST(Replicas, CostReplicationNearestFollowsTheTraffic)
     traffic[0 * RT_CELL_FACES + 1] = 10;  // out of cell 0 through its +x face
     rt_cost_pilot pilot{{2, 1, 1}, 2, work, traffic, 10, {}, nullptr, 0};
     const int two[3] = {2, 1, 1};
+    const rt_topology two_nodes = torusrt_test::make_topology("torus", two);
     const int32_t owner[2] = {0, 1};
     uint32_t first[3];
     int32_t *extra = nullptr;
     size_t count = 0;
     rt_cost_map_facts facts{};
     char msg[RT_MSG_LEN] = "";
-    ASSERT_EQ(rt_cost_replicate(&pilot, t.scene.get(), t.grid.get(), two, 1, RT_REPLICA_NEAREST, owner, 1.0, nullptr,
-                                first, &extra, &count, &facts, msg, sizeof msg),
+    ASSERT_EQ(rt_cost_replicate(&pilot, t.scene.get(), t.grid.get(), &two_nodes, RT_REPLICA_NEAREST, owner, 1.0,
+                                nullptr, first, &extra, &count, &facts, msg, sizeof msg),
               RT_OK)
         << msg;
     EXPECT_EQ(count, 0u);

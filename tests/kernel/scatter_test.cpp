@@ -42,12 +42,14 @@ Dealt scatter(const Row &t, std::vector<double> work, int nodes, double fraction
     std::vector<uint64_t> traffic(work.size() * RT_CELL_FACES, 0);
     rt_cost_pilot pilot{{4, 1, 1}, work.size(), work.data(), traffic.data(), total, {}, nullptr, 0};
     const int dims[3] = {nodes, 1, 1};
+    rt_topology topo{};  // no machine of 0 nodes: the scatter is handed none
+    if (nodes > 0) topo = torusrt_test::make_topology("torus", dims);
     Dealt d{RT_OK, std::vector<int32_t>(work.size(), -1), std::vector<uint32_t>(work.size() + 1), {}, {}};
     int32_t *extra = nullptr;
     size_t count = 0;
     char msg[RT_MSG_LEN] = "";
-    d.status = rt_cost_map_scatter(&pilot, t.scene.get(), t.grid.get(), dims, 1, fraction, nullptr, d.owner.data(),
-                                   d.first.data(), &extra, &count, &d.facts, msg, sizeof msg);
+    d.status = rt_cost_map_scatter(&pilot, t.scene.get(), t.grid.get(), nodes > 0 ? &topo : nullptr, fraction, nullptr,
+                                   d.owner.data(), d.first.data(), &extra, &count, &d.facts, msg, sizeof msg);
     if (extra) d.extra.assign(extra, extra + count);
     std::free(extra);
     return d;

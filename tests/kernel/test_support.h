@@ -13,9 +13,19 @@
 #include "rt_grid.h"
 #include "rt_render.h"
 #include "rt_scene.h"
+#include "rt_topology.h"
 #include "rt_vec.h"
 
 namespace torusrt_test {
+
+// The topology registered as `name` on dims[0] x dims[1] x dims[2] nodes (a failed test if none).
+inline rt_topology make_topology(const char *name, const int dims[3])
+{
+    rt_topology t{};
+    char msg[256] = "";
+    EXPECT_EQ(rt_topology_make(name, dims, &t, msg, sizeof msg), RT_OK) << msg;
+    return t;
+}
 
 // Frees a scene owned by a ScenePtr.
 struct SceneDeleter {

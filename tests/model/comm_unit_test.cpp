@@ -130,7 +130,7 @@ static Outcome simulate()
     rt_grid *grid = rt_grid_new(scene, 4, 1, 1, msg, sizeof msg);
     const int32_t owner[4] = {0, 1, 2, 3};  // cell i belongs to node i
 
-    Routing routing({4, 1, 1}, true, RouteTies::split);
+    Routing routing({4, 1, 1}, "torus", RouteTies::split);
     CommUnit cu("cu", 0, routing, grid, owner);
     RecordingSink local, plus, minus;
     cu.local.bind(local);
@@ -212,7 +212,7 @@ TEST(CommUnit, HoldsLinkSlotsUntilDelivery)
 TEST(CommUnit, HasOneLinkSocketPerNeighbourAndRefusesAnotherLink)
 {
     sc_core::sc_report_handler::set_actions(sc_core::SC_FATAL, sc_core::SC_THROW);
-    Routing ring({4, 1, 1}, true), line({4, 1, 1}, false);
+    Routing ring({4, 1, 1}, "torus"), line({4, 1, 1}, "mesh");
     CommUnit inner("inner", 0, ring, nullptr, nullptr), end("end", 0, line, nullptr, nullptr);
     EXPECT_EQ(inner.link_in.size(), 2u) << "two neighbours on a ring";
     EXPECT_EQ(end.link_in.size(), 1u) << "one at the end of a line";
@@ -223,7 +223,7 @@ TEST(CommUnit, HasOneLinkSocketPerNeighbourAndRefusesAnotherLink)
 
 TEST(CommUnit, LinkSocketAnswersOnlyBlockingTransport)
 {
-    Routing ring({4, 1, 1}, true);
+    Routing ring({4, 1, 1}, "torus");
     CommUnit cu("cu", 0, ring, nullptr, nullptr);
     tlm::tlm_fw_transport_if<> *target = cu.link_in[0].get_base_export().operator->();
     tlm::tlm_generic_payload t;

@@ -102,7 +102,7 @@ struct Ring {
     std::vector<std::unique_ptr<ToroidalLink>> links;
 
     Ring(const std::string &name, const rt_scene *scene, int n, FlowControl flow, int per_node, int hops, char *msg)
-        : grid(rt_grid_new(scene, n, 1, 1, msg, 256)), routing({n, 1, 1}, true)
+        : grid(rt_grid_new(scene, n, 1, 1, msg, 256)), routing({n, 1, 1}, "torus")
     {
         rt_timing_defaults(&config.timing);
         config.queue_capacity = 1;
@@ -127,10 +127,10 @@ struct Ring {
             }
         }
         for (int i = 0; i < n; i++) {
-            for (int dir = 0; dir < kDirections; dir++) {
+            for (int dir = 0; dir < routing.ports(); dir++) {
                 int to = routing.neighbour(i, dir);
                 if (to < 0) continue;
-                std::string ln = "link_" + name + "_" + std::to_string(i) + "_" + direction_name(dir);
+                std::string ln = "link_" + name + "_" + std::to_string(i) + "_" + routing.port_name(dir);
                 links.push_back(std::make_unique<ToroidalLink>(ln.c_str(), config, i, to, dir));
                 cus[i]->connect_link(dir, links.back()->in, links.back()->socket, *cus[to]);
             }

@@ -52,8 +52,8 @@ struct OnePerCell : TwoCells {
     OnePerCell() : TwoCells(rt_vec(-3, 0, 0), 1.0, rt_vec(3, 0, 0), 1.0) {}
 };
 
-const Routing ring2({2, 1, 1}, true);
-const Routing ring4({4, 1, 1}, true);
+const Routing ring2({2, 1, 1}, "torus");
+const Routing ring4({4, 1, 1}, "torus");
 
 }  // namespace
 
@@ -104,7 +104,7 @@ TEST(Migration, TwoCellsShareTheBusiestLink)
     // (0 -> 1 -> 2), cell 1 goes 1 -> 3 (1 -> 2 -> 3). Both cross link 1 -> 2, which sends the
     // two back to back.
     OnePerCell s;
-    const Routing ring4_plus({4, 1, 1}, true, torusrt::RouteTies::plus);
+    const Routing ring4_plus({4, 1, 1}, "torus", torusrt::RouteTies::plus);
     const uint64_t each = 8 + rt_scene_object_bytes(s.scene, 0);
     MigrationCost two = migration_cost(s.scene, s.grid, ring4_plus, 4, s.timing, {0, 1}, {2, 3});
     EXPECT_EQ(two.cells, 2u);

@@ -65,7 +65,7 @@ Outcome simulate()
     GridPtr grid;
     const int cells[3] = {2, 1, 1};
     motion.move_to(0, grid, cells, RT_COUNT_SEQUENTIAL, nullptr);
-    const Routing ring2({2, 1, 1}, true);
+    const Routing ring2({2, 1, 1}, "torus");
     const std::vector<int32_t> owner = {0, 1};
     const rt_timing per_piece = link_timing(0), per_byte = link_timing(2);
     for (uint32_t k = 1; k < 3; k++) {

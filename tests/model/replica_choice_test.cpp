@@ -42,7 +42,7 @@ rt_packet ray(uint32_t x, uint32_t y, uint16_t depth, bool handed_over = true)
 // 1, 2, 3), cell 0 extra owner 3 (owners 0, 3), cells 1 and 2 none.
 TEST(ReplicaChoice, NearestOnATwoByTwoTorus)
 {
-    Routing routing({2, 2, 1}, true);
+    Routing routing({2, 2, 1}, "torus");
     const int32_t owner[4] = {0, 1, 2, 3};
     const uint32_t first[5] = {0, 1, 1, 1, 3};
     const int32_t extra[3] = {3, 1, 2};
@@ -69,7 +69,7 @@ TEST(ReplicaChoice, HashOnATwoByTwoTorus)
     EXPECT_EQ(rt_replica_hash(0, 1, 0), 3298878556u);
     EXPECT_EQ(rt_replica_hash(5, 7, 2), 2306568458u);
     EXPECT_EQ(rt_replica_hash(3, 2, 1), 751259945u);
-    Routing routing({2, 2, 1}, true);
+    Routing routing({2, 2, 1}, "torus");
     const int32_t owner[4] = {0, 1, 2, 3};
     const uint32_t first[5] = {0, 1, 1, 1, 3};
     const int32_t extra[3] = {3, 1, 2};
@@ -101,7 +101,7 @@ TEST(ReplicaChoice, NearestFollowsTheTopology)
     const uint32_t first[2] = {0, 1};
     const int32_t extra[1] = {3};
     rt_replicas table{first, extra};
-    Routing ring({4, 1, 1}, true), line({4, 1, 1}, false);
+    Routing ring({4, 1, 1}, "torus"), line({4, 1, 1}, "mesh");
     EXPECT_EQ(ReplicaChoice(owner, table, ring, ReplicaRule::nearest).choose(0, 0, ray(0, 0, 0)), 3);
     EXPECT_EQ(ReplicaChoice(owner, table, line, ReplicaRule::nearest).choose(0, 0, ray(0, 0, 0)), 2);
     EXPECT_EQ(ReplicaChoice(owner, table, line, ReplicaRule::nearest).choose(1, 0, ray(0, 0, 0)), 2);

@@ -24,7 +24,7 @@ uint64_t cell_move_bytes(const rt_scene *scene, const rt_grid *grid, size_t cell
 }
 
 LinkLoad::LinkLoad(const Routing &routing, int nodes)
-    : m_routing(routing), m_link_bytes(static_cast<size_t>(nodes) * kDirections, 0)
+    : m_routing(routing), m_link_bytes(static_cast<size_t>(nodes) * static_cast<size_t>(routing.ports()), 0)
 {
 }
 
@@ -33,7 +33,8 @@ void LinkLoad::send(int from, int to, uint64_t bytes, uint32_t tie_key)
     int hops = 0;
     for (int at = from; at != to; hops++) {
         int dir = m_routing.next_direction(at, to, tie_key);
-        m_link_bytes[static_cast<size_t>(at) * kDirections + static_cast<size_t>(dir)] += bytes;
+        m_link_bytes[static_cast<size_t>(at) * static_cast<size_t>(m_routing.ports()) + static_cast<size_t>(dir)] +=
+            bytes;
         at = m_routing.neighbour(at, dir);
     }
     m_byte_hops += bytes * static_cast<uint64_t>(hops);

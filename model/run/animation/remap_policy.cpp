@@ -33,9 +33,9 @@ std::vector<int32_t> remapped(const RemapContext &ctx, const std::vector<int32_t
         move_us[c] = link_transfer_us(ctx.config.timing, cell_move_bytes(ctx.scene, ctx.grid, c));
     std::vector<int32_t> owner(p.cells);
     char msg[RT_MSG_LEN] = "";
-    if (rt_cost_remap(&p, ctx.config.ips.data(), ctx.config.topology == Topology::torus,
-                      rt_cost_edge_us(&ctx.config.timing), current.data(), move_us.data(), owner.data(), nullptr, msg,
-                      sizeof msg) != RT_OK)
+    const rt_topology topo = ctx.config.network();
+    if (rt_cost_remap(&p, &topo, rt_cost_edge_us(&ctx.config.timing), current.data(), move_us.data(), owner.data(),
+                      nullptr, msg, sizeof msg) != RT_OK)
         throw UserError(std::string("--remap: ") + msg);
     return owner;
 }
@@ -49,8 +49,9 @@ std::vector<int32_t> fresh_map(const RemapContext &ctx, const FramePilot &pilot)
     std::vector<int32_t> owner(pilot.get().cells);
     char msg[RT_MSG_LEN] = "";
     int fold = mapping_of(ctx.config).remap_fold(ctx.config);
-    if (rt_cost_map_folded(&pilot.get(), ctx.config.ips.data(), ctx.config.topology == Topology::torus,
-                           rt_cost_edge_us(&ctx.config.timing), fold, owner.data(), nullptr, msg, sizeof msg) != RT_OK)
+    const rt_topology topo = ctx.config.network();
+    if (rt_cost_map_folded(&pilot.get(), &topo, rt_cost_edge_us(&ctx.config.timing), fold, owner.data(), nullptr, msg,
+                           sizeof msg) != RT_OK)
         throw UserError(std::string("--remap: ") + msg);
     return owner;
 }

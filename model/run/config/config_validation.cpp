@@ -55,6 +55,11 @@ void validate_shape(const MachineConfig &m)
     for (int a = 0; a < 3; a++)
         if (m.ips[a] < 1) bad("--ips: every dimension needs at least 1 node");
     if (m.node_count() > kMaxNodes) bad("--ips: at most " + std::to_string(kMaxNodes) + " nodes");
+    char msg[256] = "";
+    rt_topology t;
+    if (rt_topology_make(m.topology.c_str(), m.ips.data(), &t, msg, sizeof msg) != RT_OK)
+        bad("--ips " + std::to_string(m.ips[0]) + "x" + std::to_string(m.ips[1]) + "x" + std::to_string(m.ips[2]) +
+            " with --topology " + m.topology + ": " + msg);
     check_cells(m.cells);
 }
 

@@ -85,12 +85,18 @@ std::string registered_name(const std::string &option, const std::string &text, 
 }
 
 // --route-ties acts only where a packet may go either way round: a ring of an even number of
-// nodes, which a torus has in a dimension of --ips that is even.
+// nodes, which a torus has in a dimension of --ips that is even (the topology says).
 const char *needs_even_ring(const MachineConfig &m)
 {
-    if (m.topology != Topology::torus) return "--topology torus (a mesh has no way round)";
-    for (int nodes : m.ips)
-        if (nodes % 2 == 0) return nullptr;
+    rt_topology t;
+    const int cube[3] = {2, 2, 2};  // a shape on which a topology with ways round has a tie
+    if (rt_topology_make(m.topology.c_str(), cube, &t, nullptr, 0) == RT_OK && !rt_topology_has_ties(&t)) {
+        static std::string text;
+        text = "--topology torus (a " + m.topology + " has no way round)";
+        return text.c_str();
+    }
+    if (rt_topology_make(m.topology.c_str(), m.ips.data(), &t, nullptr, 0) != RT_OK || rt_topology_has_ties(&t))
+        return nullptr;
     return "an even ring (a dimension of --ips with an even number of nodes)";
 }
 
@@ -101,7 +107,7 @@ std::vector<MachineOption> network_options()
     using K = ValueKind;
     return {
         {{"--ips", "DIMS", K::text, "1", 1, kMaxNodes, "",
-          "torus nodes: P, PXxPY or PXxPYxPZ, at most " + std::to_string(kMaxNodes), G::machine, "ips"},
+          "nodes: P, PXxPY or PXxPYxPZ, at most " + std::to_string(kMaxNodes), G::machine, "ips"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
              m.ips = parse_dims_1_to_3(s.long_name(), t, static_cast<int>(s.min), static_cast<int>(s.max));
          },
@@ -113,12 +119,12 @@ std::vector<MachineOption> network_options()
          nullptr,
          "1"},
         {{"--topology", "KIND", K::text, "torus", 0, 0, "",
-          choice_help("network", kTopologyNames) + " (mesh: no wrap-around)", G::machine, "topology"},
+          "network: " + listed(topology_names()) + " (mesh: no wrap-around)", G::machine, "topology"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
-             m.topology = value_named(s.long_name(), t, kTopologyNames);
+             m.topology = registered_name(s.long_name(), t, topology_names());
          },
-         [](const MachineConfig &m) { return std::string(topology_name(m.topology)); },
-         [](const MachineConfig &m, nlohmann::json &j) { j["topology"] = topology_name(m.topology); }},
+         [](const MachineConfig &m) { return m.topology; },
+         [](const MachineConfig &m, nlohmann::json &j) { j["topology"] = m.topology; }},
         {{"--route-ties", "RULE", K::text, route_ties_name(kDefaultRouteTies), 0, 0, "",
           choice_help("the way round an even ring when both are equally short", kRouteTiesNames) +
               " (split: + for a packet whose pixel x + y is even, - for odd, so a ring of two uses both its "

@@ -1,6 +1,7 @@
 // axis_mapping.cpp - the table of an axis-wise mapping, from the kernel.
 #include "axis_mapping.h"
 
+#include "routing.h"
 #include "user_error.h"
 
 namespace torusrt {
@@ -14,6 +15,7 @@ nlohmann::json fill_axes(const MachineConfig &config, rt_map_kind kind, const rt
     char msg[RT_MSG_LEN] = "";
     if (rt_mapping_fill(dims, config.ips.data(), kind, config.block, owner.data(), msg, sizeof msg) != RT_OK)
         throw UserError(std::string("--map: ") + msg, 2);
+    place_on_nodes(config.network(), owner);  // grid positions to the topology's node ids
     return nlohmann::json::object();
 }
 

@@ -72,7 +72,7 @@ std::string load_map_caption(const SimConfig &config)
     char shown[128];
     rt_escape_bytes(base.data(), base.size(), 1, shown, sizeof shown);
     std::string machine = std::to_string(config.ips[0]) + "x" + std::to_string(config.ips[1]) + "x" +
-                          std::to_string(config.ips[2]) + " " + topology_name(config.topology);
+                          std::to_string(config.ips[2]) + " " + config.topology;
     if (config.cluster > 1) machine += ", " + std::to_string(config.cluster) + " processors per node";
     std::string mapping = mapping_text(config);
     if (config.replicate > 0) mapping += ", replicated cells";

@@ -69,7 +69,8 @@ void replicate_cells(const MachineConfig &config, const rt_cost_pilot &pilot, co
     size_t count = 0;
     char msg[RT_MSG_LEN] = "";
     rt_replica_rule rule = config.replica_choice == ReplicaRule::hash ? RT_REPLICA_HASH : RT_REPLICA_NEAREST;
-    if (rt_cost_replicate(&pilot, scene, grid, config.ips.data(), config.topology == Topology::torus, rule,
+    const rt_topology topo = config.network();
+    if (rt_cost_replicate(&pilot, scene, grid, &topo, rule,
                           owner.data(), config.replicate, &config.memory_layout, first.data(), &extra, &count, &facts,
                           msg, sizeof msg) != RT_OK)
         throw UserError(std::string("--replicate: ") + msg);
@@ -86,11 +87,11 @@ rt_status scatter_cells(const MachineConfig &config, const rt_cost_pilot &pilot,
                         const rt_grid *grid, std::vector<int32_t> &owner, ReplicaTable &replicas,
                         rt_cost_map_facts &facts, double &unreplicated_max_us, char *msg, size_t msg_len)
 {
-    const int torus = config.topology == Topology::torus;
+    const rt_topology topo = config.network();
     std::vector<uint32_t> first(pilot.cells + 1);
     int32_t *extra = nullptr;
     size_t count = 0;
-    rt_status st = rt_cost_map_scatter(&pilot, scene, grid, config.ips.data(), torus, 0, &config.memory_layout,
+    rt_status st = rt_cost_map_scatter(&pilot, scene, grid, &topo, 0, &config.memory_layout,
                                        owner.data(), first.data(), &extra, &count, &facts, msg, msg_len);
     std::free(extra);
     extra = nullptr;
@@ -98,7 +99,7 @@ rt_status scatter_cells(const MachineConfig &config, const rt_cost_pilot &pilot,
     replicas.first.clear();
     replicas.extra.clear();
     if (st != RT_OK || !(config.replicate > 0)) return st;
-    st = rt_cost_map_scatter(&pilot, scene, grid, config.ips.data(), torus, config.replicate, &config.memory_layout,
+    st = rt_cost_map_scatter(&pilot, scene, grid, &topo, config.replicate, &config.memory_layout,
                              owner.data(), first.data(), &extra, &count, &facts, msg, msg_len);
     if (st == RT_OK && count) {
         replicas.first = std::move(first);
@@ -126,7 +127,8 @@ nlohmann::json pilot_mapping(const SimConfig &config, PilotMapper mapper, rt_sce
     if (scatter) {
         st = scatter_cells(config, pilot, scene, grid, owner, replicas, facts, unreplicated_max_us, msg, sizeof msg);
     } else {
-        st = rt_cost_map_folded(&pilot, config.ips.data(), config.topology == Topology::torus, edge_us, config.block,
+        const rt_topology topo = config.network();
+        st = rt_cost_map_folded(&pilot, &topo, edge_us, config.block,
                                 owner.data(), &facts, msg, sizeof msg);
         unreplicated_max_us = facts.max_node_work_us;
         try {

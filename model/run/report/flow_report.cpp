@@ -37,7 +37,8 @@ nlohmann::json flow_report_json(const SimConfig &config, TorusSystem &top, const
     if (config.flow == FlowControl::none) used = 1;
 
     // Buffers of one class per node: input queues, and a buffer per channel of each outgoing link.
-    bool channels = config.flow == FlowControl::classes && config.topology == Topology::torus;
+    const rt_topology topo = config.network();
+    bool channels = config.flow == FlowControl::classes && rt_topology_channels(&topo) > 1;
     double links_per_node = static_cast<double>(top.links().size()) / config.node_count();
     double node_buffers = (config.cluster > 1 ? config.cluster + 1 : 1) + links_per_node * (channels ? 2 : 1);
     double per_ip = node_buffers / config.cluster;

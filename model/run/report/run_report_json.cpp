@@ -56,6 +56,7 @@ nlohmann::json per_ip_json(const RunReport &r, std::vector<double> &busy)
 nlohmann::json links_json(const RunReport &r)
 {
     double T = r.sim_time_s;
+    const rt_topology topo = r.config.network();
     nlohmann::json per_link = nlohmann::json::array();
     std::vector<double> util;
     for (const LinkStats &l : r.links) {
@@ -63,7 +64,7 @@ nlohmann::json links_json(const RunReport &r)
         util.push_back(u);
         per_link.push_back({{"from", l.from},
                             {"to", l.to},
-                            {"dir", direction_name(l.dir)},
+                            {"dir", rt_topology_port_name(&topo, l.dir)},
                             {"packets", l.packets},
                             {"busy_s", l.busy_s},
                             {"utilisation", u},

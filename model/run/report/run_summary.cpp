@@ -37,17 +37,14 @@ template <typename T, typename F> Spread spread(const std::vector<T> &items, F v
 // ring how it breaks ties.
 std::string network_text(const SimConfig &c)
 {
-    bool even_ring = false;
     int long_dims = 0;
-    for (int p : c.ips) {
-        even_ring = even_ring || (p >= 2 && p % 2 == 0);
-        long_dims += p > 1;
-    }
-    bool torus = c.topology == Topology::torus;
-    std::string name = std::to_string(c.ips[0]) + "x" + std::to_string(c.ips[1]) + "x" + std::to_string(c.ips[2]) +
-                       " " + topology_name(c.topology);
-    if (long_dims == 1) name += (torus ? ": a ring of " : ": a line of ") + std::to_string(c.node_count());
-    if (!torus || !even_ring) return name;
+    for (int p : c.ips) long_dims += p > 1;
+    const rt_topology topo = c.network();
+    const char *one_axis = rt_topology_one_axis_name(&topo);
+    std::string name =
+        std::to_string(c.ips[0]) + "x" + std::to_string(c.ips[1]) + "x" + std::to_string(c.ips[2]) + " " + c.topology;
+    if (long_dims == 1 && one_axis) name += ": a " + std::string(one_axis) + " of " + std::to_string(c.node_count());
+    if (!rt_topology_has_ties(&topo)) return name;
     return name + " (ties " + route_ties_name(c.route_ties) + ")";
 }
 

@@ -200,9 +200,11 @@ void print_busiest_links(const RunReport &r, std::FILE *out)
     std::stable_sort(order.begin(), order.end(),
                      [](const LinkStats *a, const LinkStats *b) { return a->busy_s > b->busy_s; });
     std::string text;
+    const rt_topology topo = r.config.network();
     for (size_t i = 0; i < order.size() && i < 3 && order[i]->busy_s > 0; i++)
         text += std::string(i ? ", " : "") + std::to_string(order[i]->from) + "->" + std::to_string(order[i]->to) +
-                " " + direction_name(order[i]->dir) + " " + sig4(100 * order[i]->busy_s / r.sim_time_s) + " %";
+                " " + rt_topology_port_name(&topo, order[i]->dir) + " " + sig4(100 * order[i]->busy_s / r.sim_time_s) +
+                " %";
     if (!text.empty()) std::fprintf(out, "               busiest links (from->to direction use): %s\n", text.c_str());
 }
 
