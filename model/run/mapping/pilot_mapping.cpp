@@ -70,9 +70,8 @@ void replicate_cells(const MachineConfig &config, const rt_cost_pilot &pilot, co
     char msg[RT_MSG_LEN] = "";
     rt_replica_rule rule = config.replica_choice == ReplicaRule::hash ? RT_REPLICA_HASH : RT_REPLICA_NEAREST;
     const rt_topology topo = config.network();
-    if (rt_cost_replicate(&pilot, scene, grid, &topo, rule,
-                          owner.data(), config.replicate, &config.memory_layout, first.data(), &extra, &count, &facts,
-                          msg, sizeof msg) != RT_OK)
+    if (rt_cost_replicate(&pilot, scene, grid, &topo, rule, owner.data(), config.replicate, &config.memory_layout,
+                          first.data(), &extra, &count, &facts, msg, sizeof msg) != RT_OK)
         throw UserError(std::string("--replicate: ") + msg);
     if (count) {
         replicas.first = std::move(first);
@@ -91,16 +90,16 @@ rt_status scatter_cells(const MachineConfig &config, const rt_cost_pilot &pilot,
     std::vector<uint32_t> first(pilot.cells + 1);
     int32_t *extra = nullptr;
     size_t count = 0;
-    rt_status st = rt_cost_map_scatter(&pilot, scene, grid, &topo, 0, &config.memory_layout,
-                                       owner.data(), first.data(), &extra, &count, &facts, msg, msg_len);
+    rt_status st = rt_cost_map_scatter(&pilot, scene, grid, &topo, 0, &config.memory_layout, owner.data(), first.data(),
+                                       &extra, &count, &facts, msg, msg_len);
     std::free(extra);
     extra = nullptr;
     unreplicated_max_us = facts.max_node_work_us;
     replicas.first.clear();
     replicas.extra.clear();
     if (st != RT_OK || !(config.replicate > 0)) return st;
-    st = rt_cost_map_scatter(&pilot, scene, grid, &topo, config.replicate, &config.memory_layout,
-                             owner.data(), first.data(), &extra, &count, &facts, msg, msg_len);
+    st = rt_cost_map_scatter(&pilot, scene, grid, &topo, config.replicate, &config.memory_layout, owner.data(),
+                             first.data(), &extra, &count, &facts, msg, msg_len);
     if (st == RT_OK && count) {
         replicas.first = std::move(first);
         replicas.extra.assign(extra, extra + count);
@@ -128,8 +127,7 @@ nlohmann::json pilot_mapping(const SimConfig &config, PilotMapper mapper, rt_sce
         st = scatter_cells(config, pilot, scene, grid, owner, replicas, facts, unreplicated_max_us, msg, sizeof msg);
     } else {
         const rt_topology topo = config.network();
-        st = rt_cost_map_folded(&pilot, &topo, edge_us, config.block,
-                                owner.data(), &facts, msg, sizeof msg);
+        st = rt_cost_map_folded(&pilot, &topo, edge_us, config.block, owner.data(), &facts, msg, sizeof msg);
         unreplicated_max_us = facts.max_node_work_us;
         try {
             if (st == RT_OK) replicate_cells(config, pilot, scene, grid, owner, replicas, facts);
