@@ -46,6 +46,7 @@ CLI::Option *add_spec_option(CLI::App &app, const OptionSpec &spec)
 {
     std::string help = wrapped(spec.full_help(), kHelpColumns - kNameColumn - 1);
     CLI::Option *opt = spec.kind == ValueKind::flag ? app.add_flag(spec.name) : app.add_option(spec.name);
+    if (spec.kind == ValueKind::flag) opt->multi_option_policy(CLI::MultiOptionPolicy::Throw);  // once, as every option
     opt->description(help);
     if (!spec.value_name.empty()) opt->type_name(spec.value_name);
     opt->group(group_title(spec.group));

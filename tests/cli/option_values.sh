@@ -78,6 +78,16 @@ done
 # An option given twice is named with its count, in plain words.
 bad_option "--max-depth" "--max-depth twice" --max-depth 2 --max-depth 3
 check "--max-depth twice: given 2 times ($(head -c 200 "$TMP/bad.stderr"))" grep -q -- "--max-depth: given 2 times; give it once" "$TMP/bad.stderr"
+# A flag given twice is refused the same way (bad_option gives -q once already).
+bad_option "--quiet" "-q twice" -q
+check "-q twice: given 2 times ($(head -c 200 "$TMP/bad.stderr"))" grep -q -- "--quiet: given 2 times; give it once" "$TMP/bad.stderr"
+"$sim" --dump-config --with-timing --with-timing >"$TMP/twice.out" 2>"$TMP/twice.err" </dev/null
+check "--with-timing twice: exit 2 ($?), nothing written" [ ! -s "$TMP/twice.out" ]
+check "--with-timing twice: named" grep -q -- "--with-timing: given 2 times; give it once" "$TMP/twice.err"
+"$BUILD/torusrt-render" "$scene" "${size[@]}" -o "$TMP/bad/r.png" --brute-force --brute-force >/dev/null 2>"$TMP/twice.err" </dev/null
+rc=$?
+check "render --brute-force twice: exit 2 (got $rc), no image" [ "$rc" = 2 ] && [ ! -e "$TMP/bad/r.png" ]
+check "render --brute-force twice: named" grep -q -- "--brute-force: given 2 times; give it once" "$TMP/twice.err"
 d=$("$sim" --dump-config --link-us -0 | grep '^link-us=')
 check "--link-us -0 is written 0 ($d)" [ "$d" = 'link-us="0"' ]
 bad_option "--queue" "control bytes" --queue $'\e]0;owned\a'
