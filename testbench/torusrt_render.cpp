@@ -144,6 +144,8 @@ void stage_outputs(const RenderOptions &opt, size_t frames, RenderOutputs &outs)
     outs.set.add_input("--camera-path", opt.anim.camera_path);
     outs.set.add_input("--motion", opt.anim.motion);
     outs.set.check();
+    if (outs.set.writes_stream(1) && !opt.common.quiet)  // the summary would follow the file on the stream
+        throw UserError("an output on standard output needs -q: the summary is written there too", 2);
 }
 
 // An animation's frame record in memory, its staged file with its signal-cleanup entry, and with
