@@ -482,6 +482,11 @@ def check_point_command(outs, command):
         if real in mine:
             raise OutputError("%s '%s': is the point's own file %s, which run_point.sh writes"
                               % (option, value, mine[real]))
+        if option == "--vcd" and value:  # and the GTKWave save file torusrt-sim writes beside it
+            save = (value[:-4] if value.endswith(".vcd") and len(value) > 4 else value) + ".gtkw"
+            if os.path.realpath(save) in mine:
+                raise OutputError("--vcd '%s': its GTKWave save file %s is the point's own file %s, which "
+                                  "run_point.sh writes" % (value, save, mine[os.path.realpath(save)]))
 
 
 def check_outputs(argv):

@@ -90,6 +90,9 @@ for case in "--vcd rp/g.log" "--stats-series rp/g.json" "--frames-csv rp/g.png" 
 done
 refused "run_point: --vcd=its own log" "--vcd 'rp/../rp/g.log': is the point's own file" \
     "$EXP/run_point.sh" rp/g.json -- "$sim" s.nff "${small[@]}" --t1 1 --vcd=rp/../rp/g.log
+refused "run_point: --vcd whose save file is the point's JSON" "its GTKWave save file rp/z.gtkw is the point's own file" \
+    "$EXP/run_point.sh" rp/z.gtkw -- "$sim" s.nff "${small[@]}" --t1 1 --vcd rp/z.vcd
+check "run_point: --vcd whose save file is the point's JSON: nothing written" [ ! -e rp/z.gtkw ] && [ ! -e rp/z.vcd ]
 printf 'kept\n' >rp/h.log
 refused "run_point: --vcd its own existing log" "--vcd 'rp/h.log'" \
     "$EXP/run_point.sh" rp/h.json -- "$sim" s.nff "${small[@]}" --t1 1 --vcd rp/h.log
