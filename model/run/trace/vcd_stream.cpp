@@ -137,18 +137,14 @@ void VcdStream::copy_loop()
 {
     bool window = m_from_ps > 0 || m_to_ps != UINT64_MAX;
     WindowFilter filter(m_from_ps, m_to_ps);
-    std::string pending, out;
-    char buf[1 << 16];
-    for (;;) {
-        ssize_t n = ::read(m_read_fd, buf, sizeof buf);
-        if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) break;
-        if (m_error) continue;  // keep draining so the writer never blocks
+    std::string pending, out, head;
+    bool dated = false;  // the header's $date block is passed (see below)
+    auto copy = [&](const char *data, size_t size) {
         if (!window) {
-            if (!write_all(m_out_fd, buf, static_cast<size_t>(n))) m_error = errno ? errno : EIO;
-            continue;
+            if (!write_all(m_out_fd, data, size)) m_error = errno ? errno : EIO;
+            return;
         }
-        pending.append(buf, static_cast<size_t>(n));
+        pending.append(data, size);
         size_t start = 0, nl;
         while ((nl = pending.find('\n', start)) != std::string::npos) {
             filter.line(pending.substr(start, nl - start), out);
@@ -157,7 +153,28 @@ void VcdStream::copy_loop()
         pending.erase(0, start);
         if (!write_all(m_out_fd, out.data(), out.size())) m_error = errno ? errno : EIO;
         out.clear();
+    };
+    char buf[1 << 16];
+    for (;;) {
+        ssize_t n = ::read(m_read_fd, buf, sizeof buf);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) break;
+        if (m_error) continue;  // keep draining so the writer never blocks
+        if (dated) {
+            copy(buf, static_cast<size_t>(n));
+            continue;
+        }
+        // SystemC writes the wall clock's date into the header: the same run's trace would differ
+        // from second to second. The date block goes out without it.
+        head.append(buf, static_cast<size_t>(n));
+        size_t date = head.find("$date"), end = date == std::string::npos ? date : head.find("$end", date);
+        if (end == std::string::npos && head.size() < 4096) continue;
+        if (end != std::string::npos)
+            head.replace(date, end - date, "$date\n    not recorded: the same run gives the same trace\n");
+        dated = true;
+        copy(head.data(), head.size());
     }
+    if (!dated && !head.empty() && !m_error) copy(head.data(), head.size());
     if (window && !m_error) {
         if (!pending.empty()) filter.line(pending, out);
         filter.end(out);
