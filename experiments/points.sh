@@ -42,6 +42,8 @@ use_reading "$reading"
 define_mode "$1"
 [ "$clusters" = 1 ] || CLUSTER_SCENES=()
 set_build "$build"
+[ -n "$2" ] || die "RESULTS_DIR: an empty value (name a folder)"
+[ ! -e "$2" ] || [ -d "$2" ] || die "RESULTS_DIR '$2': is a file, not a folder"
 mkdir -p "$2"
 RES=$(cd "$2" && pwd)
 

@@ -77,6 +77,10 @@ refused "pruning.sh --out ''" "--out: an empty value" bash "$EXP/error_vs_runtim
 refused "sweep.sh --doc ''" "--doc: an empty value" bash "$EXP/sweep.sh" "${nb[@]}" --quick --doc ''
 refused "sweep.sh --results ''" "--results: an empty value" bash "$EXP/sweep.sh" "${nb[@]}" --quick --results ''
 refused "points.sh --reading ''" "--reading: an empty value" bash "$EXP/points.sh" "${nb[@]}" --reading ''
+refused "points.sh RESULTS_DIR ''" "RESULTS_DIR: an empty value" bash "$EXP/points.sh" --build "$BUILD" quick ''
+echo "a file" >notafolder
+refused "points.sh RESULTS_DIR a file" "RESULTS_DIR 'notafolder': is a file, not a folder" \
+    bash "$EXP/points.sh" --build "$BUILD" quick notafolder
 for study in animation calibration mapping motion scaling; do
     refused "$study --build ''" "--build: an empty value" bash "$EXP/$study/study.sh" --build ''
 done
