@@ -48,8 +48,18 @@ constexpr NamedValue<ReplicaRule> kReplicaRuleNames[] = {{ReplicaRule::nearest, 
 constexpr NamedValue<QueueOrder> kQueueOrderNames[] = {{QueueOrder::primaries_first, "primaries-first"},
                                                        {QueueOrder::rays_first, "rays-first"}};
 
+// The default profile's timing table (rt_timing_default_profile()).
+inline rt_timing default_timing()
+{
+    rt_timing timing;
+    rt_timing_profile(rt_timing_default_profile(), &timing, nullptr, 0);
+    return timing;
+}
+
 // The machine: everything that decides the image time. machine_options.h writes it back as
-// the options that rebuild it (--dump-config, the JSON report's config.options).
+// the options that rebuild it (--dump-config, the JSON report's config.options). Each field's
+// initialiser is its option's default, written nowhere else: the option table's help and docs
+// show what a default-constructed machine holds (machine_option_table).
 struct MachineConfig {
     std::array<int, 3> ips{1, 1, 1};                             // nodes per axis of the mapping's grid
     std::string topology = "torus";                              // the network, by its registered name
@@ -65,16 +75,16 @@ struct MachineConfig {
     unsigned queue_capacity = 0;                           // packets per buffer (per class), 0 = unbounded
     FlowControl flow = FlowControl::classes;               // deadlock-free class split, or one class (none)
     QueueOrder queue_order = QueueOrder::primaries_first;  // which waiting packet an IP takes up next
-    rt_timing timing{};                                    // operation and transfer times
-    std::string timing_profile;                            // label: the profile, with " + FILE" for a timing file
-    std::string timing_base;                               // the built-in profile the table started from
-    std::string timing_file;                               // the timing file applied on top ("" = none)
-    bool timing_values = false;                            // --timing-values set the whole table
-    rt_step_params step{};                                 // shade-tree limits
-    TimingStyle style = TimingStyle::at;                   // approximately- or loosely-timed
-    double quantum_us = 0;                                 // loosely-timed global quantum
-    int cluster = 1;                                       // processors per node (1 = flat torus)
-    DataMode data = DataMode::replicated;                  // object data in a cluster
+    rt_timing timing = default_timing();                   // operation and transfer times
+    std::string timing_profile = rt_timing_default_profile();  // label: the profile, with " + FILE" for a file
+    std::string timing_base = rt_timing_default_profile();     // the built-in profile the table started from
+    std::string timing_file;                                   // the timing file applied on top ("" = none)
+    bool timing_values = false;                                // --timing-values set the whole table
+    rt_step_params step = rt_step_params_default();            // shade-tree limits
+    TimingStyle style = TimingStyle::at;                       // approximately- or loosely-timed
+    double quantum_us = 0;                                     // loosely-timed global quantum
+    int cluster = 1;                                           // processors per node (1 = flat torus)
+    DataMode data = DataMode::replicated;                      // object data in a cluster
     std::string arbiter = "round-robin";   // cluster bus arbiter, by its registered name (bus_arbiter.h)
     std::string dispatch = "round-robin";  // cluster packet dispatch, by name (cluster_dispatch.h)
     rt_memory_layout memory_layout = rt_memory_layout_default();  // what the memory report charges

@@ -8,10 +8,8 @@
 
 #include "model_run.h"
 #include "rt_budget.h"
-#include "rt_step.h"
 #include "scene_setup.h"
 #include "sim_config.h"
-#include "timing_choice.h"
 #include "user_error.h"
 
 namespace {
@@ -36,9 +34,7 @@ int run(int argc, char **argv)
         config.width = static_cast<unsigned>(std::strtoul(argv[2], nullptr, 10));
         config.height = static_cast<unsigned>(std::strtoul(argv[3], nullptr, 10));
     }
-    config.ips = {2, 2, 1};
-    config.timing_profile = torusrt::choose_timing("", "", &config.timing);
-    config.step = rt_step_params_default();
+    config.ips = {2, 2, 1};  // every other machine setting its option's default
     config.memory = rt_budget_make(RT_BUDGET_DEFAULT_BYTES);
     config.quiet = true;
     torusrt::validate(config);

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <cmath>
 #include <cstring>
 #include <unistd.h>
 
@@ -25,6 +26,25 @@ namespace {
 std::string dims(const std::array<int, 3> &d)
 {
     return std::to_string(d[0]) + "x" + std::to_string(d[1]) + "x" + std::to_string(d[2]);
+}
+
+// The help's forms of a default: --ips without its trailing dimensions of 1 ("4x2", "1"), --cells
+// "N" for N x N x N, a weight 1/N as "1/N".
+std::string short_ips(const std::array<int, 3> &d)
+{
+    int shown = d[2] != 1 ? 3 : d[1] != 1 ? 2 : 1;  // up to the last dimension above 1
+    std::string s = std::to_string(d[0]);
+    for (int axis = 1; axis < shown; axis++) s += "x" + std::to_string(d[axis]);
+    return s;
+}
+std::string short_cells(const std::array<int, 3> &d)
+{
+    return d[0] == d[1] && d[1] == d[2] ? std::to_string(d[0]) : dims(d);
+}
+std::string short_fraction(double w)
+{
+    double n = 1 / w;
+    return w > 0 && n == std::floor(n) && 1 / n == w ? "1/" + number_text(n) : number_text(w);
 }
 
 // NAME or NAME:N of a mapping --map chooses (the registry's forms); N into `block`.
@@ -106,7 +126,7 @@ std::vector<MachineOption> network_options()
     using G = OptionGroup;
     using K = ValueKind;
     return {
-        {{"--ips", "DIMS", K::text, "1", 1, kMaxNodes, "",
+        {{"--ips", "DIMS", K::text, "", 1, kMaxNodes, "",
           "nodes: P, PXxPY or PXxPYxPZ, at most " + std::to_string(kMaxNodes), G::machine, "ips"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
              m.ips = parse_dims_1_to_3(s.long_name(), t, static_cast<int>(s.min), static_cast<int>(s.max));
@@ -117,15 +137,16 @@ std::vector<MachineOption> network_options()
              j["nodes"] = m.node_count();
          },
          nullptr,
-         "1"},
-        {{"--topology", "KIND", K::text, "torus", 0, 0, "",
+         "1",
+         [](const MachineConfig &m) { return short_ips(m.ips); }},
+        {{"--topology", "KIND", K::text, "", 0, 0, "",
           "network: " + listed(topology_names()) + " (mesh: no wrap-around)", G::machine, "topology"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
              m.topology = registered_name(s.long_name(), t, topology_names());
          },
          [](const MachineConfig &m) { return m.topology; },
          [](const MachineConfig &m, nlohmann::json &j) { j["topology"] = m.topology; }},
-        {{"--route-ties", "RULE", K::text, route_ties_name(kDefaultRouteTies), 0, 0, "",
+        {{"--route-ties", "RULE", K::text, "", 0, 0, "",
           choice_help("the way round an even ring when both are equally short", kRouteTiesNames) +
               " (split: + for a packet whose pixel x + y is even, - for odd, so a ring of two uses both its "
               "links; plus: always +, a ring of two then uses one link each way)",
@@ -140,13 +161,14 @@ std::vector<MachineOption> network_options()
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
              m.cells = parse_triple(s.long_name(), t, static_cast<int>(s.min), static_cast<int>(s.max));
          },
-         [](const MachineConfig &m) { return dims(m.cells); }},
+         [](const MachineConfig &m) { return dims(m.cells); }, nullptr, nullptr, nullptr,
+         [](const MachineConfig &m) { return short_cells(m.cells); }},
         {common_option_spec("--preprocess-count"),
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
              m.preprocess_count = value_named(s.long_name(), t, kPreprocessCountNames);
          },
          [](const MachineConfig &m) { return std::string(preprocess_count_name(m.preprocess_count)); }},
-        {{"--queue", "N", K::integer, "0", 0, double(kMaxQueue), "packets",
+        {{"--queue", "N", K::integer, "", 0, double(kMaxQueue), "packets",
           "capacity of every packet buffer (of each class), 0 = unbounded", G::machine, "queue"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
              m.queue_capacity =
@@ -156,14 +178,14 @@ std::vector<MachineOption> network_options()
          [](const MachineConfig &m, nlohmann::json &j) { j["queue"] = m.queue_capacity; },
          nullptr,
          "0"},  // T(1) is the unconstrained sequential time
-        {{"--flow", "SCHEME", K::text, "classes", 0, 0, "",
+        {{"--flow", "SCHEME", K::text, "", 0, 0, "",
           choice_help("flow control", kFlowNames) + " (none: one class, finite buffers may deadlock, exit 3)",
           G::machine, "flow"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
              m.flow = value_named(s.long_name(), t, kFlowNames);
          },
          [](const MachineConfig &m) { return std::string(flow_name(m.flow)); }},
-        {{"--queue-order", "ORDER", K::text, "primaries-first", 0, 0, "",
+        {{"--queue-order", "ORDER", K::text, "", 0, 0, "",
           choice_help("which waiting packet an IP takes up next", kQueueOrderNames) +
               " (primaries-first: the host's next primary, then the oldest packet; rays-first: the newest "
               "ray packet, then the next primary, then the newest shadow packet)",
@@ -219,7 +241,7 @@ std::vector<MachineOption> timing_table_options()
              if (!t.empty()) read_timing_values(s, t, m);  // a machine file's "": not given
          },
          [](const MachineConfig &m) { return m.timing_values ? timing_values_text(m) : std::string(); }},
-        {{"--link-us", "TIME", K::time, "50", 0, kMaxTimingUs, "us",
+        {{"--link-us", "TIME", K::time, "", 0, kMaxTimingUs, "us",
           "time per packet on a link; a bare number is microseconds", G::machine, "link-us"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
              set_timing(s, m.timing, "link", link_time_us(s, t));
@@ -227,7 +249,7 @@ std::vector<MachineOption> timing_table_options()
          [](const MachineConfig &m) { return number_text(timing_value(m.timing, "link")); },
          nullptr,
          needs_no_bandwidth},
-        {{"--packet-bytes", "BYTES", K::real, "28", 0, kMaxTimingUs, "bytes", "packet size on the wire", G::machine,
+        {{"--packet-bytes", "BYTES", K::real, "", 0, kMaxTimingUs, "bytes", "packet size on the wire", G::machine,
           "packet-bytes"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
              // 0 passes the table's range but not the timing (no size): one range message for all.
@@ -239,14 +261,14 @@ std::vector<MachineOption> timing_table_options()
              set_timing(s, m.timing, "packet_bytes", bytes);
          },
          [](const MachineConfig &m) { return number_text(timing_value(m.timing, "packet_bytes")); }},
-        {{"--link-bytes-per-us", "RATE", K::real, "0", 0, HUGE_VAL, "bytes/us",
+        {{"--link-bytes-per-us", "RATE", K::real, "", 0, HUGE_VAL, "bytes/us",
           "link bandwidth; when > 0 a packet takes packet-bytes / this (0: --link-us)", G::machine,
           "link-bytes-per-us"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
              set_timing(s, m.timing, "link_bytes_per_us", parse_real(s.long_name(), t, s.min, s.max));
          },
          [](const MachineConfig &m) { return number_text(timing_value(m.timing, "link_bytes_per_us")); }},
-        {{"--link-setup-us", "TIME", K::time, "0", 0, kMaxTimingUs, "us",
+        {{"--link-setup-us", "TIME", K::time, "", 0, kMaxTimingUs, "us",
           "fixed time per packet on a link before its transfer (--link-us or the bandwidth's); a bare number is "
           "microseconds",
           G::machine, "link-setup-us"},
@@ -275,8 +297,9 @@ std::vector<MachineOption> step_and_style_options()
              m.step.min_weight = parse_fraction(s.long_name(), t);
          },
          [](const MachineConfig &m) { return number_text(m.step.min_weight); },
-         [](const MachineConfig &m, nlohmann::json &j) { j["min_weight"] = m.step.min_weight; }},
-        {{"--style", "at|lt", K::text, "at", 0, 0, "",
+         [](const MachineConfig &m, nlohmann::json &j) { j["min_weight"] = m.step.min_weight; }, nullptr, nullptr,
+         [](const MachineConfig &m) { return short_fraction(m.step.min_weight); }},
+        {{"--style", "at|lt", K::text, "", 0, 0, "",
           choice_help("timing style", kStyleNames) + " (approximately or loosely timed; lt needs --quantum)",
           G::machine, "style"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
@@ -286,7 +309,7 @@ std::vector<MachineOption> step_and_style_options()
          [](const MachineConfig &m, nlohmann::json &j) { j["style"] = style_name(m.style); },
          nullptr,
          "at"},
-        {{"--quantum", "TIME", K::time, "0", 0, max_time_s, "s", "loosely-timed global quantum, e.g. 500us, 10ms",
+        {{"--quantum", "TIME", K::time, "", 0, max_time_s, "s", "loosely-timed global quantum, e.g. 500us, 10ms",
           G::machine, "quantum"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
              m.quantum_us = parse_time(s.long_name(), t, 0, -6);
@@ -294,7 +317,8 @@ std::vector<MachineOption> step_and_style_options()
          [](const MachineConfig &m) { return number_text(m.quantum_us) + "us"; },
          [](const MachineConfig &m, nlohmann::json &j) { j["quantum_us"] = m.quantum_us; },
          nullptr,
-         "0"},
+         "0",
+         [](const MachineConfig &m) { return number_text(m.quantum_us / 1e6); }},  // a bare number: seconds
     };
 }
 
@@ -308,10 +332,9 @@ std::vector<MachineOption> timing_options()
 
 // A memory-accounting option: bytes of one field of the memory layout, from `min` to
 // kMaxRecordBytes.
-template <uint32_t rt_memory_layout::*Field>
-MachineOption layout_option(const char *name, const char *fallback, int min, const char *help)
+template <uint32_t rt_memory_layout::*Field> MachineOption layout_option(const char *name, int min, const char *help)
 {
-    return {{name, "BYTES", ValueKind::integer, fallback, double(min), double(kMaxRecordBytes), "bytes", help,
+    return {{name, "BYTES", ValueKind::integer, "", double(min), double(kMaxRecordBytes), "bytes", help,
              OptionGroup::machine, name + 2},
             [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
                 m.memory_layout.*Field = static_cast<uint32_t>(
@@ -329,7 +352,7 @@ std::vector<MachineOption> cluster_options()
     using G = OptionGroup;
     using K = ValueKind;
     return {
-        {{"--cluster", "N", K::integer, "1", 1, kMaxCluster, "processors", "processors per torus node on a shared bus",
+        {{"--cluster", "N", K::integer, "", 1, kMaxCluster, "processors", "processors per torus node on a shared bus",
           G::machine, "cluster"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
              m.cluster = static_cast<int>(
@@ -342,36 +365,36 @@ std::vector<MachineOption> cluster_options()
          },
          nullptr,
          "1"},
-        {{"--data", "KIND", K::text, "replicated", 0, 0, "", choice_help("object data in a cluster", kDataModeNames),
-          G::machine, "data"},
+        {{"--data", "KIND", K::text, "", 0, 0, "", choice_help("object data in a cluster", kDataModeNames), G::machine,
+          "data"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
              m.data = value_named(s.long_name(), t, kDataModeNames);
          },
          [](const MachineConfig &m) { return std::string(data_mode_name(m.data)); },
          [](const MachineConfig &m, nlohmann::json &j) { j["data"] = data_mode_name(m.data); },
          clustered_only},
-        {{"--arbiter", "KIND", K::text, "round-robin", 0, 0, "",
-          "cluster bus arbiter: " + listed(arbiter_policy_names()), G::machine, "arbiter"},
+        {{"--arbiter", "KIND", K::text, "", 0, 0, "", "cluster bus arbiter: " + listed(arbiter_policy_names()),
+          G::machine, "arbiter"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
              m.arbiter = registered_name(s.long_name(), t, arbiter_policy_names());
          },
          [](const MachineConfig &m) { return m.arbiter; },
          [](const MachineConfig &m, nlohmann::json &j) { j["arbiter"] = m.arbiter; },
          clustered_only},
-        {{"--dispatch", "KIND", K::text, "round-robin", 0, 0, "",
-          "cluster packet dispatch: " + listed(dispatch_policy_names()), G::machine, "dispatch"},
+        {{"--dispatch", "KIND", K::text, "", 0, 0, "", "cluster packet dispatch: " + listed(dispatch_policy_names()),
+          G::machine, "dispatch"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) {
              m.dispatch = registered_name(s.long_name(), t, dispatch_policy_names());
          },
          [](const MachineConfig &m) { return m.dispatch; },
          [](const MachineConfig &m, nlohmann::json &j) { j["dispatch"] = m.dispatch; },
          clustered_only},
-        layout_option<&rt_memory_layout::cell_header_bytes>("--cell-header-bytes", "4", 0,
+        layout_option<&rt_memory_layout::cell_header_bytes>("--cell-header-bytes", 0,
                                                             "memory accounting: bytes per cell list"),
-        layout_option<&rt_memory_layout::list_entry_bytes>("--list-entry-bytes", "4", 1,
+        layout_option<&rt_memory_layout::list_entry_bytes>("--list-entry-bytes", 1,
                                                            "memory accounting: bytes per object in a cell list"),
         layout_option<&rt_memory_layout::object_record_bytes>(
-            "--object-record-bytes", "0", 0, "memory accounting: bytes per object record (0: each kind's own size)"),
+            "--object-record-bytes", 0, "memory accounting: bytes per object record (0: each kind's own size)"),
     };
 }
 
@@ -381,7 +404,7 @@ std::vector<MachineOption> mapping_options()
     using G = OptionGroup;
     using K = ValueKind;
     return {
-        {{"--map", "KIND", K::text, "cyclic", 0, 0, "", "cell mapping: " + mapping_forms(), G::machine, "map"},
+        {{"--map", "KIND", K::text, "", 0, 0, "", "cell mapping: " + mapping_forms(), G::machine, "map"},
          [](const OptionSpec &s, const std::string &t, MachineConfig &m) { parse_mapping(s.long_name(), t, m); },
          mapping_text,
          [](const MachineConfig &m, nlohmann::json &j) {
@@ -407,7 +430,7 @@ std::vector<MachineOption> mapping_options()
              return m.pilot_size[0] == 0 ? std::string()
                                          : std::to_string(m.pilot_size[0]) + "x" + std::to_string(m.pilot_size[1]);
          }},
-        {{"--replicate", "FRACTION", K::real, "0", 0, 64, "",
+        {{"--replicate", "FRACTION", K::real, "", 0, 64, "",
           "--map cost or scatter: extra memory per node for copies of hot cells, as a fraction of its data without "
           "them",
           G::machine, "replicate"},
@@ -418,7 +441,7 @@ std::vector<MachineOption> mapping_options()
          nullptr,
          nullptr,
          "0"},
-        {{"--replica-choice", "RULE", K::text, "nearest", 0, 0, "",
+        {{"--replica-choice", "RULE", K::text, "", 0, 0, "",
           choice_help("owner of a replicated cell a packet goes to", kReplicaRuleNames) +
               " (nearest: fewest hops, then lowest node; hash: of pixel and depth)",
           G::machine, "replica-choice"},
@@ -441,12 +464,15 @@ const TablePart kTableParts[] = {{"network", network_options},
                                  {"cluster", cluster_options},
                                  {"mapping", mapping_options}};
 
+// The table with each entry's machine-file table and its default as a default machine has it.
 std::vector<MachineOption> build_table()
 {
+    const MachineConfig defaults;
     std::vector<MachineOption> table;
     for (const TablePart &part : kTableParts)
         for (MachineOption &o : part.options()) {
             o.table = part.name;
+            o.spec.default_text = o.default_text ? o.default_text(defaults) : o.write(defaults);
             table.push_back(std::move(o));
         }
     return table;
@@ -463,9 +489,6 @@ const std::vector<MachineOption> &machine_option_table()
 MachineConfig machine_from_texts(const std::map<std::string, std::string> &given)
 {
     MachineConfig m;
-    m.step = rt_step_params_default();
-    m.timing_base = rt_timing_default_profile();
-    m.timing_profile = choose_timing(m.timing_base, "", &m.timing);
     if (given.count("--map") && given.count("--map-file") && !given.at("--map-file").empty())
         throw UserError("--map-file: give either --map or --map-file, not both", 2);
     for (const MachineOption &o : machine_option_table()) {

@@ -20,6 +20,9 @@
 namespace torusrt {
 
 struct MachineOption {
+    // The entries leave spec.default_text empty: machine_option_table writes it from a
+    // default-constructed MachineConfig (default_text below, else `write`), so that a default is
+    // written once, as the field's initialiser (sim_config.h).
     OptionSpec spec;
     // Sets the machine from the option's text (UserError naming the option, exit 2).
     void (*read)(const OptionSpec &spec, const std::string &text, MachineConfig &machine);
@@ -35,6 +38,10 @@ struct MachineOption {
     // The text the one-processor run for T(1) reads for this option; nullptr: it keeps the
     // machine's (one_processor_machine).
     const char *one_processor = nullptr;
+    // The help's text of the default machine's setting where it differs from the writer's ("1"
+    // for --ips 1x1x1, "1/512" for --min-weight 0.001953125); it reads back to the same setting.
+    // nullptr: the writer's.
+    std::string (*default_text)(const MachineConfig &machine) = nullptr;
     // The machine file's table that groups it ("network", "timing", "cluster", "mapping"): the
     // part of the table that declares it.
     std::string table = "";

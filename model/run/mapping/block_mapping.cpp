@@ -3,29 +3,8 @@
 
 namespace torusrt {
 
-namespace {
-
-nlohmann::json fill(const SimConfig &config, rt_scene *, const rt_grid *grid, std::vector<int32_t> &owner,
-                    ReplicaTable &)
-{
-    return fill_axes(config, RT_MAP_BLOCK, grid, owner);
-}
-
-}  // namespace
-
 extern const Mapping kBlockMapping;
-const Mapping kBlockMapping = {
-    "block",                 // name
-    "block",                 // forms in --map's help
-    MappingParameter::none,  // parameter
-    "",                      // its name
-    0,                       // its largest value
-    false,                   // from_file
-    false,                   // measured
-    nullptr,                 // check_inputs
-    fill,                    // fill
-    unfolded,                // remap_fold
-    nullptr,                 // no_remap
-};
+// name, its forms in --map's help, no :N
+const Mapping kBlockMapping = axis_mapping<RT_MAP_BLOCK>("block", "block", MappingParameter::none, "", 0);
 
 }  // namespace torusrt

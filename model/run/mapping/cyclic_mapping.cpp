@@ -4,29 +4,8 @@
 
 namespace torusrt {
 
-namespace {
-
-nlohmann::json fill(const SimConfig &config, rt_scene *, const rt_grid *grid, std::vector<int32_t> &owner,
-                    ReplicaTable &)
-{
-    return fill_axes(config, RT_MAP_CYCLIC, grid, owner);
-}
-
-}  // namespace
-
 extern const Mapping kCyclicMapping;
-const Mapping kCyclicMapping = {
-    "cyclic",                // name
-    "cyclic",                // forms in --map's help
-    MappingParameter::none,  // parameter
-    "",                      // its name
-    0,                       // its largest value
-    false,                   // from_file
-    false,                   // measured
-    nullptr,                 // check_inputs
-    fill,                    // fill
-    unfolded,                // remap_fold
-    nullptr,                 // no_remap
-};
+// name, its forms in --map's help, no :N
+const Mapping kCyclicMapping = axis_mapping<RT_MAP_CYCLIC>("cyclic", "cyclic", MappingParameter::none, "", 0);
 
 }  // namespace torusrt
