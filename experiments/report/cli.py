@@ -192,6 +192,10 @@ def machine(args):
     except RecursionError:  # a hand-made file nested thousands deep
         raise ValueError("%s: not a JSON report (nested too deeply)" % shown(args.report)) from None
     if not args.compare:
+        try:
+            mf.unknown_bytes(pairs)
+        except ValueError as e:
+            raise ValueError("%s: %s" % (shown(args.report), e)) from None
         sys.stdout.write(mf.toml_text(pairs, tables))
         return 0
     # The file's syntax first (its own lines named), then its machine as a run reads it.
