@@ -31,9 +31,9 @@ import subprocess
 import sys
 import tempfile
 
-from output_files import (ANIMATION_OPTIONS, NO_RUN_OPTIONS, OutputError, OutputSet, finish_stdout, list_values,
-                          named_files, named_stdout, nonempty, os_message, output_options, refuse_repeated_options,
-                          shown, staged, unusable_option, write_text)
+from output_files import (ANIMATION_OPTIONS, NO_RUN_OPTIONS, OutputError, OutputSet, finish_stdout, help_on_stdout,
+                          list_values, named_files, named_stdout, nonempty, os_message, output_options,
+                          refuse_repeated_options, shown, staged, unusable_option, write_text)
 from stop_signals import run_child
 from stream_checks import check_streams
 
@@ -129,6 +129,7 @@ def main():
     parser.add_argument("--build", default=os.environ.get("TORUSRT_BUILD") or os.path.join(HERE, "..", "build"),
                         type=nonempty)
     refuse_repeated_options(parser)
+    help_on_stdout(parser)  # --help into a full disk or a closed standard output: named, exit 1
     argv = sys.argv[1:]
     options = argv[argv.index("--") + 1:] if "--" in argv else []
     args = parser.parse_args(argv[:argv.index("--")] if "--" in argv else argv)

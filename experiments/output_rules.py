@@ -34,8 +34,8 @@ import stat
 import sys
 import tempfile
 
-from command_words import (ANIMATION_OPTIONS, NO_RUN_OPTIONS, OUTPUT_OPTIONS, list_values,  # noqa: F401
-                           nonempty, output_options, output_values, refuse_empty_values, refuse_repeated_options,
+from command_words import (ANIMATION_OPTIONS, NO_RUN_OPTIONS, OUTPUT_OPTIONS, help_on_stdout,  # noqa: F401
+                           list_values, nonempty, output_options, output_values, refuse_empty_values, refuse_repeated_options,
                            unusable_option)
 from stop_signals import STOP_SIGNALS, exit_on_signals  # noqa: F401  (the tools take it from here, with the rest)
 

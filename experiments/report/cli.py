@@ -7,7 +7,7 @@ import subprocess
 import sys
 
 from memory_exit import leave_if_out_of_memory
-from output_files import (OutputError, OutputSet, exit_on_signals, finish_stdout, list_values,
+from output_files import (OutputError, OutputSet, exit_on_signals, finish_stdout, help_on_stdout, list_values,
                           named_stdout, nonempty, os_message, out_folder, read_text, refuse_empty_values,
                           refuse_repeated_options, shown)
 from stop_signals import run_child
@@ -273,6 +273,7 @@ def main(argv):
     fidelity.add_commands(sub)
     refuse_empty_values(parser)  # '' is never "the default": --doc '' would rewrite docs/
     refuse_repeated_options(parser)
+    help_on_stdout(parser)  # --help into a full disk or a closed standard output: named, exit 1
     args = parser.parse_args(argv)
     prog = "sweep" if args.command.startswith("sweep-") else "experiments/report"  # the command the user ran
     exit_on_signals(prog)

@@ -6,8 +6,9 @@
 #   --version, --dump-config, -o glued to its file (-ox.png, -qox.png) and --stats=FILE; for the
 #   sweep and compare-mappings an animation (--frames, --orbit, --motion), and --stats-interval
 #   for compare-mappings (its series would be dropped);
-# - standard output on a full device or a closed pipe: `standard output: cannot write: REASON`,
-#   exit 1 (compare-mappings, report, the backend, the sweep, a study's --help);
+# - standard output on a full device, a closed pipe or closed: `standard output: cannot write:
+#   REASON`, exit 1 (compare-mappings, report, the backend, the sweep, a study's --help, and the
+#   --help of compare-mappings, report and the backend);
 # - an empty value (--out '', --state '', --runs '', --columns '', a report's folder or file):
 #   exit 2, nothing written into the current folder;
 # - the sweep's --out naming the scene or a file, the backend's --state naming a file, a study's
@@ -109,6 +110,16 @@ full 1 "report machine >/dev/full" "report: $ENOSPC" python3 "$EXP/report" machi
 full 1 "sweep >/dev/full" "$ENOSPC" "${sweep[@]}" s1.nff --axis ips=1,2 --out swfull -- "${small[@]}"
 full 1 "fidelity --help >/dev/full" "study.sh: $ENOSPC" bash "$EXP/fidelity/study.sh" --help
 full 1 "sweep --help >/dev/full" "sweep: $ENOSPC" "${sweep[@]}" --help
+full 1 "cm --help >/dev/full" "compare-mappings: $ENOSPC" "$EXP/compare-mappings" --help
+full 1 "report --help >/dev/full" "experiments/report: $ENOSPC" python3 "$EXP/report" --help
+full 1 "report machine --help >/dev/full" "experiments/report: $ENOSPC" python3 "$EXP/report" machine --help
+full 1 "backend run --help >/dev/full" "experiments/backend: $ENOSPC" python3 "$EXP/backend" run --help
+# --help with standard output closed: named, never printed on standard error instead.
+python3 "$EXP/report" machine --help >&- 2>help-closed.err
+rc=$?
+check "report machine --help >&-: exit $rc, expected 1" [ "$rc" -eq 1 ]
+check "report machine --help >&-: $(head -c 300 help-closed.err)" \
+    grep -qx "experiments/report: standard output: cannot write: Bad file descriptor" help-closed.err
 # A closed pipe: its reading end is closed before the sweep starts.
 closed_pipe() {
     python3 -c 'import os, subprocess, sys
