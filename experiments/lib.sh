@@ -46,6 +46,14 @@ set_build() {
     for exe in torusrt-sim "$@"; do
         [ -x "$BUILD/$exe" ] || die "build folder '$dir' has no $exe (build it first, or pass --build / TORUSRT_BUILD)"
     done
+    check_tmpdir
+}
+
+# check_tmpdir: a TMPDIR that is set must be a folder one can write into: GNU parallel and
+# torusrt-sim (--vcd) make their temporaries there, and would fail every point without saying why.
+check_tmpdir() {
+    [ -z "${TMPDIR:-}" ] || { [ -d "$TMPDIR" ] && [ -w "$TMPDIR" ] && [ -x "$TMPDIR" ]; } ||
+        die "TMPDIR '$TMPDIR': not a folder this user can write into (GNU parallel and torusrt-sim make their temporaries there; set it to one, or unset it)"
 }
 
 # need_value OPTION ARGS...: ends the command (exit 2) naming OPTION when ARGS (the words after

@@ -190,6 +190,18 @@ def _read_report(path):
     return report
 
 
+# The longest file name a point's NAME makes (its series' temporary, HOST the machine's short
+# name, then a process number of up to 7 digits), and the file systems' limit on one name.
+LONGEST_SUFFIX = ".series.csv.tmp.%s.4194304"
+NAME_MAX = 255
+
+
+def _host():
+    """The short host name the point's shell puts in its temporaries' names (hostname -s)."""
+    import socket
+    return socket.gethostname().split(".")[0] or "host"
+
+
 def point_files(out, name):
     """The files of one point: its JSON report, image, log and identity."""
     base = os.path.join(out, "points", name)
@@ -264,8 +276,14 @@ def plan(out, sim, scene, axes, fixed, listing, columns=(), y=DEFAULT_COLUMNS[0]
     combos = list(itertools.product(*(v for _, v in axes)))
     check_fixed(fixed)
     seen = {}
+    longest = NAME_MAX - len(LONGEST_SUFFIX % _host())
     for values in combos:
         name = point_name(names, values)
+        if len(name.encode()) > longest:
+            raise ValueError("--axis: the point %s: its name is %d bytes, and its files' (NAME%s) may have %d at "
+                             "most, the file system's %d less the suffix; shorten the axis values (a --config "
+                             "machine file's name, say); nothing was written"
+                             % (name[:120] + "...", len(name.encode()), LONGEST_SUFFIX % "HOST", longest, NAME_MAX))
         if name in seen:
             raise ValueError("--axis: the points %s and %s have one name, %s (a point's name keeps letters, "
                              "digits and dots of its values); nothing was written"

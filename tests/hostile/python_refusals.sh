@@ -18,7 +18,9 @@
 # - report compare: a row with more fields than its header, a header naming a column twice;
 # - run_point.sh: no command after --, an empty OUT.json, a --t1-from whose sim_time_s is not a
 #   number, --t1 given with --t1-from;
-# - the sweep's per-point temporaries are unique per process (two sweeps into one --out).
+# - the sweep's per-point temporaries are unique per process (two sweeps into one --out);
+# - the sweep: a point whose name passes what its files' names may hold, and a TMPDIR that is no
+#   folder one can write into, refused naming them (exit 2) before anything is made.
 #
 # Usage (CTest runs it so): bash tests/hostile/python_refusals.sh BUILD_DIR SOURCE_DIR
 set -u
@@ -98,6 +100,14 @@ refused "sweep -- -ox.png" "-o among the fixed options" "${sweep[@]}" s1.nff --a
 refused "sweep -- --stats=x.json" "--stats among the fixed options" "${sweep[@]}" s1.nff --axis ips=1,2 --out sw \
     -- --stats=x.json
 check "sweep -- -ox.png: no --out folder made" [ ! -e sw ]
+# A point whose files' names would pass 255 bytes, and a TMPDIR GNU parallel cannot use: named
+# before anything runs or is made, never a point failing with an empty reason.
+mkdir -p cx && printf '[network]\nqueue="1"\n' >"cx/$(printf 'm%.0s' $(seq 240)).toml"
+refused "sweep, a point name of 255 bytes" "the point config_cx_m.*: its name is 255 bytes" \
+    "${sweep[@]}" s1.nff --axis "config=$(echo cx/*.toml)" --out sw -- "${small[@]}"
+refused "sweep, TMPDIR missing" "TMPDIR '$TMP/nonexistent': not a folder" \
+    env TMPDIR="$TMP/nonexistent" "${sweep[@]}" s1.nff --axis ips=1 --out sw -- "${small[@]}"
+check "sweep, long name or TMPDIR: no --out folder made" [ ! -e sw ]
 refused "run_point -ox.png" "'-o'\|-o 'x.png'" "${rp[@]}" -- "$BUILD/torusrt-sim" s1.nff "${small[@]}" -ox.png
 refused "run_point --stats=x.json" "--stats" "${rp[@]}" -- "$BUILD/torusrt-sim" s1.nff "${small[@]}" --stats=x.json
 refused "run_point --help" "--help in the command" "${rp[@]}" -- "$BUILD/torusrt-sim" s1.nff --help
