@@ -49,6 +49,16 @@ set_build() {
     check_tmpdir
 }
 
+# file_kind PATH: what PATH that is not a regular file is, as the executables say it ("is a FIFO").
+file_kind() {
+    if [ -d "$1" ]; then echo "is a folder"
+    elif [ -p "$1" ]; then echo "is a FIFO"
+    elif [ -c "$1" ]; then echo "is a character device"
+    elif [ -b "$1" ]; then echo "is a block device"
+    elif [ -S "$1" ]; then echo "is a socket"
+    else echo "is a special file"; fi
+}
+
 # check_tmpdir: a TMPDIR that is set must be a folder one can write into: GNU parallel and
 # torusrt-sim (--vcd) make their temporaries there, and would fail every point without saying why.
 check_tmpdir() {

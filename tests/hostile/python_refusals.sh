@@ -108,6 +108,10 @@ refused "sweep, a point name of 255 bytes" "the point config_cx_m.*: its name is
 refused "sweep, TMPDIR missing" "TMPDIR '$TMP/nonexistent': not a folder" \
     env TMPDIR="$TMP/nonexistent" "${sweep[@]}" s1.nff --axis ips=1 --out sw -- "${small[@]}"
 check "sweep, long name or TMPDIR: no --out folder made" [ ! -e sw ]
+mkfifo jf.nff
+refused "sweep, a scene that is a FIFO" "scene 'jf.nff': is a FIFO, not a regular file" \
+    "${sweep[@]}" jf.nff --axis ips=1 --out sw -- "${small[@]}"
+rm -f jf.nff
 refused "run_point -ox.png" "'-o'\|-o 'x.png'" "${rp[@]}" -- "$BUILD/torusrt-sim" s1.nff "${small[@]}" -ox.png
 refused "run_point --stats=x.json" "--stats" "${rp[@]}" -- "$BUILD/torusrt-sim" s1.nff "${small[@]}" --stats=x.json
 refused "run_point --help" "--help in the command" "${rp[@]}" -- "$BUILD/torusrt-sim" s1.nff --help
