@@ -251,7 +251,7 @@ if [ -f /dev/stdout ] || [ -f /dev/stderr ]; then
         trap "stop_pending='${stop_sig%:*} ${stop_sig#*:}'" "${stop_sig%:*}"
     done
     python3 "$EXP/output_files.py" --check-streams "$(basename "$0")" --folders "$REPO/scenes" "$REPO/machines" \
-        "$REPO/timing" "$REPO/docs" "$EXP/results" "$EXP"/*/results -- "$@" || exit 2
+        "$REPO/timing" "$REPO/docs" "$EXP/results" "$EXP"/*/results -- "$@" || exit $?  # 2 refused, 1 out of memory
     for stop_sig in "${STOP_SIGNALS[@]}"; do
         # shellcheck disable=SC2064
         trap "stop_script ${stop_sig%:*} ${stop_sig#*:}" "${stop_sig%:*}"

@@ -43,8 +43,10 @@ TOOLS = [
      ["memory_exit", "stop_signals", "backend.cli", "argparse"]),
     ("compare-mappings", "compare-mappings", ["s.nff"],
      ["memory_exit", "stop_signals", "compare_mappings", "subprocess", "_posixsubprocess", "output_files"]),
-    ("output_files.py", "output_files.py", ["--check-streams", "sweep", "--"],
+    # a script's check: the script is named (the sweep, a study), never the helper it runs
+    ("sweep", "output_files.py", ["--check-streams", "sweep", "--"],
      ["memory_exit", "output_rules", "command_words", "tempfile", "stream_checks"]),
+    ("output_files.py", "output_files.py", ["out.txt"], ["memory_exit", "output_rules", "tempfile"]),
     ("experiments/report/buffers.py", "report/buffers.py", ["r.tsv", "d.md", "p", "b.gp"],
      ["memory_exit", "_csv", "output_files", "argparse"]),
     ("experiments/report/animation.py", "report/animation.py", ["r", "d.md", "p", "g", "1", "1"],
