@@ -233,6 +233,16 @@ def _shape(text):
         raise ValueError("'%s' is not a machine shape (up to three sizes of 1 or more: 16, 4x4, 4x2x2)" % text)
 
 
+def _table_name(text):
+    """An argparse type: the name of a table in the results folder, never a path (it is read as
+    RESULTS/NAME)."""
+    if "/" in text or text in ("", ".", ".."):
+        import argparse
+        raise argparse.ArgumentTypeError("'%s': the name of a table in the results folder (stage2b.tsv), not a path"
+                                         % text)
+    return text
+
+
 # The options of `fidelity machines`, each checked as a run would check it, so that no machine or
 # timing file the command writes is refused by the runs that read it.
 MACHINE_OPTIONS = (
@@ -311,7 +321,8 @@ def add_commands(sub):
         q.add_argument("results")
         q.add_argument("--smoke", action="store_true")
         if table:
-            q.add_argument("--table", default=table)
+            q.add_argument("--table", default=table, type=_table_name,
+                           help="the stage's table in RESULTS (its name, default %s)" % table)
         q.set_defaults(run=fn)
     q = fsub.add_parser("allowed")
     q.add_argument("cell_step")

@@ -80,6 +80,20 @@ class FidelityCommands(unittest.TestCase):
             with open(os.path.join(tmp, "out", "paper-16.toml")) as f:
                 self.assertIn('ips="4x4"', f.read().replace(" ", ""))
 
+    def test_a_folder_without_the_stage_runs_is_named(self):
+        with tempfile.TemporaryDirectory() as empty:
+            for args, why in ((("fit1", empty), "%s/units.tsv: no runs (the stage has not run)" % empty),
+                              (("page", empty, os.path.join(empty, "p.md")), "%s/units.tsv: no runs" % empty),
+                              (("fit1", os.devnull), "%s: not a results folder" % os.devnull)):
+                with self.subTest(args=args):
+                    done = fidelity(*args)
+                    self.assertEqual((done.returncode, done.stdout), (1, ""), done.stderr)
+                    self.assertIn(why, done.stderr)
+                    self.assertFalse(os.path.exists(os.path.join(empty, "p.md")))
+            done = fidelity("fit2", empty, "--table", os.path.join(empty, "x.tsv"))
+            self.assertEqual(done.returncode, 2, done.stderr)
+            self.assertIn("argument --table: '%s/x.tsv': the name of a table" % empty, done.stderr)
+
     def test_identity_without_runs_fails(self):
         with tempfile.TemporaryDirectory() as empty:
             for folder, why in ((empty, "run stage 1 first"), (os.path.join(empty, "none"), "no such results folder")):
