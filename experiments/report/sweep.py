@@ -12,6 +12,7 @@ import shlex
 import subprocess
 import sys
 
+import decimal_number
 from output_files import (ANIMATION_OPTIONS, NO_RUN_OPTIONS, OUTPUT_OPTIONS, OutputSet, atomic, list_values,
                           named_files, output_options, read_text, unusable_option, write_lines, write_text)
 from stop_signals import run_child
@@ -461,11 +462,10 @@ def spans_decade(values):
 
 
 def numeric(values):
-    try:
-        [float(v) for v in values]
-        return True
-    except ValueError:
-        return False
+    """Whether every value is a number of the executables' strict syntax (decimal_number): `1_0`,
+    `inf`, `nan` or a digit of another script are named values, one tick each, never numbers
+    gnuplot would be given bare."""
+    return all(not decimal_number.fault(v) for v in values)
 
 
 def plot(out, names, points, flat, y, facts):
