@@ -108,6 +108,13 @@ refused "sweep, a point name of 255 bytes" "the point config_cx_m.*: its name is
 refused "sweep, TMPDIR missing" "TMPDIR '$TMP/nonexistent': not a folder" \
     env TMPDIR="$TMP/nonexistent" "${sweep[@]}" s1.nff --axis ips=1 --out sw -- "${small[@]}"
 check "sweep, long name or TMPDIR: no --out folder made" [ ! -e sw ]
+# An --out that cannot be made: under a file, or a link that loops: a refused command line (2).
+ln -sfn loopA loopB && ln -sfn loopB loopA
+refused "sweep --out under a file" "--out 's1.nff/sub': cannot be made: '.*s1.nff' is a file" \
+    "${sweep[@]}" s1.nff --axis ips=1 --out s1.nff/sub -- "${small[@]}"
+refused "sweep --out a link loop" "--out 'loopA': '.*loopA' is a link that names no folder" \
+    "${sweep[@]}" s1.nff --axis ips=1 --out loopA -- "${small[@]}"
+rm -f loopA loopB
 mkfifo jf.nff
 refused "sweep, a scene that is a FIFO" "scene 'jf.nff': is a FIFO, not a regular file" \
     "${sweep[@]}" jf.nff --axis ips=1 --out sw -- "${small[@]}"
