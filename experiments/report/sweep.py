@@ -137,9 +137,11 @@ def file_hash(path, cache):
 
 def identity(sim, args, cache):
     """What makes a point: the executable's and every input file's content (the scene, and any
-    argument naming a file) and the whole command line but its output files. Two points with
-    the same identity report the same figures."""
-    made = {"executable": file_hash(sim, cache), "command": args,
+    argument naming a file) and the whole command line but its output files, the executable's
+    path included, as the backend's record holds it (so that a point the sweep counts as done is
+    one the backend does not run again). Two points with the same identity report the same
+    figures."""
+    made = {"executable": file_hash(sim, cache), "command": [sim] + list(args),
             "inputs": [[option, file_hash(path, cache)] for option, path in named_files(args)]}
     return hashlib.sha256(json.dumps(made, sort_keys=True).encode()).hexdigest()
 
