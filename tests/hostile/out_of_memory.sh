@@ -27,8 +27,8 @@ check "4096 nodes under ulimit -v: no abort message" bash -c '! grep -q "termina
 check "4096 nodes under ulimit -v: nothing left: $(ls -A out; ls -A tmpdir)" \
     [ -z "$(ls -A out)$(ls -A tmpdir)" ]
 # A limit too small for the libraries' own start-up (SystemC's static constructors, before main):
-# exit 1 with a message (where the limit falls in the scene's reading, the one naming its file
-# and line), never an abort; smaller still, the system's loader refuses (127).
+# exit 1 with a message (where the limit falls in the scene's reading, the one naming that
+# stage), never an abort; smaller still, the system's loader refuses (127).
 aborts=0 other=0
 for limit in 9000 10000 11000 12000 13000 14000 15000 16000 18000 20000; do
     for args in "--version" "$f -q -o out/v.png --size 8x8"; do
