@@ -166,7 +166,7 @@ def _nonempty_then(convert):
 def list_values(option, text, given=None):
     """The comma-separated values of OPTION's TEXT ('block,cyclic'); ValueError naming OPTION and
     what was GIVEN (default TEXT) when TEXT is empty, a value is empty (',,' or a trailing comma)
-    or a value is given twice."""
+    or has blanks around it ('block, cyclic'), or a value is given twice."""
     from output_files import shown
     what = "%s '%s'" % (option, shown(text if given is None else given))
     items = text.split(",")
@@ -174,6 +174,9 @@ def list_values(option, text, given=None):
         raise ValueError("%s: an empty value (value %d); write each value once, between commas"
                          % (what, items.index("") + 1))
     for i, item in enumerate(items):
+        if item != item.strip():  # ' cyclic' would reach the run as a value with a blank in it
+            raise ValueError("%s: '%s' has blanks around it (value %d); write the values between commas, "
+                             "without blanks" % (what, shown(item), i + 1))
         if item in items[:i]:
             raise ValueError("%s: '%s' is given twice; write each value once" % (what, shown(item)))
     return items

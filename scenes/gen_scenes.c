@@ -10,9 +10,9 @@
  *   torusrt-genscenes --list            print every name with a one-line description
  *   torusrt-genscenes --help            print this usage
  * Returns 0 on success, 1 when a file cannot be written, 2 on a usage error (unknown name,
- * missing OUTDIR). Each file is written to a new temporary .NAME.nff.XXXXXX beside it (mkstemp:
- * never a file of the user's, never through a link) and renamed, so a failed run never leaves a
- * partial NAME.nff behind; a NAME.nff that is a link has its target written.
+ * missing OUTDIR, an OUTDIR that is no folder). Each file is written to a new temporary .NAME.nff.XXXXXX beside it
+ * (mkstemp: never a file of the user's, never through a link) and renamed, so a failed run never leaves a partial
+ * NAME.nff behind; a NAME.nff that is a link has its target written.
  *
  * Output is byte-reproducible: no clock, no rand(); the one pseudo-random placement uses a
  * fixed-seed 64-bit LCG. Every coordinate computed with libm is rounded to 9 significant
@@ -525,6 +525,14 @@ int main(int argc, char **argv)
     const char *outdir = argv[1];
     if (!*outdir) { /* not "the current folder": '' + "/NAME.nff" is the root folder */
         fprintf(stderr, "torusrt-genscenes: OUTDIR: an empty value (name a folder, e.g. '.')\n");
+        return 2;
+    }
+    struct stat dir; /* a folder that is not there: a usage error, as a missing OUTDIR is */
+    const char *why = NULL;
+    if (stat(outdir, &dir) != 0) why = errno == ENOENT ? "no such folder (make it first)" : strerror(errno);
+    else if (!S_ISDIR(dir.st_mode)) why = "not a folder";
+    if (why) {
+        fprintf(stderr, "torusrt-genscenes: OUTDIR '%s': %s\n", shown(outdir), why);
         return 2;
     }
     for (int a = 2; a < argc; ++a) {

@@ -3,8 +3,8 @@ import os
 import sys
 
 try:  # first: under a small ulimit -v loading a module is what fails, this one too (memory_exit.py)
-    if __package__ in (None, ""):
-        sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+    # experiments/ on the path however the tool is started (a file, -m report, -m experiments.report)
+    sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
     import memory_exit
 except (MemoryError, OSError, ImportError):
     os.write(2, b"experiments/backend: out of memory: the system refused the memory the tool "

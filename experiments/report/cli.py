@@ -145,7 +145,10 @@ def sweep_collect(args):
 
 def compare(args):
     from . import compare as comparelib
-    columns = list_values("--columns", args.columns) if args.columns else None
+    try:
+        columns = list_values("--columns", args.columns) if args.columns else None
+    except ValueError as e:  # the command line's fault, as an empty --columns is (exit 2)
+        raise OutputError(str(e)) from None
     rows, diffs = comparelib.compare(os.path.abspath(args.old), os.path.abspath(args.new), columns)
     for line in diffs:
         print(line)

@@ -42,6 +42,11 @@ def from_report(report):
         if not isinstance(options[key], str):
             raise ValueError("config.options.%s: %s, not a value torusrt-sim writes (a string)"
                              % (key, json.dumps(options[key])))
+        try:
+            options[key].encode()
+        except UnicodeEncodeError:  # "\ud800" in the JSON: a lone surrogate, no text a file can hold
+            raise ValueError("config.options.%s: %s holds a lone surrogate, not text a machine file can hold"
+                             % (key, json.dumps(options[key])[:200])) from None
     return [(str(k), options[k]) for k in keys]
 
 

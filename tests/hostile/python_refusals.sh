@@ -108,6 +108,14 @@ refused "sweep, a point name of 255 bytes" "the point config_cx_m.*: its name is
 refused "sweep, TMPDIR missing" "TMPDIR '$TMP/nonexistent': not a folder" \
     env TMPDIR="$TMP/nonexistent" "${sweep[@]}" s1.nff --axis ips=1 --out sw -- "${small[@]}"
 check "sweep, long name or TMPDIR: no --out folder made" [ ! -e sw ]
+# A list value with blanks around it, a bad --columns of report compare: a refused command line.
+refused "cm --map 'block, cyclic'" "' cyclic' has blanks around it" "$EXP/compare-mappings" s1.nff \
+    --map 'block, cyclic' --build "$BUILD" -- --ips 2 "${small[@]}"
+refused "report compare --columns ',,'" "--columns ',,': an empty value" python3 "$EXP/report" compare . . \
+    --columns ',,'
+# Started as a package from the source tree: its help, not a missing module called memory.
+(cd "$SRC" && python3 -m experiments.backend --help >"$logs/m.out" 2>"$logs/m.err")
+check "python3 -m experiments.backend --help: exit $?: $(head -c 200 "$logs/m.err")" grep -q "^usage:" "$logs/m.out"
 # An --out that cannot be made: under a file, or a link that loops: a refused command line (2).
 ln -sfn loopA loopB && ln -sfn loopB loopA
 refused "sweep --out under a file" "--out 's1.nff/sub': cannot be made: '.*s1.nff' is a file" \

@@ -152,6 +152,7 @@ class MachineCommand(unittest.TestCase):
                  (("", "1", "network"), 'config.options: "": not an option name'),
                  (("timing", "t\ufffd.timing", "timing"), "config.options.timing: \"t\\ufffd.timing\" holds U+FFFD"),
                  (("timing", "t.timing", "a]\n["), 'config.option_tables.timing: "a]\\n[": not a table name'),
+                 (("timing", "t\ud800", "timing"), 'config.options.timing: "t\\ud800" holds a lone surrogate'),
                  (("timing", "t.timing", "timing"), None))
         for (key, value, table), why in cases:
             with self.subTest(key=key, value=value, table=table), tempfile.TemporaryDirectory() as d:
