@@ -163,6 +163,15 @@ def main():
     except OutputError as e:
         sys.stderr.write("compare-mappings: %s\n" % e)
         sys.exit(2)
+    # The first run's command line checked by torusrt-sim --dump-config (nothing is run), as the
+    # sweep checks its first point: an option after -- that every run refuses stops it now.
+    done = run_child([sim, args.scene, "--dump-config", "--map", maps[0]] + options, stdin=subprocess.DEVNULL,
+                     stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True, errors="surrogateescape")
+    if done.returncode != 0:
+        sys.stderr.write("compare-mappings: the options after -- do not check out (no run was made): %s\n"
+                         % shown((done.stderr.strip().splitlines() or ["exit %d" % done.returncode])[0],
+                                 backslash=False))
+        sys.exit(2)
     try:
         named_stdout()  # a closed standard output (>&-) ends the command before any run
     except OSError as e:

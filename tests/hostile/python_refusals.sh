@@ -113,6 +113,9 @@ refused "cm --map 'block, cyclic'" "' cyclic' has blanks around it" "$EXP/compar
     --map 'block, cyclic' --build "$BUILD" -- --ips 2 "${small[@]}"
 refused "report compare --columns ',,'" "--columns ',,': an empty value" python3 "$EXP/report" compare . . \
     --columns ',,'
+refused "cm -- --cells 4 --cells 5" "the options after -- do not check out (no run was made): .*--cells: given 2" \
+    "$EXP/compare-mappings" s1.nff --out cc.png --build "$BUILD" -- --ips 2 "${small[@]}" --cells 4 --cells 5
+check "cm -- --cells 4 --cells 5: no --out" [ ! -e cc.png ]
 # Started as a package from the source tree: its help, not a missing module called memory.
 (cd "$SRC" && python3 -m experiments.backend --help >"$logs/m.out" 2>"$logs/m.err")
 check "python3 -m experiments.backend --help: exit $?: $(head -c 200 "$logs/m.err")" grep -q "^usage:" "$logs/m.out"
