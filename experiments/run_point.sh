@@ -16,7 +16,7 @@
 # ...) names one of these files, or that gives --help, --version or --dump-config (-h, -oFILE
 # and --stats=FILE are seen too). T1.json must be a regular file of at most 64 MiB: a FIFO, a
 # device or a folder is refused (exit 2, naming --t1-from) before it is read; its sim_time_s
-# must be a number (else exit 3, as when it has none), and the command may not give --t1 too
+# must be a number above 0 (else exit 3, as when it has none), and the command may not give --t1 too
 # (exit 2). An empty OUT.json or no command after -- is a usage error (exit 2). Standard output
 # or error redirected to a file the command line names (`2>> SCENE`) is refused (exit 2) before
 # anything is written. A stopping signal (INT, TERM, HUP, QUIT, USR1, USR2, ALRM) sent to this
@@ -49,9 +49,10 @@ if [ "${1:-}" = --t1-from ]; then
         echo "run_point: --t1-from '$t1json': larger than 64 MiB, not a point's JSON" >&2
         exit 2
     fi
-    # A number only: a string ("0.5ms") would reach torusrt-sim as --t1 0.5ms.
-    if ! t1=$(jq -er '.sim_time_s | numbers' "$t1json" 2>/dev/null); then
-        echo "run_point: $out: no T(1) in $t1json (no sim_time_s number in it; run the phase-1 points first)" >&2
+    # A positive number only: a string ("0.5ms") would reach torusrt-sim as --t1 0.5ms, and 0 (or
+    # 1e-400, which jq reads as 0) as a --t1 every run refuses.
+    if ! t1=$(jq -er '.sim_time_s | numbers | select(. > 0)' "$t1json" 2>/dev/null); then
+        echo "run_point: $out: no T(1) in $t1json (no sim_time_s number above 0 in it; run the phase-1 points first)" >&2
         exit 3
     fi
     t1args=(--t1 "$t1")

@@ -17,7 +17,7 @@
 # - report machine: a report whose config is null, and an explicit --build without torusrt-sim;
 # - report compare: a row with more fields than its header, a header naming a column twice;
 # - run_point.sh: no command after --, an empty OUT.json, a --t1-from whose sim_time_s is not a
-#   number, --t1 given with --t1-from;
+#   number above 0 (1e-400 included), --t1 given with --t1-from;
 # - the sweep's per-point temporaries are unique per process (two sweeps into one --out);
 # - the sweep: a point whose name passes what its files' names may hold, and a TMPDIR that is no
 #   folder one can write into, refused naming them (exit 2) before anything is made.
@@ -229,6 +229,9 @@ check "run_point no command: no log" [ ! -e rp/p.log ]
 refused "run_point ''" "not an empty value" "$EXP/run_point.sh" ''
 echo '{"sim_time_s": "0.5ms"}' >t1.json
 exits 3 "run_point --t1-from a string" "no sim_time_s number" "$EXP/run_point.sh" rp/p.json --t1-from t1.json \
+    -- "$BUILD/torusrt-sim" s1.nff "${small[@]}"
+echo '{"sim_time_s": 1e-400}' >t1.json
+exits 3 "run_point --t1-from 1e-400" "no sim_time_s number above 0" "$EXP/run_point.sh" rp/p.json --t1-from t1.json \
     -- "$BUILD/torusrt-sim" s1.nff "${small[@]}"
 echo '{"sim_time_s": 0.5}' >t1.json
 refused "run_point --t1 and --t1-from" "give T(1) once" "$EXP/run_point.sh" rp/p.json --t1-from t1.json \
