@@ -334,8 +334,11 @@ static int variant_setting(const char *setting, paper_variant *v)
         double x = strtod(value, &end);
         if (!plain_decimal(value) || end == value || *end || !(x >= numbers[i].lo && x <= numbers[i].hi) ||
             (numbers[i].whole && strchr(value, '.'))) {
-            fprintf(stderr, "torusrt-genscenes: --variant %s '%s': expected a%s number from %g to %g\n",
-                    numbers[i].name, shown(value), numbers[i].whole ? " whole" : "", numbers[i].lo, numbers[i].hi);
+            fprintf(stderr, "torusrt-genscenes: --variant %s '%s': expected a%s number from %g to %g%s\n",
+                    numbers[i].name, shown(value), numbers[i].whole ? " whole" : "", numbers[i].lo, numbers[i].hi,
+                    value[0] == '0' && value[1] >= '0' && value[1] <= '9'
+                        ? " (decimal only: a leading zero could be read as octal)"
+                        : "");
             return 2;
         }
         switch (i) {
