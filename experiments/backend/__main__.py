@@ -15,6 +15,12 @@ try:
 except Exception as e:
     memory_exit.leave_if_out_of_memory("experiments/backend", e)
     raise
+try:  # OpenSSL's hashes, which hashlib would otherwise report missing in tracebacks of its own
+    import _hashlib  # noqa: F401
+except Exception as e:
+    memory_exit.leave_if_out_of_memory("experiments/backend", e)
+    if not isinstance(e, ImportError):  # missing for another reason: hashlib's own hashes serve
+        raise
 
 # before the imports below: a signal there is named too; Ctrl-C even where a shell started the
 # backend in the background (a sweep does), ignoring it

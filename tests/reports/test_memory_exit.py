@@ -38,7 +38,8 @@ MESSAGE = "%s: out of memory: the system refused the memory the tool asked for (
 # (program as its message names it, the file python3 runs, its arguments, modules it loads)
 TOOLS = [
     ("experiments/report", "report/__main__.py", ["compare", "a", "b"],
-     ["memory_exit", "stop_signals", "report.cli", "argparse", "_csv"]),
+     ["memory_exit", "stop_signals", "_hashlib", "report.cli", "argparse", "_csv"]),
+    ("sweep", "report/__main__.py", ["sweep-plan", "--out", "o"], ["memory_exit", "stop_signals", "_hashlib"]),
     ("experiments/backend", "backend/__main__.py", ["run", "--state", "st", "x.list"],
      ["memory_exit", "stop_signals", "backend.cli", "argparse"]),
     ("compare-mappings", "compare-mappings", ["s.nff"],
