@@ -3,7 +3,8 @@
 # timing-file values (an underflow named as such, a leading zero with the number to write, a
 # value out of range at its line) and --timing-values with a stray comma; --help and --version
 # into a full device; a frame name too long for the file system, and a path too long for its
-# temporary to a file that exists, refused before the run (the path shown cut); the
+# temporary to a file that exists, refused before the run (the path shown cut); --vcd's
+# temporary folder in a TMPDIR that is not there (named); the
 # memory budget running out as an animation's frame is set up (the budget message naming the
 # frame, once, not SystemC's E546); a stopping signal that arrives before the program's start
 # (held blocked across exec) ends the run with the message; and memory the system refuses
@@ -72,6 +73,10 @@ expect_message "render: a 260-byte frame name" 2 "^torusrt-render: -o 'out/${lon
     "$BUILD/torusrt-render" -q --size 8x8 "$f" -o "out/${long}_%d.png" --frames 2 --orbit 10
 expect_message "sim: a 260-byte --stats name" 2 "file name is too long" \
     "${sim[@]}" "$f" -o out/a.png --stats "out/$long.json"
+# --vcd with a TMPDIR that is not there: the message names it.
+expect_message "sim --vcd, TMPDIR missing" 1 "--vcd: cannot create a temporary folder in TMPDIR '$TMP/none'" \
+    env TMPDIR="$TMP/none" "${sim[@]}" "$f" -o out/a.png --vcd out/a.vcd
+
 # A path too long for its temporary (4091 bytes), to a file that exists: refused before the run
 # too (exit 2), the file untouched, the path shown cut (a message of a few hundred bytes).
 mkdir -p ex
