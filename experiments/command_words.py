@@ -119,6 +119,42 @@ def refuse_repeated_options(parser):
             action.__class__ = StoreOnce
 
 
+def help_on_stdout(parser, name=None):
+    """Gives PARSER (and its subcommands) a --help that is a write like any other: a text that
+    cannot reach standard output (a full disk, a closed pipe, standard output closed) ends the
+    tool with `NAME: standard output: cannot write: REASON` (NAME: PARSER's prog), exit 1, where
+    argparse would say nothing and exit 0, or print the help on standard error."""
+    import argparse
+    import os
+    import sys
+    name = name or parser.prog
+
+    class NamedHelp(argparse._HelpAction):
+        def __call__(self, parser, namespace, values, option_string=None):
+            data = parser.format_help().encode(errors="surrogateescape")
+            try:
+                if sys.stdout is None:  # started with standard output closed (>&-)
+                    raise OSError(9, os.strerror(9))
+                sys.stdout.flush()
+                while data:
+                    data = data[os.write(1, data):]
+            except OSError as e:
+                try:
+                    os.write(2, ("%s: standard output: cannot write: %s\n" % (name, e.strerror)).encode(
+                        errors="surrogateescape"))
+                except OSError:
+                    pass
+                parser.exit(1)
+            parser.exit(0)
+
+    for action in parser._actions:
+        if isinstance(action, argparse._SubParsersAction):
+            for sub in set(action.choices.values()):
+                help_on_stdout(sub, name)
+        elif type(action) is argparse._HelpAction:
+            action.__class__ = NamedHelp
+
+
 def _nonempty_then(convert):
     """An argparse type: nonempty(), then CONVERT; named as CONVERT for argparse's messages."""
     def check(text):
@@ -130,7 +166,7 @@ def _nonempty_then(convert):
 def list_values(option, text, given=None):
     """The comma-separated values of OPTION's TEXT ('block,cyclic'); ValueError naming OPTION and
     what was GIVEN (default TEXT) when TEXT is empty, a value is empty (',,' or a trailing comma)
-    or a value is given twice."""
+    or has blanks around it ('block, cyclic'), or a value is given twice."""
     from output_files import shown
     what = "%s '%s'" % (option, shown(text if given is None else given))
     items = text.split(",")
@@ -138,6 +174,9 @@ def list_values(option, text, given=None):
         raise ValueError("%s: an empty value (value %d); write each value once, between commas"
                          % (what, items.index("") + 1))
     for i, item in enumerate(items):
+        if item != item.strip():  # ' cyclic' would reach the run as a value with a blank in it
+            raise ValueError("%s: '%s' has blanks around it (value %d); write the values between commas, "
+                             "without blanks" % (what, shown(item), i + 1))
         if item in items[:i]:
             raise ValueError("%s: '%s' is given twice; write each value once" % (what, shown(item)))
     return items

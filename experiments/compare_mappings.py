@@ -31,9 +31,9 @@ import subprocess
 import sys
 import tempfile
 
-from output_files import (ANIMATION_OPTIONS, NO_RUN_OPTIONS, OutputError, OutputSet, finish_stdout, list_values,
-                          named_files, named_stdout, nonempty, os_message, output_options, refuse_repeated_options,
-                          shown, staged, unusable_option, write_text)
+from output_files import (ANIMATION_OPTIONS, NO_RUN_OPTIONS, OutputError, OutputSet, finish_stdout, help_on_stdout,
+                          list_values, named_files, named_stdout, nonempty, os_message, output_options,
+                          refuse_repeated_options, shown, staged, unusable_option, write_text)
 from stop_signals import run_child
 from stream_checks import check_streams
 
@@ -129,6 +129,7 @@ def main():
     parser.add_argument("--build", default=os.environ.get("TORUSRT_BUILD") or os.path.join(HERE, "..", "build"),
                         type=nonempty)
     refuse_repeated_options(parser)
+    help_on_stdout(parser)  # --help into a full disk or a closed standard output: named, exit 1
     argv = sys.argv[1:]
     options = argv[argv.index("--") + 1:] if "--" in argv else []
     args = parser.parse_args(argv[:argv.index("--")] if "--" in argv else argv)
@@ -161,6 +162,15 @@ def main():
         outs.check()
     except OutputError as e:
         sys.stderr.write("compare-mappings: %s\n" % e)
+        sys.exit(2)
+    # The first run's command line checked by torusrt-sim --dump-config (nothing is run), as the
+    # sweep checks its first point: an option after -- that every run refuses stops it now.
+    done = run_child([sim, args.scene, "--dump-config", "--map", maps[0]] + options, stdin=subprocess.DEVNULL,
+                     stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True, errors="surrogateescape")
+    if done.returncode != 0:
+        sys.stderr.write("compare-mappings: the options after -- do not check out (no run was made): %s\n"
+                         % shown((done.stderr.strip().splitlines() or ["exit %d" % done.returncode])[0],
+                                 backslash=False))
         sys.exit(2)
     try:
         named_stdout()  # a closed standard output (>&-) ends the command before any run

@@ -46,6 +46,24 @@ set_build() {
     for exe in torusrt-sim "$@"; do
         [ -x "$BUILD/$exe" ] || die "build folder '$dir' has no $exe (build it first, or pass --build / TORUSRT_BUILD)"
     done
+    check_tmpdir
+}
+
+# file_kind PATH: what PATH that is not a regular file is, as the executables say it ("is a FIFO").
+file_kind() {
+    if [ -d "$1" ]; then echo "is a folder"
+    elif [ -p "$1" ]; then echo "is a FIFO"
+    elif [ -c "$1" ]; then echo "is a character device"
+    elif [ -b "$1" ]; then echo "is a block device"
+    elif [ -S "$1" ]; then echo "is a socket"
+    else echo "is a special file"; fi
+}
+
+# check_tmpdir: a TMPDIR that is set must be a folder one can write into: GNU parallel and
+# torusrt-sim (--vcd) make their temporaries there, and would fail every point without saying why.
+check_tmpdir() {
+    [ -z "${TMPDIR:-}" ] || { [ -d "$TMPDIR" ] && [ -w "$TMPDIR" ] && [ -x "$TMPDIR" ]; } ||
+        die "TMPDIR '$TMPDIR': not a folder this user can write into (GNU parallel and torusrt-sim make their temporaries there; set it to one, or unset it)"
 }
 
 # need_value OPTION ARGS...: ends the command (exit 2) naming OPTION when ARGS (the words after
@@ -217,40 +235,9 @@ backend_command() {
     BACKEND_CMD=(python3 "$EXP/backend" run "${opts[@]}" "${RUN_POINTS_OPTS[@]}" "$@")
 }
 RUN_POINTS_OPTS=()
-# The signals that stop torusrt-sim but PIPE (support/signal_cleanup.cpp), NAME:NUMBER.
-STOP_SIGNALS=(INT:2 TERM:15 HUP:1 QUIT:3 USR1:10 USR2:12 ALRM:14)
-STOP_CHILD=""
-# in_child COMMAND...: COMMAND in the background, waited for, its exit status: a stopping signal
-# sent to the script meanwhile (to it alone, not to its process group) is taken at once rather
-# than after COMMAND ends, and reaches COMMAND as TERM (a shell starts a background child ignoring
-# INT and QUIT; the backend then stops its points).
-in_child() {
-    local rc=0
-    "$@" &
-    STOP_CHILD=$!
-    wait "$STOP_CHILD" || rc=$?
-    STOP_CHILD=""
-    return $rc
-}
-# stop_script NAME NUMBER: the handler of the stopping signals in every script that sources this
-# file (set below), whenever the signal comes: in_child's child is stopped and waited for, and
-# the script ends with a message and 128 + the signal's number. A signal the script was started
-# ignoring (INT and QUIT for a shell's background job) stays ignored, as bash keeps it.
-stop_script() {
-    local sig
-    for sig in "${STOP_SIGNALS[@]}"; do trap '' "${sig%:*}"; done
-    if [ -n "$STOP_CHILD" ]; then  # `|| true`: a study runs under set -e, and wait gives the child's status
-        kill -TERM "$STOP_CHILD" 2>/dev/null || true
-        wait "$STOP_CHILD" 2>/dev/null || true
-    fi
-    echo "$(basename "$0"): stopped by SIG$1; the same command runs the points not done" >&2
-    exit $((128 + $2))
-}
-for stop_sig in "${STOP_SIGNALS[@]}"; do
-    # shellcheck disable=SC2064  # the signal's name and number, set now
-    trap "stop_script ${stop_sig%:*} ${stop_sig#*:}" "${stop_sig%:*}"
-done
-unset stop_sig
+# The stopping signals: STOP_SIGNALS, in_child and stop_script (experiments/stop_signals.sh).
+# shellcheck source=experiments/stop_signals.sh
+source "$EXP/stop_signals.sh"
 
 # A script's standard output or error appended to a file it reads or writes (a scene, a machine
 # or timing file, a page of docs/, a file of a results folder, also through a hard link, or one
@@ -264,7 +251,7 @@ if [ -f /dev/stdout ] || [ -f /dev/stderr ]; then
         trap "stop_pending='${stop_sig%:*} ${stop_sig#*:}'" "${stop_sig%:*}"
     done
     python3 "$EXP/output_files.py" --check-streams "$(basename "$0")" --folders "$REPO/scenes" "$REPO/machines" \
-        "$REPO/timing" "$REPO/docs" "$EXP/results" "$EXP"/*/results -- "$@" || exit 2
+        "$REPO/timing" "$REPO/docs" "$EXP/results" "$EXP"/*/results -- "$@" || exit $?  # 2 refused, 1 out of memory
     for stop_sig in "${STOP_SIGNALS[@]}"; do
         # shellcheck disable=SC2064
         trap "stop_script ${stop_sig%:*} ${stop_sig#*:}" "${stop_sig%:*}"

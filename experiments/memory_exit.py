@@ -43,9 +43,13 @@ def leave_if_out_of_memory(program, error):
 
 def run(program, load_main, argv):
     """load_main()(argv), the tool's imports included; the system refusing memory anywhere in
-    it: refused()."""
+    it: refused(). Its status returned, the stopping signals are held (stop_signals.hold_to_the_end):
+    the work is done, and the interpreter's shutdown may not be cut short by one."""
     try:
-        return load_main()(argv)
+        status = load_main()(argv)
+        from stop_signals import hold_to_the_end
+        hold_to_the_end()
+        return status
     except MemoryError:
         refused(program)
     except Exception as e:  # not a SystemExit: a stop, or an exit after the tool's own message

@@ -34,8 +34,8 @@ import stat
 import sys
 import tempfile
 
-from command_words import (ANIMATION_OPTIONS, NO_RUN_OPTIONS, OUTPUT_OPTIONS, list_values,  # noqa: F401
-                           nonempty, output_options, output_values, refuse_empty_values, refuse_repeated_options,
+from command_words import (ANIMATION_OPTIONS, NO_RUN_OPTIONS, OUTPUT_OPTIONS, help_on_stdout,  # noqa: F401
+                           list_values, nonempty, output_options, output_values, refuse_empty_values, refuse_repeated_options,
                            unusable_option)
 from stop_signals import STOP_SIGNALS, exit_on_signals  # noqa: F401  (the tools take it from here, with the rest)
 
@@ -379,6 +379,16 @@ def out_folder(option, path, inputs=()):
                 raise OutputError("%s '%s': is the %s file %s, an input, not a folder"
                                   % (option, shown(path), what, shown(input_path)))
         raise OutputError("%s '%s': is a file, not a folder" % (option, shown(path)))
+    if not os.path.exists(path):  # to be made: refused now if it cannot be, not at the mkdir
+        above = os.path.abspath(path)
+        while not os.path.exists(above) and above != os.path.dirname(above):
+            if os.path.lexists(above):
+                raise OutputError("%s '%s': '%s' is a link that names no folder (its target is missing, or the "
+                                  "links loop)" % (option, shown(path), shown(above)))
+            above = os.path.dirname(above)
+        if not os.path.isdir(above):
+            raise OutputError("%s '%s': cannot be made: '%s' is a file, not a folder"
+                              % (option, shown(path), shown(above)))
     return os.path.abspath(path)
 
 

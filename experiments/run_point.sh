@@ -16,11 +16,12 @@
 # ...) names one of these files, or that gives --help, --version or --dump-config (-h, -oFILE
 # and --stats=FILE are seen too). T1.json must be a regular file of at most 64 MiB: a FIFO, a
 # device or a folder is refused (exit 2, naming --t1-from) before it is read; its sim_time_s
-# must be a number (else exit 3, as when it has none), and the command may not give --t1 too
+# must be a number above 0 (else exit 3, as when it has none), and the command may not give --t1 too
 # (exit 2). An empty OUT.json or no command after -- is a usage error (exit 2). Standard output
 # or error redirected to a file the command line names (`2>> SCENE`) is refused (exit 2) before
-# anything is written. INT, TERM or HUP sent to this script alone stops the command too (TERM),
-# leaves no temporary and ends with 128 + the signal's number.
+# anything is written. A stopping signal (INT, TERM, HUP, QUIT, USR1, USR2, ALRM) sent to this
+# script alone stops the command too (TERM), leaves no temporary and ends with `run_point: stopped
+# by SIGNAME` and 128 + the signal's number.
 set -uo pipefail
 usage="usage: run_point.sh OUT.json [--t1-from T1.json] -- COMMAND..."
 # Standard output or error redirected into a file of the command line (the scene, a --config) or
@@ -48,9 +49,10 @@ if [ "${1:-}" = --t1-from ]; then
         echo "run_point: --t1-from '$t1json': larger than 64 MiB, not a point's JSON" >&2
         exit 2
     fi
-    # A number only: a string ("0.5ms") would reach torusrt-sim as --t1 0.5ms.
-    if ! t1=$(jq -er '.sim_time_s | numbers' "$t1json" 2>/dev/null); then
-        echo "run_point: $out: no T(1) in $t1json (no sim_time_s number in it; run the phase-1 points first)" >&2
+    # A positive number only: a string ("0.5ms") would reach torusrt-sim as --t1 0.5ms, and 0 (or
+    # 1e-400, which jq reads as 0) as a --t1 every run refuses.
+    if ! t1=$(jq -er '.sim_time_s | numbers | select(. > 0)' "$t1json" 2>/dev/null); then
+        echo "run_point: $out: no T(1) in $t1json (no sim_time_s number above 0 in it; run the phase-1 points first)" >&2
         exit 3
     fi
     t1args=(--t1 "$t1")
@@ -97,23 +99,18 @@ for word in "$@"; do
     case $word in --stats-interval | --stats-interval=*) seriesargs=(--stats-series "$tmpseries") ;; esac
 done
 trap 'rm -f "$tmpjson" "$tmppng" "$tmplog" "$tmplog.full" "$tmpseries"' EXIT
-# The command runs in the background so that INT, TERM or HUP sent to this script alone reach it:
-# the script stops it (TERM: a background command ignores INT), waits for it and leaves no
-# temporary (the EXIT trap), ending with 128 + the signal's number.
-child=""
-stop() {
-    trap '' INT TERM HUP
-    [ -z "$child" ] || { kill -TERM "$child" 2>/dev/null; wait "$child" 2>/dev/null; }
-    exit $((128 + $1))
-}
-trap 'stop 2' INT
-trap 'stop 15' TERM
-trap 'stop 1' HUP
-"$@" "${t1args[@]}" -q -o "$tmppng" --stats "$tmpjson" "${seriesargs[@]}" >"$tmplog" 2>&1 &
-child=$!
-wait "$child"
-rc=$?
-child=""
+# The command runs as in_child's child (experiments/stop_signals.sh), so that a stopping signal
+# sent to this script alone (INT, TERM, HUP, QUIT, USR1, USR2, ALRM) reaches it: the script stops
+# it (TERM: a background command ignores INT), waits for it, says so and leaves no temporary (the
+# EXIT trap), ending with 128 + the signal's number.
+STOP_PROGRAM=run_point STOP_NOTE=""
+# shellcheck source=experiments/stop_signals.sh
+source "$(dirname "${BASH_SOURCE[0]}")/stop_signals.sh"
+# into_log COMMAND...: COMMAND in place of the background shell, its messages into the log (the
+# script's own message on a signal still goes to its standard error).
+into_log() { exec "$@" >"$tmplog" 2>&1; }
+rc=0
+in_child into_log "$@" "${t1args[@]}" -q -o "$tmppng" --stats "$tmpjson" "${seriesargs[@]}" || rc=$?
 if [ $rc -eq 0 ] && ! jq -e '.sim_time_s' "$tmpjson" >/dev/null 2>&1; then
     echo "torusrt-sim exited 0 but wrote no valid statistics" >>"$tmplog"
     rc=4

@@ -32,6 +32,7 @@ def exit_on_signals(program=None, even_ignored=()):
     def leave(signum, frame):
         for sig in STOP_SIGNALS:
             signal.signal(getattr(signal, sig), ignore)
+        hold_to_the_end()  # a second one, also once the interpreter restores the default actions
         with contextlib.suppress(OSError):
             os.write(2, ("%s: stopped by %s\n" % (name, signal.Signals(signum).name)).encode(errors="surrogateescape"))
         raise Stopped(128 + signum)
@@ -39,6 +40,13 @@ def exit_on_signals(program=None, even_ignored=()):
         number = getattr(signal, sig)
         if signal.getsignal(number) != signal.SIG_IGN or sig in even_ignored:
             signal.signal(number, leave)
+
+
+def hold_to_the_end():
+    """Blocks the stopping signals for the rest of the process: once the tool's work is done (or
+    its stop has begun), a signal can no longer end it by the default action that the interpreter
+    restores while it shuts down (killed, no message, the status not the tool's)."""
+    signal.pthread_sigmask(signal.SIG_BLOCK, [getattr(signal, sig) for sig in STOP_SIGNALS])
 
 
 def _no_signal_pending():

@@ -10,9 +10,9 @@
  *   torusrt-genscenes --list            print every name with a one-line description
  *   torusrt-genscenes --help            print this usage
  * Returns 0 on success, 1 when a file cannot be written, 2 on a usage error (unknown name,
- * missing OUTDIR). Each file is written to a new temporary .NAME.nff.XXXXXX beside it (mkstemp:
- * never a file of the user's, never through a link) and renamed, so a failed run never leaves a
- * partial NAME.nff behind; a NAME.nff that is a link has its target written.
+ * missing OUTDIR, an OUTDIR that is no folder). Each file is written to a new temporary .NAME.nff.XXXXXX beside it
+ * (mkstemp: never a file of the user's, never through a link) and renamed, so a failed run never leaves a partial
+ * NAME.nff behind; a NAME.nff that is a link has its target written.
  *
  * Output is byte-reproducible: no clock, no rand(); the one pseudo-random placement uses a
  * fixed-seed 64-bit LCG. Every coordinate computed with libm is rounded to 9 significant
@@ -20,8 +20,10 @@
  * reads back as the same double (up to "%.17g"), so the scaled scenes hold the exact products
  * of the base numbers and their factor.
  *
- * Standalone C11: libc and libm only. This file holds the table of scenes, the command line
- * and the file writing; the rest is in gen/:
+ * C11, libc and libm, and the stopping signals' handler of the other executables
+ * (support/signal_cleanup_c.h: a stopping signal removes the temporary being written, says
+ * "torusrt-genscenes: stopped by SIGNAME" and ends with 128 + N). This file holds the table of
+ * scenes, the command line and the file writing; the rest is in gen/:
  *   gen/scene.{h,c}         the scene in memory and the calls the builders use, framing
  *   gen/nff_writer.{h,c}    rounding (q9), the LCG, round-trip numbers, writing NFF text
  *   gen/builders.h          one builder per scene, declared for the table below
@@ -42,6 +44,7 @@
 #include "gen/builders.h"
 #include "gen/nff_writer.h"
 #include "gen/scene.h"
+#include "signal_cleanup_c.h"
 
 /* ---------------------------------------------------------------- table and main */
 
@@ -174,7 +177,8 @@ static int write_file(const char *outdir, const char *name, const char *ext, voi
     size_t base_len = strlen(path + dir_len), room = NAME_MAX - 8;
     if (base_len > room) base_len = room;
     snprintf(tmp, len, "%.*s.%.*s.XXXXXX", (int)dir_len, path, (int)base_len, path + dir_len);
-    int fd = mkstemp(tmp);
+    size_t slot = 0;
+    int fd = torusrt_mkstemp_removed_on_signal(tmp, &slot);
     if (fd < 0) {
         fprintf(stderr, "torusrt-genscenes: cannot write %s: ", shown(path));
         perror(NULL);
@@ -186,6 +190,7 @@ static int write_file(const char *outdir, const char *name, const char *ext, voi
         perror(NULL);
         close(fd);
         remove(tmp);
+        torusrt_forget_on_signal(slot);
         goto done;
     }
     write(f, ctx);
@@ -193,14 +198,17 @@ static int write_file(const char *outdir, const char *name, const char *ext, voi
     if (fclose(f) != 0 || bad) {
         fprintf(stderr, "torusrt-genscenes: error writing %s\n", shown(tmp));
         remove(tmp);
+        torusrt_forget_on_signal(slot);
         goto done;
     }
     if (rename(tmp, path) != 0) {
         fprintf(stderr, "torusrt-genscenes: cannot rename %s to %s: ", shown(tmp), shown(path));
         perror(NULL);
         remove(tmp);
+        torusrt_forget_on_signal(slot);
         goto done;
     }
+    torusrt_forget_on_signal(slot); /* after the rename: a signal before it removes the temporary */
     rc = 0;
 done:
     free(path);
@@ -326,8 +334,11 @@ static int variant_setting(const char *setting, paper_variant *v)
         double x = strtod(value, &end);
         if (!plain_decimal(value) || end == value || *end || !(x >= numbers[i].lo && x <= numbers[i].hi) ||
             (numbers[i].whole && strchr(value, '.'))) {
-            fprintf(stderr, "torusrt-genscenes: --variant %s '%s': expected a%s number from %g to %g\n",
-                    numbers[i].name, shown(value), numbers[i].whole ? " whole" : "", numbers[i].lo, numbers[i].hi);
+            fprintf(stderr, "torusrt-genscenes: --variant %s '%s': expected a%s number from %g to %g%s\n",
+                    numbers[i].name, shown(value), numbers[i].whole ? " whole" : "", numbers[i].lo, numbers[i].hi,
+                    value[0] == '0' && value[1] >= '0' && value[1] <= '9'
+                        ? " (decimal only: a leading zero could be read as octal)"
+                        : "");
             return 2;
         }
         switch (i) {
@@ -484,6 +495,7 @@ static int stream_named(int argc, char **argv)
 
 int main(int argc, char **argv)
 {
+    torusrt_stop_on_signals("torusrt-genscenes"); /* a stopping signal: message, 128 + N, no temporary */
     if (stream_named(argc, argv)) return 2;
     if (argc < 2) {
         usage(stderr);
@@ -516,6 +528,14 @@ int main(int argc, char **argv)
     const char *outdir = argv[1];
     if (!*outdir) { /* not "the current folder": '' + "/NAME.nff" is the root folder */
         fprintf(stderr, "torusrt-genscenes: OUTDIR: an empty value (name a folder, e.g. '.')\n");
+        return 2;
+    }
+    struct stat dir; /* a folder that is not there: a usage error, as a missing OUTDIR is */
+    const char *why = NULL;
+    if (stat(outdir, &dir) != 0) why = errno == ENOENT ? "no such folder (make it first)" : strerror(errno);
+    else if (!S_ISDIR(dir.st_mode)) why = "not a folder";
+    if (why) {
+        fprintf(stderr, "torusrt-genscenes: OUTDIR '%s': %s\n", shown(outdir), why);
         return 2;
     }
     for (int a = 2; a < argc; ++a) {

@@ -75,12 +75,14 @@ static rt_status read_header(words *w, const char *path, const int dims[3], int 
         return fail(msg, msg_len, path, w->line, "expected the header 'torusrt-map 1 NX NY NZ NODES', found", w->word);
     long v;
     if (!next_word(w) || !word_int(w->word, 1, 2, version))
-        return fail(msg, msg_len, path, w->line, "unsupported map format version (expected 1 or 2)", NULL);
+        return fail(msg, msg_len, path, w->line,
+                    "unsupported map format version (expected 1 or 2, decimal without a leading zero)", NULL);
     const long want[4] = {dims[0], dims[1], dims[2], nodes};
     const char *what[4] = {"NX", "NY", "NZ", "NODES"};
     for (int i = 0; i < 4; i++) {
         if (!next_word(w) || !word_int(w->word, 1, 1L << 30, &v))
-            return fail(msg, msg_len, path, w->line, "header: expected a positive number for", what[i]);
+            return fail(msg, msg_len, path, w->line,
+                        "header: expected a positive decimal number (no sign, no leading zero) for", what[i]);
         if (v != want[i]) {
             char why[160];
             snprintf(why, sizeof why, "header %s = %ld, but the run has %ld (cells %dx%dx%d, %d nodes)", what[i], v,

@@ -210,7 +210,10 @@ std::array<unsigned, 2> parse_size(const std::string &option, const std::string 
         return {static_cast<unsigned>(parse_integer(option, parts[0], 1, 16384)),
                 static_cast<unsigned>(parse_integer(option, parts[1], 1, 16384))};
     } catch (const UserError &) {
-        bad(option, text, "expected WIDTHxHEIGHT, each side a decimal number 1 to 16384 (e.g. 144x144)");
+        std::string why = not_decimal(parts[0]).empty() ? not_decimal(parts[1]) : not_decimal(parts[0]);
+        bad(option, text,
+            "expected WIDTHxHEIGHT, each side a decimal number 1 to 16384 (e.g. 144x144)" +
+                (why.empty() ? std::string() : ": " + why));
     }
 }
 

@@ -13,6 +13,7 @@
 #include <tuple>
 #include <unistd.h>
 
+#include "option_parsing.h"
 #include "rt_png.h"
 #include "signal_cleanup.h"
 #include "user_error.h"
@@ -119,7 +120,7 @@ void check_name_length(const std::string &option, const std::string &path, const
     long name_max = pathconf(dir.c_str(), _PC_NAME_MAX);
     if (name_max <= 0) name_max = NAME_MAX;
     size_t base = base_of(target).size();
-    std::string what = option + " '" + path + "': ";
+    std::string what = option + " '" + shown_text(path) + "': ";  // a path of 4 KB shown cut
     if (base > static_cast<size_t>(name_max))
         throw UserError(what + "the file name is too long (" + std::to_string(base) + " bytes; the file system takes " +
                             std::to_string(name_max) + ")",
@@ -265,6 +266,8 @@ OutputSet::Id OutputSet::add(const std::string &option, const std::string &path)
             if (stat(e.target.c_str(), &tt) != 0 || tt.st_dev != st.st_dev || tt.st_ino != st.st_ino) {
                 e.target = path;
                 e.special = true;
+            } else {  // replaced through a temporary beside it: refused now if that cannot be made
+                check_name_length(option, path, e.target, folder_of(e.target));
             }
         }
     } else {

@@ -32,7 +32,9 @@ LoadedScene load_scene(const std::string &path, unsigned width, unsigned height,
     char msg[RT_MSG_LEN] = "";
     rt_scene *raw = nullptr;
     bool q = quiet;
-    if (rt_nff_load(path.c_str(), &raw, msg, sizeof msg, print_warning, &q) != RT_OK) throw UserError(msg);
+    rt_status loaded = rt_nff_load(path.c_str(), &raw, msg, sizeof msg, print_warning, &q);
+    if (loaded == RT_ERR_NOMEM) throw std::bad_alloc();  // cli_main's message: the stage and --memory-budget
+    if (loaded != RT_OK) throw UserError(msg);
     LoadedScene out;
     out.scene.reset(raw);
     if (width || height) {

@@ -3,7 +3,11 @@
 // so the handler never sees it half changed.
 #include "signal_cleanup.h"
 
+#include "signal_cleanup_c.h"
+
 #include <atomic>
+#include <cerrno>
+#include <cstdlib>
 #include <csignal>
 #include <cstring>
 #include <pthread.h>
@@ -132,3 +136,20 @@ void forget_on_signal(size_t slot)
 }
 
 }  // namespace torusrt
+
+// The C interface (signal_cleanup_c.h).
+extern "C" void torusrt_stop_on_signals(const char *program) { torusrt::stop_on_signals(program); }
+
+extern "C" int torusrt_mkstemp_removed_on_signal(char *tmpl, size_t *slot)
+{
+    torusrt::SignalsBlocked blocked;  // a signal between mkstemp and the registration: handled after it
+    int fd = mkstemp(tmpl);
+    if (fd >= 0) {
+        int saved = errno;
+        *slot = torusrt::remove_on_signal(tmpl);
+        errno = saved;
+    }
+    return fd;
+}
+
+extern "C" void torusrt_forget_on_signal(size_t slot) { torusrt::forget_on_signal(slot); }

@@ -146,6 +146,8 @@ void stage_outputs(const RenderOptions &opt, size_t frames, RenderOutputs &outs)
     outs.set.check();
     if (outs.set.writes_stream(1) && !opt.common.quiet)  // the summary would follow the file on the stream
         throw UserError("an output on standard output needs -q: the summary is written there too", 2);
+    if (outs.set.writes_stream(2) && !opt.common.quiet)  // warnings and notes would come before the file on the stream
+        throw UserError("an output on standard error needs -q: warnings and notes are written there too", 2);
 }
 
 // An animation's frame record in memory, its staged file with its signal-cleanup entry, and with

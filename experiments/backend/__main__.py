@@ -3,8 +3,8 @@ import os
 import sys
 
 try:  # first: under a small ulimit -v loading a module is what fails, this one too (memory_exit.py)
-    if __package__ in (None, ""):
-        sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+    # experiments/ on the path however the tool is started (a file, -m report, -m experiments.report)
+    sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
     import memory_exit
 except (MemoryError, OSError, ImportError):
     os.write(2, b"experiments/backend: out of memory: the system refused the memory the tool "
@@ -15,6 +15,12 @@ try:
 except Exception as e:
     memory_exit.leave_if_out_of_memory("experiments/backend", e)
     raise
+try:  # OpenSSL's hashes, which hashlib would otherwise report missing in tracebacks of its own
+    import _hashlib  # noqa: F401
+except Exception as e:
+    memory_exit.leave_if_out_of_memory("experiments/backend", e)
+    if not isinstance(e, ImportError):  # missing for another reason: hashlib's own hashes serve
+        raise
 
 # before the imports below: a signal there is named too; Ctrl-C even where a shell started the
 # backend in the background (a sweep does), ignoring it

@@ -9,8 +9,8 @@ import time
 import decimal_number
 from memory_exit import leave_if_out_of_memory
 from output_files import (OutputError, OutputSet, WriteError, append_text, exit_on_signals, finish_stdout,  # noqa: E501
-                          input_file, named_stdout, nonempty, os_message, out_folder, refuse_empty_values,
-                          refuse_repeated_options, write_lines)
+                          help_on_stdout, input_file, named_stdout, nonempty, os_message, out_folder,
+                          refuse_empty_values, refuse_repeated_options, write_lines)
 from stream_checks import check_streams
 
 from . import local, points, slurm, task
@@ -178,6 +178,7 @@ def main(argv):
     p.set_defaults(run=lambda a: task.run(a.todo, a.per_task, a.rcdir))
     refuse_empty_values(parser)
     refuse_repeated_options(parser)
+    help_on_stdout(parser)  # --help into a full disk or a closed standard output: named, exit 1
     args = parser.parse_args(argv)
     # Ctrl-C even where a shell started the backend in the background (a sweep does), ignoring it
     exit_on_signals("experiments/backend", even_ignored=("SIGINT", "SIGQUIT"))

@@ -7,7 +7,7 @@ import subprocess
 import sys
 
 from memory_exit import leave_if_out_of_memory
-from output_files import (OutputError, OutputSet, exit_on_signals, finish_stdout, list_values,
+from output_files import (OutputError, OutputSet, exit_on_signals, finish_stdout, help_on_stdout, list_values,
                           named_stdout, nonempty, os_message, out_folder, read_text, refuse_empty_values,
                           refuse_repeated_options, shown)
 from stop_signals import run_child
@@ -145,7 +145,10 @@ def sweep_collect(args):
 
 def compare(args):
     from . import compare as comparelib
-    columns = list_values("--columns", args.columns) if args.columns else None
+    try:
+        columns = list_values("--columns", args.columns) if args.columns else None
+    except ValueError as e:  # the command line's fault, as an empty --columns is (exit 2)
+        raise OutputError(str(e)) from None
     rows, diffs = comparelib.compare(os.path.abspath(args.old), os.path.abspath(args.new), columns)
     for line in diffs:
         print(line)
@@ -192,6 +195,10 @@ def machine(args):
     except RecursionError:  # a hand-made file nested thousands deep
         raise ValueError("%s: not a JSON report (nested too deeply)" % shown(args.report)) from None
     if not args.compare:
+        try:
+            mf.unknown_bytes(pairs)
+        except ValueError as e:
+            raise ValueError("%s: %s" % (shown(args.report), e)) from None
         sys.stdout.write(mf.toml_text(pairs, tables))
         return 0
     # The file's syntax first (its own lines named), then its machine as a run reads it.
@@ -269,6 +276,7 @@ def main(argv):
     fidelity.add_commands(sub)
     refuse_empty_values(parser)  # '' is never "the default": --doc '' would rewrite docs/
     refuse_repeated_options(parser)
+    help_on_stdout(parser)  # --help into a full disk or a closed standard output: named, exit 1
     args = parser.parse_args(argv)
     prog = "sweep" if args.command.startswith("sweep-") else "experiments/report"  # the command the user ran
     exit_on_signals(prog)

@@ -82,7 +82,8 @@ def point_row(res, point):
     """The point's fields by name (all empty when it has no report)."""
     row = dict(point, processors=point["n"])  # n: every processor of the run (16 m for clusters)
     path, base = point["json"], os.path.splitext(point["json"])[0]
-    if os.path.exists(path) and os.path.getsize(path) > 0:
+    # A FIFO or a device is read_text's to refuse, naming it; not a point without a report.
+    if os.path.exists(path) and (not os.path.isfile(path) or os.path.getsize(path) > 0):
         try:
             report = json.loads(read_text(path, "point JSON"))
         except ValueError as e:
@@ -95,7 +96,7 @@ def point_row(res, point):
         for name, paths in FIELDS.items():
             row[name] = next((json_text(v) for v in (lookup(report, p) for p in paths) if v is not None), "")
         ref = os.path.join(res, "t1", point["scene"] + ".png")
-        row["image_identical"] = "yes" if os.path.exists(ref) and _same_file(ref, base + ".png") else "no"
+        row["image_identical"] = "yes" if _same_file(ref, base + ".png") else "no"
     else:
         row["status"] = "failed" if os.path.exists(base + ".log") and os.path.getsize(base + ".log") else "missing"
         row.update({name: "" for name in FIELDS}, image_identical="")
@@ -103,7 +104,7 @@ def point_row(res, point):
 
 
 def _same_file(a, b):
-    if not os.path.exists(b):
+    if not os.path.isfile(a) or not os.path.isfile(b):  # a FIFO would never open, a device never end
         return False
     with open(a, "rb") as fa, open(b, "rb") as fb:
         return fa.read() == fb.read()

@@ -17,9 +17,24 @@ class Table:
     def load(cls, path):
         """The table of the CSV file PATH; OSError or ValueError naming PATH when it is not a
         regular file or not UTF-8 text, and ValueError naming PATH and the line when the header
-        names a column twice or a row has more or fewer fields than the header."""
-        reader = csv.DictReader(io.StringIO(read_text(path, "CSV"), newline=""))
+        names a column twice, a row has more or fewer fields than the header, a quote is left
+        open or a NUL byte is there."""
+        text = read_text(path, "CSV")
+        if "\0" in text:  # binary data, not a table: a value would hold the NUL unseen
+            raise ValueError("%s: line %d: a NUL byte (binary data, not a CSV table)"
+                             % (shown(path), text.count("\n", 0, text.index("\0")) + 1))
+        # strict: a quote left open would swallow the lines after it into one value
+        reader = csv.DictReader(io.StringIO(text, newline=""), strict=True)
+        read = [0]  # the lines read by the last whole row
+        try:
+            return cls._rows(reader, path, read)
+        except csv.Error as e:
+            raise ValueError("%s: line %d: %s (a quote left open?)" % (shown(path), read[0] + 1, e)) from None
+
+    @classmethod
+    def _rows(cls, reader, path, read):
         columns = list(reader.fieldnames or [])
+        read[0] = reader.line_num
         for i, name in enumerate(columns):  # the last of two would silently win
             if name in columns[:i]:
                 raise ValueError("%s: line 1: the column '%s' is named twice" % (shown(path), shown(name)))
@@ -33,6 +48,7 @@ class Table:
                 raise ValueError("%s: line %d: %d fields, the header has %d"
                                  % (shown(path), reader.line_num, given, len(columns)))
             rows.append(row)
+            read[0] = reader.line_num
         return cls(rows, columns, path)
 
     def where(self, ok_only=True, **match):

@@ -3,6 +3,7 @@ commands study.sh calls between its stages (the candidate lists, each stage's ch
 identity's check, the fitted machine's files) and the claims' roles and three counts. The scores
 are fidelity_score's, the stages' tables fidelity_stages', the page fidelity_page's."""
 import os
+import re
 import sys
 
 import decimal_number
@@ -188,6 +189,71 @@ MACHINES = {
 }
 
 
+def _checked(convert, name):
+    """An argparse type: CONVERT(text), its ValueError as argparse's refusal (exit 2, the option
+    named, before anything is read or written); the text itself is kept."""
+    def check(text):
+        try:
+            convert(text)
+        except ValueError as e:
+            import argparse
+            raise argparse.ArgumentTypeError(str(e)) from None
+        return text
+    check.__name__ = name
+    return check
+
+
+def _time_us(text):
+    """A timing value: the strict decimal syntax, 0 to TIMING_MAX us (a timing file's range)."""
+    value = decimal_number.real(text)
+    if value < 0 or value > TIMING_MAX:
+        raise ValueError("'%s' is not a time in microseconds from 0 to %d" % (text, TIMING_MAX))
+
+
+def _bytes_in(low, high):
+    """A byte count of the memory accounting: a whole number from LOW to HIGH (docs/cli.md)."""
+    def check(text):
+        value = decimal_number.whole(text)
+        if not low <= value <= high:
+            raise ValueError("'%s' is not a number of bytes from %d to %d" % (text, low, high))
+    return check
+
+
+def _one_of(values):
+    def check(text):
+        if text not in values:
+            raise ValueError("'%s' is not one of %s" % (text, ", ".join(values)))
+    return check
+
+
+def _shape(text):
+    """An --ips value: up to three sizes, each a whole number of 1 or more (16, 4x4, 4x2x2)."""
+    sizes = text.split("x")
+    if len(sizes) > 3 or not all(re.fullmatch(r"[1-9][0-9]*", s) for s in sizes):
+        raise ValueError("'%s' is not a machine shape (up to three sizes of 1 or more: 16, 4x4, 4x2x2)" % text)
+
+
+def _table_name(text):
+    """An argparse type: the name of a table in the results folder, never a path (it is read as
+    RESULTS/NAME)."""
+    if "/" in text or text in ("", ".", ".."):
+        import argparse
+        raise argparse.ArgumentTypeError("'%s': the name of a table in the results folder (stage2b.tsv), not a path"
+                                         % text)
+    return text
+
+
+# The options of `fidelity machines`, each checked as a run would check it, so that no machine or
+# timing file the command writes is refused by the runs that read it.
+MACHINE_OPTIONS = (
+    ("rule", _checked(_one_of(st.RULES), "rule")), ("bus", _checked(_time_us, "time")),
+    ("memory", _checked(_time_us, "time")), ("shape", _checked(_shape, "shape")),
+    ("handover", _checked(_one_of([str(h) for h in fs.HANDOVER_KEYS]), "handover")),
+    ("cell-step", _checked(_time_us, "time")),
+    ("header", _checked(_bytes_in(0, 4096), "bytes")), ("entry", _checked(_bytes_in(1, 4096), "bytes")),
+    ("record", _checked(_bytes_in(0, 4096), "bytes")))
+
+
 def machines(args):
     """OUT/timing/fitted.timing (every key) and OUT/paper-*.toml: the fitted reading."""
     from . import machine_file as mf
@@ -255,7 +321,8 @@ def add_commands(sub):
         q.add_argument("results")
         q.add_argument("--smoke", action="store_true")
         if table:
-            q.add_argument("--table", default=table)
+            q.add_argument("--table", default=table, type=_table_name,
+                           help="the stage's table in RESULTS (its name, default %s)" % table)
         q.set_defaults(run=fn)
     q = fsub.add_parser("allowed")
     q.add_argument("cell_step")
@@ -266,8 +333,8 @@ def add_commands(sub):
     q = fsub.add_parser("machines")
     q.add_argument("results")
     q.add_argument("out")
-    for opt in ("rule", "bus", "memory", "shape", "handover", "cell-step", "header", "entry", "record"):
-        q.add_argument("--" + opt, required=True)
+    for opt, check in MACHINE_OPTIONS:
+        q.add_argument("--" + opt, required=True, type=check)
     q.add_argument("--sim", required=True, help="the torusrt-sim whose --dump-config gives each key's table")
     q.set_defaults(run=machines)
     q = fsub.add_parser("means-lists", help="the cluster points once per bus_arbitration value")

@@ -50,6 +50,10 @@ def parse_spec(spec):
 
 
 def rows(res, name):
+    """The tab-separated rows of the table NAME in the results folder RES ([] when there is no
+    such table); ValueError when RES is there but no folder (a file, a device)."""
+    if os.path.exists(res) and not os.path.isdir(res):
+        raise ValueError("%s: not a results folder (a file or a device, not a folder)" % shown(res))
     path = os.path.join(res, name)
     if not os.path.exists(path):
         return []
@@ -108,6 +112,19 @@ def stage1(res, smoke=False):
     ls = lists(smoke)
     units = units_table(res)
     zero, measured = t1_table(res)
+    for table, runs in (("units.tsv", units), ("t1.tsv", zero)):
+        if not runs:
+            raise ValueError("%s: no runs (the stage has not run)" % shown(os.path.join(res, table)))
+    try:
+        return _stage1(res, ls, units, zero, measured)
+    except KeyError as e:  # a candidate the tables lack: the stage did not finish
+        raise ValueError("%s: no run of %s (the stage has not finished)" % (
+            shown(os.path.join(res, "t1.tsv" if len(e.args[0]) == 2 else "units.tsv")),
+            " ".join(map(str, e.args[0])))) from None
+
+
+def _stage1(res, ls, units, zero, measured):
+    """stage1()'s score over tables that hold runs (KeyError: a candidate they lack)."""
     every_c = os.path.exists(os.path.join(res, "identity-failed"))
     s1, s2 = specs(ls["IMAGE1"]), specs(ls["IMAGE2"])
     t1 = {("image1", s, c): t1_of(zero, measured, "image1", s, c, every_c) for s in s1 for c in fs.CELL_STEP_COSTS}

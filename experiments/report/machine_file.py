@@ -14,6 +14,11 @@ import tomllib
 from stop_signals import run_child
 
 
+# A machine option's name as a machine file holds it: a TOML bare key (torusrt-sim's option names
+# are lower-case words joined by '-'); a table's name too.
+OPTION_NAME = re.compile(r"[A-Za-z0-9_-]+")
+
+
 def from_report(report):
     """The (key, value) pairs of a report's machine, in --dump-config's order (config.option_order;
     keys it does not list after them, in the report's order)."""
@@ -29,11 +34,19 @@ def from_report(report):
     rank = {key: i for i, key in enumerate(order)}
     keys = sorted(options, key=lambda k: rank.get(k, len(order)))
     for key in keys:  # torusrt-sim writes every value as a string, every key in option_order
+        if not OPTION_NAME.fullmatch(key):
+            raise ValueError("config.options: %s: not an option name (letters, digits, '-' and '_'), "
+                             "which a machine file cannot hold as a key" % json.dumps(key))
         if order and key not in rank:
             raise ValueError("config.options.%s: not a machine option (not in config.option_order)" % key)
         if not isinstance(options[key], str):
             raise ValueError("config.options.%s: %s, not a value torusrt-sim writes (a string)"
                              % (key, json.dumps(options[key])))
+        try:
+            options[key].encode()
+        except UnicodeEncodeError:  # "\ud800" in the JSON: a lone surrogate, no text a file can hold
+            raise ValueError("config.options.%s: %s holds a lone surrogate, not text a machine file can hold"
+                             % (key, json.dumps(options[key])[:200])) from None
     return [(str(k), options[k]) for k in keys]
 
 
@@ -58,7 +71,22 @@ def tables_from_report(report):
     tables = config.get("option_tables", {})
     if not isinstance(tables, dict) or not all(isinstance(t, str) for t in tables.values()):
         raise ValueError("config.option_tables: not an object of table names")
+    for key, table in tables.items():
+        if not OPTION_NAME.fullmatch(table):
+            raise ValueError("config.option_tables.%s: %s: not a table name (letters, digits, '-' and '_')"
+                             % (key, json.dumps(table)))
     return tables
+
+
+def unknown_bytes(pairs):
+    """ValueError naming the first key whose value holds U+FFFD: the report writes it for a byte
+    of the run's value that is not UTF-8, so the value the run was given cannot be known, and a
+    machine file may hold UTF-8 only (torusrt-sim --dump-config refuses such a value alike)."""
+    for key, value in pairs:
+        if "\ufffd" in value:
+            raise ValueError("config.options.%s: %s holds U+FFFD, which the report writes for a byte that is not "
+                             "UTF-8: the run's value is not known, and a machine file holds UTF-8 only"
+                             % (key, json.dumps(value)[:200]))
 
 
 def toml_text(pairs, tables=None):

@@ -3,7 +3,7 @@ import csv
 import json
 import os
 
-from output_files import atomic
+from output_files import atomic, input_file
 
 from .csvdata import Table
 
@@ -147,6 +147,8 @@ class Results:
         self.profile = os.path.basename(res)
         for name in FIGURES:
             path = os.path.join(res, name + ".csv")
+            if os.path.exists(path):
+                input_file(path, "figure table")  # a FIFO or a device: refused naming it
             if not os.path.exists(path) or os.path.getsize(path) == 0:
                 raise FileNotFoundError("%s missing (run the sweep's collect step first)" % path)
         self.f56, self.f7, self.f8, self.f10 = (Table.load(os.path.join(res, n + ".csv")) for n in FIGURES)

@@ -12,6 +12,7 @@ import shlex
 import subprocess
 import sys
 
+import decimal_number
 from output_files import (ANIMATION_OPTIONS, NO_RUN_OPTIONS, OUTPUT_OPTIONS, OutputSet, atomic, list_values,
                           named_files, output_options, read_text, unusable_option, write_lines, write_text)
 from stop_signals import run_child
@@ -136,9 +137,11 @@ def file_hash(path, cache):
 
 def identity(sim, args, cache):
     """What makes a point: the executable's and every input file's content (the scene, and any
-    argument naming a file) and the whole command line but its output files. Two points with
-    the same identity report the same figures."""
-    made = {"executable": file_hash(sim, cache), "command": args,
+    argument naming a file) and the whole command line but its output files, the executable's
+    path included, as the backend's record holds it (so that a point the sweep counts as done is
+    one the backend does not run again). Two points with the same identity report the same
+    figures."""
+    made = {"executable": file_hash(sim, cache), "command": [sim] + list(args),
             "inputs": [[option, file_hash(path, cache)] for option, path in named_files(args)]}
     return hashlib.sha256(json.dumps(made, sort_keys=True).encode()).hexdigest()
 
@@ -188,6 +191,18 @@ def _read_report(path):
     if missing:
         raise ValueError("%s: not a JSON report (no %s)" % (path, ", ".join(missing)))
     return report
+
+
+# The longest file name a point's NAME makes (its series' temporary, HOST the machine's short
+# name, then a process number of up to 7 digits), and the file systems' limit on one name.
+LONGEST_SUFFIX = ".series.csv.tmp.%s.4194304"
+NAME_MAX = 255
+
+
+def _host():
+    """The short host name the point's shell puts in its temporaries' names (hostname -s)."""
+    import socket
+    return socket.gethostname().split(".")[0] or "host"
 
 
 def point_files(out, name):
@@ -264,8 +279,14 @@ def plan(out, sim, scene, axes, fixed, listing, columns=(), y=DEFAULT_COLUMNS[0]
     combos = list(itertools.product(*(v for _, v in axes)))
     check_fixed(fixed)
     seen = {}
+    longest = NAME_MAX - len(LONGEST_SUFFIX % _host())
     for values in combos:
         name = point_name(names, values)
+        if len(name.encode()) > longest:
+            raise ValueError("--axis: the point %s: its name is %d bytes, and its files' (NAME%s) may have %d at "
+                             "most, the file system's %d less the suffix; shorten the axis values (a --config "
+                             "machine file's name, say); nothing was written"
+                             % (name[:120] + "...", len(name.encode()), LONGEST_SUFFIX % "HOST", longest, NAME_MAX))
         if name in seen:
             raise ValueError("--axis: the points %s and %s have one name, %s (a point's name keeps letters, "
                              "digits and dots of its values); nothing was written"
@@ -443,11 +464,10 @@ def spans_decade(values):
 
 
 def numeric(values):
-    try:
-        [float(v) for v in values]
-        return True
-    except ValueError:
-        return False
+    """Whether every value is a number of the executables' strict syntax (decimal_number): `1_0`,
+    `inf`, `nan` or a digit of another script are named values, one tick each, never numbers
+    gnuplot would be given bare."""
+    return all(not decimal_number.fault(v) for v in values)
 
 
 def plot(out, names, points, flat, y, facts):

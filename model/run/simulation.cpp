@@ -70,6 +70,8 @@ void stage_outputs(SimRequest &r, StagedOutputs &out)
     out.set.check();
     if (out.set.writes_stream(1) && !config.quiet)  // the summary would follow the file on the stream
         throw UserError("an output on standard output needs -q: the summary is written there too", 2);
+    if (out.set.writes_stream(2) && !config.quiet)  // warnings and notes would come before the file on the stream
+        throw UserError("an output on standard error needs -q: warnings and notes are written there too", 2);
     config.stderr_is_output = out.set.writes_stream(2);
     if (vcd) config.vcd_write_path = out.set.staged(*vcd);
     if (gtkw) config.gtkw_write_path = out.set.staged(*gtkw);

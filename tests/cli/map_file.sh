@@ -46,6 +46,8 @@ printf 'torusrt-map 1 8 8 8 2\n0 1 0\n' | bad short "short.map:3: only 3 node id
 echo "torusrt-map 1 24 24 24 2" | bad cells "cells.map:1: header NX = 24, but the run has 8"
 echo "torusrt-map 1 8 8 8 4" | bad nodes "nodes.map:1: header NODES = 4, but the run has 2"
 echo "0 1 0 1" | bad header "header.map:1: expected the header"
+echo "torusrt-map 01 8 8 8 2" | bad version "version.map:1: unsupported map format version (expected 1 or 2, decimal"
+echo "torusrt-map 1 08 8 8 2" | bad zeros "zeros.map:1: header: expected a positive decimal number (no sign, no leading zero) for 'NX'"
 : | bad empty "empty.map:1: empty map file"
 rm -f "$TMP/missing.map"
 

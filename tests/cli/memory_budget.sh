@@ -69,14 +69,16 @@ for map in cost scatter; do
         --ips 4 --map $map --pilot-size 8000x8000 --memory-budget 100M
     check "pilot-$map: the message names --map $map" grep -q -- "--map $map: memory budget" "$TMP/pilot-$map.stderr"
 done
-# Without a budget, a pilot the address space cannot hold fails with its mapping's name.
+# Without a budget, a pilot the address space cannot hold fails with the run's out-of-memory
+# message, naming the pilot of its mapping and --memory-budget.
 for map in cost scatter; do
     (ulimit -v 800000 && "$BUILD/torusrt-sim" "$paper1" --size 8x8 --t1 1 --ips 4 --map $map \
         --pilot-size 8000x8000 --memory-budget 0 -q -o "$TMP/nomem.png" >/dev/null 2>"$TMP/nomem-$map.stderr")
     rc=$?
     check "pilot-$map without a budget: exit 1 (got $rc)" [ $rc = 1 ]
     check "pilot-$map without a budget: names --map $map ($(head -c 200 "$TMP/nomem-$map.stderr"))" \
-        grep -q -- "^torusrt-sim: --map $map: pilot run: out of memory" "$TMP/nomem-$map.stderr"
+        grep -q -- "^torusrt-sim: out of memory while running the pilot of --map $map: .*--memory-budget" \
+        "$TMP/nomem-$map.stderr"
 done
 expect_over_limited cells-cost torusrt-sim "cells" "$paper1" --size 4x4 --t1 1 --ips 4 --map cost --cells 256 \
     --memory-budget 300M

@@ -39,10 +39,12 @@ fi
 check "--progress-every 0: no progress" test -z "$(grep progress "$TMP/b.err")"
 "${sim[@]}" -o "$TMP/q.png" --progress-every 20ms -q > /dev/null 2> "$TMP/q.err" < /dev/null || fail "quiet run"
 check "-q: nothing on standard error" test ! -s "$TMP/q.err"
-"${sim[@]}" -o "$TMP/s.png" --progress-every 20ms --stats /dev/stderr > /dev/null 2> "$TMP/s.err" < /dev/null ||
+"${sim[@]}" -o "$TMP/s.png" --progress-every 20ms --stats /dev/stderr -q > /dev/null 2> "$TMP/s.err" < /dev/null ||
     fail "run with its statistics on standard error"
 check "standard error an output: no progress in it" test -z "$(grep 'progress:' "$TMP/s.err")"
 check "standard error an output: the JSON alone" jq -e .sim_time_s "$TMP/s.err" > /dev/null
+"${sim[@]}" -o "$TMP/s.png" --progress-every 20ms --stats /dev/stderr > /dev/null 2> "$TMP/s.err" < /dev/null
+check "standard error an output without -q: refused (exit $?)" grep -q "an output on standard error needs -q" "$TMP/s.err"
 
 bad() {
     "${sim[@]}" -o "$TMP/x.png" --progress-every "$1" > /dev/null 2> "$TMP/x.err"

@@ -91,6 +91,7 @@ bad paper-image2 margin=nan margin
 bad paper-image3 lights=1 paper-image3
 bad paper-image1 lights "KEY=VALUE"
 bad paper-image1 lights=03 lights
+bad paper-image1 scale=010 "decimal only: a leading zero"
 bad paper-image1 scale=0x1 scale
 bad paper-image1 scale=1,scale=2 "given twice"
 bad paper-image1 scale=1, "empty"

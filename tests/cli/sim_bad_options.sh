@@ -71,6 +71,7 @@ bad "--min-weight '00.5': decimal only .*write '0.5'" --min-weight 00.5
 bad "--link-us '-007': decimal only .*write '-7'" --link-us -007
 bad "--ips '00': decimal only .*write '0'" --ips 00
 bad "--t1 '-00': decimal only .*write '-0'" --t1 -00
+bad "--pilot-size '016x16': .*decimal only .*write '16'" --ips 2x2 --map cost --pilot-size 016x16
 bad "--link-us '00e1': decimal only .*write '0e1'" --link-us 00e1
 # A timing key given twice in --timing-values.
 bad "--timing-values 'link=2': the key 'link' is given twice" --timing-values link=1,link=2

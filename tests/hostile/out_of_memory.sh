@@ -4,12 +4,13 @@
 # leaves no output and no temporary (its VCD's and save file's, and the trace's FIFO folder), also
 # when the limit falls among its modules (no abort as they are destroyed); and
 # the same when memory runs out later in the run; Scotch short of memory (--map cost) and a
-# --stats-interval series growing past the limit end so too, with the run's message once.
+# --stats-interval series growing past the limit end so too, with the run's message once, and
+# so do the pilots of --map cost and --load-map, and torusrt-render reading its scene.
 #
 # Usage (CTest runs it so): bash tests/hostile/out_of_memory.sh BUILD_DIR SOURCE_DIR
 set -u
 source "$(dirname "$0")/../cli/common.bash" "$@"
-need_exe torusrt-sim
+need_exe torusrt-sim torusrt-render
 time_limit 60
 f=$(source_scene paper-image1) || exit 1
 cd "$TMP" || exit 1
@@ -26,8 +27,8 @@ check "4096 nodes under ulimit -v: no abort message" bash -c '! grep -q "termina
 check "4096 nodes under ulimit -v: nothing left: $(ls -A out; ls -A tmpdir)" \
     [ -z "$(ls -A out)$(ls -A tmpdir)" ]
 # A limit too small for the libraries' own start-up (SystemC's static constructors, before main):
-# exit 1 with a message (where the limit falls in the scene's reading, the one naming its file
-# and line), never an abort; smaller still, the system's loader refuses (127).
+# exit 1 with a message (where the limit falls in the scene's reading, the one naming that
+# stage), never an abort; smaller still, the system's loader refuses (127).
 aborts=0 other=0
 for limit in 9000 10000 11000 12000 13000 14000 15000 16000 18000 20000; do
     for args in "--version" "$f -q -o out/v.png --size 8x8"; do
@@ -111,5 +112,34 @@ check "series under ulimit -v: the run's message: $(head -c 300 err.txt)" \
 check "series under ulimit -v: said once" [ "$(grep -c "out of memory" err.txt)" -eq 1 ]
 check "series under ulimit -v: no E549" bash -c '! grep -q "E549" err.txt'
 check "series under ulimit -v: nothing left" [ -z "$(ls -A out)" ]
+
+# The pilot of --map cost and of --load-map over 8 and 16 million cells (--memory-budget 0: no
+# budget refuses it first): the run's message, naming the pilot and --memory-budget.
+for pilot in "--map cost --cells 200 --ips 2x2" "--cells 256 --load-map out/lm.png"; do
+    rm -rf out && mkdir out
+    # shellcheck disable=SC2086 # the options
+    ("${run_limited[@]}" bash -c 'ulimit -v 400000 && exec "$@"' _ "$BUILD/torusrt-sim" "$f" -q --t1 1 \
+        --size 16x16 -o out/a.png --memory-budget 0 $pilot >/dev/null 2>err.txt </dev/null)
+    rc=$?
+    check "pilot under ulimit -v ($pilot): exit $rc, expected 1: $(head -c 300 err.txt)" [ "$rc" -eq 1 ]
+    check "pilot under ulimit -v ($pilot): the message names the pilot: $(head -c 300 err.txt)" \
+        grep -q "out of memory while running the pilot of --" err.txt
+    check "pilot under ulimit -v ($pilot): the message names --memory-budget" grep -q -- "--memory-budget" err.txt
+    check "pilot under ulimit -v ($pilot): nothing left" [ -z "$(ls -A out)" ]
+done
+
+# torusrt-render short of memory while it reads the scene (the limits where the parser's own
+# allocation is refused): the stage and --memory-budget, never a bare "FILE:LINE: out of memory".
+bare=""
+for limit in $(seq 14000 250 17000); do
+    rm -rf out && mkdir out
+    ("${run_limited[@]}" bash -c 'ulimit -v "$0" && exec "$@"' "$limit" "$BUILD/torusrt-render" "$f" -q \
+        --size 32x32 --cells 48 -o out/a.png >/dev/null 2>err.txt </dev/null)
+    rc=$?
+    if [ "$rc" -ne 0 ] && ! grep -q "out of memory while .*--memory-budget\|out of memory while starting" err.txt; then
+        bare+=" $limit: $(head -c 120 err.txt)"
+    fi
+done
+check "render under ulimit -v 14000..17000: messages without the stage:$bare" [ -z "$bare" ]
 
 finish

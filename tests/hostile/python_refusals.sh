@@ -6,8 +6,9 @@
 #   --version, --dump-config, -o glued to its file (-ox.png, -qox.png) and --stats=FILE; for the
 #   sweep and compare-mappings an animation (--frames, --orbit, --motion), and --stats-interval
 #   for compare-mappings (its series would be dropped);
-# - standard output on a full device or a closed pipe: `standard output: cannot write: REASON`,
-#   exit 1 (compare-mappings, report, the backend, the sweep, a study's --help);
+# - standard output on a full device, a closed pipe or closed: `standard output: cannot write:
+#   REASON`, exit 1 (compare-mappings, report, the backend, the sweep, a study's --help, and the
+#   --help of compare-mappings, report and the backend);
 # - an empty value (--out '', --state '', --runs '', --columns '', a report's folder or file):
 #   exit 2, nothing written into the current folder;
 # - the sweep's --out naming the scene or a file, the backend's --state naming a file, a study's
@@ -16,8 +17,10 @@
 # - report machine: a report whose config is null, and an explicit --build without torusrt-sim;
 # - report compare: a row with more fields than its header, a header naming a column twice;
 # - run_point.sh: no command after --, an empty OUT.json, a --t1-from whose sim_time_s is not a
-#   number, --t1 given with --t1-from;
-# - the sweep's per-point temporaries are unique per process (two sweeps into one --out).
+#   number above 0 (1e-400 included), --t1 given with --t1-from;
+# - the sweep's per-point temporaries are unique per process (two sweeps into one --out);
+# - the sweep: a point whose name passes what its files' names may hold, and a TMPDIR that is no
+#   folder one can write into, refused naming them (exit 2) before anything is made.
 #
 # Usage (CTest runs it so): bash tests/hostile/python_refusals.sh BUILD_DIR SOURCE_DIR
 set -u
@@ -97,6 +100,36 @@ refused "sweep -- -ox.png" "-o among the fixed options" "${sweep[@]}" s1.nff --a
 refused "sweep -- --stats=x.json" "--stats among the fixed options" "${sweep[@]}" s1.nff --axis ips=1,2 --out sw \
     -- --stats=x.json
 check "sweep -- -ox.png: no --out folder made" [ ! -e sw ]
+# A point whose files' names would pass 255 bytes, and a TMPDIR GNU parallel cannot use: named
+# before anything runs or is made, never a point failing with an empty reason.
+mkdir -p cx && printf '[network]\nqueue="1"\n' >"cx/$(printf 'm%.0s' $(seq 240)).toml"
+refused "sweep, a point name of 255 bytes" "the point config_cx_m.*: its name is 255 bytes" \
+    "${sweep[@]}" s1.nff --axis "config=$(echo cx/*.toml)" --out sw -- "${small[@]}"
+refused "sweep, TMPDIR missing" "TMPDIR '$TMP/nonexistent': not a folder" \
+    env TMPDIR="$TMP/nonexistent" "${sweep[@]}" s1.nff --axis ips=1 --out sw -- "${small[@]}"
+check "sweep, long name or TMPDIR: no --out folder made" [ ! -e sw ]
+# A list value with blanks around it, a bad --columns of report compare: a refused command line.
+refused "cm --map 'block, cyclic'" "' cyclic' has blanks around it" "$EXP/compare-mappings" s1.nff \
+    --map 'block, cyclic' --build "$BUILD" -- --ips 2 "${small[@]}"
+refused "report compare --columns ',,'" "--columns ',,': an empty value" python3 "$EXP/report" compare . . \
+    --columns ',,'
+refused "cm -- --cells 4 --cells 5" "the options after -- do not check out (no run was made): .*--cells: given 2" \
+    "$EXP/compare-mappings" s1.nff --out cc.png --build "$BUILD" -- --ips 2 "${small[@]}" --cells 4 --cells 5
+check "cm -- --cells 4 --cells 5: no --out" [ ! -e cc.png ]
+# Started as a package from the source tree: its help, not a missing module called memory.
+(cd "$SRC" && python3 -m experiments.backend --help >"$logs/m.out" 2>"$logs/m.err")
+check "python3 -m experiments.backend --help: exit $?: $(head -c 200 "$logs/m.err")" grep -q "^usage:" "$logs/m.out"
+# An --out that cannot be made: under a file, or a link that loops: a refused command line (2).
+ln -sfn loopA loopB && ln -sfn loopB loopA
+refused "sweep --out under a file" "--out 's1.nff/sub': cannot be made: '.*s1.nff' is a file" \
+    "${sweep[@]}" s1.nff --axis ips=1 --out s1.nff/sub -- "${small[@]}"
+refused "sweep --out a link loop" "--out 'loopA': '.*loopA' is a link that names no folder" \
+    "${sweep[@]}" s1.nff --axis ips=1 --out loopA -- "${small[@]}"
+rm -f loopA loopB
+mkfifo jf.nff
+refused "sweep, a scene that is a FIFO" "scene 'jf.nff': is a FIFO, not a regular file" \
+    "${sweep[@]}" jf.nff --axis ips=1 --out sw -- "${small[@]}"
+rm -f jf.nff
 refused "run_point -ox.png" "'-o'\|-o 'x.png'" "${rp[@]}" -- "$BUILD/torusrt-sim" s1.nff "${small[@]}" -ox.png
 refused "run_point --stats=x.json" "--stats" "${rp[@]}" -- "$BUILD/torusrt-sim" s1.nff "${small[@]}" --stats=x.json
 refused "run_point --help" "--help in the command" "${rp[@]}" -- "$BUILD/torusrt-sim" s1.nff --help
@@ -109,6 +142,16 @@ full 1 "report machine >/dev/full" "report: $ENOSPC" python3 "$EXP/report" machi
 full 1 "sweep >/dev/full" "$ENOSPC" "${sweep[@]}" s1.nff --axis ips=1,2 --out swfull -- "${small[@]}"
 full 1 "fidelity --help >/dev/full" "study.sh: $ENOSPC" bash "$EXP/fidelity/study.sh" --help
 full 1 "sweep --help >/dev/full" "sweep: $ENOSPC" "${sweep[@]}" --help
+full 1 "cm --help >/dev/full" "compare-mappings: $ENOSPC" "$EXP/compare-mappings" --help
+full 1 "report --help >/dev/full" "experiments/report: $ENOSPC" python3 "$EXP/report" --help
+full 1 "report machine --help >/dev/full" "experiments/report: $ENOSPC" python3 "$EXP/report" machine --help
+full 1 "backend run --help >/dev/full" "experiments/backend: $ENOSPC" python3 "$EXP/backend" run --help
+# --help with standard output closed: named, never printed on standard error instead.
+python3 "$EXP/report" machine --help >&- 2>help-closed.err
+rc=$?
+check "report machine --help >&-: exit $rc, expected 1" [ "$rc" -eq 1 ]
+check "report machine --help >&-: $(head -c 300 help-closed.err)" \
+    grep -qx "experiments/report: standard output: cannot write: Bad file descriptor" help-closed.err
 # A closed pipe: its reading end is closed before the sweep starts.
 closed_pipe() {
     python3 -c 'import os, subprocess, sys
@@ -186,6 +229,9 @@ check "run_point no command: no log" [ ! -e rp/p.log ]
 refused "run_point ''" "not an empty value" "$EXP/run_point.sh" ''
 echo '{"sim_time_s": "0.5ms"}' >t1.json
 exits 3 "run_point --t1-from a string" "no sim_time_s number" "$EXP/run_point.sh" rp/p.json --t1-from t1.json \
+    -- "$BUILD/torusrt-sim" s1.nff "${small[@]}"
+echo '{"sim_time_s": 1e-400}' >t1.json
+exits 3 "run_point --t1-from 1e-400" "no sim_time_s number above 0" "$EXP/run_point.sh" rp/p.json --t1-from t1.json \
     -- "$BUILD/torusrt-sim" s1.nff "${small[@]}"
 echo '{"sim_time_s": 0.5}' >t1.json
 refused "run_point --t1 and --t1-from" "give T(1) once" "$EXP/run_point.sh" rp/p.json --t1-from t1.json \

@@ -11,8 +11,9 @@
 #   a file of its --results folder;
 # - a point JSON nested 100000 deep: the sweep's resume runs the point again, report machine
 #   names the file as not a report (exit 1), no RecursionError traceback;
-# - TERM or HUP sent to run_point.sh's shell alone: its command is stopped too, the script ends
-#   with 128 + the signal, and no temporary (.NAME.tmp.HOST.PID.*) stays.
+# - TERM, HUP, USR1, USR2 or ALRM sent to run_point.sh's shell alone: its command is stopped too,
+#   the script says `run_point: stopped by SIGNAME` and ends with 128 + the signal, and no
+#   temporary (.NAME.tmp.HOST.PID.*) stays.
 #
 # Usage (CTest runs it so): bash tests/hostile/python_streams.sh BUILD_DIR SOURCE_DIR
 set -u
@@ -154,11 +155,11 @@ echo $$ >"$PIDFILE"
 exec sleep 60
 EOF
 chmod +x slow.sh
-for sig in TERM HUP; do
+for sig in TERM HUP USR1 USR2 ALRM; do
     rm -rf "sig$sig" && mkdir "sig$sig"
     export PIDFILE=$TMP/sig$sig.pid
     rm -f "$PIDFILE"
-    "$EXP/run_point.sh" "sig$sig/p.json" -- ./slow.sh keep.nff </dev/null >/dev/null 2>&1 &
+    "$EXP/run_point.sh" "sig$sig/p.json" -- ./slow.sh keep.nff </dev/null >/dev/null 2>"sig$sig.err" &
     rp=$!
     for _ in $(seq 200); do [ -s "$PIDFILE" ] && break; sleep 0.1; done
     check "run_point $sig: the command started" [ -s "$PIDFILE" ]
@@ -167,6 +168,7 @@ for sig in TERM HUP; do
     rc=$?
     code=$((128 + $(kill -l "$sig")))
     check "run_point $sig: exit $rc, expected $code" [ "$rc" -eq "$code" ]
+    check "run_point $sig: says so: $(head -c 300 "sig$sig.err")" grep -qx "run_point: stopped by SIG$sig" "sig$sig.err"
     child=$(cat "$PIDFILE" 2>/dev/null)
     alive=0
     if [ -n "$child" ]; then

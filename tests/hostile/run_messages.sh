@@ -2,7 +2,9 @@
 # run_messages.sh - the messages and statuses of runs that fail early or in the middle:
 # timing-file values (an underflow named as such, a leading zero with the number to write, a
 # value out of range at its line) and --timing-values with a stray comma; --help and --version
-# into a full device; a frame name too long for the file system refused before the run; the
+# into a full device; a frame name too long for the file system, and a path too long for its
+# temporary to a file that exists, refused before the run (the path shown cut); --vcd's
+# temporary folder in a TMPDIR that is not there (named); the
 # memory budget running out as an animation's frame is set up (the budget message naming the
 # frame, once, not SystemC's E546); a stopping signal that arrives before the program's start
 # (held blocked across exec) ends the run with the message; and memory the system refuses
@@ -71,6 +73,28 @@ expect_message "render: a 260-byte frame name" 2 "^torusrt-render: -o 'out/${lon
     "$BUILD/torusrt-render" -q --size 8x8 "$f" -o "out/${long}_%d.png" --frames 2 --orbit 10
 expect_message "sim: a 260-byte --stats name" 2 "file name is too long" \
     "${sim[@]}" "$f" -o out/a.png --stats "out/$long.json"
+# --vcd with a TMPDIR that is not there: the message names it.
+expect_message "sim --vcd, TMPDIR missing" 1 "--vcd: cannot create a temporary folder in TMPDIR '$TMP/none'" \
+    env TMPDIR="$TMP/none" "${sim[@]}" "$f" -o out/a.png --vcd out/a.vcd
+
+# A path too long for its temporary (4091 bytes), to a file that exists: refused before the run
+# too (exit 2), the file untouched, the path shown cut (a message of a few hundred bytes).
+mkdir -p ex
+for exe in torusrt-sim torusrt-render; do
+    for opt in -o --stats; do
+        printf 'old' >ex/x.png && printf 'old' >ex/x.json
+        file=ex/x.png && [ "$opt" = --stats ] && file=ex/x.json
+        long_path="ex/$(printf './%.0s' $(seq 2042))${file#ex/}"
+        args=(-o ex/ok.png --stats "$long_path") && [ "$opt" = -o ] && args=(-o "$long_path")
+        "${run_limited[@]}" "$BUILD/$exe" -q --size 8x8 "$f" "${args[@]}" >/dev/null 2>err.txt </dev/null
+        rc=$?
+        check "$exe $opt, an existing file by a 4091-byte path: exit $rc, expected 2" [ "$rc" -eq 2 ]
+        check "$exe $opt, 4091 bytes: the message: $(head -c 200 err.txt)" grep -q "the path is too long" err.txt
+        check "$exe $opt, 4091 bytes: the message is short ($(wc -c <err.txt) bytes)" [ "$(wc -c <err.txt)" -lt 600 ]
+        check "$exe $opt, 4091 bytes: the file untouched" [ "$(cat "$file")" = old ]
+        check "$exe $opt, 4091 bytes: no image" [ ! -e ex/ok.png ]
+    done
+done
 
 # The packet budget running out as a frame of an animation is set up. The band of budgets where
 # the first frame fits and a later one does not moves with the packet's size: the budget rises in

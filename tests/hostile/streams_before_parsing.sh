@@ -79,6 +79,13 @@ rc=$?
 check "genscenes '': exit $rc, expected 2" [ "$rc" -eq 2 ]
 check "genscenes '': the message: $(head -c 200 err.txt)" grep -q "OUTDIR: an empty value" err.txt
 [ "$had" = 1 ] || { check "genscenes '': no /paper-image1.nff" [ ! -e /paper-image1.nff ]; rm -f /paper-image1.nff; }
+# An OUTDIR that is not there, or a file: a usage error (2) naming it, as a missing OUTDIR is.
+for dir in nodir keep.nff; do
+    "${run_limited[@]}" "$gen" "$dir" one-cell >out.txt 2>err.txt </dev/null
+    rc=$?
+    check "genscenes $dir: exit $rc, expected 2" [ "$rc" -eq 2 ]
+    check "genscenes $dir: the message: $(head -c 200 err.txt)" grep -q "OUTDIR '$dir': \(no such folder\|not a folder\)" err.txt
+done
 "${run_limited[@]}" "$gen" --variant paper-image1 mirror_reflect=0 '' v >out.txt 2>err.txt </dev/null
 rc=$?
 check "genscenes --variant '': exit $rc, expected 2" [ "$rc" -eq 2 ]

@@ -90,6 +90,21 @@ class Collect(unittest.TestCase):
         with self.assertRaisesRegex(ValueError, "%s: not a JSON report \\(a list" % path):
             collect.collect(self.res)
 
+    def test_a_point_json_or_image_that_is_a_fifo_is_named_never_opened(self):
+        path = os.path.join(self.res, "fig5_6", "image1-cyclic-n16.json")
+        os.remove(path)
+        os.mkfifo(path)
+        with self.assertRaisesRegex(OSError, "point JSON '%s': is a FIFO, not a regular file" % path):
+            collect.collect(self.res)
+        os.remove(path)
+        with open(path, "w") as f:
+            json.dump(REPORT, f)
+        png = path[:-5] + ".png"
+        os.remove(png)
+        os.mkfifo(png)  # an image that is no file is not the 1-processor image (and is never opened)
+        collect.collect(self.res)
+        self.assertEqual(self.table("fig5_6")[2]["image_identical"], "no")
+
     def test_a_figure_csv_that_links_to_an_input_is_refused_and_the_input_kept(self):
         json_path = os.path.join(self.res, "fig5_6", "image1-cyclic-n16.json")
         for name, target in (("fig10_12.csv", "points.tsv"), ("fig7.csv", json_path)):

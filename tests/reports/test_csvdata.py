@@ -1,5 +1,5 @@
 """The CSV reader of experiments/report (csvdata.Table.load): a row whose field count is not the
-header's is refused, naming the file and the line."""
+header's, a quote left open and a NUL byte are refused, naming the file and the line."""
 import os
 import shutil
 import sys
@@ -39,6 +39,13 @@ class CsvRows(unittest.TestCase):
     def test_a_long_row_is_refused(self):
         with self.assertRaisesRegex(ValueError, "line 2: 5 fields, the header has 4"):
             self.load("scene,n,status,sim_time_s\na,1,ok,1,9\n")
+
+    def test_an_open_quote_or_a_nul_byte_is_refused(self):
+        with self.assertRaisesRegex(ValueError, "^%s: line 3: .*a quote left open" % self.path):
+            self.load('scene,n,status,sim_time_s\na,1,ok,1\nb,2,ok,"2\nc,3,ok,3\n')
+        with self.assertRaisesRegex(ValueError, "^%s: line 2: a NUL byte" % self.path):
+            self.load("scene,n,status,sim_time_s\na,1,ok,2\0\n")
+        self.assertEqual(self.load('scene,n,status,sim_time_s\na,1,ok,"2"\n').rows[0]["sim_time_s"], "2")
 
 
 if __name__ == "__main__":

@@ -48,6 +48,52 @@ class FidelityCommands(unittest.TestCase):
         self.assertEqual(done.returncode, 0, done.stderr)
         self.assertIn("\nlink 5\n", done.stdout)
 
+    def test_machines_refuses_values_no_run_reads(self):
+        good = {"rule": "sequential", "bus": "0.5", "memory": "1", "shape": "4x4", "handover": "580",
+                "cell-step": "580", "header": "4", "entry": "4", "record": "36"}
+        bad = (("bus", ".5", "is not a number"), ("memory", "inf", "is not a number"), ("bus", "1e7", "from 0 to"),
+               ("memory", "-1", "from 0 to"), ("cell-step", "0580", "has a leading zero"), ("shape", "planar", "shape"),
+               ("shape", "4x0", "shape"), ("handover", "5", "is not one of"), ("rule", "seq", "is not one of"),
+               ("header", "010", "has a leading zero"), ("header", "zz", "is not a number"),
+               ("entry", "0", "from 1 to 4096"), ("record", "4.5", "is not a whole number"))
+        with tempfile.TemporaryDirectory() as tmp:
+            sim = os.path.join(tmp, "torusrt-sim")  # a dump with the tables of the keys written
+            with open(sim, "w") as f:
+                f.write("#!/bin/sh\ncat <<'EOF'\n[network]\nips=\"1\"\nroute-ties=\"split\"\npreprocess-count=\"sequential\"\n"
+                        "[mapping]\nmap=\"block\"\n[timing]\ntiming-profile=\"paper\"\ntiming=\"\"\n[cluster]\n"
+                        "cluster=\"1\"\ndata=\"replicated\"\ncell-header-bytes=\"4\"\nlist-entry-bytes=\"4\"\n"
+                        "object-record-bytes=\"0\"\nEOF\n")
+            os.chmod(sim, 0o755)
+            for opt, text, why in bad:
+                with self.subTest(opt=opt, text=text):
+                    values = dict(good, **{opt: text})
+                    out = os.path.join(tmp, "out")
+                    words = [w for k, v in values.items() for w in ("--" + k, v)]
+                    done = fidelity("machines", tmp, out, "--sim", sim, *words)
+                    self.assertEqual((done.returncode, done.stdout), (2, ""), done.stderr)
+                    self.assertIn("argument --%s: '%s' " % (opt, text), done.stderr)
+                    self.assertIn(why, done.stderr)
+                    self.assertFalse(os.path.exists(out))
+            words = [w for k, v in good.items() for w in ("--" + k, v)]
+            done = fidelity("machines", tmp, os.path.join(tmp, "out"), "--sim", sim, *words)
+            self.assertEqual(done.returncode, 0, done.stderr)
+            with open(os.path.join(tmp, "out", "paper-16.toml")) as f:
+                self.assertIn('ips="4x4"', f.read().replace(" ", ""))
+
+    def test_a_folder_without_the_stage_runs_is_named(self):
+        with tempfile.TemporaryDirectory() as empty:
+            for args, why in ((("fit1", empty), "%s/units.tsv: no runs (the stage has not run)" % empty),
+                              (("page", empty, os.path.join(empty, "p.md")), "%s/units.tsv: no runs" % empty),
+                              (("fit1", os.devnull), "%s: not a results folder" % os.devnull)):
+                with self.subTest(args=args):
+                    done = fidelity(*args)
+                    self.assertEqual((done.returncode, done.stdout), (1, ""), done.stderr)
+                    self.assertIn(why, done.stderr)
+                    self.assertFalse(os.path.exists(os.path.join(empty, "p.md")))
+            done = fidelity("fit2", empty, "--table", os.path.join(empty, "x.tsv"))
+            self.assertEqual(done.returncode, 2, done.stderr)
+            self.assertIn("argument --table: '%s/x.tsv': the name of a table" % empty, done.stderr)
+
     def test_identity_without_runs_fails(self):
         with tempfile.TemporaryDirectory() as empty:
             for folder, why in ((empty, "run stage 1 first"), (os.path.join(empty, "none"), "no such results folder")):

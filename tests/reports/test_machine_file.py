@@ -1,4 +1,5 @@
 """The machine file of a report (experiments/report machine): written, read back and compared."""
+import json
 import os
 import subprocess
 import sys
@@ -139,6 +140,33 @@ class MachineCommand(unittest.TestCase):
         self.assertIn("%s: line 1 column 1: not a JSON run report (torusrt-sim --stats writes one)" % toml,
                       done.stderr)
         self.assertNotIn("Traceback", done.stderr)
+
+    def test_a_key_or_value_no_machine_file_holds_is_named(self):
+        # An option name that is no TOML bare key, a table name likewise, and a value with U+FFFD
+        # (the report's stand-in for a byte that is not UTF-8): refused naming the report and the
+        # key, nothing on standard output; the same report with a plain value is written.
+        report = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))),
+                              "experiments", "report")
+        cases = ((("q\nx", "1", "network"), 'config.options: "q\\nx": not an option name'),
+                 (("a b", "1", "network"), 'config.options: "a b": not an option name'),
+                 (("", "1", "network"), 'config.options: "": not an option name'),
+                 (("timing", "t\ufffd.timing", "timing"), "config.options.timing: \"t\\ufffd.timing\" holds U+FFFD"),
+                 (("timing", "t.timing", "a]\n["), 'config.option_tables.timing: "a]\\n[": not a table name'),
+                 (("timing", "t\ud800", "timing"), 'config.options.timing: "t\\ud800" holds a lone surrogate'),
+                 (("timing", "t.timing", "timing"), None))
+        for (key, value, table), why in cases:
+            with self.subTest(key=key, value=value, table=table), tempfile.TemporaryDirectory() as d:
+                path = os.path.join(d, "r.json")
+                with open(path, "w") as f:
+                    json.dump({"config": {"options": {key: value}, "option_order": [key],
+                                          "option_tables": {key: table}}}, f)
+                done = subprocess.run([sys.executable, report, "machine", path], stdin=subprocess.DEVNULL,
+                                      stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+                if why is None:
+                    self.assertEqual((done.returncode, done.stdout), (0, '[timing]\ntiming="t.timing"\n'), done.stderr)
+                    continue
+                self.assertEqual((done.returncode, done.stdout), (1, ""), done.stderr)
+                self.assertIn("experiments/report: %s: %s" % (path, why), done.stderr)
 
 
 if __name__ == "__main__":

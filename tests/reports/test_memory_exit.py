@@ -38,13 +38,16 @@ MESSAGE = "%s: out of memory: the system refused the memory the tool asked for (
 # (program as its message names it, the file python3 runs, its arguments, modules it loads)
 TOOLS = [
     ("experiments/report", "report/__main__.py", ["compare", "a", "b"],
-     ["memory_exit", "stop_signals", "report.cli", "argparse", "_csv"]),
+     ["memory_exit", "stop_signals", "_hashlib", "report.cli", "argparse", "_csv"]),
+    ("sweep", "report/__main__.py", ["sweep-plan", "--out", "o"], ["memory_exit", "stop_signals", "_hashlib"]),
     ("experiments/backend", "backend/__main__.py", ["run", "--state", "st", "x.list"],
      ["memory_exit", "stop_signals", "backend.cli", "argparse"]),
     ("compare-mappings", "compare-mappings", ["s.nff"],
      ["memory_exit", "stop_signals", "compare_mappings", "subprocess", "_posixsubprocess", "output_files"]),
-    ("output_files.py", "output_files.py", ["--check-streams", "sweep", "--"],
+    # a script's check: the script is named (the sweep, a study), never the helper it runs
+    ("sweep", "output_files.py", ["--check-streams", "sweep", "--"],
      ["memory_exit", "output_rules", "command_words", "tempfile", "stream_checks"]),
+    ("output_files.py", "output_files.py", ["out.txt"], ["memory_exit", "output_rules", "tempfile"]),
     ("experiments/report/buffers.py", "report/buffers.py", ["r.tsv", "d.md", "p", "b.gp"],
      ["memory_exit", "_csv", "output_files", "argparse"]),
     ("experiments/report/animation.py", "report/animation.py", ["r", "d.md", "p", "g", "1", "1"],

@@ -397,6 +397,14 @@ class SweepPoints(Base):
         write(timing, timing)
         write(sim, "another build")
         self.assertNotEqual(base, ident([scene, "--timing", timing, "--ips", "2"]), "the executable")
+        write(sim, sim)
+        # The same executable in another folder: another command line, as the backend's record
+        # holds it (it runs such a point again, so the sweep may not count it as done).
+        copy = self.path("sim2")
+        write(copy, sim)
+        self.assertEqual(base, ident([scene, "--timing", timing, "--ips", "2"]))
+        self.assertNotEqual(base, sweep.identity(copy, [scene, "--timing", timing, "--ips", "2"], {}),
+                            "the executable's path")
 
     def point(self, report_text, ident_text):
         os.makedirs(self.path("points"), exist_ok=True)

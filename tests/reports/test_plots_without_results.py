@@ -42,6 +42,15 @@ class PlotsWithoutResults(unittest.TestCase):
     def tearDown(self):
         self.tmp.cleanup()
 
+    def test_a_figure_table_that_is_a_fifo_is_named(self):
+        csvs = [os.path.join(root, n) for root, _, names in os.walk(self.res) for n in names if n == "fig7.csv"]
+        os.remove(csvs[0])
+        os.mkfifo(csvs[0])
+        done = subprocess.run([sys.executable, REPORT, "plots", self.res], stdin=subprocess.DEVNULL,
+                              stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=60)
+        self.assertEqual(done.returncode, 1, done.stderr)
+        self.assertIn("figure table '%s': is a FIFO, not a regular file" % csvs[0], done.stderr)
+
     def test_every_point_failed_draws_nothing_and_says_so(self):
         fail_every_point(self.res)
         old = os.path.join(self.res, "plots", "fig5.png")

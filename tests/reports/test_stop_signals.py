@@ -101,6 +101,26 @@ def alive(pid):
     return True
 
 
+# A tool whose interpreter, shutting down, restores SIGTERM's default action and then gets one
+# (CPython resets the handlers it installed): the tool's status stands, nothing kills it. With
+# "stop", the tool is stopped by SIGUSR1 first.
+AT_SHUTDOWN = r"""
+import atexit, os, signal, sys
+sys.path.insert(0, %r)
+import memory_exit, stop_signals
+stop_signals.exit_on_signals("tool")
+def late():
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+    os.kill(os.getpid(), signal.SIGTERM)
+atexit.register(late)
+def main(argv):
+    if argv == ["stop"]:
+        os.kill(os.getpid(), signal.SIGUSR1)
+    return 0
+sys.exit(memory_exit.run("tool", lambda: main, sys.argv[1:]))
+""" % EXP
+
+
 class StopSignals(unittest.TestCase):
     def setUp(self):
         self.dir = tempfile.mkdtemp()
@@ -140,6 +160,12 @@ class StopSignals(unittest.TestCase):
         done = subprocess.run([sys.executable, "-c", TWO_AT_ONCE], stderr=subprocess.PIPE, text=True)
         self.assertEqual(done.returncode, 128 + signal.SIGUSR1)
         self.assertEqual(done.stderr, "tool: stopped by SIGUSR1\n")
+
+    def test_a_signal_at_the_interpreters_shutdown_does_not_kill_the_tool(self):
+        for args, status, said in (([], 0, ""), (["stop"], 128 + signal.SIGUSR1, "tool: stopped by SIGUSR1\n")):
+            with self.subTest(args=args):
+                done = subprocess.run([sys.executable, "-c", AT_SHUTDOWN] + args, stderr=subprocess.PIPE, text=True)
+                self.assertEqual((done.returncode, done.stderr), (status, said))
 
     def test_a_signal_ignored_from_the_start_stays_ignored(self):
         done = self.run_program("SIGHUP", ignored=signal.SIGHUP)

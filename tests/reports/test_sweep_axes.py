@@ -91,6 +91,13 @@ class SweepXAxis(unittest.TestCase):
         self.assertGreaterEqual(xhi, float(x))
         self.assertIn('"unbounded"', seen["xtics"])
 
+    def test_values_outside_the_strict_syntax_are_named_ticks(self):
+        # float() takes these; torusrt-sim does not, and gnuplot must not get them as numbers.
+        for odd in ("1_0", "inf", "nan", "\u0661"):
+            with self.subTest(value=odd):
+                seen, _ = self.draw("queue", ["1", odd])  # gnuplot draws it (check=True)
+                self.assertEqual((seen["numeric"], seen["logx"], seen["xtics"]), (0, 0, ""))
+
     def test_a_narrow_span_stays_linear(self):
         seen, _ = self.draw("link-us", ["50", "100", "200"])
         self.assertEqual(seen["logx"], 0)

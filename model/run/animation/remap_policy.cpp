@@ -11,6 +11,7 @@
 
 #include "load_motion.h"
 #include "mapping.h"
+#include "run_stage.h"
 #include "user_error.h"
 #include "wall_clock.h"
 
@@ -203,8 +204,12 @@ void FramePilot::run(const SimConfig &config, const rt_scene *scene, const rt_gr
     double t0 = wall_clock_s();
     char msg[RT_MSG_LEN] = "";
     auto pilot_run = by_object ? rt_cost_pilot_run_by_object : rt_cost_pilot_run;
-    if (pilot_run(scene, grid, &config.step, &config.timing, &m_pilot, msg, sizeof msg) != RT_OK)
-        throw UserError(std::string("frame pilot run: ") + msg);
+    rt_status st = pilot_run(scene, grid, &config.step, &config.timing, &m_pilot, msg, sizeof msg);
+    if (st == RT_ERR_NOMEM) {  // cli_main's message: the stage and --memory-budget
+        set_run_stage("running a frame's pilot (--remap)");
+        throw std::bad_alloc();
+    }
+    if (st != RT_OK) throw UserError(std::string("frame pilot run: ") + msg);
     m_wall_s = wall_clock_s() - t0;
     m_host_s = m_pilot.total_us * 1e-6;
     const rt_camera *cam = rt_scene_camera(scene);

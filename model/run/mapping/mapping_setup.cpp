@@ -2,6 +2,7 @@
 #include "mapping_setup.h"
 
 #include <algorithm>
+#include <new>
 #include <vector>
 
 #include "mapping.h"
@@ -11,6 +12,7 @@
 #include "rt_load_image.h"
 #include "rt_map_file.h"
 #include "rt_text.h"
+#include "run_stage.h"
 #include "user_error.h"
 
 namespace torusrt {
@@ -88,8 +90,12 @@ void write_load_map(const SimConfig &config, rt_scene *scene, const rt_grid *gri
                   "--load-map", "its pilot of " + size_text(cam->width, cam->height) + " pixels");
     rt_cost_pilot pilot;
     char msg[RT_MSG_LEN] = "";
-    if (rt_cost_pilot_run(scene, grid, &config.step, &config.timing, &pilot, msg, sizeof msg) != RT_OK)
-        throw UserError(std::string("--load-map: pilot run: ") + msg);
+    rt_status st = rt_cost_pilot_run(scene, grid, &config.step, &config.timing, &pilot, msg, sizeof msg);
+    if (st == RT_ERR_NOMEM) {  // cli_main's message: the stage and --memory-budget
+        set_run_stage("running the pilot of --load-map");
+        throw std::bad_alloc();
+    }
+    if (st != RT_OK) throw UserError(std::string("--load-map: pilot run: ") + msg);
     try {
         write_stream_file(path, shown, "--load-map", [&](FILE *fp, char *why, size_t why_len) {
             rt_replicas replicas = config.replica_table();

@@ -51,6 +51,10 @@ rt_cost_pilot run_pilot(const MachineConfig &config, PilotMapper mapper, rt_scen
     char msg[RT_MSG_LEN] = "";
     rt_status st = rt_cost_pilot_run(scene, grid, &config.step, &config.timing, &pilot, msg, sizeof msg);
     if (resize) rt_scene_set_resolution(scene, w, h);
+    if (st == RT_ERR_NOMEM) {  // cli_main's message: the stage and --memory-budget
+        set_run_stage(std::string("running the pilot of ") + option_of(mapper));
+        throw std::bad_alloc();
+    }
     if (st != RT_OK) throw UserError(std::string(option_of(mapper)) + ": pilot run: " + msg);
     return pilot;
 }

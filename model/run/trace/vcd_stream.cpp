@@ -10,6 +10,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "option_parsing.h"
 #include "output_files.h"
 #include "signal_cleanup.h"
 #include "user_error.h"
@@ -97,13 +98,17 @@ VcdStream::VcdStream(const std::string &out_path, const std::string &shown, uint
     : m_shown(shown), m_from_ps(from_ps), m_to_ps(to_ps)
 {
     const char *tmpdir = std::getenv("TMPDIR");
-    std::string pattern = std::string(tmpdir && *tmpdir ? tmpdir : "/tmp") + "/torusrt-vcd.XXXXXX";
+    const std::string folder = tmpdir && *tmpdir ? tmpdir : "/tmp";
+    std::string pattern = folder + "/torusrt-vcd.XXXXXX";
     std::string fifo;
     {
         // A stopping signal between making the folder and registering it would leave it behind.
         SignalsBlocked blocked;
-        if (!mkdtemp(pattern.data()))
-            throw UserError("--vcd: cannot create a temporary folder: " + std::string(std::strerror(errno)));
+        if (!mkdtemp(pattern.data())) {
+            const std::string why = std::strerror(errno);
+            throw UserError("--vcd: cannot create a temporary folder in " +
+                            std::string(tmpdir && *tmpdir ? "TMPDIR '" : "'") + shown_text(folder) + "': " + why);
+        }
         m_dir = pattern;
         m_sc_name = m_dir + "/trace";
         fifo = m_sc_name + ".vcd";
