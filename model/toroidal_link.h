@@ -20,6 +20,7 @@
 #include <utility>
 
 #include "class_buffers.h"
+#include "link_bookings.h"
 #include "module_stats.h"
 #include "packet_pool.h"
 #include "packet_sink_if.h"
@@ -93,8 +94,10 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
     void before_end_of_elaboration() override;
     void start_of_simulation() override { m_fw = socket.operator->(); }
 
-    sc_core::sc_time m_free_at = sc_core::SC_ZERO_TIME;  // busy until
-    sc_core::sc_time m_packet_time;                      // serialisation time of one packet
+    sc_core::sc_time m_free_at = sc_core::SC_ZERO_TIME;  // busy until (the latest crossing's end)
+    bool m_gaps;                                         // loosely timed with a quantum: m_bookings
+    LinkBookings m_bookings;
+    sc_core::sc_time m_packet_time;  // serialisation time of one packet
     TransactionPool *m_transactions = &m_own_transactions;
     // The socket's bound target interface (what socket-> returns), kept after elaboration so a
     // crossing does not read the port for it.
