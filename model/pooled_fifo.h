@@ -1,5 +1,5 @@
 // pooled_fifo.h - the storage of an input queue: packets in arrival order, as handles into a
-// packet pool (packet_pool.h), the machine's or the queue's own.
+// packet pool (packet_pool.h), the machine's or the queue's own; or in stamp order.
 //
 // Usage: push_back a handle of pool(); at(i) is the i-th oldest packet in its slot; take(i)
 // removes it (the slot stays the caller's). No SystemC, no buffers: PacketQueue adds those.
@@ -26,39 +26,26 @@ class PooledFifo {
 
     // Keeps the packets in `pool` (while empty).
     PacketPool &pool() const { return *m_pool; }
-    bool empty() const { return m_by_stamp ? m_sorted.empty() : m_items.empty(); }
-    size_t size() const { return m_by_stamp ? m_sorted.size() : m_items.size(); }
-    uint32_t handle(size_t i) const { return m_by_stamp ? m_sorted.front().handle : m_items[i]; }
-    TimedPacket &at(size_t i) const { return m_pool->at(handle(i)); }
-    // Keeps the packets in stamp order from now on (while empty): the earliest stamp first, ties
-    // in arrival order. Then only the first packet can be looked at or taken (at(0), take(0)).
-    // Packets mostly come in stamp order: one is appended, or put in place by a binary search
-    // on the stamps kept beside the handles (no packet is read).
-    void order_by_stamp() { m_by_stamp = true; }
-    bool ordered_by_stamp() const { return m_by_stamp; }
+    bool empty() const { return m_items.empty(); }
+    size_t size() const { return m_items.size(); }
+    uint32_t handle(size_t i) const { return m_items[i]; }
+    TimedPacket &at(size_t i) const { return m_pool->at(m_items[i]); }
+    // Appends; in stamp order (order_by_stamp()), behind every packet stamped no later.
     void push_back(uint32_t handle)
     {
-        if (!m_by_stamp) {
-            m_items.push_back(handle);
-            return;
-        }
-        const Stamped item{m_pool->at(handle).stamp.value(), handle};
-        if (m_sorted.empty() || m_sorted.back().stamp <= item.stamp) {
-            m_sorted.push_back(item);
-            return;
-        }
-        m_sorted.insert(std::upper_bound(m_sorted.begin(), m_sorted.end(), item,
-                                         [](const Stamped &a, const Stamped &b) { return a.stamp < b.stamp; }),
-                        item);
+        if (m_by_stamp && !m_items.empty() && at(m_items.size() - 1).stamp > m_pool->at(handle).stamp)
+            insert_by_stamp(handle);
+        else m_items.push_back(handle);
     }
+    // Keeps the packets in stamp order from now on (while empty): the earliest stamp first, ties
+    // in arrival order (loosely timed with a quantum, where a packet can arrive after one
+    // stamped later). Packets mostly come in stamp order and are appended; the others are put
+    // in place by a binary search, out of line, so an arrival-order queue's push stays as small
+    // as without it.
+    void order_by_stamp() { m_by_stamp = true; }
     // Removes the i-th oldest and returns its handle.
     uint32_t take(size_t i)
     {
-        if (m_by_stamp) {
-            uint32_t handle = m_sorted.front().handle;
-            m_sorted.pop_front();
-            return handle;
-        }
         uint32_t handle = m_items[i];
         if (i == 0) m_items.pop_front();
         else m_items.erase(m_items.begin() + static_cast<std::ptrdiff_t>(i));
@@ -67,20 +54,24 @@ class PooledFifo {
     // Asks for the oldest packet's slot (after a take of the one before it).
     [[gnu::always_inline]] void prefetch_front() const
     {
-        if (empty()) return;
-        const char *p = reinterpret_cast<const char *>(&at(0));
+        if (m_items.empty()) return;
+        const char *p = reinterpret_cast<const char *>(&m_pool->at(m_items.front()));
         for (size_t b = 0; b < sizeof(TimedPacket); b += 64) __builtin_prefetch(p + b);
         __builtin_prefetch(p + sizeof(TimedPacket) - 1);  // the slot need not start a line
     }
 
   private:
+    [[gnu::noinline]] void insert_by_stamp(uint32_t handle)
+    {
+        const sc_core::sc_time &stamp = m_pool->at(handle).stamp;
+        auto place =
+            std::upper_bound(m_items.begin(), m_items.end(), stamp,
+                             [this](const sc_core::sc_time &s, uint32_t h) { return s < m_pool->at(h).stamp; });
+        m_items.insert(place, handle);
+    }
+
     PacketPool *m_pool;
-    std::deque<uint32_t> m_items;  // oldest first
-    struct Stamped {
-        uint64_t stamp;
-        uint32_t handle;
-    };
-    std::deque<Stamped> m_sorted;  // order_by_stamp(): the packets, earliest stamp first
+    std::deque<uint32_t> m_items;  // oldest first (in stamp order: earliest first)
     bool m_by_stamp = false;
 };
 

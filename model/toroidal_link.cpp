@@ -51,8 +51,7 @@ void ToroidalLink::send(PacketPool &pool, uint32_t handle)
     TimedPacket &p = pool.at(handle);
     if (p.stamp < now) p.stamp = now;
     sc_core::sc_time start = p.stamp > m_free_at ? p.stamp : m_free_at;
-    if (m_gaps && m_packet_time != sc_core::SC_ZERO_TIME)
-        start = sc_core::sc_time::from_value(m_bookings.book(p.stamp.value(), now.value(), m_packet_time.value()));
+    if (m_gaps) start = gap_start(p.stamp, now);
     const sc_core::sc_time end = start + m_packet_time;
     if (end > m_free_at) m_free_at = end;
     m_packets++;
@@ -79,6 +78,12 @@ void ToroidalLink::send(PacketPool &pool, uint32_t handle)
     bool refused = trans.is_response_error();
     trans.release();  // back to the pool
     if (refused) SC_REPORT_FATAL(name(), "the receiving communication unit refused a packet");
+}
+
+sc_core::sc_time ToroidalLink::gap_start(const sc_core::sc_time &ready, const sc_core::sc_time &now)
+{
+    if (m_packet_time == sc_core::SC_ZERO_TIME) return ready;
+    return sc_core::sc_time::from_value(m_bookings.book(ready.value(), now.value(), m_packet_time.value()));
 }
 
 int &ToroidalLink::use_trace()
