@@ -2,9 +2,10 @@
 # styles.sh - simulation speed of the two timing styles: approximately timed (AT) and loosely
 # timed (LT) at a few global quanta, on both paper scenes at 16 (4x2x2) and 64 (4x4x4) IPs.
 # Prints a table of wall seconds, events per second and packet hops per second (per second of
-# simulation, sim_wall_s), the speed-up over AT and the error of the image time against AT.
+# simulation, sim_wall_s), the speed-up over AT and the error of the image time against AT. The
+# default size, 432x432, is one where a run takes a second or more.
 #
-# Usage: bench/styles.sh [--build DIR] [--reps N] [--quanta "0 100ms 1s 10s"] [--size WxH]
+# Usage: bench/styles.sh [--build DIR] [--reps N] [--quanta "0 10ms 100ms 1s"] [--size WxH]
 #                        [--scenes "paper-image1 paper-image2"] [--ips "4x2x2 4x4x4"] [--csv FILE]
 #   --build DIR  folder with torusrt-sim (default $TORUSRT_BUILD, else REPO/build)
 #   --reps N     runs per point; the table shows the fastest (default 3; other load only adds time)
@@ -14,8 +15,8 @@ set -euo pipefail
 REPO=$(cd "$(dirname "$0")/.." && pwd)
 BUILD=${TORUSRT_BUILD:-$REPO/build}
 REPS=3
-QUANTA="0 100ms 1s 10s"
-SIZE=144x144
+QUANTA="0 10ms 100ms 1s"
+SIZE=432x432
 SCENES="paper-image1 paper-image2"
 IPS="4x2x2 4x4x4"
 CSV=""

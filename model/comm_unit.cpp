@@ -174,11 +174,22 @@ void CommUnit::on_space(const TimedPacket &, sc_core::sc_event &e) { m_processor
 void CommUnit::enqueue(uint32_t packet, const sc_core::sc_time &stamp, int source, BufferSpace *credit)
 {
     sc_core::sc_time now = sim_now();
-    sc_core::sc_time when = stamp > now + m_lookahead ? stamp - m_lookahead : now;
     m_pool->at(packet).stamp = stamp;
     m_pool->credit(packet) = credit;
+    if (m_lookahead != sc_core::SC_ZERO_TIME && stamp <= now + m_lookahead) {
+        route_in_quantum(packet, source);
+        return;
+    }
+    sc_core::sc_time when = stamp > now + m_lookahead ? stamp - m_lookahead : now;
     m_arrivals.push(when, source, packet);
     wake_at(when);
+}
+
+void CommUnit::route_in_quantum(uint32_t packet, int source)
+{
+    const TimedPacket &p = m_pool->at(packet);
+    uint32_t buffer = 2 * p.cls + p.vc;
+    if (holds(source, buffer) || !forward(packet)) hold(source, buffer, packet);
 }
 
 void CommUnit::b_transport(int source, tlm::tlm_generic_payload &trans, sc_core::sc_time &delay)

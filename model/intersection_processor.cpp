@@ -19,6 +19,7 @@ IntersectionProcessor::IntersectionProcessor(sc_core::sc_module_name name, const
       m_driver(*this, m_queue, m_room, m_out_room, setup.calendar, setup.activations, setup.order_after),
       m_queue(std::string(basename()) + ".queue", config.queue_capacity,
               {setup.pool, setup.primaries, owner_id, config.queue_order == QueueOrder::rays_first,
+               config.style == TimingStyle::lt && config.quantum_us > 0 && !m_reserving,
                setup.order_after ? &m_driver : nullptr})
 {
     in.bind(*this);
@@ -127,6 +128,9 @@ IntersectionProcessor::Wake IntersectionProcessor::act()
     for (;;) switch (m_stage) {
         case Stage::top:
             m_stage = Stage::take_up_first;
+            // Loosely timed, a processor whose queue ran empty synchronises before it waits: one
+            // that waited ahead would take up later packets before earlier ones still to come
+            // (docs/model.md, Timing styles).
             if (m_queue.empty() && owe(m_time.sync_nb())) return Wake::timer;
             break;
         case Stage::take_up_first:

@@ -5,10 +5,11 @@
 namespace torusrt {
 
 PacketQueue::PacketQueue(std::string name, unsigned capacity, const PacketQueueSetup &setup)
-    : m_items(setup.pool ? setup.pool : &m_own_pool), m_rays_first(setup.rays_first), m_ready_reader(setup.reader),
-      m_source(setup.primaries), m_node(setup.primaries ? setup.entry_node : -1), m_spaces(capacity),
-      m_name(std::move(name))
+    : m_items(setup.pool ? setup.pool : &m_own_pool), m_rays_first(setup.rays_first), m_stamp_order(setup.stamp_order),
+      m_ready_reader(setup.reader), m_source(setup.primaries), m_node(setup.primaries ? setup.entry_node : -1),
+      m_spaces(capacity), m_name(std::move(name))
 {
+    if (m_stamp_order && !m_rays_first) m_items.order_by_stamp();
 }
 
 void PacketQueue::push_blocking(const TimedPacket &p) { push_pooled(pool(), pool().add(p, -1)); }

@@ -53,10 +53,14 @@ class PacketQueueReader {
 
 // The machine's choices for a queue, fixed at elaboration; a queue alone takes the defaults.
 struct PacketQueueSetup {
-    PacketPool *pool = nullptr;           // where the packets are kept: the machine's pool (null: the queue's own)
-    PrimarySource *primaries = nullptr;   // the host's primaries that feed the queue (null: none)
-    int entry_node = 0;                   // the node whose primaries those are
-    bool rays_first = false;              // the rays-first order above (false: primaries-first)
+    PacketPool *pool = nullptr;          // where the packets are kept: the machine's pool (null: the queue's own)
+    PrimarySource *primaries = nullptr;  // the host's primaries that feed the queue (null: none)
+    int entry_node = 0;                  // the node whose primaries those are
+    bool rays_first = false;             // the rays-first order above (false: primaries-first)
+    // Packets kept in stamp order rather than arrival order (loosely timed with a quantum, where
+    // a packet can arrive after one stamped later; approximately timed the two are the same), for
+    // a reader that takes the first packet only (try_take_first*); not under rays-first.
+    bool stamp_order = false;
     PacketQueueReader *reader = nullptr;  // told of a push at once (null: not_empty_event() only)
 };
 
@@ -157,6 +161,7 @@ class PacketQueue {
     size_t m_high_water = 0;
     size_t m_rays = 0;  // ray packets among the queued (rays-first looks for them)
     bool m_rays_first = false;
+    bool m_stamp_order = false;
     int m_depth = 0;
     bool m_reader_waiting = false;
     Reader *m_ready_reader = nullptr;

@@ -1,5 +1,5 @@
 // pooled_fifo.h - the storage of an input queue: packets in arrival order, as handles into a
-// packet pool (packet_pool.h), the machine's or the queue's own.
+// packet pool (packet_pool.h), the machine's or the queue's own; or in stamp order.
 //
 // Usage: push_back a handle of pool(); at(i) is the i-th oldest packet in its slot; take(i)
 // removes it (the slot stays the caller's). No SystemC, no buffers: PacketQueue adds those.
@@ -11,6 +11,7 @@
 // (docs/model.md).
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <deque>
@@ -29,10 +30,22 @@ class PooledFifo {
     size_t size() const { return m_items.size(); }
     uint32_t handle(size_t i) const { return m_items[i]; }
     TimedPacket &at(size_t i) const { return m_pool->at(m_items[i]); }
-    void push_back(uint32_t handle) { m_items.push_back(handle); }
+    // Appends; in stamp order (order_by_stamp()), behind every packet stamped no later.
+    void push_back(uint32_t handle)
+    {
+        if (m_by_stamp) push_by_stamp(handle);
+        else m_items.push_back(handle);
+    }
+    // Keeps the packets in stamp order from now on (while empty): the earliest stamp first, ties
+    // in arrival order (loosely timed with a quantum, where a packet can arrive after one
+    // stamped later). Packets mostly come in stamp order and are appended; the others are put
+    // in place by a binary search on the stamps, kept beside the handles (no packet is read).
+    // Out of line, so an arrival-order queue's push and take stay as small as without it.
+    void order_by_stamp() { m_by_stamp = true; }
     // Removes the i-th oldest and returns its handle.
     uint32_t take(size_t i)
     {
+        if (m_by_stamp) return take_by_stamp(i);
         uint32_t handle = m_items[i];
         if (i == 0) m_items.pop_front();
         else m_items.erase(m_items.begin() + static_cast<std::ptrdiff_t>(i));
@@ -48,8 +61,35 @@ class PooledFifo {
     }
 
   private:
+    [[gnu::noinline]] void push_by_stamp(uint32_t handle)
+    {
+        const uint64_t stamp = m_pool->at(handle).stamp.value();
+        if (m_stamps.empty() || m_stamps.back() <= stamp) {
+            m_stamps.push_back(stamp);
+            m_items.push_back(handle);
+            return;
+        }
+        auto place = std::upper_bound(m_stamps.begin(), m_stamps.end(), stamp);
+        m_items.insert(m_items.begin() + (place - m_stamps.begin()), handle);
+        m_stamps.insert(place, stamp);
+    }
+    [[gnu::noinline]] uint32_t take_by_stamp(size_t i)
+    {
+        uint32_t handle = m_items[i];
+        if (i == 0) {
+            m_items.pop_front();
+            m_stamps.pop_front();
+        } else {
+            m_items.erase(m_items.begin() + static_cast<std::ptrdiff_t>(i));
+            m_stamps.erase(m_stamps.begin() + static_cast<std::ptrdiff_t>(i));
+        }
+        return handle;
+    }
+
     PacketPool *m_pool;
-    std::deque<uint32_t> m_items;  // oldest first
+    std::deque<uint32_t> m_items;  // oldest first (in stamp order: earliest first)
+    bool m_by_stamp = false;
+    std::deque<uint64_t> m_stamps;  // in stamp order: the packets' stamps, in m_items' order
 };
 
 }  // namespace torusrt

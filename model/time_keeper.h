@@ -24,8 +24,9 @@ struct TimeWait {
 class TimeKeeper {
   public:
     explicit TimeKeeper(bool loosely_timed);
-    // The process's local time (simulation time plus its offset).
-    sc_core::sc_time now() const { return m_lt ? m_qk.get_current_time() : sim_now(); }
+    // The process's local time (simulation time plus its offset; the keeper's own
+    // get_current_time() reads the time through the library call, sim_now.h).
+    sc_core::sc_time now() const { return m_lt ? sim_now() + m_qk.get_local_time() : sim_now(); }
     // Spends `d` of simulated time.
     void advance(const sc_core::sc_time &d) { spend(advance_nb(d)); }
     TimeWait advance_nb(const sc_core::sc_time &d);

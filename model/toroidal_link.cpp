@@ -10,7 +10,8 @@ namespace torusrt {
 
 ToroidalLink::ToroidalLink(sc_core::sc_module_name name, const MachineConfig &config, int from, int to, int dir,
                            TransactionPool *transactions)
-    : sc_module(name), socket("socket"), in("in"),
+    : sc_module(name), socket("socket"), in("in"), m_free_at(sc_core::SC_ZERO_TIME),
+      m_gaps(config.style == TimingStyle::lt && config.quantum_us > 0),
       m_packet_time(rt_timing_link_packet_us(&config.timing), sc_core::SC_US), m_to(to),
       m_dir(static_cast<int8_t>(dir)), m_packet_bytes(config.timing.packet_bytes), m_spaces(config.queue_capacity),
       m_from(from)
@@ -50,12 +51,14 @@ void ToroidalLink::send(PacketPool &pool, uint32_t handle)
     TimedPacket &p = pool.at(handle);
     if (p.stamp < now) p.stamp = now;
     sc_core::sc_time start = p.stamp > m_free_at ? p.stamp : m_free_at;
-    m_free_at = start + m_packet_time;
+    if (m_gaps) start = gap_start(p.stamp, now);
+    const sc_core::sc_time end = start + m_packet_time;
+    if (end > m_free_at) m_free_at = end;
     m_packets++;
     m_bytes += m_packet_bytes;
-    if (m_recording) m_series->link_busy(m_series_index, start, m_free_at);
-    if (m_tracing && m_trace) record_use(start, m_free_at);  // m_trace: a link that takes time
-    p.stamp = m_free_at;
+    if (m_recording) m_series->link_busy(m_series_index, start, end);
+    if (m_tracing && m_trace) record_use(start, end);  // m_trace: a link that takes time
+    p.stamp = end;
     p.last_dir = m_dir;
     p.hops++;
     // A write to the receiving node, data = the packet as held in memory (its size on the wire is
@@ -69,12 +72,18 @@ void ToroidalLink::send(PacketPool &pool, uint32_t handle)
     trans.set_data_ptr(reinterpret_cast<unsigned char *>(&p.packet));
     trans.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
     // Annotated delay: queueing behind earlier packets plus serialisation.
-    sc_core::sc_time delay = m_free_at - now;
+    sc_core::sc_time delay = end - now;
     trans.acquire();
     m_fw->b_transport(trans, delay);
     bool refused = trans.is_response_error();
     trans.release();  // back to the pool
     if (refused) SC_REPORT_FATAL(name(), "the receiving communication unit refused a packet");
+}
+
+sc_core::sc_time ToroidalLink::gap_start(const sc_core::sc_time &ready, const sc_core::sc_time &now)
+{
+    if (m_packet_time == sc_core::SC_ZERO_TIME) return ready;
+    return sc_core::sc_time::from_value(m_bookings.book(ready.value(), now.value(), m_packet_time.value()));
 }
 
 int &ToroidalLink::use_trace()

@@ -8,7 +8,7 @@
 #   --build DIR     folder with torusrt-sim (default $TORUSRT_BUILD, else REPO/build)
 #   --out CSV       output (default experiments/error_vs_runtime/results/quantum.csv)
 #   --scenes        scene names in scenes/ or NFF paths (default "paper-image1 paper-image2")
-#   --ips           torus sizes (default "4x2x2 4x4x4")
+#   --ips           torus sizes (default "4x2x2 4x4x4 8x8x8")
 #   --size          image size (default 144x144)
 #   --quanta        quanta to try in order (default 0, 10us, 100us, then 1-2-5 steps from 1ms to 100s)
 #   --max-error     stop a configuration after the first quantum whose |error of sim_time_s|
@@ -26,7 +26,7 @@ source "$(dirname "$0")/common.sh"
 
 OUT=$EVR_DIR/results/quantum.csv
 SCENES="paper-image1 paper-image2"
-IPS="4x2x2 4x4x4"
+IPS="4x2x2 4x4x4 8x8x8"
 SIZE=144x144
 QUANTA="0 10us 100us 1ms 2ms 5ms 10ms 20ms 50ms 100ms 200ms 500ms 1s 2s 5s 10s 20s 50s 100s"
 MAX_ERR=20

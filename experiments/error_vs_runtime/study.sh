@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # study.sh - the error-against-run-time study of docs/design.md section 8, end to end:
-#   1. quantum.sh  - LT at growing quanta against AT (both paper scenes, 144x144, 4x2x2 and 4x4x4)
+#   1. quantum.sh  - LT at growing quanta against AT (both paper scenes, 144x144, 4x2x2, 4x4x4, 8x8x8)
 #   2. pruning.sh  - max-depth 0..8 and min-weight 1/512..1/8 against the full-depth image
 #   3. the report  - docs/img/error-*.png and docs/error-vs-runtime.md (python3 experiments/report
 #                    error-vs-runtime: experiments/report/, plots experiments/plots/error-*.gp)
@@ -59,7 +59,7 @@ case $ONLY in ""|quantum|pruning|report) ;; *) die "--only: quantum, pruning or 
 [ "$ONLY" = report ] || set_build "$BUILD" torusrt-render  # before any point runs
 export TORUSRT_BUILD=$BUILD
 
-qargs=() pargs=() SCENES="paper-image1 paper-image2" IPS="4x2x2 4x4x4"
+qargs=() pargs=() SCENES="paper-image1 paper-image2" IPS="4x2x2 4x4x4" QIPS="4x2x2 4x4x4 8x8x8"
 command_line="experiments/error_vs_runtime/study.sh"
 seen() { [[ " ${ARGS_SEEN[*]-} " == *" $1 "* ]]; }
 places=()  # a quick run's own temporary results folder needs no check
@@ -77,7 +77,7 @@ if [ "$QUICK" = 1 ]; then
   fi
   seen doc || DOC=$RESULTS/error-vs-runtime.md
   seen img || IMG=$RESULTS/img
-  SCENES=paper-image2 IPS=4x2x2
+  SCENES=paper-image2 IPS=4x2x2 QIPS=4x2x2
   qargs=(--size 48x48 --quanta "0 1ms 100ms 1s 100s" --reps "${REPS:-1}")
   pargs=(--size 48x48 --depths "0 2 4 8" --weights "1/512 1/64 1/8" --reps "${REPS:-1}")
   command_line+=" --quick"
@@ -94,7 +94,7 @@ point_line() { printf '%s\t%s\n' "$2" "$(printf '%q ' "$EVR_DIR/$1.sh" --build "
 # The lists and CSVs are written through experiments/output_files.py (write_file).
 for s in $SCENES; do
   if [ -z "$ONLY" ] || [ "$ONLY" = quantum ]; then
-    for ips in $IPS; do point_line quantum "$work/quantum-$s-$ips.csv" "${qargs[@]}" --scenes "$s" --ips "$ips"; done
+    for ips in $QIPS; do point_line quantum "$work/quantum-$s-$ips.csv" "${qargs[@]}" --scenes "$s" --ips "$ips"; done
   fi
 done | write_file "$work/quantum.list"
 for s in $SCENES; do

@@ -23,7 +23,8 @@ runs on the machine that ran the study (other load only adds time, but can still
 
 ## 1. Timing style: loosely timed against approximately timed
 
-Each configuration (paper scene at 144x144, torus 4x2x2 = 16 IPs or 4x4x4 = 64 IPs) is run once
+Each configuration (paper scene at 144x144, torus 4x2x2 = 16 IPs, 4x4x4 = 64 IPs or 8x8x8 = 512
+IPs) is run once
 in AT (`--style at`, the reference) and then in LT (`--style lt --quantum Q`) at quanta 0, 10 us,
 100 us and then in 1-2-5 steps from 1 ms, until the error of `sim_time_s` passes 20 % (or the
 largest quantum, 100 s, is reached). Every run gets `--t1` from a first AT run, so no run pays
@@ -43,12 +44,13 @@ toroidal_link.cpp, comm_unit.cpp, host.cpp):
 - *Where the error comes from.* Every packet carries its send time (`TimedPacket.stamp`), a link
   adds its transfer time, and a receiver advances its local time to the stamp before starting
   the packet, so no packet is ever started before it arrived and every IP and link still serves
-  one packet at a time. What LT changes is the *order* of service: queues are FIFO in the order
-  packets were *pushed*, which is the sender's simulation time, not the packet's stamp. A sender
-  that has run ahead by up to a quantum pushes packets stamped in its future; a receiver may take
-  such a packet before one stamped earlier that another sender pushes later, and then the earlier
-  packet waits behind it. The schedule stays causal but is no longer
-  first-come-first-served by arrival time, so the image time (the latest consumption) moves.
+  one packet at a time. What LT changes is the *order* of service. A sender that has run ahead
+  by up to a quantum hands over packets stamped in its future, and they are routed at once
+  along their whole route within the quantum. An IP's queue is in stamp order, and a link books
+  each crossing into the earliest gap at its stamp, but an IP can only choose among the packets
+  present: when it takes up one, an earlier one that another sender hands over later then waits
+  behind it. The schedule stays causal but is no longer first-come-first-served by arrival
+  time, so the image time (the latest consumption) moves (docs/model.md, Timing styles).
 - *Small quanta are free of error.* The step costs are milliseconds (a step is 1-20 ms of
   simulated time, a link hop 50 us), so a quantum below the smallest delay still makes every
   process synchronise after every step: up to 100 us nothing changes at all, and up to some
@@ -72,11 +74,14 @@ toroidal_link.cpp, comm_unit.cpp, host.cpp):
   `tlm_quantumkeeper::reset()` after an explicit wait) cuts the delta cycles by a quarter to
   a half at quanta of 10 ms to 1 s, and raises the error two- to fourfold there (measured
   on paper-image2 with a patched copy of the model; not part of the model).
-- *Speed-up is bounded.* LT saves SystemC process activations and delta cycles (one per step and
-  per hop in AT); it cannot save the packet steps themselves (the kernel's intersection and
-  shading work), which are the same in both styles. Once the delta cycles have collapsed (see
-  `delta_cycles` in the CSV) the wall time stops falling, at a few times the AT speed, and
-  the quanta that give that speed-up are the ones past the 1-5 % bounds."""
+- *Speed-up is bounded.* LT saves SystemC process activations and delta cycles (in AT one per
+  step and one per hop; in LT a packet's whole route within the quantum is one call chain, and
+  an IP runs step after step in one activation); it cannot save the packet steps themselves
+  (the kernel's intersection and shading work) nor the model's per-step and per-hop
+  bookkeeping (queues, pool, links, statistics), which are the same in both styles. Once the
+  delta cycles have collapsed (see `delta_cycles` in the CSV) the wall time stops falling
+  (bench/README.md, Where the time goes, has the profile), and the quanta past that point only
+  add error: the quanta that give that speed-up are the ones past the 1-5 % bounds."""
 
 PRUNING_INTRO = """## 2. Shade-tree pruning
 
@@ -96,8 +101,10 @@ with the default image, to show what the defaults themselves leave out.
 def plots(qt, pt, img_dir, work):
     os.makedirs(work, exist_ok=True)
     os.makedirs(img_dir, exist_ok=True)
-    gnuplot("error-quantum.gp", dict(quantum.plot_data(qt, work), dat=work, out=os.path.join(img_dir, "error-quantum.png"),
+    variables = quantum.plot_data(qt, work)
+    gnuplot("error-quantum.gp", dict(variables, dat=work, out=os.path.join(img_dir, "error-quantum.png"),
                                      out_q=os.path.join(img_dir, "error-quantum-q.png")))
+    gnuplot("error-pareto.gp", dict(variables, dat=work, out=os.path.join(img_dir, "error-pareto.png")))
     gnuplot("error-pruning.gp", dict(pruning.plot_data(pt, work), dat=work, out=os.path.join(img_dir, "error-pruning.png")))
 
 
@@ -106,10 +113,16 @@ def quantum_section(qt, rel_img, command):
     out = [INTRO.replace("{command}", command).rstrip("\n"), "",
            "![error against wall time and speed-up](%s/error-quantum.png)" % rel_img, "",
            "![error against the quantum](%s/error-quantum-q.png)" % rel_img, "",
+           "### The trade", "",
+           "Per configuration, the runs no other run beats on both wall time and |error of `sim_time_s`|",
+           "(the Pareto front, fastest first; AT is the front's error-free end):", "",
+           "![wall time against error, the Pareto front of each configuration](%s/error-pareto.png)" % rel_img, ""]
+    out += ["- %s" % line for line in quantum.front_text(qt)]
+    out += ["",
            "### Recommended quantum", "",
            "The largest quantum tried whose error, and that of every smaller quantum tried (both",
            "`sim_time_s` and `efficiency_busy`), is within the bound:", "", quantum.recommend_table(qt), "",
-           "For all four configurations at once: **%s for 1 %% error, %s for 5 %% error** (the smallest of"
+           "For all configurations at once: **%s for 1 %% error, %s for 5 %% error** (the smallest of"
            % (quantum.overall(qt, 1), quantum.overall(qt, 5)),
            "the per-configuration values). The bound is a property of the tried grid: the true limit lies",
            "between that quantum and the next one tried.", "", "### Tables", "", quantum.tables(qt), ""]
@@ -141,9 +154,9 @@ def findings(qt, pt):
             "  same `sim_time_s`: **%s**." % f["all_det"],
             "- Quantum 0 gives exactly the AT image time and efficiency: **%s** (the LT time keeper waits at" % f["q0_zero"],
             "  every delay when the quantum is 0, as AT does).",
-            "- For all four configurations at once: **%s keeps the error within 1 %%, %s within 5 %%**" % (
+            "- The quantum to pick: **%s for 1 %% error, %s for 5 %%** (the largest that keeps every" % (
                 quantum.overall(qt, 1), quantum.overall(qt, 5)),
-            "  (section 1, Recommended quantum).",
+            "  configuration, 16 to 512 IPs, within the bound; section 1, Recommended quantum).",
             "- Highest speed-up per configuration: %s." % f["maxspd"],
             "", "Shade-tree pruning (max-depth, min-weight) against the full-depth image:", "",
             "- Every torusrt-sim image equals the renderer's image at the same settings: **%s**." % g["all_sim_equal"],

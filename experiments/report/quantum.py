@@ -131,10 +131,37 @@ def g6(x):
     return float("%.6g" % x)
 
 
+def pareto_front(rows):
+    """The runs no other run beats on both wall time and |error of sim_time_s| (fastest first)."""
+    front, best = [], None
+    for r in sorted(rows, key=lambda r: (num(r, "wall_s"), abs(num(r, "err_time_pct")))):
+        e = abs(num(r, "err_time_pct"))
+        if best is None or e < best:
+            front.append(r)
+            best = e
+    return front
+
+
+def front_text(table):
+    """Per configuration, its Pareto front as 'quantum (wall s, error %)', fastest first."""
+    out = []
+    for config in configs(table):
+        rows = [r for r in table.rows if (r["scene"], r["ips"]) == config]
+        out.append("%s, %s: %s" % (config[0], config[1], ", ".join(
+            "%s (%.3f s, %s %%)" % ("AT" if r["style"] == "at" else r["quantum"], num(r, "wall_s"),
+                                   signed_error(num(r, "err_time_pct"))) for r in pareto_front(rows))))
+    return out
+
+
 def plot_data(table, dat):
-    """Writes dat/qI.dat and dat/atI.dat; returns the gnuplot variables of error-quantum.gp."""
+    """Writes dat/qI.dat, dat/atI.dat, dat/allI.dat and dat/frontI.dat; returns the gnuplot
+    variables of error-quantum.gp and error-pareto.gp."""
     variables = {}
     for i, config in enumerate(configs(table), 1):
+        rows = [r for r in table.rows if (r["scene"], r["ips"]) == config]
+        point = lambda r: [r["wall_s"], abs(num(r, "err_time_pct")), "AT" if r["style"] == "at" else r["quantum"]]
+        write_dat(os.path.join(dat, "all%d.dat" % i), [point(r) for r in rows])
+        write_dat(os.path.join(dat, "front%d.dat" % i), [point(r) for r in pareto_front(rows)])
         write_dat(os.path.join(dat, "q%d.dat" % i), [[r["wall_s"], r["speedup"], r["err_time_pct"], r["err_eff_pct"],
                                                        r["quantum_s"], r["quantum"]] for r in lt_rows(table, config)])
         write_dat(os.path.join(dat, "at%d.dat" % i), [[r["wall_s"]] for r in table.rows
