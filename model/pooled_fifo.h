@@ -15,6 +15,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <deque>
+#include <memory>
 
 #include "packet_pool.h"
 
@@ -33,19 +34,20 @@ class PooledFifo {
     // Appends; in stamp order (order_by_stamp()), behind every packet stamped no later.
     void push_back(uint32_t handle)
     {
-        if (m_by_stamp) push_by_stamp(handle);
+        if (m_stamps) push_by_stamp(handle);
         else m_items.push_back(handle);
     }
     // Keeps the packets in stamp order from now on (while empty): the earliest stamp first, ties
     // in arrival order (loosely timed with a quantum, where a packet can arrive after one
     // stamped later). Packets mostly come in stamp order and are appended; the others are put
     // in place by a binary search on the stamps, kept beside the handles (no packet is read).
-    // Out of line, so an arrival-order queue's push and take stay as small as without it.
-    void order_by_stamp() { m_by_stamp = true; }
+    // Out of line, and the stamps held by a pointer, so an arrival-order queue's push, take and
+    // size stay as they are without it.
+    void order_by_stamp() { m_stamps = std::make_unique<std::deque<uint64_t>>(); }
     // Removes the i-th oldest and returns its handle.
     uint32_t take(size_t i)
     {
-        if (m_by_stamp) return take_by_stamp(i);
+        if (m_stamps) return take_by_stamp(i);
         uint32_t handle = m_items[i];
         if (i == 0) m_items.pop_front();
         else m_items.erase(m_items.begin() + static_cast<std::ptrdiff_t>(i));
@@ -64,32 +66,31 @@ class PooledFifo {
     [[gnu::noinline]] void push_by_stamp(uint32_t handle)
     {
         const uint64_t stamp = m_pool->at(handle).stamp.value();
-        if (m_stamps.empty() || m_stamps.back() <= stamp) {
-            m_stamps.push_back(stamp);
+        if (m_stamps->empty() || m_stamps->back() <= stamp) {
+            m_stamps->push_back(stamp);
             m_items.push_back(handle);
             return;
         }
-        auto place = std::upper_bound(m_stamps.begin(), m_stamps.end(), stamp);
-        m_items.insert(m_items.begin() + (place - m_stamps.begin()), handle);
-        m_stamps.insert(place, stamp);
+        auto place = std::upper_bound(m_stamps->begin(), m_stamps->end(), stamp);
+        m_items.insert(m_items.begin() + (place - m_stamps->begin()), handle);
+        m_stamps->insert(place, stamp);
     }
     [[gnu::noinline]] uint32_t take_by_stamp(size_t i)
     {
         uint32_t handle = m_items[i];
         if (i == 0) {
             m_items.pop_front();
-            m_stamps.pop_front();
+            m_stamps->pop_front();
         } else {
             m_items.erase(m_items.begin() + static_cast<std::ptrdiff_t>(i));
-            m_stamps.erase(m_stamps.begin() + static_cast<std::ptrdiff_t>(i));
+            m_stamps->erase(m_stamps->begin() + static_cast<std::ptrdiff_t>(i));
         }
         return handle;
     }
 
     PacketPool *m_pool;
-    std::deque<uint32_t> m_items;  // oldest first (in stamp order: earliest first)
-    bool m_by_stamp = false;
-    std::deque<uint64_t> m_stamps;  // in stamp order: the packets' stamps, in m_items' order
+    std::deque<uint32_t> m_items;                    // oldest first (in stamp order: earliest first)
+    std::unique_ptr<std::deque<uint64_t>> m_stamps;  // in stamp order: the stamps, in m_items' order
 };
 
 }  // namespace torusrt

@@ -10,13 +10,13 @@ namespace torusrt {
 
 ToroidalLink::ToroidalLink(sc_core::sc_module_name name, const MachineConfig &config, int from, int to, int dir,
                            TransactionPool *transactions)
-    : sc_module(name), socket("socket"), in("in"), m_free_at(sc_core::SC_ZERO_TIME),
-      m_gaps(config.style == TimingStyle::lt && config.quantum_us > 0),
+    : sc_module(name), socket("socket"), in("in"),
       m_packet_time(rt_timing_link_packet_us(&config.timing), sc_core::SC_US), m_to(to),
       m_dir(static_cast<int8_t>(dir)), m_packet_bytes(config.timing.packet_bytes), m_spaces(config.queue_capacity),
       m_from(from)
 {
     if (transactions) m_transactions = transactions;
+    if (config.style == TimingStyle::lt && config.quantum_us > 0) m_bookings = std::make_unique<LinkBookings>();
     in.bind(*this);
 }
 
@@ -51,7 +51,7 @@ void ToroidalLink::send(PacketPool &pool, uint32_t handle)
     TimedPacket &p = pool.at(handle);
     if (p.stamp < now) p.stamp = now;
     sc_core::sc_time start = p.stamp > m_free_at ? p.stamp : m_free_at;
-    if (m_gaps) start = gap_start(p.stamp, now);
+    if (m_bookings) start = gap_start(p.stamp, now);
     const sc_core::sc_time end = start + m_packet_time;
     if (end > m_free_at) m_free_at = end;
     m_packets++;
@@ -83,7 +83,7 @@ void ToroidalLink::send(PacketPool &pool, uint32_t handle)
 sc_core::sc_time ToroidalLink::gap_start(const sc_core::sc_time &ready, const sc_core::sc_time &now)
 {
     if (m_packet_time == sc_core::SC_ZERO_TIME) return ready;
-    return sc_core::sc_time::from_value(m_bookings.book(ready.value(), now.value(), m_packet_time.value()));
+    return sc_core::sc_time::from_value(m_bookings->book(ready.value(), now.value(), m_packet_time.value()));
 }
 
 int &ToroidalLink::use_trace()

@@ -98,9 +98,7 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
     void start_of_simulation() override { m_fw = socket.operator->(); }
 
     sc_core::sc_time m_free_at = sc_core::SC_ZERO_TIME;  // busy until (the latest crossing's end)
-    bool m_gaps;                                         // loosely timed with a quantum: m_bookings
-    LinkBookings m_bookings;
-    sc_core::sc_time m_packet_time;  // serialisation time of one packet
+    sc_core::sc_time m_packet_time;                      // serialisation time of one packet
     TransactionPool *m_transactions = &m_own_transactions;
     // The socket's bound target interface (what socket-> returns), kept after elaboration so a
     // crossing does not read the port for it.
@@ -127,6 +125,9 @@ class ToroidalLink : public sc_core::sc_module, public PacketSinkIf {
     int m_use = 0, m_use_peak = 0;   // the traced use and its highest value
     TimeSeries *m_series = nullptr;  // --stats-interval's (null: none), this link's index in it
     size_t m_series_index = 0;
+    // Loosely timed with a quantum: the crossings booked ahead (null otherwise; off the lines a
+    // crossing touches).
+    std::unique_ptr<LinkBookings> m_bookings;
 };
 
 }  // namespace torusrt
