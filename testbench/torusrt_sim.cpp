@@ -299,7 +299,7 @@ int run(CommandLine &cl, double wall_start, int argc, char **argv)
              idle_option_warnings(config, [&](const std::string &name) { return on_command_line(argc, argv, name); }))
             std::fprintf(stderr, "torusrt-sim: warning: %s\n", line.c_str());
     if (config.style == TimingStyle::lt && config.quantum_us == 0 && !config.quiet)
-        std::fprintf(stderr, "torusrt-sim: warning: --style lt without --quantum: a quantum of 0 synchronises at "
+        std::fprintf(stderr, "torusrt-sim: warning: --style lt with a quantum of 0 (the default) synchronises at "
                              "every transfer, as --style at does (give --quantum, e.g. 1ms)\n");
     fill_request(cl, request);
     return simulate(request, wall_start);

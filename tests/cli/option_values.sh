@@ -136,7 +136,10 @@ check "budget at start-up: its own words ($(head -1 "$TMP/err"))" \
 
 # --style lt without --quantum warns.
 "$sim" "$scene" "${size[@]}" -o "$TMP/lt.png" --style lt > /dev/null 2> "$TMP/err"
-check "--style lt without --quantum warns ($(head -1 "$TMP/err"))" grep -q "warning: --style lt without --quantum" "$TMP/err"
+check "--style lt without --quantum warns ($(head -1 "$TMP/err"))" grep -q "warning: --style lt with a quantum of 0" "$TMP/err"
+"$sim" "$scene" "${size[@]}" -o "$TMP/lt.png" --style lt --quantum 0 > /dev/null 2> "$TMP/err"
+check "--style lt --quantum 0 warns without saying --quantum is missing ($(head -1 "$TMP/err"))" \
+    sh -c "grep -q 'warning: --style lt with a quantum of 0' '$TMP/err' && ! grep -q 'without --quantum' '$TMP/err'"
 "$sim" "$scene" "${size[@]}" -o "$TMP/lt.png" --style lt --quantum 1ms > /dev/null 2> "$TMP/err"
 check "--style lt --quantum 1ms does not warn" sh -c "! grep -q warning '$TMP/err'"
 finish
