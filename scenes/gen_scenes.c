@@ -42,6 +42,7 @@
 #include <unistd.h>
 
 #include "gen/builders.h"
+#include "rt_number.h"
 #include "gen/nff_writer.h"
 #include "gen/scene.h"
 #include "signal_cleanup_c.h"
@@ -277,22 +278,6 @@ static int good_name(const char *name)
     return 1;
 }
 
-/* Whether TEXT is a plain decimal: digits, with one '.' between digits, no sign, no exponent,
- * no leading zero before another digit (the project's number syntax, docs/cli.md). */
-static int plain_decimal(const char *text)
-{
-    const char *p = text;
-    if (!(*p >= '0' && *p <= '9')) return 0;
-    if (p[0] == '0' && p[1] >= '0' && p[1] <= '9') return 0;
-    while (*p >= '0' && *p <= '9') ++p;
-    if (*p == '.') {
-        ++p;
-        if (!(*p >= '0' && *p <= '9')) return 0;
-        while (*p >= '0' && *p <= '9') ++p;
-    }
-    return *p == 0;
-}
-
 /* One KEY=VALUE of a variant into *v; 0, or 2 after printing why not. */
 static int variant_setting(const char *setting, paper_variant *v)
 {
@@ -330,15 +315,17 @@ static int variant_setting(const char *setting, paper_variant *v)
     for (size_t i = 0; i < sizeof numbers / sizeof numbers[0]; ++i) {
         if (klen != strlen(numbers[i].name) || strncmp(setting, numbers[i].name, klen) != 0) continue;
         if (numbers[i].image && numbers[i].image != v->image) break;
-        char *end = NULL;
-        double x = strtod(value, &end);
-        if (!plain_decimal(value) || end == value || *end || !(x >= numbers[i].lo && x <= numbers[i].hi) ||
-            (numbers[i].whole && strchr(value, '.'))) {
-            fprintf(stderr, "torusrt-genscenes: --variant %s '%s': expected a%s number from %g to %g%s\n",
-                    numbers[i].name, shown(value), numbers[i].whole ? " whole" : "", numbers[i].lo, numbers[i].hi,
-                    value[0] == '0' && value[1] >= '0' && value[1] <= '9'
-                        ? " (decimal only: a leading zero could be read as octal)"
-                        : "");
+        /* The one strict syntax (rt_number.h), with its reason, then the key's range. */
+        double x = 0;
+        rt_number_fault fault = rt_number_real(value, strlen(value), &x);
+        if (fault != RT_NUMBER_OK) {
+            fprintf(stderr, "torusrt-genscenes: --variant %s '%s' %s\n", numbers[i].name, shown(value),
+                    rt_number_fault_text(fault));
+            return 2;
+        }
+        if (!(x >= numbers[i].lo && x <= numbers[i].hi) || (numbers[i].whole && strpbrk(value, ".eE"))) {
+            fprintf(stderr, "torusrt-genscenes: --variant %s '%s': expected a%s number from %g to %g\n",
+                    numbers[i].name, shown(value), numbers[i].whole ? " whole" : "", numbers[i].lo, numbers[i].hi);
             return 2;
         }
         switch (i) {
@@ -499,6 +486,10 @@ int main(int argc, char **argv)
     if (stream_named(argc, argv)) return 2;
     if (argc < 2) {
         usage(stderr);
+        return 2;
+    }
+    if ((strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0 || strcmp(argv[1], "--list") == 0) && argc > 2) {
+        fprintf(stderr, "torusrt-genscenes: %s takes nothing after it (given '%s')\n", argv[1], shown(argv[2]));
         return 2;
     }
     if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0) {

@@ -91,11 +91,25 @@ bad paper-image2 margin=nan margin
 bad paper-image3 lights=1 paper-image3
 bad paper-image1 lights "KEY=VALUE"
 bad paper-image1 lights=03 lights
-bad paper-image1 scale=010 "decimal only: a leading zero"
-bad paper-image1 scale=0x1 scale
+bad paper-image1 scale=010 "leading zero (decimal only"
+bad paper-image1 scale=0x1 "hexadecimal is not accepted"
+bad paper-image1 scale=+1 "is not a number"
+bad paper-image1 scale=inf "is not a number"
+bad paper-image1 scale=1e-400 "too close to 0"
+bad paper-image1 lights=2e0 "whole number"
 bad paper-image1 scale=1,scale=2 "given twice"
 bad paper-image1 scale=1, "empty"
 bad paper-image1 "" "empty"
+
+# The one strict syntax takes an exponent: scale=1e0 is scale 1.
+"$gen" --variant paper-image1 scale=1e0 "$out" e0 >/dev/null
+"$gen" --variant paper-image1 scale=1 "$out" e1 >/dev/null
+check "scale=1e0 is scale=1 (the same scene but for its name)" cmp -s <(sed 1d "$out/e0.nff") <(sed 1d "$out/e1.nff")
+# --list and --help take nothing after them (an option given twice is refused).
+"$gen" --list --list >/dev/null 2>"$TMP/list.err"
+rc=$?
+check "--list --list: exit 2 (got $rc)" test "$rc" = 2
+check "--list --list: says why ($(head -c 120 "$TMP/list.err"))" grep -q "takes nothing after it" "$TMP/list.err"
 
 # NAME: a file name, not a path, an option or a hidden file; nothing written.
 for name in "" "a/b" $'ev2\nl 0 0 0\n#' "-x" ".hidden"; do
