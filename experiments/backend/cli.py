@@ -100,7 +100,6 @@ def run(args):
         outs.add("--runs", args.runs)
         outs.check()
     state = out_folder("--state", args.state, [("point list", f) for f in args.lists])
-    os.makedirs(os.path.join(state, "logs"), exist_ok=True)
     phases = [points.read(os.path.abspath(f)) for f in args.lists]
     points.assign_logs(phases, os.path.join(state, "logs"))
     todo, cache, made = [], {}, {}
@@ -109,6 +108,8 @@ def run(args):
             points.identify(p, cache, made)
     points.check_results_are_not_inputs(phases, args.lists)
     points.check_own_files_are_not_inputs(phases, state, args.runs)
+    # Made once every list is read and checked: a refused command leaves no folder behind.
+    os.makedirs(os.path.join(state, "logs"), exist_ok=True)
     for number, phase in enumerate(phases, 1):
         pending = []
         for p in phase:

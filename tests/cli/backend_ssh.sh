@@ -34,6 +34,7 @@ printf '%s\n' "relative.json	true" >"$TMP/list"
 python3 "$SRC/experiments/backend" run --state "$TMP/st" "$TMP/list" >"$TMP/bad.out" 2>&1
 check "a relative done file: exit 2 (got $?)" test $? -eq 2
 check "a relative done file: file and line named" grep -q "$TMP/list:1: the done file must be an absolute path" "$TMP/bad.out"
+check "a refused point list: no --state folder made" test ! -e "$TMP/st"
 printf "%s\n" "$TMP/a.json	echo 1 >$TMP/a.json" "$TMP/b.json	exit 3" >"$TMP/list"
 python3 "$SRC/experiments/backend" run --state "$TMP/st" -j 2 "$TMP/list" >"$TMP/run.out" 2>&1
 check "a failing point: exit 1 (got $?)" test $? -eq 1
