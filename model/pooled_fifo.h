@@ -47,7 +47,7 @@ class PooledFifo {
     // Removes the i-th oldest and returns its handle.
     uint32_t take(size_t i)
     {
-        if (m_stamps) return take_by_stamp(i);
+        if (m_stamps) drop_stamp(i);
         uint32_t handle = m_items[i];
         if (i == 0) m_items.pop_front();
         else m_items.erase(m_items.begin() + static_cast<std::ptrdiff_t>(i));
@@ -75,18 +75,7 @@ class PooledFifo {
         m_items.insert(m_items.begin() + (place - m_stamps->begin()), handle);
         m_stamps->insert(place, stamp);
     }
-    [[gnu::noinline]] uint32_t take_by_stamp(size_t i)
-    {
-        uint32_t handle = m_items[i];
-        if (i == 0) {
-            m_items.pop_front();
-            m_stamps->pop_front();
-        } else {
-            m_items.erase(m_items.begin() + static_cast<std::ptrdiff_t>(i));
-            m_stamps->erase(m_stamps->begin() + static_cast<std::ptrdiff_t>(i));
-        }
-        return handle;
-    }
+    [[gnu::noinline]] void drop_stamp(size_t i) { m_stamps->erase(m_stamps->begin() + static_cast<std::ptrdiff_t>(i)); }
 
     PacketPool *m_pool;
     std::deque<uint32_t> m_items;                    // oldest first (in stamp order: earliest first)
